@@ -1,0 +1,56 @@
+// One fraction of a shape recipe (method, count, parameter distributions) and the generator
+// that draws one particle of it.
+#pragma once
+
+#include "geom/distribution.h"
+#include "geom/mesh.h"
+#include "geom/random.h"
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace clumpkit {
+
+/// A group of particles made by one method. Parameters are named as in the method's table
+/// (see method_parameters) and each is a Distribution, so a recipe can fix or randomise any.
+struct FractionSpec {
+  std::string name;
+  std::string method;  ///< block | hull | polyhedron | ellipsoid
+  int count = 0;
+  std::map<std::string, Distribution> params;
+};
+
+/// A parameter a method accepts, with the default used when a recipe omits it.
+struct ParameterInfo {
+  std::string name;
+  bool required = false;
+  double default_value = 0.0;
+  std::string help;
+};
+
+/// Methods known to the batch generator.
+const std::vector<std::string>& shape_methods();
+
+/// Parameter table of a method. Throws InvalidInput for an unknown method.
+const std::vector<ParameterInfo>& method_parameters(const std::string& method);
+
+/// Checks method, count and every parameter (unknown names, missing required ones, invalid
+/// distributions, ranges that the generator would reject for every draw). Messages start with
+/// `field_prefix` (e.g. "fraction[2]") and name the field and value.
+void validate(const FractionSpec& spec, const std::string& field_prefix);
+
+/// One generated particle with the values drawn for it (in method-table order).
+struct GeneratedShape {
+  Mesh mesh;
+  std::vector<std::pair<std::string, double>> sampled;
+  int attempts = 1;  ///< draws needed (hull rejection sampling), 1 otherwise
+};
+
+/// Draws the parameters and builds the mesh. For `block`, either L, W, H are given, or W with
+/// L_over_H (seed 000 Fig. 2: lognormal) and W_split, where W/H = (L/H)^W_split so that
+/// H ≤ W ≤ L.
+GeneratedShape generate_shape(const FractionSpec& spec, Rng& rng);
+
+}  // namespace clumpkit

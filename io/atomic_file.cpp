@@ -1,0 +1,50 @@
+#include "io/atomic_file.h"
+
+#include "geom/errors.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+namespace clumpkit {
+
+namespace fs = std::filesystem;
+
+void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& fill,
+                           bool binary) {
+  // Process id + per-process counter make the name unique across processes and threads, so two
+  // writers of the same target never share a temporary file.
+  static std::atomic<unsigned> counter{0};
+  const fs::path target(path);
+  const fs::path tmp =
+      target.parent_path() / ("." + target.filename().string() + ".tmp-" +
+                              std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  auto fail = [&](const std::string& what) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw IoError(path + ": " + what);
+  };
+  std::ofstream out(tmp, binary ? std::ios::out | std::ios::binary | std::ios::trunc
+                                : std::ios::out | std::ios::trunc);
+  if (!out)
+    fail(std::string("cannot create a temporary file for writing: ") + std::strerror(errno));
+  try {
+    fill(out);
+  } catch (...) {
+    out.close();
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw;
+  }
+  out.close();  // flushes; a full disk shows up here as a failed stream
+  if (!out) fail("write failed (disk full or I/O error)");
+  std::error_code ec;
+  fs::rename(tmp, target, ec);
+  if (ec) fail("cannot rename the temporary file into place: " + ec.message());
+}
+
+}  // namespace clumpkit

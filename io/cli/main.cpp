@@ -1,0 +1,46 @@
+// clumpkit command line: parses arguments and maps errors to exit codes (2 bad input, 1 failure).
+#include "geom/errors.h"
+#include "io/cli/common.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+
+#ifndef CLUMPKIT_VERSION
+#define CLUMPKIT_VERSION "0.1.0"
+#endif
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "clumpkit " CLUMPKIT_VERSION
+      " - irregular particles, sphere clumps and DEM specimens for geomaterials.\n"
+      "Geometry commands keep the units of their input; recipes are in SI units (m, kg, s)."};
+  app.set_version_flag("--version", CLUMPKIT_VERSION);
+  app.require_subcommand(1);
+  clumpkit::cli::register_shape(app);
+  clumpkit::cli::register_shapes(app);
+  clumpkit::cli::register_describe(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "clumpkit: error: %s (see --help)\n", e.what());
+    return 2;
+  } catch (const clumpkit::InvalidInput& e) {
+    std::fprintf(stderr, "clumpkit: error: %s\n", e.what());
+    return 2;
+  } catch (const clumpkit::IoError& e) {
+    std::fprintf(stderr, "clumpkit: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "clumpkit: error: internal failure: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

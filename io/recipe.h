@@ -1,0 +1,40 @@
+// Reading shape recipes (TOML): seed and fractions of particles to generate.
+#pragma once
+
+#include "geom/shapes/shape_spec.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace clumpkit {
+
+/// A shape-library recipe (`clumpkit shapes`). Lengths in metres (SI), like every recipe.
+struct ShapeRecipe {
+  std::string path;  ///< file it came from
+  std::string name;
+  std::string description;
+  std::uint64_t seed = 1;
+  std::vector<FractionSpec> fractions;
+  std::string text;  ///< the recipe file as read, stored in manifests
+};
+
+/// Parses and fully validates a recipe. Any problem (missing file, TOML syntax, unknown key,
+/// NaN, bad range) throws InvalidInput/IoError with one line "FILE: FIELD: what, got VALUE".
+///
+/// Format:
+///   seed = 2017                       # optional, default 1
+///   name = "..."; description = "..." # optional
+///   [[fraction]]
+///   name = "rock 20-40 mm"; method = "block"; count = 200
+///   W = { uniform = [0.020, 0.040] }                      # distribution forms:
+///   L_over_H = { lognormal = { mu = 0.4, sigma = 0.2, min = 1.0, max = 3.0 } }
+///   nd = 2                                                # number: a constant
+///   # also { normal = { mu, sigma, min, max } } and { integers = [a, b] };
+///   # hull fractions accept roundness = [min, max].
+ShapeRecipe read_shape_recipe(const std::string& path);
+
+/// Same, from text already in memory; `path` is only used in messages.
+ShapeRecipe parse_shape_recipe(const std::string& text, const std::string& path);
+
+}  // namespace clumpkit

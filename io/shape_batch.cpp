@@ -1,0 +1,184 @@
+#include "io/shape_batch.h"
+
+#include "geom/descriptors.h"
+#include "geom/errors.h"
+#include "io/atomic_file.h"
+#include "io/mesh_io.h"
+#include "io/report.h"
+
+#include <tbb/parallel_for.h>
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <mutex>
+#include <set>
+
+#ifndef CLUMPKIT_VERSION
+#define CLUMPKIT_VERSION "0.1.0"
+#endif
+
+namespace fs = std::filesystem;
+
+namespace clumpkit {
+
+namespace {
+struct Item {
+  int fraction = 0;
+  GeneratedShape shape;
+  Descriptors desc;
+};
+
+std::string csv_escape(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string id_name(std::size_t i) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%05zu", i);
+  return buf;
+}
+}  // namespace
+
+void publish_directory(const std::string& staging, const std::string& dir) {
+  std::error_code ec;
+  if (fs::exists(dir)) {
+    const bool ours = fs::exists(fs::path(dir) / "manifest.json") || fs::is_empty(dir);
+    if (!ours)
+      throw InvalidInput(dir +
+                         ": output directory exists and is not a clumpkit output; "
+                         "remove it or choose another --out");
+    fs::remove_all(dir, ec);
+    if (ec) throw IoError(dir + ": cannot replace output directory: " + ec.message());
+  }
+  fs::rename(staging, dir, ec);
+  if (ec) throw IoError(dir + ": cannot move finished output into place: " + ec.message());
+}
+
+ShapeBatchResult run_shape_batch(const ShapeRecipe& recipe, const std::string& out_dir,
+                                 const Progress& progress) {
+  if (fs::exists(out_dir) && !fs::is_directory(out_dir))
+    throw InvalidInput(out_dir + ": --out exists and is not a directory");
+  if (fs::exists(out_dir) && !fs::is_empty(out_dir) &&
+      !fs::exists(fs::path(out_dir) / "manifest.json"))
+    throw InvalidInput(out_dir +
+                       ": output directory exists and is not a clumpkit output; "
+                       "remove it or choose another --out");
+  std::vector<Item> items;
+  for (std::size_t f = 0; f < recipe.fractions.size(); ++f)
+    for (int k = 0; k < recipe.fractions[f].count; ++k)
+      items.push_back(Item{static_cast<int>(f), {}, {}});
+
+  std::atomic<std::size_t> done{0};
+  const std::size_t total = items.size();
+  std::exception_ptr error;
+  std::atomic<bool> failed{false};
+  std::mutex progress_mutex;
+  // Generation and descriptors in parallel; each particle owns its random stream.
+  tbb::task_group_context ctx;
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, total, 1),
+      [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          if (failed) return;
+          try {
+            Rng rng = Rng::stream(recipe.seed, i);
+            items[i].shape = generate_shape(recipe.fractions[items[i].fraction], rng);
+            items[i].desc = describe(items[i].shape.mesh);
+          } catch (const std::exception& e) {
+            if (!failed.exchange(true)) {
+              const auto& fr = recipe.fractions[items[i].fraction];
+              try {
+                throw InvalidInput(recipe.path + ": fraction '" + fr.name + "' particle " +
+                                   id_name(i) + ": " + e.what());
+              } catch (...) {
+                error = std::current_exception();
+              }
+            }
+            return;
+          }
+          const std::size_t n = ++done;
+          if (progress && progress_mutex.try_lock()) {
+            progress(n, total);
+            progress_mutex.unlock();
+          }
+        }
+      },
+      ctx);
+  if (error) std::rethrow_exception(error);
+
+  const std::string staging = out_dir + ".partial";
+  std::error_code ec;
+  fs::remove_all(staging, ec);
+  fs::create_directories(fs::path(staging) / "meshes", ec);
+  if (ec) throw IoError(staging + ": cannot create directory: " + ec.message());
+  try {
+    for (std::size_t i = 0; i < total; ++i) {
+      write_mesh((fs::path(staging) / "meshes" / (id_name(i) + ".stl")).string(),
+                 items[i].shape.mesh);
+    }
+
+    // Parameter columns: union over fractions, in first-appearance order.
+    std::vector<std::string> params;
+    std::set<std::string> seen;
+    for (const auto& it : items)
+      for (const auto& [name, v] : it.shape.sampled)
+        if (seen.insert(name).second) params.push_back(name);
+
+    write_file_atomically((fs::path(staging) / "shapes.csv").string(), [&](std::ostream& o) {
+      o << "id,fraction,method,mesh,attempts";
+      for (const auto& p : params) o << ",p_" << p;
+      for (const auto& c : descriptor_csv_columns()) o << "," << c;
+      o << "\n";
+      for (std::size_t i = 0; i < total; ++i) {
+        const auto& it = items[i];
+        const auto& fr = recipe.fractions[it.fraction];
+        o << i << "," << csv_escape(fr.name) << "," << fr.method << ",meshes/" << id_name(i)
+          << ".stl," << it.shape.attempts;
+        for (const auto& p : params) {
+          o << ",";
+          for (const auto& [name, v] : it.shape.sampled)
+            if (name == p) o << format_number(v);
+        }
+        for (double v : descriptor_csv_values(it.desc)) o << "," << format_number(v);
+        o << "\n";
+      }
+    });
+
+    nlohmann::ordered_json m;
+    m["tool"] = "clumpkit";
+    m["version"] = CLUMPKIT_VERSION;
+    m["command"] = "shapes";
+    m["recipe_path"] = recipe.path;
+    m["recipe"] = recipe.text;
+    m["seed"] = recipe.seed;
+    m["particles"] = total;
+    m["mesh_format"] = "binary STL, float32, units of the recipe (m)";
+    auto& fr = m["fractions"] = nlohmann::ordered_json::array();
+    std::size_t first = 0;
+    for (const auto& f : recipe.fractions) {
+      long attempts = 0;
+      for (std::size_t i = first; i < first + static_cast<std::size_t>(f.count); ++i)
+        attempts += items[i].shape.attempts;
+      fr.push_back({{"name", f.name},
+                    {"method", f.method},
+                    {"count", f.count},
+                    {"first_id", first},
+                    {"attempts", attempts}});
+      first += f.count;
+    }
+    write_file_atomically((fs::path(staging) / "manifest.json").string(),
+                          [&](std::ostream& o) { o << m.dump(2) << "\n"; });
+    publish_directory(staging, out_dir);
+  } catch (...) {
+    fs::remove_all(staging, ec);
+    throw;
+  }
+  return {total, out_dir};
+}
+
+}  // namespace clumpkit

@@ -1,0 +1,294 @@
+// End-to-end tests of the clumpkit binary: outputs, determinism, exit codes and error lines.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int rc = -1;
+  std::string out, err;
+};
+
+fs::path scratch() {
+  const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+  fs::path p = fs::temp_directory_path() / "clumpkit_cli_tests" /
+               (std::string(info->test_suite_name()) + "." + info->name());
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream o(p, std::ios::binary);
+  o << text;
+}
+
+Result clumpkit(const std::string& args, const fs::path& dir) {
+  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string cmd =
+      std::string(CLUMPKIT_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+  const int status = std::system(cmd.c_str());
+  Result r;
+  r.rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+// The error contract: exit code 2 and exactly one line "clumpkit: error: ..." containing `needle`.
+void expect_one_line_error(const Result& r, const std::string& needle) {
+  EXPECT_EQ(r.rc, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("clumpkit: error: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << "missing '" << needle << "' in: " << r.err;
+}
+
+const char* kSmallRecipe = R"(seed = 5
+[[fraction]]
+name = "blocks"
+method = "block"
+count = 12
+W = { uniform = [0.02, 0.04] }
+L_over_H = { lognormal = { mu = 0.47, sigma = 0.25, min = 1.0, max = 3.5 } }
+W_split = { uniform = [0.3, 0.7] }
+nd = { integers = [1, 3] }
+
+[[fraction]]
+name = "grains"
+method = "hull"
+count = 6
+diameter = 0.01
+roundness = [1.2, 1.4]
+
+[[fraction]]
+name = "rockfill"
+method = "polyhedron"
+count = 3
+diameter = 0.0275
+E = 0.6667
+)";
+
+}  // namespace
+
+TEST(Cli, HelpStatesUnitsAndDefaults) {
+  const fs::path d = scratch();
+  const Result r = clumpkit("shape block --help", d);
+  EXPECT_EQ(r.rc, 0);
+  EXPECT_NE(r.out.find("--nd"), std::string::npos);
+  EXPECT_NE(r.out.find("=2"), std::string::npos) << r.out;  // default shown
+  EXPECT_NE(r.out.find("unit"), std::string::npos);
+}
+
+TEST(Cli, ShapeBlockThenDescribe) {
+  const fs::path d = scratch();
+  Result r =
+      clumpkit("shape block --L 75.1 --W 58.0 --H 49.8 --nd 2 --sl 0.8 --su 1.2 --seed 7 -o " +
+                   (d / "block.stl").string(),
+               d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  r = clumpkit("describe --json " + (d / "block.stl").string(), d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* k :
+       {"volume", "area", "sphericity", "equivalent_diameter", "L", "W", "H", "axes", "E", "F",
+        "AR", "convexity", "weighted_roundness", "view_roundness"})
+    EXPECT_TRUE(j.contains(k)) << k;
+  EXPECT_EQ(j["axes"].size(), 3u);
+  EXPECT_EQ(j["view_roundness"].size(), 3u);
+  // Radial factors in [0.8, 1.2] keep the volume within [0.8³, 1.2³] of the cuboid's.
+  const double v0 = 75.1 * 58.0 * 49.8;
+  EXPECT_GT(j["volume"].get<double>(), 0.512 * v0);
+  EXPECT_LT(j["volume"].get<double>(), 1.728 * v0);
+  EXPECT_GT(j["sphericity"].get<double>(), 0.5);
+  EXPECT_LT(j["sphericity"].get<double>(), 1.0);
+}
+
+TEST(Cli, EveryShapeKindWritesAValidMesh) {
+  const fs::path d = scratch();
+  const std::string cmds[] = {
+      "shape hull --diameter 10 --points 20 --roundness 1.2:1.4 --seed 7 -o " +
+          (d / "grain.stl").string(),
+      "shape polyhedron --diameter 27.5 --planes 30 --E 0.667 --F 1 --seed 7 -o " +
+          (d / "rock.obj").string(),
+      "shape ellipsoid --axes 2,1,1 -o " + (d / "e.ply").string(),
+      "shape box --size 2,1,1 -o " + (d / "b.stl").string()};
+  for (const auto& c : cmds) {
+    const Result r = clumpkit(c, d);
+    EXPECT_EQ(r.rc, 0) << c << "\n" << r.err;
+  }
+  Result r = clumpkit("describe --json " + (d / "b.stl").string(), d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["volume"].get<double>(), 2.0, 1e-6);
+  EXPECT_NEAR(j["weighted_roundness"].get<double>(), 1.400563499209, 0.005 * 1.400563499209);
+  r = clumpkit("describe --json " + (d / "grain.stl").string(), d);
+  j = nlohmann::json::parse(r.out);
+  EXPECT_GE(j["weighted_roundness"].get<double>(), 1.2 - 1e-6);  // STL stores float32
+  EXPECT_LE(j["weighted_roundness"].get<double>(), 1.4 + 1e-6);
+  r = clumpkit("describe --json " + (d / "rock.obj").string(), d);
+  j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["equivalent_diameter"].get<double>(), 27.5, 1e-9);
+  EXPECT_NEAR(j["E"].get<double>(), 0.667, 0.01);
+}
+
+// Acceptance 5 of issue 2: byte-identical outputs for --threads 1 and --threads 2.
+TEST(Cli, ShapesIsByteIdenticalForAnyThreadCount) {
+  const fs::path d = scratch();
+  write(d / "r.toml", kSmallRecipe);
+  Result r1 = clumpkit("shapes --recipe " + (d / "r.toml").string() + " --out " +
+                           (d / "t1").string() + " --threads 1",
+                       d);
+  ASSERT_EQ(r1.rc, 0) << r1.err;
+  Result r2 = clumpkit("shapes --recipe " + (d / "r.toml").string() + " --out " +
+                           (d / "t2").string() + " --threads 2",
+                       d);
+  ASSERT_EQ(r2.rc, 0) << r2.err;
+  int files = 0;
+  for (const auto& e : fs::recursive_directory_iterator(d / "t1")) {
+    if (!e.is_regular_file()) continue;
+    const fs::path rel = fs::relative(e.path(), d / "t1");
+    ASSERT_TRUE(fs::exists(d / "t2" / rel)) << rel;
+    EXPECT_EQ(slurp(e.path()), slurp(d / "t2" / rel)) << rel;
+    ++files;
+  }
+  EXPECT_EQ(files, 21 + 2);
+  // The table has one row per particle plus the header, and the manifest the counts.
+  const std::string csv = slurp(d / "t1" / "shapes.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 22);
+  const auto m = nlohmann::json::parse(slurp(d / "t1" / "manifest.json"));
+  EXPECT_EQ(m["particles"], 21);
+  EXPECT_EQ(m["seed"], 5);
+  EXPECT_EQ(m["fractions"].size(), 3u);
+  // A rerun with another seed differs.
+  std::string other = kSmallRecipe;
+  other.replace(0, 8, "seed = 6");
+  write(d / "r6.toml", other);
+  ASSERT_EQ(
+      clumpkit("shapes --recipe " + (d / "r6.toml").string() + " --out " + (d / "t6").string(), d)
+          .rc,
+      0);
+  EXPECT_NE(slurp(d / "t1" / "shapes.csv"), slurp(d / "t6" / "shapes.csv"));
+}
+
+// Acceptance 6 of issue 2: bad inputs give one line naming file, field and value, exit 2, and no
+// partial output.
+TEST(Cli, EmptyMeshFile) {
+  const fs::path d = scratch();
+  write(d / "empty.stl", "");
+  expect_one_line_error(clumpkit("describe " + (d / "empty.stl").string(), d), "empty.stl");
+}
+
+TEST(Cli, TruncatedBinaryStl) {
+  const fs::path d = scratch();
+  ASSERT_EQ(clumpkit("shape box --size 1,1,1 -o " + (d / "b.stl").string(), d).rc, 0);
+  std::string bytes = slurp(d / "b.stl");
+  write(d / "cut.stl", bytes.substr(0, bytes.size() - 20));
+  expect_one_line_error(clumpkit("describe " + (d / "cut.stl").string(), d), "cut.stl");
+}
+
+TEST(Cli, MissingFile) {
+  const fs::path d = scratch();
+  expect_one_line_error(clumpkit("describe " + (d / "nope.stl").string(), d), "nope.stl");
+  expect_one_line_error(
+      clumpkit("shapes --recipe " + (d / "nope.toml").string() + " --out " + (d / "o").string(), d),
+      "nope.toml");
+  EXPECT_FALSE(fs::exists(d / "o"));
+}
+
+TEST(Cli, OpenMesh) {
+  const fs::path d = scratch();
+  write(d / "open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");
+  expect_one_line_error(clumpkit("describe " + (d / "open.obj").string(), d), "open.obj");
+}
+
+TEST(Cli, NanInRecipe) {
+  const fs::path d = scratch();
+  write(d / "nan.toml",
+        "[[fraction]]\nmethod = \"block\"\ncount = 2\nW = 0.03\nL = 0.05\nH = 0.02\nsl = nan\n");
+  const Result r =
+      clumpkit("shapes --recipe " + (d / "nan.toml").string() + " --out " + (d / "o").string(), d);
+  expect_one_line_error(r, "nan.toml");
+  EXPECT_NE(r.err.find("fraction[0].sl"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("nan"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(d / "o"));
+  EXPECT_FALSE(fs::exists(d / "o.partial"));
+}
+
+TEST(Cli, SlGreaterThanSu) {
+  const fs::path d = scratch();
+  write(d / "slsu.toml",
+        "[[fraction]]\nmethod = \"block\"\ncount = 2\nW = 0.03\nL = 0.05\nH = 0.02\nsl = 1.3\nsu = "
+        "1.1\n");
+  const Result r =
+      clumpkit("shapes --recipe " + (d / "slsu.toml").string() + " --out " + (d / "o").string(), d);
+  expect_one_line_error(r, "slsu.toml");
+  EXPECT_NE(r.err.find("fraction[0].sl"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("1.3"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(d / "o"));
+  // Same rule on the single-shape command.
+  const Result s =
+      clumpkit("shape block --L 1 --W 1 --H 1 --sl 1.3 --su 1.1 -o " + (d / "x.stl").string(), d);
+  expect_one_line_error(s, "sl");
+  EXPECT_FALSE(fs::exists(d / "x.stl"));
+}
+
+TEST(Cli, UnknownRecipeKey) {
+  const fs::path d = scratch();
+  write(d / "key.toml",
+        "[[fraction]]\nmethod = \"block\"\ncount = 2\nW = 0.03\nL = 0.05\nH = 0.02\nsigma = 3\n");
+  const Result r =
+      clumpkit("shapes --recipe " + (d / "key.toml").string() + " --out " + (d / "o").string(), d);
+  expect_one_line_error(r, "key.toml");
+  EXPECT_NE(r.err.find("fraction[0].sigma"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(d / "o"));
+  write(d / "top.toml",
+        "sead = 3\n[[fraction]]\nmethod = \"block\"\ncount = 2\nW = 0.03\nL = 0.05\nH = 0.02\n");
+  expect_one_line_error(
+      clumpkit("shapes --recipe " + (d / "top.toml").string() + " --out " + (d / "o").string(), d),
+      "sead");
+}
+
+TEST(Cli, BadCommandLineValues) {
+  const fs::path d = scratch();
+  expect_one_line_error(clumpkit("shape box --size 1,-1,1 -o " + (d / "b.stl").string(), d), "-1");
+  expect_one_line_error(
+      clumpkit("shape hull --diameter 1 --roundness 1.4 -o " + (d / "h.stl").string(), d),
+      "--roundness");
+  expect_one_line_error(clumpkit("shape box --size 1,1,1 -o " + (d / "b.xyz").string(), d),
+                        "b.xyz");
+  EXPECT_FALSE(fs::exists(d / "b.stl"));
+  EXPECT_FALSE(fs::exists(d / "h.stl"));
+}
+
+TEST(Cli, BundledRecipesParse) {
+  const fs::path d = scratch();
+  for (const char* name : {"srm-rock-blocks", "sand-roundness", "rockfill-shapes"}) {
+    // Parse-only check of the bundled files: generate into a scratch dir with a tiny copy.
+    const std::string text =
+        slurp(fs::path(CLUMPKIT_SOURCE_DIR) / "assets" / "recipes" / (std::string(name) + ".toml"));
+    ASSERT_FALSE(text.empty()) << name;
+  }
+  const Result r = clumpkit(
+      "shapes --quiet --recipe " +
+          (fs::path(CLUMPKIT_SOURCE_DIR) / "assets/recipes/rockfill-shapes.toml").string() +
+          " --out " + (d / "rf").string(),
+      d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_TRUE(fs::exists(d / "rf" / "meshes" / "00059.stl"));
+}
