@@ -12,6 +12,7 @@ namespace clumpkit::cli {
 void register_shape(CLI::App& app);
 void register_shapes(CLI::App& app);
 void register_describe(CLI::App& app);
+void register_fill(CLI::App& app);
 
 /// Thread-count control shared by parallel subcommands: 0 = all cores.
 void set_threads(int threads);

@@ -292,3 +292,44 @@ TEST(Cli, BundledRecipesParse) {
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_TRUE(fs::exists(d / "rf" / "meshes" / "00059.stl"));
 }
+
+// Issue 3: `clumpkit fill` output, JSON report and bad input.
+TEST(Cli, FillWritesClumpAndReport) {
+  const fs::path d = scratch();
+  ASSERT_EQ(
+      clumpkit("shape block --L 75.1 --W 58.0 --H 49.8 --seed 1 -o " + (d / "b.stl").string(), d)
+          .rc,
+      0);
+  const Result r = clumpkit(
+      "fill " + (d / "b.stl").string() + " -o " + (d / "c.csv").string() + " --spheres 47 --json",
+      d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* k :
+       {"spheres", "mesh_volume", "clump_volume", "covered_fraction", "overshoot_fraction",
+        "surface_mean_distance", "surface_max_distance", "seconds"})
+    EXPECT_TRUE(j.contains(k)) << k;
+  EXPECT_EQ(j["spheres"], 47);
+  EXPECT_GT(j["covered_fraction"].get<double>(), 0.85);
+  EXPECT_LT(j["overshoot_fraction"].get<double>(), 0.01);
+  const std::string csv = slurp(d / "c.csv");
+  EXPECT_NE(csv.find("x,y,z,r\n"), std::string::npos);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 47 + 1 + 2);  // header, 2 comment lines
+}
+
+TEST(Cli, FillBadInput) {
+  const fs::path d = scratch();
+  ASSERT_EQ(clumpkit("shape box --size 1,1,1 -o " + (d / "b.stl").string(), d).rc, 0);
+  const std::string out = " -o " + (d / "c.csv").string();
+  expect_one_line_error(clumpkit("fill " + (d / "b.stl").string() + out + " --spheres 0", d),
+                        "--spheres");
+  expect_one_line_error(clumpkit("fill " + (d / "b.stl").string() + out + " --min-radius -1", d),
+                        "--min-radius");
+  expect_one_line_error(clumpkit("fill " + (d / "b.stl").string() + out + " --min-radius 5", d),
+                        "min-radius");
+  write(d / "open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");
+  expect_one_line_error(clumpkit("fill " + (d / "open.obj").string() + out, d), "open.obj");
+  write(d / "empty.stl", "");
+  expect_one_line_error(clumpkit("fill " + (d / "empty.stl").string() + out, d), "empty.stl");
+  EXPECT_FALSE(fs::exists(d / "c.csv"));
+}
