@@ -167,8 +167,43 @@ ShapeRecipe parse_shape_recipe(const std::string& text, const std::string& path)
         r.fractions.push_back(p.fraction(*f.as_table(), "fraction[" + std::to_string(i++) + "]"));
         any = true;
       }
+    } else if (k == "fill") {
+      const auto* t = val.as_table();
+      if (!t) p.fail(k, "expected a [fill] table");
+      r.has_fill = true;
+      for (const auto& [fk, fv] : *t) {
+        const std::string name(fk.str());
+        const std::string field = "fill." + name;
+        if (name == "spheres") {
+          const auto* i = fv.as_integer();
+          if (!i || i->get() < 1) p.fail(field, "expected an integer >= 1, got " + show(fv));
+          r.fill.spheres = static_cast<int>(i->get());
+        } else if (name == "voxels") {
+          const auto* i = fv.as_integer();
+          if (!i || i->get() < 4 || i->get() > 2000)
+            p.fail(field, "expected an integer in [4, 2000], got " + show(fv));
+          r.fill.field.voxels = static_cast<int>(i->get());
+        } else if (name == "coverage") {
+          r.fill.coverage = p.number(fv, field);
+        } else if (name == "min_radius") {
+          r.fill.min_radius = p.number(fv, field);
+        } else if (name == "relative_tolerance") {
+          r.fill.tolerance_relative = p.number(fv, field);
+        } else if (name == "tolerance") {
+          r.fill.tolerance = p.number(fv, field);
+        } else {
+          p.fail(field,
+                 "unknown key (known: spheres, coverage, min_radius, voxels, relative_tolerance, "
+                 "tolerance)");
+        }
+      }
+      try {
+        validate(r.fill);
+      } catch (const InvalidInput& e) {
+        p.fail("fill", e.what());
+      }
     } else {
-      p.fail(k, "unknown key (known: seed, name, description, fraction)");
+      p.fail(k, "unknown key (known: seed, name, description, fraction, fill)");
     }
   }
   if (!any) p.fail("fraction", "the recipe lists no [[fraction]]");

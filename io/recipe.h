@@ -1,6 +1,7 @@
 // Reading shape recipes (TOML): seed and fractions of particles to generate.
 #pragma once
 
+#include "geom/fill.h"
 #include "geom/shapes/shape_spec.h"
 
 #include <cstdint>
@@ -16,6 +17,8 @@ struct ShapeRecipe {
   std::string description;
   std::uint64_t seed = 1;
   std::vector<FractionSpec> fractions;
+  bool has_fill = false;  ///< a [fill] table was given (used by `clumpkit library`)
+  FillOptions fill;
   std::string text;  ///< the recipe file as read, stored in manifests
 };
 
@@ -32,6 +35,9 @@ struct ShapeRecipe {
 ///   nd = 2                                                # number: a constant
 ///   # also { normal = { mu, sigma, min, max } } and { integers = [a, b] };
 ///   # hull fractions accept roundness = [min, max].
+///   [fill]                            # optional, for `clumpkit library`
+///   spheres = 47; coverage = 0.9; min_radius = 0.002; voxels = 40
+///   relative_tolerance = 0.03; tolerance = 0.0
 ShapeRecipe read_shape_recipe(const std::string& path);
 
 /// Same, from text already in memory; `path` is only used in messages.

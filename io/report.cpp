@@ -76,4 +76,17 @@ std::string format_number(double v) {
   return buf;
 }
 
+std::string csv_escape(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string id_name(std::size_t i) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%05zu", i);
+  return buf;
+}
+
 }  // namespace clumpkit

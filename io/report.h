@@ -23,4 +23,10 @@ std::vector<double> descriptor_csv_values(const Descriptors& d);
 /// outputs are exact and byte-identical across runs.
 std::string format_number(double v);
 
+/// CSV cell: quoted (with doubled quotes) when it holds a comma, quote or newline.
+std::string csv_escape(const std::string& s);
+
+/// Five-digit zero-padded particle id ("00042"), the file stem of per-particle outputs.
+std::string id_name(std::size_t i);
+
 }  // namespace clumpkit

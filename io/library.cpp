@@ -1,0 +1,235 @@
+#include "io/library.h"
+
+#include "geom/descriptors.h"
+#include "geom/errors.h"
+#include "geom/fidelity.h"
+#include "geom/fill.h"
+#include "io/atomic_file.h"
+#include "io/clump_io.h"
+#include "io/mesh_io.h"
+#include "io/report.h"
+#include "io/views.h"
+
+#include <tbb/parallel_for.h>
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+
+#ifndef CLUMPKIT_VERSION
+#define CLUMPKIT_VERSION "0.1.0"
+#endif
+
+namespace fs = std::filesystem;
+
+namespace clumpkit {
+
+namespace {
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+const std::vector<std::string>& fidelity_columns() {
+  static const std::vector<std::string> c = {"spheres",
+                                             "clump_volume",
+                                             "covered_fraction",
+                                             "overshoot_fraction",
+                                             "surface_mean_distance",
+                                             "surface_max_distance",
+                                             "centroid_offset",
+                                             "inertia_error",
+                                             "overshoot_depth_max"};
+  return c;
+}
+
+// One particle, start to finish; returns its record (also written as NNNNN.json).
+nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, int fraction,
+                                     const fs::path& dir, const LibraryOptions& options) {
+  Rng rng = Rng::stream(recipe.seed, i);
+  const FractionSpec& spec = recipe.fractions[fraction];
+  const GeneratedShape shape = generate_shape(spec, rng);
+  const Descriptors desc = describe(shape.mesh);
+  const FillResult filled = fill(shape.mesh, recipe.fill);
+  if (filled.clump.spheres.empty())
+    throw InvalidInput("no sphere fits (fill.min_radius " + format_number(recipe.fill.min_radius) +
+                       ")");
+  const Fidelity fid = assess_fidelity(shape.mesh, filled.clump, filled.voxel / 2);
+
+  const std::string stem = id_name(i);
+  write_mesh((dir / (stem + ".stl")).string(), shape.mesh);
+  write_clump((dir / (stem + ".csv")).string(), filled.clump,
+              "clumpkit library particle " + stem + " (" + spec.name + ")");
+  if (options.png) write_views_png((dir / (stem + ".png")).string(), shape.mesh, filled.clump);
+
+  nlohmann::ordered_json rec;
+  rec["id"] = i;
+  rec["fraction"] = spec.name;
+  rec["method"] = spec.method;
+  rec["attempts"] = shape.attempts;
+  auto& params = rec["parameters"] = nlohmann::ordered_json::object();
+  for (const auto& [name, v] : shape.sampled) params[name] = v;
+  auto& d = rec["descriptors"] = nlohmann::ordered_json::object();
+  const auto names = descriptor_csv_columns();
+  const auto values = descriptor_csv_values(desc);
+  for (std::size_t k = 0; k < names.size(); ++k) d[names[k]] = values[k];
+  const double fv[] = {double(fid.spheres),    fid.clump_volume,          fid.covered_fraction,
+                       fid.overshoot_fraction, fid.surface_mean_distance, fid.surface_max_distance,
+                       fid.centroid_offset,    fid.inertia_error,         fid.overshoot_depth_max};
+  auto& f = rec["fidelity"] = nlohmann::ordered_json::object();
+  for (std::size_t k = 0; k < fidelity_columns().size(); ++k) f[fidelity_columns()[k]] = fv[k];
+  f["clump_volume_method"] = fid.clump_volume_method;
+  f["voxel"] = filled.voxel;
+  f["stopped_by"] = filled.stopped_by;
+  write_file_atomically((dir / (stem + ".json")).string(),
+                        [&](std::ostream& o) { o << rec.dump(1) << "\n"; });
+  return rec;
+}
+
+}  // namespace
+
+LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
+                          const LibraryOptions& options, const Progress& progress) {
+  const fs::path out(out_dir), parts = out / "particles";
+  const fs::path stamp = out / "recipe.toml";
+  if (fs::exists(out) && !fs::is_directory(out))
+    throw InvalidInput(out_dir + ": --out exists and is not a directory");
+  if (fs::exists(out) && !fs::is_empty(out)) {
+    if (!fs::exists(stamp))
+      throw InvalidInput(out_dir +
+                         ": output directory exists and is not a clumpkit library; remove it or "
+                         "choose another --out");
+    if (slurp(stamp) != recipe.text)
+      throw InvalidInput(
+          out_dir +
+          ": holds a library made from a different recipe; remove it or choose another --out");
+  }
+  std::error_code ec;
+  fs::create_directories(parts, ec);
+  if (ec) throw IoError(out_dir + ": cannot create directory: " + ec.message());
+  write_file_atomically(stamp.string(), [&](std::ostream& o) { o << recipe.text; });
+
+  std::vector<int> fraction_of;
+  for (std::size_t f = 0; f < recipe.fractions.size(); ++f)
+    for (int k = 0; k < recipe.fractions[f].count; ++k) fraction_of.push_back(static_cast<int>(f));
+  const std::size_t total = fraction_of.size();
+
+  std::vector<nlohmann::ordered_json> records(total);
+  std::vector<char> todo(total, 1);
+  LibraryResult result{total, 0, out_dir};
+  for (std::size_t i = 0; i < total; ++i) {
+    const fs::path rec = parts / (id_name(i) + ".json");
+    if (!fs::exists(rec)) continue;
+    try {
+      records[i] = nlohmann::ordered_json::parse(slurp(rec));
+      todo[i] = 0;
+      ++result.resumed;
+    } catch (const nlohmann::json::exception&) {
+      // A damaged record (cannot happen with atomic writes, but a user may edit files): redo it.
+    }
+  }
+
+  std::atomic<std::size_t> done{result.resumed};
+  std::mutex progress_mutex;
+  std::exception_ptr error;
+  std::atomic<bool> failed{false};
+  if (progress) progress(done, total);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, total, 1),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                        if (!todo[i] || failed) continue;
+                        try {
+                          records[i] = make_particle(recipe, i, fraction_of[i], parts, options);
+                        } catch (const std::exception& e) {
+                          if (!failed.exchange(true)) {
+                            try {
+                              throw InvalidInput(recipe.path + ": fraction '" +
+                                                 recipe.fractions[fraction_of[i]].name +
+                                                 "' particle " + id_name(i) + ": " + e.what());
+                            } catch (...) {
+                              error = std::current_exception();
+                            }
+                          }
+                          return;
+                        }
+                        const std::size_t n = ++done;
+                        if (progress && progress_mutex.try_lock()) {
+                          progress(n, total);
+                          progress_mutex.unlock();
+                        }
+                      }
+                    });
+  if (error) std::rethrow_exception(error);
+
+  // Parameter columns: union over particles, first-appearance order.
+  std::vector<std::string> params;
+  for (const auto& rec : records)
+    for (const auto& [k, v] : rec["parameters"].items())
+      if (std::find(params.begin(), params.end(), k) == params.end()) params.push_back(k);
+  write_file_atomically((out / "library.csv").string(), [&](std::ostream& o) {
+    o << "id,fraction,method,mesh,clump,attempts";
+    for (const auto& p : params) o << ",p_" << p;
+    for (const auto& c : descriptor_csv_columns()) o << "," << c;
+    for (const auto& c : fidelity_columns()) o << "," << c;
+    o << "\n";
+    for (std::size_t i = 0; i < total; ++i) {
+      const auto& rec = records[i];
+      o << i << "," << csv_escape(rec["fraction"].get<std::string>()) << ","
+        << rec["method"].get<std::string>() << ",particles/" << id_name(i) << ".stl,particles/"
+        << id_name(i) << ".csv," << rec["attempts"].get<int>();
+      for (const auto& p : params) {
+        o << ",";
+        if (rec["parameters"].contains(p)) o << format_number(rec["parameters"][p].get<double>());
+      }
+      for (const auto& c : descriptor_csv_columns())
+        o << "," << format_number(rec["descriptors"][c].get<double>());
+      for (const auto& c : fidelity_columns())
+        o << "," << format_number(rec["fidelity"][c].get<double>());
+      o << "\n";
+    }
+  });
+
+  nlohmann::ordered_json m;
+  m["tool"] = "clumpkit";
+  m["version"] = CLUMPKIT_VERSION;
+  m["command"] = "library";
+  m["recipe_path"] = recipe.path;
+  m["recipe"] = recipe.text;
+  m["seed"] = recipe.seed;
+  m["particles"] = total;
+  m["units"] = "recipe units (m); clumps are x,y,z,r in the mesh frame";
+  auto& fill = m["fill"];
+  fill["spheres"] = recipe.fill.spheres;
+  fill["coverage"] = recipe.fill.coverage;
+  fill["min_radius"] = recipe.fill.min_radius;
+  fill["voxels"] = recipe.fill.field.voxels;
+  fill["relative_tolerance"] = recipe.fill.tolerance_relative;
+  double cov = 0, over = 0, spheres = 0;
+  for (const auto& rec : records) {
+    cov += rec["fidelity"]["covered_fraction"].get<double>();
+    over += rec["fidelity"]["overshoot_fraction"].get<double>();
+    spheres += rec["fidelity"]["spheres"].get<double>();
+  }
+  if (total > 0) {
+    m["mean_covered_fraction"] = cov / total;
+    m["mean_overshoot_fraction"] = over / total;
+    m["mean_spheres"] = spheres / total;
+  }
+  auto& fr = m["fractions"] = nlohmann::ordered_json::array();
+  std::size_t first = 0;
+  for (const auto& f : recipe.fractions) {
+    fr.push_back({{"name", f.name}, {"method", f.method}, {"count", f.count}, {"first_id", first}});
+    first += f.count;
+  }
+  write_file_atomically((out / "library.json").string(),
+                        [&](std::ostream& o) { o << m.dump(2) << "\n"; });
+  return result;
+}
+
+}  // namespace clumpkit
