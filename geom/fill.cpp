@@ -224,6 +224,34 @@ FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions&
     r.coverage_curve.push_back(1.0 - double(grid.uncovered()) / double(grid.interior()));
   };
   accept(first);
+  if (options.strategy == FillOptions::Strategy::Largest) {
+    std::vector<int> order;
+    for (int c = 0; c < static_cast<int>(cand.size()); ++c)
+      if (c != first) order.push_back(c);
+    for (int c : order) exact_radius(c);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return cand[a].radius > cand[b].radius; });
+    r.stopped_by = "min-radius";
+    for (int c : order) {
+      if (static_cast<int>(r.clump.spheres.size()) >= budget) {
+        r.stopped_by = "spheres";
+        break;
+      }
+      if (options.coverage > 0 && r.coverage_curve.back() >= options.coverage) {
+        r.stopped_by = "coverage";
+        break;
+      }
+      if (cand[c].radius < options.min_radius) break;
+      bool inside = false;
+      for (const auto& s : r.clump.spheres) inside |= (cand[c].center - s.center).norm() < s.radius;
+      if (!inside) {
+        grid.visit(cand[c].center, cand[c].radius, true);
+        r.clump.spheres.push_back(Sphere{cand[c].center, cand[c].radius});
+        r.coverage_curve.push_back(1.0 - double(grid.uncovered()) / double(grid.interior()));
+      }
+    }
+    return r;
+  }
   int round = 0;
   while (true) {
     if (static_cast<int>(r.clump.spheres.size()) >= budget) {

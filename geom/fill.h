@@ -31,6 +31,10 @@ struct FillOptions {
   /// h/8; radius = exact distance + tolerance) keeps the move that covers the most still-uncovered
   /// voxels. Off-lattice centres cover more per sphere.
   bool refine = true;
+  /// Coverage: the greedy above (default). Largest: the classic biggest-sphere-first rule (next
+  /// sphere = largest candidate whose centre no placed sphere covers), kept as a baseline.
+  enum class Strategy { Coverage, Largest };
+  Strategy strategy = Strategy::Coverage;
 };
 
 struct FillResult {
