@@ -14,6 +14,7 @@ void register_shapes(CLI::App& app);
 void register_describe(CLI::App& app);
 void register_fill(CLI::App& app);
 void register_library(CLI::App& app);
+void register_volume(CLI::App& app);
 
 /// Thread-count control shared by parallel subcommands: 0 = all cores.
 void set_threads(int threads);

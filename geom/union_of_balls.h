@@ -1,0 +1,35 @@
+// Exact volume, area, centroid and inertia of a union of balls (a clump) via the power diagram.
+#pragma once
+
+#include "geom/sphere.h"
+
+namespace clumpkit {
+
+/// Mass properties (unit density) and boundary area of a union of balls.
+struct UnionProperties {
+  MassProperties mass;  ///< volume, centroid, inertia about the centroid (units of the input)
+  double area = 0.0;    ///< area of the boundary of the union (units²)
+  /// Spheres that add nothing to the union: exact duplicates (all copies but one, and smaller
+  /// balls on the same centre), spheres that are not vertices of the regular triangulation, and
+  /// spheres whose power cell does not reach into their ball (nested or internally tangent
+  /// spheres; a piece below 1e-13 of its ball's volume counts as nothing).
+  int hidden = 0;
+};
+
+/// Exact (closed form, double precision) volume, boundary area, centroid and inertia tensor of
+/// the union of the clump's balls, at unit density.
+///
+/// Method (Edelsbrunner 1995, "The union of balls and its dual shape"): the power diagram of the
+/// balls (weight r²; CGAL Regular_triangulation_3) splits the union into the disjoint convex
+/// pieces B_i ∩ PowerCell_i. Each piece is integrated by the divergence theorem from its ball
+/// centre: a planar face at distance h contributes the cone (h/3, h/4, h/5)·(area moments of the
+/// face ∩ disk) and the spherical part contributes (r³/3, r⁴/4, r⁵/5)·(solid-angle moments). The
+/// solid angle of a triangle is Van Oosterom–Strackee's formula; its first and second moments are
+/// sums over the great-circle edges of the spherical triangle (Stokes / the identity
+/// Δ_S(ωωᵀ) = 2I − 6ωωᵀ on the unit sphere). Lower-dimensional input (collinear or coplanar
+/// centres, fewer than four balls), duplicates, hidden balls and tangencies are handled exactly.
+///
+/// Throws InvalidInput for an empty clump or a non-finite centre or non-positive radius.
+UnionProperties union_properties(const Clump& clump);
+
+}  // namespace clumpkit
