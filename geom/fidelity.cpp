@@ -2,6 +2,7 @@
 
 #include "geom/errors.h"
 #include "geom/mesh_distance.h"
+#include "geom/union_of_balls.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -45,15 +46,6 @@ double intersection_length(const std::vector<Interval>& a, const std::vector<Int
   return s;
 }
 
-// Moments ∫1, ∫x, ∫x² along x over the intervals.
-void add_moments(const std::vector<Interval>& v, double& m0, double& m1, double& m2) {
-  for (const auto& [a, b] : v) {
-    m0 += b - a;
-    m1 += 0.5 * (b * b - a * a);
-    m2 += (b * b * b - a * a * a) / 3.0;
-  }
-}
-
 }  // namespace
 
 Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing) {
@@ -95,8 +87,7 @@ Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing) {
            sp.center.z() + sp.radius, ball_rows, s);
   }
 
-  double inside = 0.0, ball = 0.0, both = 0.0;
-  double m0 = 0, mx = 0, mxx = 0, my = 0, mz = 0, myy = 0, mzz = 0, mxy = 0, mxz = 0, myz = 0;
+  double ball = 0.0, both = 0.0;
   std::vector<double> crossings;
   std::vector<Interval> chords, solid;
   for (int k = 0; k < nz; ++k)
@@ -128,41 +119,21 @@ Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing) {
           chords.emplace_back(sp.center.x() - std::sqrt(w2), sp.center.x() + std::sqrt(w2));
       }
       const auto uni = merged(chords);
-      inside += length(solid);
       const double lb = length(uni);
       ball += lb;
       both += intersection_length(solid, uni);
-      double a0 = 0, a1 = 0, a2 = 0;
-      add_moments(uni, a0, a1, a2);
-      m0 += a0;
-      mx += a1;
-      mxx += a2;
-      my += y * a0;
-      mz += z * a0;
-      myy += y * y * a0;
-      mzz += z * z * a0;
-      mxy += y * a1;
-      mxz += z * a1;
-      myz += y * z * a0;
     }
   const double cell = spacing * spacing;
-  r.clump_volume = ball * cell;
-  r.covered_fraction = both * cell / r.mesh_volume;
-  r.overshoot_fraction = (ball - both) * cell / r.mesh_volume;
-  (void)inside;
-
-  // Clump mass properties from the same rows (midpoint rule in y and z; the s²/12 term is the
-  // second moment of each row's square cross-section).
-  const Vec3 cc(mx / m0, my / m0, mz / m0);
-  Mat3 cov;
-  cov << mxx / m0, mxy / m0, mxz / m0, mxy / m0, myy / m0 + spacing * spacing / 12, myz / m0,
-      mxz / m0, myz / m0, mzz / m0 + spacing * spacing / 12;
-  cov -= cc * cc.transpose();
-  cov *= r.clump_volume;
-  const Mat3 clump_inertia = cov.trace() * Mat3::Identity() - cov;
-  r.centroid_offset = (cc - solid_centroid(mesh)).norm();
+  // The clump's own volume, centroid and inertia are exact (power diagram); the rows only
+  // estimate the part outside the mesh, which is small, so the covered fraction inherits little
+  // of their error.
+  const UnionProperties u = union_properties(clump);
+  r.clump_volume = u.mass.volume;
+  r.overshoot_fraction = std::max(0.0, (ball - both) * cell) / r.mesh_volume;
+  r.covered_fraction = (r.clump_volume - (ball - both) * cell) / r.mesh_volume;
+  r.centroid_offset = (u.mass.centroid - solid_centroid(mesh)).norm();
   const Vec3 lm = Eigen::SelfAdjointEigenSolver<Mat3>(solid_inertia(mesh)).eigenvalues();
-  const Vec3 lc = Eigen::SelfAdjointEigenSolver<Mat3>(clump_inertia).eigenvalues();
+  const Vec3 lc = Eigen::SelfAdjointEigenSolver<Mat3>(u.mass.inertia).eigenvalues();
   for (int q = 0; q < 3; ++q)
     r.inertia_error = std::max(r.inertia_error, std::abs(lc[q] - lm[q]) / lm[q]);
 

@@ -11,8 +11,8 @@ namespace clumpkit {
 struct Fidelity {
   int spheres = 0;
   double mesh_volume = 0.0;   ///< exact polyhedron volume
-  double clump_volume = 0.0;  ///< union volume (see clump_volume_method)
-  const char* clump_volume_method = "row-integration";
+  double clump_volume = 0.0;  ///< exact union volume (union_properties)
+  const char* clump_volume_method = "exact (power diagram)";
   double covered_fraction = 0.0;    ///< V(clump ∩ mesh) / V(mesh)
   double overshoot_fraction = 0.0;  ///< V(clump \ mesh) / V(mesh)
   double surface_mean_distance =
@@ -24,9 +24,10 @@ struct Fidelity {
       0.0;  ///< max over spheres of radius − centre-to-surface distance (≥ 0)
 };
 
-/// Volumes by exact 1-D integration along x of every row of a (y, z) lattice with spacing
+/// Clump volume, centroid and inertia are exact (power diagram). The part of the clump outside
+/// the mesh comes from exact 1-D integration along x of every row of a (y, z) lattice with spacing
 /// `spacing` (mesh intervals from ray crossings, clump intervals from sphere chords), so only the
-/// 2-D midpoint rule in (y, z) approximates. Surface distances on a lattice of points on every
+/// 2-D midpoint rule in (y, z) approximates it. Surface distances on a lattice of points on every
 /// triangle with the same spacing. spacing ≤ 0 picks 1/200 of the mesh's largest extent.
 Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing = 0.0);
 

@@ -1,5 +1,6 @@
 #include "io/library.h"
 
+#include "geom/clump_template.h"
 #include "geom/descriptors.h"
 #include "geom/errors.h"
 #include "geom/fidelity.h"
@@ -62,10 +63,25 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
                        ")");
   const Fidelity fid = assess_fidelity(shape.mesh, filled.clump, filled.voxel / 2);
 
+  const ClumpTemplate tpl = make_clump_template(filled.clump, desc.volume);
+
   const std::string stem = id_name(i);
   write_mesh((dir / (stem + ".stl")).string(), shape.mesh);
   write_clump((dir / (stem + ".csv")).string(), filled.clump,
               "clumpkit library particle " + stem + " (" + spec.name + ")");
+  write_clump((dir / (stem + ".template.csv")).string(), Clump{tpl.spheres},
+              "clumpkit library particle " + stem +
+                  ": spheres in the principal frame (centroid at origin)\n"
+                  "pose to the mesh frame: x = q x' + p, q (w,x,y,z) = " +
+                  format_number(tpl.orientation.w()) + "," + format_number(tpl.orientation.x()) +
+                  "," + format_number(tpl.orientation.y()) + "," +
+                  format_number(tpl.orientation.z()) + ", p = " + format_number(tpl.position.x()) +
+                  "," + format_number(tpl.position.y()) + "," + format_number(tpl.position.z()) +
+                  "\nunit-density principal moments " + format_number(tpl.principal_moments[0]) +
+                  "," + format_number(tpl.principal_moments[1]) + "," +
+                  format_number(tpl.principal_moments[2]) + "; volume " +
+                  format_number(tpl.mass.volume) + "; density factor V_mesh/V_clump " +
+                  format_number(tpl.density_factor));
   if (options.png) write_views_png((dir / (stem + ".png")).string(), shape.mesh, filled.clump);
 
   nlohmann::ordered_json rec;
@@ -85,6 +101,15 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
   auto& f = rec["fidelity"] = nlohmann::ordered_json::object();
   for (std::size_t k = 0; k < fidelity_columns().size(); ++k) f[fidelity_columns()[k]] = fv[k];
   f["clump_volume_method"] = fid.clump_volume_method;
+  auto& t = rec["template"] = nlohmann::ordered_json::object();
+  t["volume"] = tpl.mass.volume;
+  t["centroid"] = {tpl.position.x(), tpl.position.y(), tpl.position.z()};
+  t["principal_moments"] = {tpl.principal_moments[0], tpl.principal_moments[1],
+                            tpl.principal_moments[2]};
+  t["orientation_wxyz"] = {tpl.orientation.w(), tpl.orientation.x(), tpl.orientation.y(),
+                           tpl.orientation.z()};
+  t["density_factor"] = tpl.density_factor;
+  t["spheres_file"] = "particles/" + stem + ".template.csv";
   f["voxel"] = filled.voxel;
   f["stopped_by"] = filled.stopped_by;
   write_file_atomically((dir / (stem + ".json")).string(),
@@ -177,7 +202,7 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
     for (const auto& p : params) o << ",p_" << p;
     for (const auto& c : descriptor_csv_columns()) o << "," << c;
     for (const auto& c : fidelity_columns()) o << "," << c;
-    o << "\n";
+    o << ",density_factor,I1,I2,I3,qw,qx,qy,qz,cx,cy,cz\n";
     for (std::size_t i = 0; i < total; ++i) {
       const auto& rec = records[i];
       o << i << "," << csv_escape(rec["fraction"].get<std::string>()) << ","
@@ -191,6 +216,10 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
         o << "," << format_number(rec["descriptors"][c].get<double>());
       for (const auto& c : fidelity_columns())
         o << "," << format_number(rec["fidelity"][c].get<double>());
+      const auto& t = rec["template"];
+      o << "," << format_number(t["density_factor"].get<double>());
+      for (const char* k : {"principal_moments", "orientation_wxyz", "centroid"})
+        for (const auto& v : t[k]) o << "," << format_number(v.get<double>());
       o << "\n";
     }
   });
