@@ -426,3 +426,51 @@ TEST(Cli, LibraryBadInput) {
       clumpkit("library --recipe " + (d / "r.toml").string() + " --out " + (d / "x").string(), d),
       "different recipe");
 }
+
+// Issue 4: `clumpkit volume`, every method on oracle C2, and bad or degenerate input.
+TEST(Cli, VolumeAllMethodsOnOracleC2) {
+  const fs::path d = scratch();
+  write(d / "c2.csv", "# two unit balls 1 apart\nx,y,z,r\n0,0,0,1\n0,0,1,1\n");
+  const Result r = clumpkit("volume " + (d / "c2.csv").string() + " --method all --json", d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const double v = 9 * M_PI / 4;
+  for (const char* m : {"exact", "inclusion_exclusion", "analytic_slice", "pixel_slice", "voxel"}) {
+    ASSERT_TRUE(j.contains(m)) << m;
+    EXPECT_TRUE(j[m].contains("seconds")) << m;
+  }
+  EXPECT_NEAR(j["exact"]["volume"].get<double>(), v, 1e-12 * v);
+  EXPECT_NEAR(j["exact"]["centroid"][2].get<double>(), 0.5, 1e-12);
+  EXPECT_NEAR(j["exact"]["inertia"][2][2].get<double>(), 3.004147974995, 1e-10 * 3.0);
+  EXPECT_NEAR(j["exact"]["inertia"][0][0].get<double>(), 5.213080309551, 1e-10 * 5.2);
+  EXPECT_NEAR(j["inclusion_exclusion"]["volume"].get<double>(), v, 1e-9 * v);
+  EXPECT_NEAR(j["analytic_slice"]["volume"].get<double>(), v, 1e-9 * v);
+  EXPECT_NEAR(j["pixel_slice"]["volume"].get<double>(), v, 0.05 * v);  // touch rule: biased high
+  EXPECT_GT(j["pixel_slice"]["volume"].get<double>(), v);
+  EXPECT_NEAR(j["voxel"]["volume"].get<double>(), v, 0.01 * v);
+}
+
+TEST(Cli, VolumeBadAndDegenerateInput) {
+  const fs::path d = scratch();
+  write(d / "zero.csv", "x,y,z,r\n0,0,0,1\n1,0,0,0\n");
+  expect_one_line_error(clumpkit("volume " + (d / "zero.csv").string(), d), "field r");
+  write(d / "neg.csv", "x,y,z,r\n0,0,0,-1\n");
+  expect_one_line_error(clumpkit("volume " + (d / "neg.csv").string(), d), "-1");
+  write(d / "nan.csv", "x,y,z,r\n0,nan,0,1\n");
+  expect_one_line_error(clumpkit("volume " + (d / "nan.csv").string(), d), "field y");
+  write(d / "empty.csv", "");
+  expect_one_line_error(clumpkit("volume " + (d / "empty.csv").string(), d), "empty.csv");
+  expect_one_line_error(clumpkit("volume " + (d / "empty.csv").string() + " --method magic", d),
+                        "--method");
+  // 1e6 identical spheres: the answer of one sphere, no crash.
+  {
+    std::ofstream o(d / "same.csv");
+    o << "x,y,z,r\n";
+    for (int i = 0; i < 1000000; ++i) o << "1,2,3,1\n";
+  }
+  const Result r = clumpkit("volume " + (d / "same.csv").string() + " --json", d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["exact"]["volume"].get<double>(), 4 * M_PI / 3, 1e-12);
+  EXPECT_EQ(j["exact"]["hidden_spheres"], 999999);
+}
