@@ -4,7 +4,6 @@
 #include "geom/slicing.h"
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -90,19 +89,10 @@ PixelSliceResult pixel_slice_volume(const Clump& clump, const PixelSliceOptions&
     res.pixel_area.push_back(area);
     res.exact_area.push_back(union_of_disks(disks).area);
     res.volume += area * h;
-    if (!opt.png_dir.empty()) {
-      char name[32];
-      std::snprintf(name, sizeof name, "/slice_%04d.png", k);
+    if (opt.on_slice) {
       cv::Mat out;
       cv::flip(image, out, 0);  // image rows go downwards; put +y up
-      const std::string path = opt.png_dir + name;
-      bool ok = false;
-      try {
-        ok = cv::imwrite(path, 255 - out);  // filled region black on white, as in seed 000 Fig. 7
-      } catch (const cv::Exception&) {
-        ok = false;
-      }
-      if (!ok) throw IoError("pixel slicing: cannot write slice image " + path);
+      opt.on_slice(k, out.cols, out.rows, out.ptr<std::uint8_t>(0));
     }
   }
   return res;

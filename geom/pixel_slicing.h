@@ -3,6 +3,8 @@
 
 #include "geom/sphere.h"
 
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,7 +21,9 @@ struct PixelSliceOptions {
   int slices_across_smallest = 100;  ///< slices across the smallest ball's diameter (>= 1)
   double pixel = 0;                  ///< pixel size, clump units; 0 = the slice spacing
   PixelRule rule = PixelRule::Touch;
-  std::string png_dir;  ///< when non-empty, each slice is written there as slice_NNNN.png
+  /// Called for each slice with its 8-bit image (255 = filled, rows from +y down to −y, so it
+  /// reads like a map); the CLI writes PNGs from it. geom does no file I/O.
+  std::function<void(int slice, int width, int height, const std::uint8_t* pixels)> on_slice;
 };
 
 /// Outcome of pixel_slice_volume; per-slice vectors are in slice order (increasing z).
@@ -44,8 +48,7 @@ struct PixelSliceResult {
 ///   Centre: the columns whose centre x satisfies |x − cx| < w, w = √(r² − (y_c − cy)²), y_c the
 ///           row's centre, if |y_c − cy| < r.
 /// The volume is Σ_k (filled pixels_k · p²) · h (seed 000 §3.2). Units: those of the clump.
-/// Throws InvalidInput for bad spheres or options, or when one slice would exceed 10⁸ pixels;
-/// IoError when a PNG cannot be written.
+/// Throws InvalidInput for bad spheres or options, or when one slice would exceed 10⁸ pixels.
 PixelSliceResult pixel_slice_volume(const Clump& clump, const PixelSliceOptions& opt);
 
 }  // namespace clumpkit

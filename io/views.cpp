@@ -1,9 +1,8 @@
 #include "io/views.h"
 
 #include "geom/errors.h"
-#include "io/atomic_file.h"
+#include "io/png.h"
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -46,11 +45,9 @@ void write_views_png(const std::string& path, const Mesh& mesh, const Clump& clu
     cv::putText(image, names[v], cv::Point(v * pixels + 4, 14), cv::FONT_HERSHEY_SIMPLEX, 0.4,
                 cv::Scalar(0, 0, 0));
   }
-  std::vector<uchar> png;
-  if (!cv::imencode(".png", image, png)) throw IoError(path + ": PNG encoding failed");
-  write_file_atomically(path, [&](std::ostream& o) {
-    o.write(reinterpret_cast<const char*>(png.data()), png.size());
-  });
+  cv::Mat rgb;
+  cv::cvtColor(image, rgb, cv::COLOR_BGR2RGB);
+  write_png(path, rgb.cols, rgb.rows, 3, rgb.ptr<std::uint8_t>(0), rgb.step);
 }
 
 }  // namespace clumpkit
