@@ -2,6 +2,9 @@
 
 #include "geom/descriptors.h"
 #include "geom/errors.h"
+#include "geom/ray_inside.h"
+
+#include <tbb/parallel_for.h>
 
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/MeshToVolume.h>
@@ -44,6 +47,11 @@ double field_voxel_size(const Mesh& mesh, const FieldOptions& o) {
   }
   if (o.voxels < 4 || o.voxels > 2000)
     throw InvalidInput("--voxels must be in [4, 2000], got " + std::to_string(o.voxels));
+  if (o.vote_sign) {
+    // A mesh with holes has no reliable volume, hence no inertia axes: use the box instead.
+    const auto bb = bounding_box(mesh);
+    return (bb[1] - bb[0]).minCoeff() / o.voxels;
+  }
   const PrincipalFrame f = principal_frame(mesh);
   return f.extents[0] / o.voxels;
 }
@@ -100,6 +108,18 @@ DistanceField make_distance_field(const Mesh& mesh, const FieldOptions& options)
           f.d[f.index(i, j, k)] = -acc.getValue(c);
         }
       }
+  if (options.vote_sign) {
+    // OpenVDB's sign assumes a closed surface; the magnitudes (distances to the nearest
+    // triangle) stay right, so only the sign is re-decided, voxel by voxel.
+    const RayInside rays(mesh);
+    tbb::parallel_for(0, f.dims[2], [&](int k) {
+      for (int j = 0; j < f.dims[1]; ++j)
+        for (int i = 0; i < f.dims[0]; ++i) {
+          float& v = f.d[f.index(i, j, k)];
+          v = rays.inside(f.position(i, j, k)) ? std::abs(v) : -std::abs(v);
+        }
+    });
+  }
   return f;
 }
 

@@ -11,10 +11,14 @@ namespace clumpkit {
 
 /// Resolution of the voxel grid.
 struct FieldOptions {
-  /// Voxels across the smallest principal extent S of the mesh (ignored if voxel_size > 0).
+  /// Voxels across the smallest principal extent S of the mesh (ignored if voxel_size > 0; the
+  /// smallest bounding-box extent when vote_sign is set).
   /// 40 resolves the corners of seed 000 blocks well enough for ~350-sphere clumps.
   int voxels = 40;
   double voxel_size = 0.0;  ///< explicit voxel edge length, units of the mesh
+  /// Decide inside/outside by Embree ray-parity voting (RayInside) instead of OpenVDB's sign,
+  /// for meshes that are not watertight (holes, cracks, flipped patches).
+  bool vote_sign = false;
 };
 
 /// Dense signed distance samples at voxel centres: positive inside, negative outside, in the

@@ -2,12 +2,14 @@
 
 #include "geom/errors.h"
 #include "geom/mesh_distance.h"
+#include "geom/ray_inside.h"
 #include "geom/union_of_balls.h"
 
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 namespace clumpkit {
@@ -52,8 +54,11 @@ Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing) {
   validate(clump);
   Fidelity r;
   r.spheres = static_cast<int>(clump.spheres.size());
+  const MeshCheck check = check_mesh(mesh);
+  r.watertight = check.closed && check.manifold && check.oriented;
   r.mesh_volume = signed_volume(mesh);
-  if (!(r.mesh_volume > 0.0)) throw InvalidInput("fidelity: the mesh has no positive volume");
+  if (r.watertight && !(r.mesh_volume > 0.0))
+    throw InvalidInput("fidelity: the mesh has no positive volume");
   auto bb = bounding_box(mesh);
   if (spacing <= 0.0) spacing = (bb[1] - bb[0]).maxCoeff() / 200.0;
   for (const auto& s : clump.spheres) {
@@ -88,6 +93,10 @@ Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing) {
   }
 
   double ball = 0.0, both = 0.0;
+  // Watertight meshes: exact intervals from crossing parity. Otherwise ray-parity voting.
+  std::unique_ptr<RayInside> rays;
+  if (!r.watertight) rays = std::make_unique<RayInside>(mesh);
+  double mesh_len = 0.0;
   std::vector<double> crossings;
   std::vector<Interval> chords, solid;
   for (int k = 0; k < nz; ++k)
@@ -108,8 +117,21 @@ Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing) {
       }
       std::sort(crossings.begin(), crossings.end());
       solid.clear();
-      for (std::size_t q = 0; q + 1 < crossings.size(); q += 2)
-        solid.emplace_back(crossings[q], crossings[q + 1]);
+      if (!rays) {
+        for (std::size_t q = 0; q + 1 < crossings.size(); q += 2)
+          solid.emplace_back(crossings[q], crossings[q + 1]);
+      } else {
+        // Not watertight: crossing parity is unreliable; vote on samples along the row, each
+        // standing for a segment of length `spacing`.
+        for (double x = bb[0].x() + 0.5 * spacing; x < bb[1].x(); x += spacing)
+          if (rays->inside(Vec3(x, y, z))) {
+            if (!solid.empty() && solid.back().second >= x - 0.5 * spacing - 1e-12 * spacing)
+              solid.back().second = x + 0.5 * spacing;
+            else
+              solid.emplace_back(x - 0.5 * spacing, x + 0.5 * spacing);
+          }
+        mesh_len += length(solid);
+      }
       chords.clear();
       for (int s : ball_rows[std::size_t(k) * ny + j]) {
         const auto& sp = clump.spheres[s];
@@ -124,6 +146,11 @@ Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing) {
       both += intersection_length(solid, uni);
     }
   const double cell = spacing * spacing;
+  if (rays) {
+    r.mesh_volume = mesh_len * cell;
+    if (!(r.mesh_volume > 0.0)) throw InvalidInput("fidelity: the mesh encloses no volume");
+    r.mesh_volume_method = "ray-parity voting on the row lattice (mesh not watertight)";
+  }
   // The clump's own volume, centroid and inertia are exact (power diagram); the rows only
   // estimate the part outside the mesh, which is small, so the covered fraction inherits little
   // of their error.

@@ -10,7 +10,9 @@ namespace clumpkit {
 /// Fidelity of a clump against the closed mesh it was made from (units of the mesh).
 struct Fidelity {
   int spheres = 0;
-  double mesh_volume = 0.0;   ///< exact polyhedron volume
+  bool watertight = true;    ///< closed, manifold, consistently oriented
+  double mesh_volume = 0.0;  ///< exact polyhedron volume (estimated if not watertight)
+  const char* mesh_volume_method = "exact (divergence theorem)";
   double clump_volume = 0.0;  ///< exact union volume (union_properties)
   const char* clump_volume_method = "exact (power diagram)";
   double covered_fraction = 0.0;    ///< V(clump ∩ mesh) / V(mesh)
@@ -28,7 +30,9 @@ struct Fidelity {
 /// the mesh comes from exact 1-D integration along x of every row of a (y, z) lattice with spacing
 /// `spacing` (mesh intervals from ray crossings, clump intervals from sphere chords), so only the
 /// 2-D midpoint rule in (y, z) approximates it. Surface distances on a lattice of points on every
-/// triangle with the same spacing. spacing ≤ 0 picks 1/200 of the mesh's largest extent.
+/// triangle with the same spacing. A mesh that is not watertight is classified by Embree
+/// ray-parity voting along each row instead, and its volume estimated the same way (labelled).
+/// spacing ≤ 0 picks 1/200 of the mesh's largest extent.
 Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing = 0.0);
 
 }  // namespace clumpkit

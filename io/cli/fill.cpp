@@ -20,6 +20,7 @@ nlohmann::ordered_json fidelity_json(const Fidelity& f) {
   nlohmann::ordered_json j;
   j["spheres"] = f.spheres;
   j["mesh_volume"] = f.mesh_volume;
+  j["mesh_volume_method"] = f.mesh_volume_method;
   j["clump_volume"] = f.clump_volume;
   j["clump_volume_method"] = f.clump_volume_method;
   j["covered_fraction"] = f.covered_fraction;
@@ -37,7 +38,7 @@ void register_fill(CLI::App& app) {
     std::string mesh, out;
     FillOptions fill;
     int spheres = -1;
-    bool json = false;
+    bool json = false, allow_open = false;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -63,6 +64,9 @@ void register_fill(CLI::App& app) {
                 "Reach past the surface as a fraction of each sphere's inscribed radius; 0 with "
                 "--tolerance 0 keeps every sphere inside")
       ->capture_default_str();
+  c->add_flag("--allow-open", o->allow_open,
+              "Accept a mesh that is not watertight: inside/outside by Embree ray-parity voting "
+              "(the report says so; volumes are then approximate)");
   c->add_flag("--json", o->json, "Print the fidelity report as JSON on stdout");
   c->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
@@ -71,7 +75,18 @@ void register_fill(CLI::App& app) {
     o->fill.spheres = std::max(0, o->spheres);
     validate(o->fill);
     MeshReadReport report;
-    const Mesh mesh = read_mesh(o->mesh, &report);
+    Mesh mesh;
+    std::string inside_outside = "OpenVDB signed distance (watertight mesh)";
+    try {
+      mesh = read_mesh(o->mesh, &report);
+    } catch (const InvalidInput& e) {
+      if (!o->allow_open) throw;
+      mesh = read_mesh_raw(o->mesh);  // still throws for unreadable files
+      if (mesh.triangles.empty()) throw;
+      o->fill.field.vote_sign = true;
+      inside_outside = "Embree ray-parity voting (mesh not watertight)";
+      note(std::string(e.what()) + "; deciding inside/outside by ray-parity voting");
+    }
     if (report.reoriented) note(o->mesh + ": triangles were not consistently outward; re-oriented");
     const FillResult r = fill(mesh, o->fill);
     if (r.clump.spheres.empty())
@@ -84,6 +99,7 @@ void register_fill(CLI::App& app) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     nlohmann::ordered_json j = fidelity_json(f);
+    j["inside_outside"] = inside_outside;
     j["voxel"] = r.voxel;
     j["candidates"] = r.candidates;
     j["stopped_by"] = r.stopped_by;

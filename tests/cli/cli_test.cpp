@@ -474,3 +474,16 @@ TEST(Cli, VolumeBadAndDegenerateInput) {
   EXPECT_NEAR(j["exact"]["volume"].get<double>(), 4 * M_PI / 3, 1e-12);
   EXPECT_EQ(j["exact"]["hidden_spheres"], 999999);
 }
+
+TEST(Cli, FillAllowOpenSaysItVoted) {
+  const fs::path d = scratch();
+  write(d / "open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");
+  const Result r = clumpkit("fill " + (d / "open.obj").string() + " -o " + (d / "c.csv").string() +
+                                " --spheres 5 --allow-open --json",
+                            d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NE(j["inside_outside"].get<std::string>().find("ray-parity"), std::string::npos);
+  EXPECT_NE(r.err.find("ray-parity voting"), std::string::npos);
+  EXPECT_TRUE(fs::exists(d / "c.csv"));
+}

@@ -192,3 +192,24 @@ TEST(Fill, RejectsBadOptions) {
   o.field.voxels = 2;
   EXPECT_THROW(fill(cube, o), InvalidInput);
 }
+
+// Issue 3: a mesh that is not watertight (one triangle missing) is filled with inside/outside
+// from Embree ray-parity voting, as well as the closed mesh is.
+TEST(Fill, OpenMeshByRayVoting) {
+  Rng rng(1);
+  const Mesh closed = make_block(BlockParams{75.1, 58.0, 49.8, 2, 0.8, 1.2}, rng);
+  Mesh open = closed;
+  open.triangles.erase(open.triangles.begin());
+  FillOptions o;
+  o.spheres = 47;
+  o.field.vote_sign = true;
+  const FillResult r = fill(open, o);
+  ASSERT_EQ(r.clump.spheres.size(), 47u);
+  const Fidelity truth = assess_fidelity(closed, r.clump, r.voxel / 2);
+  EXPECT_GT(truth.covered_fraction, 0.86);
+  EXPECT_LT(truth.overshoot_fraction, 0.01);
+  const Fidelity voted = assess_fidelity(open, r.clump, r.voxel / 2);
+  EXPECT_FALSE(voted.watertight);
+  EXPECT_NEAR(voted.mesh_volume, truth.mesh_volume, 0.01 * truth.mesh_volume);
+  EXPECT_NEAR(voted.covered_fraction, truth.covered_fraction, 0.01);
+}
