@@ -1,0 +1,73 @@
+#include "dem/body.h"
+
+#include "geom/errors.h"
+
+#include <cmath>
+#include <string>
+
+namespace clumpkit::dem {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+void check_density(double density) {
+  if (!(density > 0.0) || !std::isfinite(density))
+    throw InvalidInput("DEM body: density must be positive, got " + std::to_string(density));
+}
+
+}  // namespace
+
+double Body::bounding_radius() const {
+  double r = 0.0;
+  for (const Sphere& s : spheres) r = std::max(r, s.center.norm() + s.radius);
+  return r;
+}
+
+Vec3 Body::angular_momentum() const {
+  const Mat3 rot = orientation.toRotationMatrix();
+  return rot * moments.cwiseProduct(rot.transpose() * angular_velocity);
+}
+
+Vec3 Body::angular_velocity_for(const Vec3& angular_momentum, const Eigen::Quaterniond& q) const {
+  const Mat3 rot = q.toRotationMatrix();
+  return rot * (rot.transpose() * angular_momentum).cwiseQuotient(moments);
+}
+
+double Body::kinetic_energy() const {
+  return 0.5 * mass * velocity.squaredNorm() + 0.5 * angular_velocity.dot(angular_momentum());
+}
+
+Body make_sphere_body(const Vec3& center, double radius, double density) {
+  if (!(radius > 0.0) || !std::isfinite(radius))
+    throw InvalidInput("DEM sphere body: radius must be positive, got " + std::to_string(radius));
+  if (!center.allFinite()) throw InvalidInput("DEM sphere body: centre must be finite");
+  check_density(density);
+  Body body;
+  body.spheres.push_back(Sphere{Vec3::Zero(), radius});
+  body.mass = 4.0 / 3.0 * kPi * radius * radius * radius * density;
+  body.moments = Vec3::Constant(0.4 * body.mass * radius * radius);
+  body.position = center;
+  return body;
+}
+
+Body make_clump_body(const ClumpTemplate& clump_template, double density, const Vec3& position,
+                     const Eigen::Quaterniond& orientation) {
+  check_density(density);
+  if (clump_template.spheres.empty()) throw InvalidInput("DEM clump body: template has no spheres");
+  Body body;
+  body.spheres = clump_template.spheres;
+  body.mass = density * clump_template.mass.volume;
+  body.moments = density * clump_template.principal_moments;
+  if (!(body.moments.minCoeff() > 0.0))
+    throw InvalidInput("DEM clump body: principal moments must be positive");
+  body.position = position;
+  body.orientation = orientation.normalized();
+  return body;
+}
+
+Body make_clump_body(const Clump& clump, double density) {
+  const ClumpTemplate t = make_clump_template(clump);
+  return make_clump_body(t, density, t.position, t.orientation);
+}
+
+}  // namespace clumpkit::dem

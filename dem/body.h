@@ -1,0 +1,62 @@
+// Rigid DEM bodies (a plain sphere or a clump of spheres in its principal frame) and their state.
+#pragma once
+
+#include "geom/clump_template.h"
+#include "geom/sphere.h"
+
+#include <Eigen/Geometry>
+
+#include <vector>
+
+namespace clumpkit::dem {
+
+/// A rigid body: spheres fixed in the body frame (the principal frame: centroid at the origin,
+/// inertia axes along x, y, z), its mass and principal moments, and its state in the world.
+/// Units SI. Orientation is a Hamilton unit quaternion rotating the body frame into the world
+/// frame: x_world = orientation · x_body + position.
+struct Body {
+  std::vector<Sphere> spheres;  ///< body frame (m); a plain sphere is one sphere at the origin
+  double mass = 0.0;            ///< kg
+  Vec3 moments = Vec3::Zero();  ///< principal moments of inertia (kg·m²) about body x, y, z
+
+  Vec3 position = Vec3::Zero();  ///< centroid in the world (m)
+  Vec3 velocity = Vec3::Zero();  ///< m/s (at the half step, leapfrog)
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  Vec3 angular_velocity = Vec3::Zero();  ///< world frame (rad/s)
+  /// Net force and torque (world, about the centroid) of the last step: gravity + contacts,
+  /// before local damping. N and N·m.
+  Vec3 force = Vec3::Zero();
+  Vec3 torque = Vec3::Zero();
+  /// A body with locked rotation only translates (its torque is ignored, ω stays as set).
+  bool rotation_locked = false;
+
+  /// Radius of the smallest centroid-centred ball holding every sphere (m).
+  double bounding_radius() const;
+  /// Angular momentum about the centroid in the world frame, L = R·diag(I)·Rᵀ·ω (kg·m²/s).
+  Vec3 angular_momentum() const;
+  /// World angular velocity for a world angular momentum at this orientation,
+  /// ω = R·diag(I)⁻¹·Rᵀ·L.
+  Vec3 angular_velocity_for(const Vec3& angular_momentum,
+                            const Eigen::Quaterniond& orientation) const;
+  /// ½·m·|v|² + ½·ω·L (J).
+  double kinetic_energy() const;
+};
+
+/// A solid sphere of the given radius (m) and density (kg/m³) centred at `center`:
+/// m = 4/3·π·r³·ρ, I = 2/5·m·r² about every axis. Throws InvalidInput for a non-positive or
+/// non-finite radius or density.
+Body make_sphere_body(const Vec3& center, double radius, double density);
+
+/// A rigid clump from a clump template (spheres already in the principal frame, unit-density
+/// mass properties): mass = ρ·V, moments = ρ·principal moments. Placed at `position` with
+/// `orientation` (body -> world). Throws InvalidInput for a non-positive density.
+Body make_clump_body(const ClumpTemplate& clump_template, double density, const Vec3& position,
+                     const Eigen::Quaterniond& orientation);
+
+/// A rigid clump from spheres in any frame: exact union mass properties (union_properties via
+/// make_clump_template), spheres rotated into the principal frame; the body is placed where the
+/// clump was (position = centroid, orientation = principal frame -> clump frame), so its
+/// spheres land on the given ones. Density in kg/m³, clump in metres.
+Body make_clump_body(const Clump& clump, double density);
+
+}  // namespace clumpkit::dem

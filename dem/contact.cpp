@@ -1,0 +1,69 @@
+#include "dem/contact.h"
+
+#include "geom/errors.h"
+
+#include <cmath>
+#include <string>
+
+namespace clumpkit::dem {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double damping_ratio_from_restitution(double e) {
+  if (!(e > 0.0 && e <= 1.0))
+    throw InvalidInput("contact: restitution must be in (0, 1], got " + std::to_string(e));
+  const double l = std::log(e);
+  return -l / std::sqrt(kPi * kPi + l * l);
+}
+
+double restitution_from_damping_ratio(double beta) {
+  if (!(beta >= 0.0 && beta < 1.0))
+    throw InvalidInput("contact: damping ratio must be in [0, 1), got " + std::to_string(beta));
+  return std::exp(-beta * kPi / std::sqrt(1.0 - beta * beta));
+}
+
+void update_contact(ContactState& s, const Vec3& normal, double overlap, const Vec3& point,
+                    const Vec3& v, double effective_mass, const ContactParams& p, double dt) {
+  // 1. Rotate the stored shear into the new tangent plane, keeping its magnitude.
+  const double old_magnitude = s.shear.norm();
+  if (old_magnitude > 0.0) {
+    Vec3 projected = s.shear - normal * normal.dot(s.shear);
+    const double m = projected.norm();
+    s.shear = m > 0.0 ? Vec3(projected * (old_magnitude / m)) : Vec3(Vec3::Zero());
+  }
+  s.normal = normal;
+  s.point = point;
+  s.overlap = overlap;
+
+  // 2. Normal spring + dashpot.
+  const double vn = v.dot(normal);
+  const double c = 2.0 * p.damping_ratio * std::sqrt(effective_mass * p.kn);
+  s.normal_force = p.kn * overlap - c * vn;
+
+  // 3. Incremental shear spring.
+  const Vec3 vt = v - vn * normal;
+  s.shear -= p.ks * dt * vt;
+
+  // 4. Coulomb limit.
+  const double limit = p.friction * std::max(s.normal_force, 0.0);
+  const double magnitude = s.shear.norm();
+  if (magnitude > limit) s.shear *= (magnitude > 0.0 ? limit / magnitude : 0.0);
+}
+
+void rescale_friction(ContactState& s, double new_friction) {
+  const double limit = new_friction * std::max(s.normal_force, 0.0);
+  const double magnitude = s.shear.norm();
+  if (magnitude > limit) s.shear *= (magnitude > 0.0 ? limit / magnitude : 0.0);
+}
+
+Vec3 local_damping(const Vec3& force, const Vec3& velocity, double alpha) {
+  if (alpha == 0.0) return force;
+  Vec3 out = force;
+  for (int k = 0; k < 3; ++k) {
+    const double sign = velocity[k] > 0.0 ? 1.0 : (velocity[k] < 0.0 ? -1.0 : 0.0);
+    out[k] -= alpha * std::abs(force[k]) * sign;
+  }
+  return out;
+}
+
+}  // namespace clumpkit::dem

@@ -1,0 +1,65 @@
+// Linear spring contact law: normal spring + dashpot, incremental Coulomb shear spring, PFC
+// local damping, and friction rescaling that keeps the shear history.
+#pragma once
+
+#include "geom/mesh.h"
+
+#include <vector>
+
+namespace clumpkit::dem {
+
+/// Contact parameters (SI). Defaults follow issue 5 (kn = ks = 1e6 N/m, μ = 0.8).
+struct ContactParams {
+  double kn = 1e6;        ///< normal stiffness (N/m)
+  double ks = 1e6;        ///< shear stiffness (N/m)
+  double friction = 0.8;  ///< Coulomb coefficient μ
+  /// Viscous normal damping ratio β (0 = none): dashpot c = 2·β·sqrt(m_eff·kn). Use
+  /// damping_ratio_from_restitution(e) to ask for a restitution coefficient instead.
+  double damping_ratio = 0.0;
+  /// PFC local damping coefficient α (0 = none), applied per body by the world:
+  /// F_k -= α·|F_k|·sign(v_k) for each force and torque component (local_damping()).
+  double local_damping = 0.0;
+};
+
+/// Damping ratio giving restitution e in a head-on collision of the linear spring-dashpot:
+/// β = −ln e / sqrt(π² + ln² e) (from e = exp(−β·π / sqrt(1 − β²)); the classical result for
+/// an unclamped dashpot, e.g. Tsuji et al. 1992). e in (0, 1]; throws InvalidInput otherwise.
+double damping_ratio_from_restitution(double restitution);
+
+/// Inverse of damping_ratio_from_restitution: e = exp(−β·π / sqrt(1 − β²)) for β in [0, 1).
+double restitution_from_damping_ratio(double damping_ratio);
+
+/// State of one contact: the normal points towards the side that receives force
+/// normal_force·normal + shear (the other side receives the opposite).
+struct ContactState {
+  Vec3 normal = Vec3::UnitZ();  ///< unit contact normal (world)
+  Vec3 point = Vec3::Zero();    ///< contact point (world, m)
+  double overlap = 0.0;         ///< m
+  double normal_force = 0.0;    ///< kn·δ − c·vn (N); may be slightly tensile from the dashpot
+  Vec3 shear = Vec3::Zero();    ///< incremental shear force (N), kept between steps (history)
+  /// Total force on the receiving side (N).
+  Vec3 force() const { return normal_force * normal + shear; }
+};
+
+/// Advances a contact by one step of dt (s):
+///  1. the previous shear force is rotated into the new contact plane (its normal component is
+///     removed and its magnitude restored, as LAMMPS gran/hooke/history does);
+///  2. normal force Fn = kn·δ − c·(v·n) with c = 2·β·sqrt(m_eff·kn) (no tension clamp, so the
+///     restitution formula above is exact for the continuous law);
+///  3. shear increment Fs -= ks·v_t·dt, v_t the tangential part of v;
+///  4. Coulomb limit |Fs| ≤ μ·max(Fn, 0) (slip: Fs scaled back onto the limit).
+/// `relative_velocity` is the velocity of the receiving side minus the other side at the contact
+/// point (m/s); m_eff the effective mass (kg) m1·m2/(m1 + m2), or m for a wall.
+void update_contact(ContactState& state, const Vec3& normal, double overlap, const Vec3& point,
+                    const Vec3& relative_velocity, double effective_mass,
+                    const ContactParams& params, double dt);
+
+/// Keeps the shear history under a new friction coefficient: |Fs| is clamped to
+/// μ_new·max(Fn, 0) (direction kept); a shear already inside the new limit is unchanged.
+void rescale_friction(ContactState& state, double new_friction);
+
+/// PFC local damping of one vector quantity (force against velocity, or torque against angular
+/// velocity): returns F − α·|F_k|·sign(v_k) per component k (Itasca PFC "local damping").
+Vec3 local_damping(const Vec3& force, const Vec3& velocity, double alpha);
+
+}  // namespace clumpkit::dem
