@@ -225,27 +225,6 @@ Measure four_balls(const std::array<Sphere, 4>& b) {
   return total;
 }
 
-// Indices of the balls left after exact deduplication (same rule as union_properties: of the
-// balls sharing a centre only the largest is kept).
-std::vector<int> distinct_balls(const std::vector<Sphere>& s) {
-  std::vector<int> order(s.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    const Vec3& p = s[a].center;
-    const Vec3& q = s[b].center;
-    if (p.x() != q.x()) return p.x() < q.x();
-    if (p.y() != q.y()) return p.y() < q.y();
-    if (p.z() != q.z()) return p.z() < q.z();
-    if (s[a].radius != s[b].radius) return s[a].radius > s[b].radius;
-    return a < b;
-  });
-  std::vector<int> keep;
-  for (std::size_t k = 0; k < order.size(); ++k)
-    if (k == 0 || s[order[k]].center != s[order[k - 1]].center) keep.push_back(order[k]);
-  std::sort(keep.begin(), keep.end());
-  return keep;
-}
-
 // Running signed sums of the inclusion–exclusion terms.
 struct Sum {
   double volume = 0.0, area = 0.0;

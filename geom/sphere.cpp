@@ -2,7 +2,9 @@
 
 #include "geom/errors.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
 
 namespace clumpkit {
@@ -17,6 +19,25 @@ void validate(const Clump& clump) {
       throw InvalidInput("sphere " + std::to_string(i) +
                          ": radius must be positive and finite, got " + std::to_string(s.radius));
   }
+}
+
+std::vector<int> distinct_balls(const std::vector<Sphere>& s) {
+  std::vector<int> order(s.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    const Vec3& p = s[a].center;
+    const Vec3& q = s[b].center;
+    if (p.x() != q.x()) return p.x() < q.x();
+    if (p.y() != q.y()) return p.y() < q.y();
+    if (p.z() != q.z()) return p.z() < q.z();
+    if (s[a].radius != s[b].radius) return s[a].radius > s[b].radius;
+    return a < b;
+  });
+  std::vector<int> keep;
+  for (std::size_t k = 0; k < order.size(); ++k)
+    if (k == 0 || s[order[k]].center != s[order[k - 1]].center) keep.push_back(order[k]);
+  std::sort(keep.begin(), keep.end());
+  return keep;
 }
 
 }  // namespace clumpkit

@@ -30,4 +30,9 @@ struct MassProperties {
 /// that is not positive and finite.
 void validate(const Clump& clump);
 
+/// Indices of the spheres left after exact deduplication: of spheres sharing a centre exactly,
+/// only the largest is kept (the others are nested in it). Sorted ascending. Both sphere-union
+/// engines use it, so they agree on what a duplicate is.
+std::vector<int> distinct_balls(const std::vector<Sphere>& spheres);
+
 }  // namespace clumpkit

@@ -50,27 +50,6 @@ struct Piece {
   bool empty = false;          // known to be empty (the ball lies outside one half-space)
 };
 
-// Indices of the balls left after exact deduplication: of the balls sharing a centre exactly only
-// the largest is kept (the others are nested in it). Sorted ascending.
-std::vector<int> distinct_balls(const std::vector<Sphere>& s) {
-  std::vector<int> order(s.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    const Vec3& p = s[a].center;
-    const Vec3& q = s[b].center;
-    if (p.x() != q.x()) return p.x() < q.x();
-    if (p.y() != q.y()) return p.y() < q.y();
-    if (p.z() != q.z()) return p.z() < q.z();
-    if (s[a].radius != s[b].radius) return s[a].radius > s[b].radius;
-    return a < b;
-  });
-  std::vector<int> keep;
-  for (std::size_t k = 0; k < order.size(); ++k)
-    if (k == 0 || s[order[k]].center != s[order[k - 1]].center) keep.push_back(order[k]);
-  std::sort(keep.begin(), keep.end());
-  return keep;
-}
-
 // Orthonormal e1, e2 with e1 × e2 = n.
 void plane_basis(const Vec3& n, Vec3& e1, Vec3& e2) {
   const Vec3 a = std::abs(n.x()) < 0.6 ? Vec3::UnitX()
