@@ -1,6 +1,7 @@
 #include "io/recipe.h"
 
 #include "geom/errors.h"
+#include "io/toml_fields.h"
 
 #include <toml++/toml.h>
 
@@ -13,45 +14,10 @@ namespace clumpkit {
 namespace {
 
 std::string show(const toml::node& n) {
-  std::ostringstream s;
-  if (auto v = n.as_floating_point()) {
-    s.precision(10);
-    s << v->get();
-  } else if (n.is_table()) {
-    s << *n.as_table();
-  } else if (n.is_array()) {
-    s << *n.as_array();
-  } else {
-    n.visit([&](const auto& v) { s << v; });
-  }
-  return s.str();
+  return toml_show(n);
 }
 
-struct Parser {
-  std::string file;
-
-  [[noreturn]] void fail(const std::string& field, const std::string& why) const {
-    throw InvalidInput(file + ": " + field + ": " + why);
-  }
-
-  double number(const toml::node& n, const std::string& field) const {
-    double x;
-    if (auto i = n.as_integer())
-      x = static_cast<double>(i->get());
-    else if (auto f = n.as_floating_point())
-      x = f->get();
-    else
-      fail(field, "expected a number, got " + show(n));
-    if (!std::isfinite(x)) fail(field, "must be finite, got " + show(n));
-    return x;
-  }
-
-  std::pair<double, double> pair(const toml::node& n, const std::string& field) const {
-    const auto* a = n.as_array();
-    if (!a || a->size() != 2) fail(field, "expected [low, high], got " + show(n));
-    return {number(*a->get(0), field), number(*a->get(1), field)};
-  }
-
+struct Parser : TomlFields {
   Distribution distribution(const toml::node& n, const std::string& field) const {
     if (n.is_number()) return constant(number(n, field));
     const auto* t = n.as_table();
@@ -138,14 +104,8 @@ struct Parser {
 }  // namespace
 
 ShapeRecipe parse_shape_recipe(const std::string& text, const std::string& path) {
-  Parser p{path};
-  toml::table root;
-  try {
-    root = toml::parse(text, path);
-  } catch (const toml::parse_error& e) {
-    throw InvalidInput(path + ":" + std::to_string(e.source().begin.line) +
-                       ": TOML syntax error: " + std::string(e.description()));
-  }
+  Parser p{{path}};
+  const toml::table root = parse_toml(text, path);
   ShapeRecipe r;
   r.path = path;
   r.text = text;

@@ -1,0 +1,29 @@
+// Typed reads of TOML values with the one-line "FILE: FIELD: what, got VALUE" errors recipes use.
+#pragma once
+
+#include <toml++/toml.h>
+
+#include <string>
+#include <utility>
+
+namespace clumpkit {
+
+/// The value as a short text for messages ("nan", "[1, 2]", "{ a = 1 }").
+std::string toml_show(const toml::node& n);
+
+/// Readers bound to one file; every failure throws InvalidInput naming file, field and value.
+struct TomlFields {
+  std::string file;
+
+  [[noreturn]] void fail(const std::string& field, const std::string& why) const;
+  double number(const toml::node& n, const std::string& field) const;  ///< finite int or float
+  std::pair<double, double> pair(const toml::node& n, const std::string& field) const;
+  long long integer(const toml::node& n, const std::string& field) const;
+  std::string string(const toml::node& n, const std::string& field) const;
+  const toml::table& table(const toml::node& n, const std::string& field) const;
+};
+
+/// Parses TOML text; a syntax error throws InvalidInput "FILE:LINE: TOML syntax error: ...".
+toml::table parse_toml(const std::string& text, const std::string& path);
+
+}  // namespace clumpkit
