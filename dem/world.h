@@ -85,6 +85,8 @@ class World {
   std::int64_t neighbour_builds() const { return builds_; }
 
  private:
+  friend struct CheckpointAccess;  // dem/checkpoint.cpp saves and restores the private state
+
   void update_sphere_positions();
   bool need_rebuild() const;
   void build_neighbours();

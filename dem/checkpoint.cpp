@@ -1,0 +1,359 @@
+#include "dem/checkpoint.h"
+
+#include "geom/errors.h"
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <system_error>
+#include <utility>
+
+namespace clumpkit::dem {
+
+namespace {
+
+constexpr char kMagic[12] = {'C', 'L', 'U', 'M', 'P', 'K', 'I', 'T', 'C', 'K', 'P', 'T'};
+
+std::uint64_t fnv1a(const char* data, std::size_t size) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (std::size_t k = 0; k < size; ++k) {
+    h ^= static_cast<unsigned char>(data[k]);
+    h *= 0x100000001b3ULL;
+  }
+  return h;
+}
+
+// Little-endian encoder.
+class Writer {
+ public:
+  std::string bytes;
+
+  void u8(std::uint8_t v) { bytes.push_back(static_cast<char>(v)); }
+  void u32(std::uint32_t v) {
+    for (int k = 0; k < 4; ++k) u8(static_cast<std::uint8_t>(v >> (8 * k)));
+  }
+  void u64(std::uint64_t v) {
+    for (int k = 0; k < 8; ++k) u8(static_cast<std::uint8_t>(v >> (8 * k)));
+  }
+  void i32(int v) { u32(static_cast<std::uint32_t>(v)); }
+  void i64(std::int64_t v) { u64(static_cast<std::uint64_t>(v)); }
+  void f64(double v) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    u64(bits);
+  }
+  void vec(const Vec3& v) {
+    for (int k = 0; k < 3; ++k) f64(v[k]);
+  }
+  void quat(const Eigen::Quaterniond& q) { f64(q.w()), f64(q.x()), f64(q.y()), f64(q.z()); }
+  void str(const std::string& s) {
+    u64(s.size());
+    bytes += s;
+  }
+  void state(const ContactState& s) {
+    vec(s.normal), vec(s.point), f64(s.overlap), f64(s.normal_force), vec(s.shear);
+  }
+};
+
+// Little-endian decoder over the whole file; every read checks the remaining length.
+class Reader {
+ public:
+  Reader(const std::string& bytes, std::size_t end, const std::string& path)
+      : bytes_(bytes), end_(end), path_(path) {}
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InvalidInput("checkpoint " + path_ + ": " + what);
+  }
+  std::size_t position() const { return pos_; }
+
+  std::uint8_t u8() {
+    need(1);
+    return static_cast<std::uint8_t>(bytes_[pos_++]);
+  }
+  std::uint32_t u32() {
+    need(4);
+    std::uint32_t v = 0;
+    for (int k = 0; k < 4; ++k)
+      v |= std::uint32_t(static_cast<unsigned char>(bytes_[pos_++])) << (8 * k);
+    return v;
+  }
+  std::uint64_t u64() {
+    need(8);
+    std::uint64_t v = 0;
+    for (int k = 0; k < 8; ++k)
+      v |= std::uint64_t(static_cast<unsigned char>(bytes_[pos_++])) << (8 * k);
+    return v;
+  }
+  int i32() { return static_cast<int>(u32()); }
+  std::int64_t i64() { return static_cast<std::int64_t>(u64()); }
+  double f64() {
+    const std::uint64_t bits = u64();
+    double v;
+    std::memcpy(&v, &bits, sizeof v);
+    return v;
+  }
+  Vec3 vec() {
+    Vec3 v;
+    for (int k = 0; k < 3; ++k) v[k] = f64();
+    return v;
+  }
+  Eigen::Quaterniond quat() {
+    const double w = f64(), x = f64(), y = f64(), z = f64();
+    return Eigen::Quaterniond(w, x, y, z);
+  }
+  /// A count of items of at least `item_bytes` each, checked against the bytes left.
+  std::size_t count(std::size_t item_bytes, const char* what) {
+    const std::uint64_t n = u64();
+    if (n > (end_ - pos_) / item_bytes)
+      fail(std::string("truncated or corrupt file (") + what + " count " + std::to_string(n) +
+           " exceeds the remaining bytes)");
+    return static_cast<std::size_t>(n);
+  }
+  std::string str(const char* what) {
+    const std::size_t n = count(1, what);
+    std::string s = bytes_.substr(pos_, n);
+    pos_ += n;
+    return s;
+  }
+  ContactState state() {
+    ContactState s;
+    s.normal = vec();
+    s.point = vec();
+    s.overlap = f64();
+    s.normal_force = f64();
+    s.shear = vec();
+    return s;
+  }
+
+ private:
+  void need(std::size_t n) const {
+    if (end_ - pos_ < n)
+      fail("truncated file (needed " + std::to_string(n) + " more bytes at offset " +
+           std::to_string(pos_) + ")");
+  }
+
+  const std::string& bytes_;
+  std::size_t end_;
+  std::size_t pos_ = 0;
+  std::string path_;
+};
+
+constexpr std::size_t kStateBytes = 11 * 8;
+constexpr std::size_t kHeaderBytes = sizeof kMagic + 4;
+constexpr std::size_t kChecksumBytes = 8;
+
+}  // namespace
+
+/// Reads and restores World's private state (declared a friend in dem/world.h).
+struct CheckpointAccess {
+  static void write(Writer& w, const World& world) {
+    const WorldOptions& o = world.options_;
+    w.vec(o.gravity);
+    w.f64(o.timestep);
+    w.f64(o.skin);
+    w.f64(o.contact.kn), w.f64(o.contact.ks), w.f64(o.contact.friction);
+    w.f64(o.contact.damping_ratio), w.f64(o.contact.local_damping);
+    w.i64(world.steps_);
+    w.f64(world.time_);
+    w.i64(world.builds_);
+    w.u8(world.dirty_ ? 1 : 0);
+
+    w.u64(world.bodies_.size());
+    for (const Body& b : world.bodies_) {
+      w.u64(b.spheres.size());
+      for (const Sphere& s : b.spheres) w.vec(s.center), w.f64(s.radius);
+      w.f64(b.mass);
+      w.vec(b.moments);
+      w.vec(b.position), w.vec(b.velocity), w.quat(b.orientation), w.vec(b.angular_velocity);
+      w.vec(b.force), w.vec(b.torque);
+      w.u8(b.rotation_locked ? 1 : 0);
+    }
+    w.u64(world.walls_.size());
+    for (const Wall& wall : world.walls_) {
+      w.u8(wall.kind == Wall::Kind::plane ? 0 : 1);
+      w.vec(wall.point), w.vec(wall.normal), w.f64(wall.radius), w.vec(wall.velocity);
+    }
+    w.u64(world.contacts_.size());
+    for (const PairContact& c : world.contacts_) w.i32(c.i), w.i32(c.j), w.state(c.state);
+    w.u64(world.wall_contacts_.size());
+    for (const WallContact& c : world.wall_contacts_)
+      w.i32(c.sphere), w.i32(c.wall), w.state(c.state);
+    w.u64(world.sphere_at_build_.size());
+    for (const Vec3& x : world.sphere_at_build_) w.vec(x);
+    w.u64(world.candidates_.size());
+    for (const auto& [i, j] : world.candidates_) w.i32(i), w.i32(j);
+  }
+
+  static World read(Reader& r) {
+    WorldOptions o;
+    o.gravity = r.vec();
+    o.timestep = r.f64();
+    o.skin = r.f64();
+    o.contact.kn = r.f64(), o.contact.ks = r.f64(), o.contact.friction = r.f64();
+    o.contact.damping_ratio = r.f64(), o.contact.local_damping = r.f64();
+    const std::int64_t steps = r.i64();
+    const double time = r.f64();
+    const std::int64_t builds = r.i64();
+    const std::uint8_t dirty = r.u8();
+    if (dirty > 1) r.fail("corrupt neighbour-list flag " + std::to_string(dirty));
+
+    World world = [&] {
+      try {
+        return World(o);
+      } catch (const InvalidInput& e) {
+        r.fail(e.what());
+      }
+    }();
+
+    const std::size_t bodies = r.count(8, "body");
+    for (std::size_t k = 0; k < bodies; ++k) {
+      Body b;
+      const std::size_t spheres = r.count(32, "sphere");
+      for (std::size_t s = 0; s < spheres; ++s) {
+        const Vec3 c = r.vec();
+        b.spheres.push_back(Sphere{c, r.f64()});
+      }
+      b.mass = r.f64();
+      b.moments = r.vec();
+      b.position = r.vec(), b.velocity = r.vec(), b.orientation = r.quat();
+      b.angular_velocity = r.vec();
+      b.force = r.vec(), b.torque = r.vec();
+      const std::uint8_t locked = r.u8();
+      if (locked > 1) r.fail("corrupt rotation lock of body " + std::to_string(k));
+      b.rotation_locked = locked == 1;
+      const Eigen::Quaterniond q = b.orientation;
+      try {
+        world.add_body(std::move(b));
+      } catch (const InvalidInput& e) {
+        r.fail("body " + std::to_string(k) + ": " + e.what());
+      }
+      world.bodies_.back().orientation = q;  // exact bits, not re-normalised
+    }
+
+    const std::size_t walls = r.count(1 + 10 * 8, "wall");
+    for (std::size_t k = 0; k < walls; ++k) {
+      Wall wall;
+      const std::uint8_t kind = r.u8();
+      if (kind > 1)
+        r.fail("unknown kind " + std::to_string(kind) + " of wall " + std::to_string(k));
+      wall.kind = kind == 0 ? Wall::Kind::plane : Wall::Kind::cylinder;
+      wall.point = r.vec(), wall.normal = r.vec(), wall.radius = r.f64(), wall.velocity = r.vec();
+      world.add_wall(wall);
+    }
+
+    const int n_spheres = world.sphere_count();
+    const int n_walls = static_cast<int>(world.walls_.size());
+    auto check_sphere = [&](int s, const char* what) {
+      if (s < 0 || s >= n_spheres)
+        r.fail(std::string(what) + " refers to sphere " + std::to_string(s) + " of " +
+               std::to_string(n_spheres));
+    };
+
+    const std::size_t contacts = r.count(8 + kStateBytes, "contact");
+    world.contacts_.resize(contacts);
+    for (PairContact& c : world.contacts_) {
+      c.i = r.i32(), c.j = r.i32();
+      check_sphere(c.i, "contact"), check_sphere(c.j, "contact");
+      c.state = r.state();
+    }
+    const std::size_t wall_contacts = r.count(8 + kStateBytes, "wall contact");
+    world.wall_contacts_.resize(wall_contacts);
+    for (WallContact& c : world.wall_contacts_) {
+      c.sphere = r.i32(), c.wall = r.i32();
+      check_sphere(c.sphere, "wall contact");
+      if (c.wall < 0 || c.wall >= n_walls)
+        r.fail("wall contact refers to wall " + std::to_string(c.wall) + " of " +
+               std::to_string(n_walls));
+      c.state = r.state();
+    }
+
+    const std::size_t at_build = r.count(24, "neighbour position");
+    if (at_build != 0 && at_build != static_cast<std::size_t>(n_spheres))
+      r.fail("neighbour list holds " + std::to_string(at_build) + " positions for " +
+             std::to_string(n_spheres) + " spheres");
+    world.sphere_at_build_.resize(at_build);
+    for (Vec3& x : world.sphere_at_build_) x = r.vec();
+    const std::size_t candidates = r.count(8, "neighbour pair");
+    world.candidates_.resize(candidates);
+    for (auto& [i, j] : world.candidates_) {
+      i = r.i32(), j = r.i32();
+      check_sphere(i, "neighbour pair"), check_sphere(j, "neighbour pair");
+    }
+
+    world.steps_ = steps;
+    world.time_ = time;
+    world.builds_ = builds;
+    world.dirty_ = dirty == 1;
+    world.update_sphere_positions();
+    return world;
+  }
+};
+
+void save_checkpoint(const std::string& path, const World& world, const CheckpointInfo& info) {
+  Writer w;
+  w.bytes.append(kMagic, sizeof kMagic);
+  w.u32(kCheckpointVersion);
+  w.str(info.stage);
+  for (std::uint64_t v : info.random_state) w.u64(v);
+  CheckpointAccess::write(w, world);
+  w.u64(fnv1a(w.bytes.data(), w.bytes.size()));
+
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw IoError("checkpoint " + path + ": cannot open " + tmp + " for writing");
+    out.write(w.bytes.data(), static_cast<std::streamsize>(w.bytes.size()));
+    out.flush();
+    if (!out) {
+      out.close();
+      std::error_code ignored;
+      std::filesystem::remove(tmp, ignored);
+      throw IoError("checkpoint " + path + ": cannot write " + tmp);
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw IoError("checkpoint " + path + ": cannot rename " + tmp + ": " + ec.message());
+  }
+}
+
+World load_checkpoint(const std::string& path, CheckpointInfo* info) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("checkpoint " + path + ": cannot open for reading");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw IoError("checkpoint " + path + ": read error");
+
+  if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
+    throw InvalidInput("checkpoint " + path + ": not a clumpkit checkpoint (bad magic)");
+  if (bytes.size() < kHeaderBytes + kChecksumBytes)
+    throw InvalidInput("checkpoint " + path + ": truncated file (" + std::to_string(bytes.size()) +
+                       " bytes)");
+  const std::size_t end = bytes.size() - kChecksumBytes;
+  Reader header(bytes, end, path);
+  for (std::size_t k = 0; k < sizeof kMagic; ++k) header.u8();
+  const std::uint32_t version = header.u32();
+  if (version != kCheckpointVersion)
+    header.fail("unsupported version " + std::to_string(version) + " (expected " +
+                std::to_string(kCheckpointVersion) + ")");
+  std::uint64_t stored = 0;
+  for (std::size_t k = 0; k < kChecksumBytes; ++k)
+    stored |= std::uint64_t(static_cast<unsigned char>(bytes[end + k])) << (8 * k);
+  if (stored != fnv1a(bytes.data(), end))
+    header.fail("checksum mismatch (truncated or corrupt file)");
+
+  CheckpointInfo read_info;
+  read_info.stage = header.str("stage");
+  for (std::uint64_t& v : read_info.random_state) v = header.u64();
+  World world = CheckpointAccess::read(header);
+  if (header.position() != end)
+    header.fail(std::to_string(end - header.position()) + " unexpected bytes before the checksum");
+  if (info) *info = std::move(read_info);
+  return world;
+}
+
+}  // namespace clumpkit::dem

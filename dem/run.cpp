@@ -1,0 +1,59 @@
+#include "dem/run.h"
+
+#include "geom/errors.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace clumpkit::dem {
+
+RunOutcome run_until(World& world, const RunLimits& limits,
+                     const std::function<void(long, long)>& progress) {
+  if (limits.max_steps < 0)
+    throw InvalidInput("run_until: max_steps must be non-negative, got " +
+                       std::to_string(limits.max_steps));
+  if (limits.check_every <= 0)
+    throw InvalidInput("run_until: check_every must be positive, got " +
+                       std::to_string(limits.check_every));
+  if (!(limits.kinetic_energy_below >= 0) || !(limits.unbalanced_ratio_below >= 0) ||
+      !(limits.checkpoint_every_seconds >= 0))
+    throw InvalidInput("run_until: thresholds and checkpoint period must be non-negative");
+
+  using Clock = std::chrono::steady_clock;
+  const bool checkpoints = limits.checkpoint_every_seconds > 0 && !limits.checkpoint_path.empty();
+  auto last_checkpoint = Clock::now();
+
+  RunOutcome outcome;
+  while (outcome.steps < limits.max_steps) {
+    const long to_boundary =
+        limits.check_every - static_cast<long>(world.steps() % limits.check_every);
+    const long chunk = std::min(to_boundary, limits.max_steps - outcome.steps);
+    world.step(static_cast<int>(chunk));
+    outcome.steps += chunk;
+
+    if (checkpoints) {
+      const auto now = Clock::now();
+      if (std::chrono::duration<double>(now - last_checkpoint).count() >=
+          limits.checkpoint_every_seconds) {
+        save_checkpoint(limits.checkpoint_path, world, limits.checkpoint_info);
+        last_checkpoint = Clock::now();
+      }
+    }
+
+    if (progress) progress(outcome.steps, limits.max_steps);
+
+    if (limits.kinetic_energy_below > 0 && kinetic_energy(world) < limits.kinetic_energy_below) {
+      outcome.stopped_by = "kinetic_energy";
+      return outcome;
+    }
+    if (limits.unbalanced_ratio_below > 0 &&
+        mean_unbalanced_force_ratio(world) < limits.unbalanced_ratio_below) {
+      outcome.stopped_by = "unbalanced_ratio";
+      return outcome;
+    }
+  }
+  outcome.stopped_by = "step_cap";
+  return outcome;
+}
+
+}  // namespace clumpkit::dem

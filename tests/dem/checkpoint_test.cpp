@@ -1,0 +1,304 @@
+// Checkpoint round trips continue bit-identically; corrupt files are rejected; run_until stop
+// rules.
+#include "dem/checkpoint.h"
+#include "dem/run.h"
+#include "dem/world.h"
+#include "geom/errors.h"
+#include "geom/random.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace clumpkit::dem {
+namespace {
+
+constexpr double kDensity = 2650.0;  // kg/m³
+
+std::string temp_path(const std::string& name) {
+  return (std::filesystem::path(::testing::TempDir()) / ("clumpkit_ckpt_" + name)).string();
+}
+
+std::string read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+void write_bytes(const std::string& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+// Spheres (radius 4–6 mm) on a loose lattice in a cylinder of radius 5 cm with random
+// velocities, four three-sphere clumps above them, a floor and (optionally) a top platen moving
+// down.
+// Gravity, friction, viscous damping: contacts with shear history form within a few hundred
+// steps.
+World make_deposition(int spheres, bool platen = true) {
+  WorldOptions o;
+  o.contact.kn = 1e5;
+  o.contact.ks = 1e5;
+  o.contact.friction = 0.5;
+  o.contact.damping_ratio = 0.3;
+  World world(o);
+  const double R = 0.05, spacing = 0.0125;
+  Rng rng(42);
+  int placed = 0;
+  for (int layer = 0; placed < spheres; ++layer)
+    for (int ix = -4; ix <= 4 && placed < spheres; ++ix)
+      for (int iy = -4; iy <= 4 && placed < spheres; ++iy) {
+        const double x = ix * spacing, y = iy * spacing;
+        if (std::hypot(x, y) > R - 0.008) continue;
+        const double r = rng.uniform(0.004, 0.006);
+        Body b = make_sphere_body(Vec3(x, y, 0.007 + layer * spacing), r, kDensity);
+        b.velocity = Vec3(rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3));
+        world.add_body(std::move(b));
+        ++placed;
+      }
+  const double top = 0.007 + (placed / 30 + 2) * spacing;
+  const Clump clump{{Sphere{Vec3(-0.006, 0.0, 0.0), 0.005}, Sphere{Vec3(0.004, 0.001, 0.0), 0.006},
+                     Sphere{Vec3(0.0, 0.004, 0.003), 0.004}}};
+  for (int k = 0; k < 4; ++k) {
+    Body c = make_clump_body(clump, kDensity);
+    c.position = Vec3(k % 2 ? 0.02 : -0.02, k / 2 ? 0.02 : -0.02, top);
+    c.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7 * k + 0.3, rng.unit_vector()));
+    c.velocity = Vec3(0.0, 0.0, -0.5);
+    c.angular_velocity = Vec3(rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-5, 5));
+    world.add_body(std::move(c));
+  }
+  world.add_wall(Wall::plane(Vec3::Zero(), Vec3::UnitZ()));
+  world.add_wall(Wall::cylinder(0.0, 0.0, R));
+  if (platen) world.add_wall(Wall::plane(Vec3(0, 0, top + 0.03), -Vec3::UnitZ(), Vec3(0, 0, -0.2)));
+  world.options().timestep = 0.2 * critical_timestep(world);
+  return world;
+}
+
+template <class T>
+bool same_bits(const T& a, const T& b) {
+  return std::memcmp(&a, &b, sizeof(T)) == 0;
+}
+
+// Bit-for-bit comparison of everything that drives later steps.
+void expect_identical(const World& a, const World& b) {
+  EXPECT_EQ(a.steps(), b.steps());
+  EXPECT_TRUE(same_bits(a.time(), b.time()));
+  EXPECT_EQ(a.neighbour_builds(), b.neighbour_builds());
+  ASSERT_EQ(a.bodies().size(), b.bodies().size());
+  int differing = 0;
+  for (std::size_t k = 0; k < a.bodies().size(); ++k) {
+    const Body& x = a.bodies()[k];
+    const Body& y = b.bodies()[k];
+    const bool same = same_bits(x.position, y.position) && same_bits(x.velocity, y.velocity) &&
+                      same_bits(x.orientation.coeffs(), y.orientation.coeffs()) &&
+                      same_bits(x.angular_velocity, y.angular_velocity) &&
+                      same_bits(x.force, y.force) && same_bits(x.torque, y.torque);
+    differing += same ? 0 : 1;
+  }
+  EXPECT_EQ(differing, 0) << "bodies whose state differs in some bit";
+  ASSERT_EQ(a.contacts().size(), b.contacts().size());
+  for (std::size_t k = 0; k < a.contacts().size(); ++k) {
+    const PairContact& x = a.contacts()[k];
+    const PairContact& y = b.contacts()[k];
+    ASSERT_EQ(x.i, y.i);
+    ASSERT_EQ(x.j, y.j);
+    EXPECT_TRUE(same_bits(x.state.shear, y.state.shear)) << "contact " << k;
+    EXPECT_TRUE(same_bits(x.state.normal_force, y.state.normal_force)) << "contact " << k;
+  }
+  ASSERT_EQ(a.wall_contacts().size(), b.wall_contacts().size());
+  for (std::size_t k = 0; k < a.wall_contacts().size(); ++k) {
+    const WallContact& x = a.wall_contacts()[k];
+    const WallContact& y = b.wall_contacts()[k];
+    ASSERT_EQ(x.sphere, y.sphere);
+    ASSERT_EQ(x.wall, y.wall);
+    EXPECT_TRUE(same_bits(x.state.shear, y.state.shear)) << "wall contact " << k;
+  }
+  ASSERT_EQ(a.walls().size(), b.walls().size());
+  for (std::size_t k = 0; k < a.walls().size(); ++k)
+    EXPECT_TRUE(same_bits(a.walls()[k].point, b.walls()[k].point)) << "wall " << k;
+}
+
+bool any_shear(const World& w) {
+  for (const PairContact& c : w.contacts())
+    if (c.state.shear.squaredNorm() > 0.0) return true;
+  return false;
+}
+
+TEST(DemCheckpoint, HalfRunCheckpointLoadContinuesBitIdentically) {
+  constexpr int kSteps = 4000;
+  World straight = make_deposition(160);
+  straight.step(kSteps);
+
+  World first = make_deposition(160);
+  first.step(kSteps / 2);
+  ASSERT_FALSE(first.contacts().empty());
+  ASSERT_FALSE(first.wall_contacts().empty());
+  ASSERT_TRUE(any_shear(first)) << "the test needs shear history at the checkpoint";
+  const std::string path = temp_path("half.ckpt");
+  CheckpointInfo info;
+  info.stage = "deposition";
+  info.random_state = {1ULL, 0xdeadbeefULL, ~0ULL, 1ULL << 63};
+  save_checkpoint(path, first, info);
+  EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+
+  CheckpointInfo loaded_info;
+  World resumed = load_checkpoint(path, &loaded_info);
+  EXPECT_EQ(loaded_info.stage, "deposition");
+  EXPECT_EQ(loaded_info.random_state, info.random_state);
+  expect_identical(first, resumed);  // includes the last step's forces and contacts
+  EXPECT_TRUE(same_bits(mean_unbalanced_force_ratio(first), mean_unbalanced_force_ratio(resumed)));
+
+  resumed.step(kSteps / 2);
+  expect_identical(straight, resumed);
+  std::filesystem::remove(path);
+}
+
+TEST(DemCheckpoint, SaveLoadSaveIsByteIdentical) {
+  World world = make_deposition(160);
+  world.step(2000);
+  ASSERT_TRUE(any_shear(world));
+  const std::string a = temp_path("a.ckpt"), b = temp_path("b.ckpt");
+  save_checkpoint(a, world, {"stage two", {5, 6, 7, 8}});
+  CheckpointInfo info;
+  const World loaded = load_checkpoint(a, &info);
+  save_checkpoint(b, loaded, info);
+  EXPECT_EQ(read_bytes(a), read_bytes(b));
+  EXPECT_EQ(read_bytes(a).substr(0, 12), "CLUMPKITCKPT");
+  std::filesystem::remove(a);
+  std::filesystem::remove(b);
+}
+
+// Expects load_checkpoint(path) to throw InvalidInput whose message names the file.
+void expect_rejected(const std::string& path, const std::string& why) {
+  try {
+    load_checkpoint(path);
+    ADD_FAILURE() << why << ": no exception";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << why << ": " << e.what();
+  }
+}
+
+TEST(DemCheckpoint, TruncatedOrCorruptFileThrowsInvalidInputNamingTheFile) {
+  World world = make_deposition(40);
+  world.step(300);
+  const std::string good = temp_path("good.ckpt"), bad = temp_path("bad.ckpt");
+  save_checkpoint(good, world);
+  const std::string bytes = read_bytes(good);
+  ASSERT_GT(bytes.size(), 100u);
+
+  for (std::size_t size : {std::size_t(0), std::size_t(5), std::size_t(12), std::size_t(16),
+                           std::size_t(30), bytes.size() / 2, bytes.size() - 1}) {
+    write_bytes(bad, bytes.substr(0, size));
+    expect_rejected(bad, "truncated to " + std::to_string(size));
+  }
+  write_bytes(bad, bytes + "x");
+  expect_rejected(bad, "one extra byte");
+
+  for (std::size_t at :
+       {std::size_t(0), std::size_t(12), std::size_t(40), bytes.size() / 2, bytes.size() - 3}) {
+    std::string corrupt = bytes;
+    corrupt[at] = static_cast<char>(corrupt[at] ^ 0x20);
+    write_bytes(bad, corrupt);
+    expect_rejected(bad, "byte flipped at " + std::to_string(at));
+  }
+  std::string other_version = bytes;
+  other_version[12] = 99;
+  write_bytes(bad, other_version);
+  try {
+    load_checkpoint(bad);
+    ADD_FAILURE() << "version 99 accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("version 99"), std::string::npos) << e.what();
+  }
+
+  EXPECT_THROW(load_checkpoint(temp_path("missing.ckpt")), IoError);
+  EXPECT_THROW(save_checkpoint(temp_path("no_such_dir/x.ckpt"), world), IoError);
+  std::filesystem::remove(good);
+  std::filesystem::remove(bad);
+}
+
+TEST(DemRun, StopsAtStepCapInAlignedChunks) {
+  World world = make_deposition(30);
+  std::vector<long> reports;
+  RunLimits limits;
+  limits.max_steps = 250;
+  const RunOutcome out = run_until(world, limits, [&](long done, long total) {
+    EXPECT_EQ(total, 250);
+    reports.push_back(done);
+  });
+  EXPECT_EQ(out.steps, 250);
+  EXPECT_EQ(out.stopped_by, "step_cap");
+  EXPECT_EQ(world.steps(), 250);
+  EXPECT_EQ(reports, (std::vector<long>{100, 200, 250}));
+  // A later call checks on absolute multiples of check_every.
+  reports.clear();
+  limits.max_steps = 120;
+  EXPECT_EQ(run_until(world, limits, [&](long done, long) { reports.push_back(done); }).steps, 120);
+  EXPECT_EQ(reports, (std::vector<long>{50, 120}));
+  limits.max_steps = 0;
+  EXPECT_EQ(run_until(world, limits).stopped_by, "step_cap");
+  limits.check_every = 0;
+  EXPECT_THROW(run_until(world, limits), InvalidInput);
+}
+
+TEST(DemRun, StopsWhenSettledByKineticEnergyThenUnbalancedRatio) {
+  World world = make_deposition(40, /*platen=*/false);
+  world.options().contact.local_damping = 0.7;
+  RunLimits limits;
+  limits.max_steps = 200000;
+  // J; the bodies' potential energy above the floor is ~2e-2 J. (Not much lower: a sphere left
+  // spinning about its vertical contact normal keeps ~4e-7 J, as nothing resists twisting.)
+  limits.kinetic_energy_below = 1e-6;
+  const RunOutcome settled = run_until(world, limits);
+  EXPECT_EQ(settled.stopped_by, "kinetic_energy");
+  EXPECT_LT(settled.steps, limits.max_steps);
+  EXPECT_EQ(settled.steps % 100, 0);
+  EXPECT_LT(kinetic_energy(world), 1e-6);
+
+  RunLimits ratio;
+  ratio.max_steps = 200000;
+  ratio.unbalanced_ratio_below = 0.05;
+  const RunOutcome balanced = run_until(world, ratio);
+  EXPECT_EQ(balanced.stopped_by, "unbalanced_ratio");
+  EXPECT_LT(balanced.steps, ratio.max_steps);
+  EXPECT_LT(mean_unbalanced_force_ratio(world), 0.05);
+}
+
+// Periodic wall-clock checkpoints leave the run unchanged, and a run killed after a
+// checkpoint resumes from it to the same end state.
+TEST(DemRun, PeriodicCheckpointsDoNotChangeTheResultAndResumeIdentically) {
+  constexpr long kSteps = 2000;
+  World plain = make_deposition(60);
+  RunLimits limits;
+  limits.max_steps = kSteps;
+  run_until(plain, limits);
+
+  const std::string path = temp_path("periodic.ckpt");
+  World checked = make_deposition(60);
+  RunLimits with_checkpoints = limits;
+  with_checkpoints.checkpoint_path = path;
+  with_checkpoints.checkpoint_every_seconds = 1e-9;  // after every chunk
+  with_checkpoints.checkpoint_info.stage = "deposition";
+  struct Killed {};
+  EXPECT_THROW(run_until(checked, with_checkpoints,
+                         [](long done, long) {
+                           if (done == 1300) throw Killed{};
+                         }),
+               Killed);
+  CheckpointInfo info;
+  World resumed = load_checkpoint(path, &info);
+  EXPECT_EQ(info.stage, "deposition");
+  EXPECT_EQ(resumed.steps(), 1300);
+  RunLimits rest = with_checkpoints;
+  rest.max_steps = kSteps - resumed.steps();
+  EXPECT_EQ(run_until(resumed, rest).steps, kSteps - 1300);
+  expect_identical(plain, resumed);
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace clumpkit::dem
