@@ -187,7 +187,7 @@ FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions&
   auto search = [&](Vec3 c, double rad, auto&& gain) {
     const bool grow = rad > distance.distance(c);
     std::int64_t best = gain(Sphere{c, rad});
-    for (double step = 0.5 * field.h; step > 0.1 * field.h; step *= 0.5) {
+    for (double step = 0.5 * field.h; step > 0.2 * field.h; step *= 0.5) {
       for (int iter = 0; iter < 4; ++iter) {
         bool moved = false;
         for (int dz = -1; dz <= 1; ++dz)

@@ -61,7 +61,7 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
   if (filled.clump.spheres.empty())
     throw InvalidInput("no sphere fits (fill.min_radius " + format_number(recipe.fill.min_radius) +
                        ")");
-  const Fidelity fid = assess_fidelity(shape.mesh, filled.clump, filled.voxel / 2);
+  const Fidelity fid = assess_fidelity(shape.mesh, filled.clump, filled.voxel);
 
   const ClumpTemplate tpl = make_clump_template(filled.clump, desc.volume);
 

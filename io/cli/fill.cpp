@@ -92,7 +92,7 @@ void register_fill(CLI::App& app) {
     if (r.clump.spheres.empty())
       throw InvalidInput(o->mesh + ": no sphere fits with --min-radius " +
                          format_number(o->fill.min_radius));
-    const Fidelity f = assess_fidelity(mesh, r.clump, r.voxel / 2);
+    const Fidelity f = assess_fidelity(mesh, r.clump, r.voxel);
     write_clump(o->out, r.clump,
                 "clumpkit fill " + o->mesh + "\nspheres " + std::to_string(r.clump.spheres.size()) +
                     ", covered fraction " + format_number(f.covered_fraction));
