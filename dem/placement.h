@@ -1,0 +1,46 @@
+// Non-overlapping random placement of spheres and clumps in a vertical cylinder (specimen stage 1).
+#pragma once
+
+#include "geom/random.h"
+#include "geom/sphere.h"
+
+#include <Eigen/Geometry>
+
+#include <vector>
+
+namespace clumpkit::dem {
+
+/// One body to place: spheres in the body frame (centroid at the origin; a soil sphere is one
+/// sphere at the origin) and the radius of a centroid-centred ball holding every sphere (m).
+/// A bounding radius smaller than the spheres need is raised to the true value.
+struct PlacementItem {
+  std::vector<Sphere> spheres;
+  double bounding_radius = 0.0;
+};
+
+/// Where an item went: centroid in the world and orientation (body -> world, Hamilton unit
+/// quaternion, x_world = orientation · x_body + position), as in Body.
+struct Placement {
+  Vec3 position = Vec3::Zero();
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+};
+
+/// Uniformly random rotation (Shoemake's method from three uniforms), normalised.
+Eigen::Quaterniond uniform_orientation(Rng& rng);
+
+/// Places items in the given order (callers pass largest first) at random positions and
+/// uniformly random orientations inside the vertical cylinder of `radius` around the z-axis,
+/// standing on z = 0: every sphere fully inside (horizontal distance + r <= radius, z - r >= 0)
+/// and no sphere overlapping any sphere of an earlier item (spheres of one item may overlap).
+/// Sequential random trials from the bottom up: each trial draws a centroid uniformly in the
+/// disc of radius (radius − bounding radius) and in height in the band [z_lo, z_lo + band]
+/// (band = diameter of the largest item; never below the bounding radius), then an orientation.
+/// After `max_trials` failed trials z_lo rises by the item's bounding radius (it never falls),
+/// so every item is placed. Collision checks use a uniform grid of the placed spheres.
+/// Deterministic for a given Rng state. If `height` is given it receives the top of the highest
+/// sphere (0 for no items). Throws InvalidInput for a non-positive or non-finite radius,
+/// max_trials < 1, an item without spheres, a bad sphere, or an item wider than the cylinder.
+std::vector<Placement> place_in_cylinder(const std::vector<PlacementItem>& items, double radius,
+                                         Rng& rng, int max_trials = 200, double* height = nullptr);
+
+}  // namespace clumpkit::dem
