@@ -140,9 +140,7 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
   if (ec) throw IoError(out_dir + ": cannot create directory: " + ec.message());
   write_file_atomically(stamp.string(), [&](std::ostream& o) { o << recipe.text; });
 
-  std::vector<int> fraction_of;
-  for (std::size_t f = 0; f < recipe.fractions.size(); ++f)
-    for (int k = 0; k < recipe.fractions[f].count; ++k) fraction_of.push_back(static_cast<int>(f));
+  const std::vector<int> fraction_of = particle_fractions(recipe);
   const std::size_t total = fraction_of.size();
 
   std::vector<nlohmann::ordered_json> records(total);
@@ -160,37 +158,10 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
     }
   }
 
-  std::atomic<std::size_t> done{result.resumed};
-  std::mutex progress_mutex;
-  std::exception_ptr error;
-  std::atomic<bool> failed{false};
-  if (progress) progress(done, total);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, total, 1),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                        if (!todo[i] || failed) continue;
-                        try {
-                          records[i] = make_particle(recipe, i, fraction_of[i], parts, options);
-                        } catch (const std::exception& e) {
-                          if (!failed.exchange(true)) {
-                            try {
-                              throw InvalidInput(recipe.path + ": fraction '" +
-                                                 recipe.fractions[fraction_of[i]].name +
-                                                 "' particle " + id_name(i) + ": " + e.what());
-                            } catch (...) {
-                              error = std::current_exception();
-                            }
-                          }
-                          return;
-                        }
-                        const std::size_t n = ++done;
-                        if (progress && progress_mutex.try_lock()) {
-                          progress(n, total);
-                          progress_mutex.unlock();
-                        }
-                      }
-                    });
-  if (error) std::rethrow_exception(error);
+  for_each_particle(
+      recipe, fraction_of, todo, result.resumed,
+      [&](std::size_t i) { records[i] = make_particle(recipe, i, fraction_of[i], parts, options); },
+      progress);
 
   // Parameter columns: union over particles, first-appearance order.
   std::vector<std::string> params;
@@ -224,14 +195,7 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
     }
   });
 
-  nlohmann::ordered_json m;
-  m["tool"] = "clumpkit";
-  m["version"] = CLUMPKIT_VERSION;
-  m["command"] = "library";
-  m["recipe_path"] = recipe.path;
-  m["recipe"] = recipe.text;
-  m["seed"] = recipe.seed;
-  m["particles"] = total;
+  nlohmann::ordered_json m = manifest_head("library", recipe);
   m["units"] = "recipe units (m); clumps are x,y,z,r in the mesh frame";
   auto& fill = m["fill"];
   fill["spheres"] = recipe.fill.spheres;

@@ -47,6 +47,62 @@ void publish_directory(const std::string& staging, const std::string& dir) {
   if (ec) throw IoError(dir + ": cannot move finished output into place: " + ec.message());
 }
 
+std::vector<int> particle_fractions(const ShapeRecipe& recipe) {
+  std::vector<int> f;
+  for (std::size_t k = 0; k < recipe.fractions.size(); ++k)
+    f.insert(f.end(), static_cast<std::size_t>(recipe.fractions[k].count), static_cast<int>(k));
+  return f;
+}
+
+nlohmann::ordered_json manifest_head(const std::string& command, const ShapeRecipe& recipe) {
+  nlohmann::ordered_json m;
+  m["tool"] = "clumpkit";
+  m["version"] = CLUMPKIT_VERSION;
+  m["command"] = command;
+  m["recipe_path"] = recipe.path;
+  m["recipe"] = recipe.text;
+  m["seed"] = recipe.seed;
+  m["particles"] = particle_fractions(recipe).size();
+  return m;
+}
+
+void for_each_particle(const ShapeRecipe& recipe, const std::vector<int>& fraction_of,
+                       const std::vector<char>& todo, std::size_t already,
+                       const std::function<void(std::size_t)>& work, const Progress& progress) {
+  const std::size_t total = fraction_of.size();
+  std::atomic<std::size_t> done{already};
+  std::exception_ptr error;
+  std::atomic<bool> failed{false};
+  std::mutex progress_mutex;
+  if (progress && already > 0) progress(already, total);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, total, 1),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                        if ((!todo.empty() && !todo[i]) || failed) continue;
+                        try {
+                          work(i);
+                        } catch (const std::exception& e) {
+                          if (!failed.exchange(true)) {
+                            try {
+                              throw InvalidInput(recipe.path + ": fraction '" +
+                                                 recipe.fractions[fraction_of[i]].name +
+                                                 "' particle " + id_name(i) + ": " + e.what());
+                            } catch (...) {
+                              error = std::current_exception();
+                            }
+                          }
+                          return;
+                        }
+                        const std::size_t n = ++done;
+                        if (progress && progress_mutex.try_lock()) {
+                          progress(n, total);
+                          progress_mutex.unlock();
+                        }
+                      }
+                    });
+  if (error) std::rethrow_exception(error);
+}
+
 ShapeBatchResult run_shape_batch(const ShapeRecipe& recipe, const std::string& out_dir,
                                  const Progress& progress) {
   if (fs::exists(out_dir) && !fs::is_directory(out_dir))
@@ -61,43 +117,16 @@ ShapeBatchResult run_shape_batch(const ShapeRecipe& recipe, const std::string& o
     for (int k = 0; k < recipe.fractions[f].count; ++k)
       items.push_back(Item{static_cast<int>(f), {}, {}});
 
-  std::atomic<std::size_t> done{0};
   const std::size_t total = items.size();
-  std::exception_ptr error;
-  std::atomic<bool> failed{false};
-  std::mutex progress_mutex;
   // Generation and descriptors in parallel; each particle owns its random stream.
-  tbb::task_group_context ctx;
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, total, 1),
-      [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t i = r.begin(); i != r.end(); ++i) {
-          if (failed) return;
-          try {
-            Rng rng = Rng::stream(recipe.seed, i);
-            items[i].shape = generate_shape(recipe.fractions[items[i].fraction], rng);
-            items[i].desc = describe(items[i].shape.mesh);
-          } catch (const std::exception& e) {
-            if (!failed.exchange(true)) {
-              const auto& fr = recipe.fractions[items[i].fraction];
-              try {
-                throw InvalidInput(recipe.path + ": fraction '" + fr.name + "' particle " +
-                                   id_name(i) + ": " + e.what());
-              } catch (...) {
-                error = std::current_exception();
-              }
-            }
-            return;
-          }
-          const std::size_t n = ++done;
-          if (progress && progress_mutex.try_lock()) {
-            progress(n, total);
-            progress_mutex.unlock();
-          }
-        }
+  for_each_particle(
+      recipe, particle_fractions(recipe), {}, 0,
+      [&](std::size_t i) {
+        Rng rng = Rng::stream(recipe.seed, i);
+        items[i].shape = generate_shape(recipe.fractions[items[i].fraction], rng);
+        items[i].desc = describe(items[i].shape.mesh);
       },
-      ctx);
-  if (error) std::rethrow_exception(error);
+      progress);
 
   const std::string staging = out_dir + ".partial";
   std::error_code ec;
@@ -137,14 +166,7 @@ ShapeBatchResult run_shape_batch(const ShapeRecipe& recipe, const std::string& o
       }
     });
 
-    nlohmann::ordered_json m;
-    m["tool"] = "clumpkit";
-    m["version"] = CLUMPKIT_VERSION;
-    m["command"] = "shapes";
-    m["recipe_path"] = recipe.path;
-    m["recipe"] = recipe.text;
-    m["seed"] = recipe.seed;
-    m["particles"] = total;
+    nlohmann::ordered_json m = manifest_head("shapes", recipe);
     m["mesh_format"] = "binary STL, float32, units of the recipe (m)";
     auto& fr = m["fractions"] = nlohmann::ordered_json::array();
     std::size_t first = 0;

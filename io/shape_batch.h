@@ -3,8 +3,11 @@
 
 #include "io/recipe.h"
 
+#include <nlohmann/json.hpp>
+
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace clumpkit {
 
@@ -25,6 +28,20 @@ struct ShapeBatchResult {
 /// manifest.json (a previous clumpkit output); otherwise InvalidInput.
 ShapeBatchResult run_shape_batch(const ShapeRecipe& recipe, const std::string& out_dir,
                                  const Progress& progress = {});
+
+/// Runs work(i) for every particle i with todo[i] (all if todo is empty) in parallel (TBB).
+/// Stops at the first failure and rethrows it as InvalidInput "RECIPE: fraction 'NAME' particle
+/// NNNNN: why" (fraction_of[i] names the fraction). progress(done, total) starts from `already`.
+void for_each_particle(const ShapeRecipe& recipe, const std::vector<int>& fraction_of,
+                       const std::vector<char>& todo, std::size_t already,
+                       const std::function<void(std::size_t)>& work, const Progress& progress);
+
+/// Fraction index of every particle of the recipe, in id order.
+std::vector<int> particle_fractions(const ShapeRecipe& recipe);
+
+/// The manifest fields every output shares: tool, version, command, recipe path and text, seed,
+/// particle count.
+nlohmann::ordered_json manifest_head(const std::string& command, const ShapeRecipe& recipe);
 
 /// Replaces `dir` by `staging` (see run_shape_batch for the safety rule).
 void publish_directory(const std::string& staging, const std::string& dir);
