@@ -224,6 +224,18 @@ FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions&
     r.coverage_curve.push_back(1.0 - double(grid.uncovered()) / double(grid.interior()));
   };
   accept(first);
+  // The sphere budget and the coverage target end either strategy; sets stopped_by.
+  auto budget_or_coverage_met = [&] {
+    if (static_cast<int>(r.clump.spheres.size()) >= budget) {
+      r.stopped_by = "spheres";
+      return true;
+    }
+    if (options.coverage > 0 && r.coverage_curve.back() >= options.coverage) {
+      r.stopped_by = "coverage";
+      return true;
+    }
+    return false;
+  };
   if (options.strategy == FillOptions::Strategy::Largest) {
     std::vector<int> order;
     for (int c = 0; c < static_cast<int>(cand.size()); ++c)
@@ -233,14 +245,7 @@ FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions&
                      [&](int a, int b) { return cand[a].radius > cand[b].radius; });
     r.stopped_by = "min-radius";
     for (int c : order) {
-      if (static_cast<int>(r.clump.spheres.size()) >= budget) {
-        r.stopped_by = "spheres";
-        break;
-      }
-      if (options.coverage > 0 && r.coverage_curve.back() >= options.coverage) {
-        r.stopped_by = "coverage";
-        break;
-      }
+      if (budget_or_coverage_met()) break;
       if (cand[c].radius < options.min_radius) break;
       bool inside = false;
       for (const auto& s : r.clump.spheres) inside |= (cand[c].center - s.center).norm() < s.radius;
@@ -254,14 +259,7 @@ FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions&
   }
   int round = 0;
   while (true) {
-    if (static_cast<int>(r.clump.spheres.size()) >= budget) {
-      r.stopped_by = "spheres";
-      break;
-    }
-    if (options.coverage > 0 && r.coverage_curve.back() >= options.coverage) {
-      r.stopped_by = "coverage";
-      break;
-    }
+    if (budget_or_coverage_met()) break;
     bool placed = false;
     while (!queue.empty()) {
       Entry e = queue.top();
