@@ -14,15 +14,9 @@
 #include <tbb/parallel_for.h>
 #include <nlohmann/json.hpp>
 
-#include <atomic>
 #include <filesystem>
 #include <fstream>
-#include <mutex>
 #include <sstream>
-
-#ifndef CLUMPKIT_VERSION
-#define CLUMPKIT_VERSION "0.1.0"
-#endif
 
 namespace fs = std::filesystem;
 

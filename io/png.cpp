@@ -22,7 +22,7 @@ void write_png(const std::string& path, int width, int height, int channels,
   if (width <= 0 || height <= 0 || (channels != 1 && channels != 3))
     throw IoError(path + ": cannot write a " + std::to_string(width) + "x" +
                   std::to_string(height) + "x" + std::to_string(channels) + " PNG");
-  if (stride == 0) stride = std::size_t(width) * channels;
+  const std::size_t row_stride = stride == 0 ? std::size_t(width) * channels : stride;
   // libpng reports errors by longjmp; encode into memory, then write the file atomically.
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
@@ -40,7 +40,8 @@ void write_png(const std::string& path, int width, int height, int channels,
                channels == 1 ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
-  for (int y = 0; y < height; ++y) png_write_row(png, const_cast<png_bytep>(pixels + y * stride));
+  for (int y = 0; y < height; ++y)
+    png_write_row(png, const_cast<png_bytep>(pixels + y * row_stride));
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
   write_file_atomically(path, [&](std::ostream& o) {

@@ -15,10 +15,6 @@
 #include <mutex>
 #include <set>
 
-#ifndef CLUMPKIT_VERSION
-#define CLUMPKIT_VERSION "0.1.0"
-#endif
-
 namespace fs = std::filesystem;
 
 namespace clumpkit {

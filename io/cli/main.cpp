@@ -7,10 +7,6 @@
 #include <cstdio>
 #include <exception>
 
-#ifndef CLUMPKIT_VERSION
-#define CLUMPKIT_VERSION "0.1.0"
-#endif
-
 int main(int argc, char** argv) {
   CLI::App app{
       "clumpkit " CLUMPKIT_VERSION
