@@ -7,6 +7,16 @@
 
 namespace clumpkit::dem {
 
+double unbalanced_to_weight_ratio(const World& world) {
+  double unbalanced = 0.0, weight = 0.0;
+  const double g = world.options().gravity.norm();
+  for (const Body& b : world.bodies()) {
+    unbalanced += b.force.norm();
+    weight += b.mass * g;
+  }
+  return weight > 0.0 ? unbalanced / weight : 0.0;
+}
+
 RunOutcome run_until(World& world, const RunLimits& limits,
                      const std::function<void(long, long)>& progress) {
   if (limits.max_steps < 0)
@@ -16,7 +26,7 @@ RunOutcome run_until(World& world, const RunLimits& limits,
     throw InvalidInput("run_until: check_every must be positive, got " +
                        std::to_string(limits.check_every));
   if (!(limits.kinetic_energy_below >= 0) || !(limits.unbalanced_ratio_below >= 0) ||
-      !(limits.checkpoint_every_seconds >= 0))
+      !(limits.weight_ratio_below >= 0) || !(limits.checkpoint_every_seconds >= 0))
     throw InvalidInput("run_until: thresholds and checkpoint period must be non-negative");
 
   using Clock = std::chrono::steady_clock;
@@ -49,6 +59,11 @@ RunOutcome run_until(World& world, const RunLimits& limits,
     if (limits.unbalanced_ratio_below > 0 &&
         mean_unbalanced_force_ratio(world) < limits.unbalanced_ratio_below) {
       outcome.stopped_by = "unbalanced_ratio";
+      return outcome;
+    }
+    if (limits.weight_ratio_below > 0 &&
+        unbalanced_to_weight_ratio(world) < limits.weight_ratio_below) {
+      outcome.stopped_by = "weight_ratio";
       return outcome;
     }
   }

@@ -2,6 +2,7 @@
 
 #include "geom/errors.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -14,6 +15,22 @@ double critical_timestep(double mass, double stiffness) {
     throw InvalidInput("critical time step: stiffness must be positive, got " +
                        std::to_string(stiffness));
   return std::sqrt(mass / stiffness);
+}
+
+double body_critical_timestep(const Body& body, double kn, double ks) {
+  double dt = critical_timestep(body.mass, kn);
+  if (body.rotation_locked) return dt;
+  const double k = std::max(kn, ks);
+  for (int a = 0; a < 3; ++a) {
+    double arm = 0.0;
+    for (const Sphere& s : body.spheres) {
+      Vec3 off = s.center;
+      off[a] = 0.0;
+      arm = std::max(arm, off.norm() + s.radius);
+    }
+    dt = std::min(dt, critical_timestep(body.moments[a], k * arm * arm));
+  }
+  return dt;
 }
 
 }  // namespace clumpkit::dem

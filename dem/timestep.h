@@ -1,11 +1,20 @@
 // Critical time step of the linear spring contact law, used to choose a stable DEM step.
 #pragma once
 
+#include "dem/body.h"
+
 namespace clumpkit::dem {
 
 /// Critical time step of a mass-spring oscillator, dt = sqrt(m / k) (the PFC convention for the
 /// linear contact model; the undamped period is 2π·sqrt(m/k)). Mass in kg, stiffness in N/m.
 /// Throws InvalidInput for non-positive or non-finite arguments.
 double critical_timestep(double mass, double stiffness);
+
+/// Critical time step of one rigid body (s): the smaller of sqrt(m / kn) and, for each principal
+/// axis a, sqrt(I_a / (k·r_a²)) with k = max(kn, ks) and r_a the largest distance of the body's
+/// surface from that axis (sphere centre distance + radius), the lever arm a contact force can
+/// have about it. Tighter than using the bounding radius for every axis, which overestimates
+/// the lever arm about the long axis of an elongated clump.
+double body_critical_timestep(const Body& body, double kn, double ks);
 
 }  // namespace clumpkit::dem

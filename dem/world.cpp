@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -41,6 +42,7 @@ World::World(WorldOptions options) : options_(options) {
   if (!(options_.skin >= 0.0) || !std::isfinite(options_.skin))
     throw InvalidInput("DEM world: skin must be non-negative, got " +
                        std::to_string(options_.skin));
+  body_first_sphere_.push_back(0);
 }
 
 int World::add_body(Body body) {
@@ -53,15 +55,18 @@ int World::add_body(Body body) {
     sphere_local_.push_back(s.center);
     sphere_radius_.push_back(s.radius);
   }
+  body_first_sphere_.push_back(static_cast<int>(sphere_body_.size()));
   body.orientation.normalize();
   bodies_.push_back(std::move(body));
   sphere_world_.resize(sphere_body_.size());
   dirty_ = true;
+  pairs_valid_ = walls_valid_ = false;
   return index;
 }
 
 int World::add_wall(const Wall& wall) {
   walls_.push_back(wall);
+  walls_valid_ = false;
   return static_cast<int>(walls_.size()) - 1;
 }
 
@@ -78,6 +83,30 @@ bool World::need_rebuild() const {
   for (std::size_t k = 0; k < sphere_world_.size(); ++k)
     if ((sphere_world_[k] - sphere_at_build_[k]).squaredNorm() > limit) return true;
   return false;
+}
+
+// update_sphere_positions() and need_rebuild() in one parallel pass.
+bool World::update_positions_and_check() {
+  const std::size_t n = sphere_body_.size();
+  const bool have_reference = !dirty_ && sphere_at_build_.size() == n;
+  const double limit = 0.25 * options_.skin * options_.skin;  // (skin/2)²
+  std::atomic<bool> moved{false};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      bool far = false;
+                      for (std::size_t k = r.begin(); k != r.end(); ++k) {
+                        const Body& b = bodies_[sphere_body_[k]];
+                        const Vec3& local = sphere_local_[k];
+                        // q·0 is exactly +0 (Eigen's formula), so a centred sphere skips it.
+                        const Vec3 x = local.isZero(0.0) ? Vec3(b.position + Vec3::Zero())
+                                                         : Vec3(b.position + b.orientation * local);
+                        sphere_world_[k] = x;
+                        if (have_reference && (x - sphere_at_build_[k]).squaredNorm() > limit)
+                          far = true;
+                      }
+                      if (far) moved.store(true, std::memory_order_relaxed);
+                    });
+  return !have_reference || moved.load();
 }
 
 void World::build_neighbours() {
@@ -97,8 +126,9 @@ void World::build_neighbours() {
   }
   h += 2.0 * *std::max_element(sphere_radius_.begin(), sphere_radius_.end());
   std::int64_t dims[3];
+  double cells = 1.0;
   for (;;) {
-    double cells = 1.0;
+    cells = 1.0;
     for (int a = 0; a < 3; ++a) {
       dims[a] = static_cast<std::int64_t>(std::floor((hi[a] - lo[a]) / h)) + 1;
       cells *= static_cast<double>(dims[a]);
@@ -114,128 +144,309 @@ void World::build_neighbours() {
     return (cx * dims[1] + cy) * dims[2] + cz;
   };
 
-  // Spheres sorted by (cell key, index): a deterministic, locality-friendly order.
-  std::vector<std::pair<std::int64_t, int>> keyed(n);
-  for (std::size_t k = 0; k < n; ++k) {
+  // Spheres of each cell, in index order: a dense cell table (counting sort) when the grid is
+  // small, else spheres sorted by (cell key, index) and binary search.
+  const bool dense = cells <= 8.0 * static_cast<double>(n) + 65536.0;
+  std::vector<std::pair<std::int64_t, int>> keyed;
+  std::vector<std::int64_t> key(n);
+  parallel_items(n, [&](std::size_t k) {
     const Vec3& x = sphere_world_[k];
-    keyed[k] = {key_of(cell_of(x, 0), cell_of(x, 1), cell_of(x, 2)), static_cast<int>(k)};
+    key[k] = key_of(cell_of(x, 0), cell_of(x, 1), cell_of(x, 2));
+  });
+  if (dense) {
+    cell_start_.assign(static_cast<std::size_t>(cells) + 1, 0);
+    for (std::size_t k = 0; k < n; ++k) ++cell_start_[key[k] + 1];
+    for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
+    cell_spheres_.resize(n);
+    scratch_.assign(cell_start_.begin(), cell_start_.end() - 1);
+    for (std::size_t k = 0; k < n; ++k) cell_spheres_[scratch_[key[k]]++] = static_cast<int>(k);
+  } else {
+    keyed.resize(n);
+    for (std::size_t k = 0; k < n; ++k) keyed[k] = {key[k], static_cast<int>(k)};
+    std::sort(keyed.begin(), keyed.end());
   }
-  std::sort(keyed.begin(), keyed.end());
 
-  std::vector<std::vector<int>> partners(n);
+  partners_.resize(n);
   parallel_items(n, [&](std::size_t i) {
     const Vec3& x = sphere_world_[i];
     const std::int64_t c[3] = {cell_of(x, 0), cell_of(x, 1), cell_of(x, 2)};
-    std::vector<int>& out = partners[i];
+    std::vector<int>& out = partners_[i];
+    out.clear();
+    auto consider = [&](int j) {
+      if (j <= static_cast<int>(i) || sphere_body_[j] == sphere_body_[i]) return;
+      const double reach = sphere_radius_[i] + sphere_radius_[j] + options_.skin;
+      if ((sphere_world_[j] - x).squaredNorm() < reach * reach) out.push_back(j);
+    };
     for (std::int64_t dx = -1; dx <= 1; ++dx)
       for (std::int64_t dy = -1; dy <= 1; ++dy)
         for (std::int64_t dz = -1; dz <= 1; ++dz) {
           const std::int64_t cx = c[0] + dx, cy = c[1] + dy, cz = c[2] + dz;
           if (cx < 0 || cy < 0 || cz < 0 || cx >= dims[0] || cy >= dims[1] || cz >= dims[2])
             continue;
-          const std::int64_t key = key_of(cx, cy, cz);
-          auto first = std::lower_bound(keyed.begin(), keyed.end(), std::make_pair(key, -1));
-          for (auto it = first; it != keyed.end() && it->first == key; ++it) {
-            const int j = it->second;
-            if (j <= static_cast<int>(i) || sphere_body_[j] == sphere_body_[i]) continue;
-            const double reach = sphere_radius_[i] + sphere_radius_[j] + options_.skin;
-            if ((sphere_world_[j] - x).squaredNorm() < reach * reach) out.push_back(j);
+          const std::int64_t cell = key_of(cx, cy, cz);
+          if (dense) {
+            for (std::int64_t s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s)
+              consider(cell_spheres_[s]);
+          } else {
+            auto first = std::lower_bound(keyed.begin(), keyed.end(), std::make_pair(cell, -1));
+            for (auto it = first; it != keyed.end() && it->first == cell; ++it)
+              consider(it->second);
           }
         }
     std::sort(out.begin(), out.end());
   });
-  for (std::size_t i = 0; i < n; ++i)
-    for (int j : partners[i]) candidates_.emplace_back(static_cast<int>(i), j);
+  scratch_.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) scratch_[i + 1] = scratch_[i] + partners_[i].size();
+  candidates_.resize(scratch_[n]);
+  parallel_items(n, [&](std::size_t i) {
+    std::size_t k = scratch_[i];
+    for (int j : partners_[i]) candidates_[k++] = {static_cast<int>(i), j};
+  });
+}
+
+// Index of the candidate list: per sphere its candidates as i (a range of candidates_) and as j
+// (down_), per body every candidate it takes part in, in candidate order — the order in which
+// the serial sum of the reference implementation added them — and empty slots.
+void World::derive_pair_index() {
+  const std::size_t n = sphere_body_.size();
+  const std::size_t m = candidates_.size();
+  cand_begin_.assign(n + 1, 0);
+  down_begin_.assign(n + 1, 0);
+  for (const auto& [i, j] : candidates_) ++cand_begin_[i + 1], ++down_begin_[j + 1];
+  for (std::size_t s = 0; s < n; ++s) {
+    cand_begin_[s + 1] += cand_begin_[s];
+    down_begin_[s + 1] += down_begin_[s];
+  }
+  down_.resize(m);
+  scratch_.assign(down_begin_.begin(), down_begin_.end() - 1);
+  for (std::size_t k = 0; k < m; ++k) down_[scratch_[candidates_[k].second]++] = k;
+
+  const std::size_t nb = bodies_.size();
+  body_begin_.assign(nb + 1, 0);
+  for (std::size_t b = 0; b < nb; ++b) {
+    std::size_t count = 0;
+    for (int s = body_first_sphere_[b]; s < body_first_sphere_[b + 1]; ++s)
+      count += (cand_begin_[s + 1] - cand_begin_[s]) + (down_begin_[s + 1] - down_begin_[s]);
+    body_begin_[b + 1] = body_begin_[b] + count;
+  }
+  body_items_.resize(body_begin_[nb]);
+  parallel_items(nb, [&](std::size_t b) {
+    std::size_t out = body_begin_[b];
+    for (int s = body_first_sphere_[b]; s < body_first_sphere_[b + 1]; ++s) {
+      for (std::size_t d = down_begin_[s]; d < down_begin_[s + 1]; ++d)
+        body_items_[out++] = 2 * static_cast<std::uint64_t>(down_[d]) + 1;  // holds j: +f
+      for (std::size_t k = cand_begin_[s]; k < cand_begin_[s + 1]; ++k)
+        body_items_[out++] = 2 * static_cast<std::uint64_t>(k);  // holds i: −f
+    }
+    // One sphere: (i', s) with i' < s precede (s, j), already in order. A clump: sort.
+    if (body_first_sphere_[b + 1] - body_first_sphere_[b] > 1)
+      std::sort(body_items_.begin() + static_cast<std::ptrdiff_t>(body_begin_[b]),
+                body_items_.begin() + static_cast<std::ptrdiff_t>(body_begin_[b + 1]));
+  });
+  slot_state_.resize(m);
+  slot_active_.assign(m, 0);
+}
+
+void World::import_pairs() {
+  const int n = sphere_count();
+  parallel_items(contacts_.size(), [&](std::size_t c) {
+    const PairContact& pc = contacts_[c];
+    if (pc.i < 0 || pc.i >= n) return;
+    const auto first = candidates_.begin() + static_cast<std::ptrdiff_t>(cand_begin_[pc.i]);
+    const auto last = candidates_.begin() + static_cast<std::ptrdiff_t>(cand_begin_[pc.i + 1]);
+    const auto it = std::lower_bound(first, last, std::make_pair(pc.i, pc.j));
+    if (it == last || it->second != pc.j) return;  // no longer a candidate: history dropped
+    const auto k = static_cast<std::size_t>(it - candidates_.begin());
+    slot_state_[k] = pc.state;
+    slot_active_[k] = 1;
+  });
+}
+
+void World::export_pairs() {
+  contacts_.clear();
+  for (std::size_t k = 0; k < candidates_.size(); ++k) {
+    if (!slot_active_[k]) continue;
+    PairContact& c = contacts_.emplace_back();
+    c.i = candidates_[k].first;
+    c.j = candidates_[k].second;
+    c.state = slot_state_[k];
+  }
+}
+
+// Wall candidates: (sphere, wall) pairs with a gap below the skin at the spheres' build positions.
+// A sphere moves at most skin/2 before the next build and a wall at most skin/2 before
+// walls_moved() asks for new candidates, so every touching pair is a candidate.
+bool World::walls_moved() const {
+  if (walls_.size() != walls_at_build_.size()) return true;
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    const Wall& a = walls_[w];
+    const Wall& b = walls_at_build_[w];
+    if (a.kind != b.kind || a.radius != b.radius || a.normal != b.normal) return true;
+    if (a.kind == Wall::Kind::cylinder) {
+      if (a.point.x() != b.point.x() || a.point.y() != b.point.y()) return true;
+    } else if (!(std::abs((a.point - b.point).dot(a.normal)) <= 0.5 * options_.skin)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+void World::build_wall_candidates() {
+  const std::size_t n = sphere_body_.size();
+  const std::size_t nw = walls_.size();
+  walls_at_build_ = walls_;
+  const double skin = options_.skin;
+  auto candidate = [&](std::size_t s, std::size_t w) {
+    const Wall& wall = walls_[w];
+    const Vec3& x = sphere_at_build_[s];
+    const double r = sphere_radius_[s];
+    const double slack = 1e-9 * (skin + r) + 1e-12 * (x.norm() + wall.point.norm() + wall.radius);
+    const WallHit hit = wall_hit(wall, x, r);
+    return wall.kind == Wall::Kind::cylinder && !hit.touching && hit.overlap == 0.0
+               ? true  // centre on the axis (no normal): keep it
+               : hit.overlap > -(skin + slack);
+  };
+  scratch_.assign(n + 1, 0);
+  parallel_items(n, [&](std::size_t s) {
+    std::size_t count = 0;
+    for (std::size_t w = 0; w < nw; ++w) count += candidate(s, w) ? 1 : 0;
+    scratch_[s + 1] = count;
+  });
+  for (std::size_t s = 0; s < n; ++s) scratch_[s + 1] += scratch_[s];
+  wall_cand_.resize(scratch_[n]);
+  parallel_items(n, [&](std::size_t s) {
+    std::size_t k = scratch_[s];
+    for (std::size_t w = 0; w < nw; ++w)
+      if (candidate(s, w)) wall_cand_[k++] = {static_cast<int>(s), static_cast<int>(w)};
+  });
+  const std::size_t nb = bodies_.size();
+  body_wall_begin_.resize(nb + 1);
+  for (std::size_t b = 0; b <= nb; ++b) body_wall_begin_[b] = scratch_[body_first_sphere_[b]];
+  wall_slot_state_.resize(wall_cand_.size());
+  wall_slot_active_.assign(wall_cand_.size(), 0);
+}
+
+void World::import_walls() {
+  parallel_items(wall_contacts_.size(), [&](std::size_t c) {
+    const WallContact& wc = wall_contacts_[c];
+    const auto it =
+        std::lower_bound(wall_cand_.begin(), wall_cand_.end(), std::make_pair(wc.sphere, wc.wall));
+    if (it == wall_cand_.end() || *it != std::make_pair(wc.sphere, wc.wall)) return;
+    const auto k = static_cast<std::size_t>(it - wall_cand_.begin());
+    wall_slot_state_[k] = wc.state;
+    wall_slot_active_[k] = 1;
+  });
+}
+
+void World::export_walls() {
+  wall_contacts_.clear();
+  for (std::size_t k = 0; k < wall_cand_.size(); ++k) {
+    if (!wall_slot_active_[k]) continue;
+    WallContact& c = wall_contacts_.emplace_back();
+    c.sphere = wall_cand_[k].first;
+    c.wall = wall_cand_[k].second;
+    c.state = wall_slot_state_[k];
+  }
 }
 
 void World::compute_forces() {
   const double dt = options_.timestep;
   const ContactParams& p = options_.contact;
 
-  // Pair contacts: geometry per candidate (parallel, own slots), then the new sorted contact
-  // list merged with the old one (both sorted by (i, j)) to carry the shear history.
-  std::vector<double> overlap(candidates_.size());
-  parallel_items(candidates_.size(), [&](std::size_t k) {
-    const auto [i, j] = candidates_[k];
-    overlap[k] =
-        sphere_radius_[i] + sphere_radius_[j] - (sphere_world_[j] - sphere_world_[i]).norm();
+  kinematics_.resize(bodies_.size());
+  parallel_items(bodies_.size(), [&](std::size_t k) {
+    const Body& b = bodies_[k];
+    kinematics_[k] = Kinematics{b.position, b.velocity, b.angular_velocity, b.mass};
   });
-  std::vector<PairContact> next;
-  std::size_t old = 0;
-  for (std::size_t k = 0; k < candidates_.size(); ++k) {
-    if (!(overlap[k] > 0.0)) continue;
-    PairContact c;
-    c.i = candidates_[k].first;
-    c.j = candidates_[k].second;
-    while (old < contacts_.size() &&
-           std::make_pair(contacts_[old].i, contacts_[old].j) < candidates_[k])
-      ++old;
-    if (old < contacts_.size() && contacts_[old].i == c.i && contacts_[old].j == c.j)
-      c.state = contacts_[old].state;  // existing contact: keep its shear history
-    next.push_back(c);
-  }
-  contacts_ = std::move(next);
+  slot_out_.resize(candidates_.size());
 
-  parallel_items(contacts_.size(), [&](std::size_t k) {
-    PairContact& c = contacts_[k];
-    const Body& a = bodies_[sphere_body_[c.i]];
-    const Body& b = bodies_[sphere_body_[c.j]];
-    const Vec3 d = sphere_world_[c.j] - sphere_world_[c.i];
-    const double dist = d.norm();
+  // Pair contacts, one slot per candidate: a touching pair keeps its shear history when it
+  // touched at the last step too, else it starts from a fresh state.
+  const std::size_t ncand = candidates_.size();
+  parallel_items(ncand, [&](std::size_t k) {
+    // The partner j is far from i in memory for a mixed packing: fetch a few candidates ahead.
+    constexpr std::size_t kAhead = 6;
+    if (k + kAhead < ncand) {
+      const int ahead = candidates_[k + kAhead].second;
+      __builtin_prefetch(&sphere_world_[ahead]);
+      __builtin_prefetch(&kinematics_[sphere_body_[ahead]]);
+    }
+    const auto [i, j] = candidates_[k];
+    const Vec3 d = sphere_world_[j] - sphere_world_[i];
+    const double touch = sphere_radius_[i] + sphere_radius_[j];
+    const double d2 = d.squaredNorm();
+    if (d2 > touch * touch * (1.0 + 1e-9)) {  // clearly apart: no square root
+      slot_active_[k] = 0;
+      return;
+    }
+    const double dist = std::sqrt(d2);  // = d.norm()
+    const double delta = touch - dist;
+    if (!(delta > 0.0)) {
+      slot_active_[k] = 0;
+      return;
+    }
+    ContactState& state = slot_state_[k];
+    if (!slot_active_[k]) state = ContactState();
+    slot_active_[k] = 1;
+    const Kinematics& a = kinematics_[sphere_body_[i]];
+    const Kinematics& b = kinematics_[sphere_body_[j]];
     const Vec3 n = dist > 0.0 ? Vec3(d / dist) : Vec3(Vec3::UnitZ());
-    const double delta = sphere_radius_[c.i] + sphere_radius_[c.j] - dist;
-    const Vec3 point = sphere_world_[c.i] + (sphere_radius_[c.i] - 0.5 * delta) * n;
+    const Vec3 point = sphere_world_[i] + (sphere_radius_[i] - 0.5 * delta) * n;
     const Vec3 va = a.velocity + a.angular_velocity.cross(point - a.position);
     const Vec3 vb = b.velocity + b.angular_velocity.cross(point - b.position);
     const double m_eff = a.mass * b.mass / (a.mass + b.mass);
-    update_contact(c.state, n, delta, point, vb - va, m_eff, p, dt);
+    update_contact(state, n, delta, point, vb - va, m_eff, p, dt);
+    slot_out_[k] = SlotForce{state.force(), point};
   });
 
-  // Wall contacts, enumerated in (sphere, wall) order and merged with the old list likewise.
-  std::vector<WallContact> next_wall;
-  std::size_t old_wall = 0;
-  for (int s = 0; s < sphere_count(); ++s)
-    for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
-      const WallHit hit = wall_hit(walls_[w], sphere_world_[s], sphere_radius_[s]);
-      if (!hit.touching) continue;
-      WallContact c;
-      c.sphere = s;
-      c.wall = w;
-      while (old_wall < wall_contacts_.size() &&
-             std::make_pair(wall_contacts_[old_wall].sphere, wall_contacts_[old_wall].wall) <
-                 std::make_pair(s, w))
-        ++old_wall;
-      if (old_wall < wall_contacts_.size() && wall_contacts_[old_wall].sphere == s &&
-          wall_contacts_[old_wall].wall == w)
-        c.state = wall_contacts_[old_wall].state;
-      const Body& b = bodies_[sphere_body_[s]];
-      const Vec3 vb = b.velocity + b.angular_velocity.cross(hit.point - b.position);
-      const Vec3 vw = walls_[w].kind == Wall::Kind::plane ? walls_[w].velocity : Vec3::Zero();
-      update_contact(c.state, hit.normal, hit.overlap, hit.point, vb - vw, b.mass, p, dt);
-      next_wall.push_back(c);
+  // Wall contacts, one slot per wall candidate, likewise.
+  parallel_items(wall_cand_.size(), [&](std::size_t k) {
+    const auto [s, w] = wall_cand_[k];
+    const WallHit hit = wall_hit(walls_[w], sphere_world_[s], sphere_radius_[s]);
+    if (!hit.touching) {
+      wall_slot_active_[k] = 0;
+      return;
     }
-  wall_contacts_ = std::move(next_wall);
+    ContactState& state = wall_slot_state_[k];
+    if (!wall_slot_active_[k]) state = ContactState();
+    wall_slot_active_[k] = 1;
+    const Body& b = bodies_[sphere_body_[s]];
+    const Vec3 vb = b.velocity + b.angular_velocity.cross(hit.point - b.position);
+    const Vec3 vw = walls_[w].kind == Wall::Kind::plane ? walls_[w].velocity : Vec3::Zero();
+    update_contact(state, hit.normal, hit.overlap, hit.point, vb - vw, b.mass, p, dt);
+  });
 
-  // Sums in fixed order: gravity, pair contacts in (i, j) order, wall contacts.
-  for (Body& b : bodies_) {
-    b.force = b.mass * options_.gravity;
-    b.torque = Vec3::Zero();
-  }
-  for (const PairContact& c : contacts_) {
-    const Vec3 f = c.state.force();
-    Body& a = bodies_[sphere_body_[c.i]];
-    Body& b = bodies_[sphere_body_[c.j]];
-    b.force += f;
-    b.torque += (c.state.point - b.position).cross(f);
-    a.force -= f;
-    a.torque -= (c.state.point - a.position).cross(f);
-  }
-  for (const WallContact& c : wall_contacts_) {
-    const Vec3 f = c.state.force();
-    Body& b = bodies_[sphere_body_[c.sphere]];
-    b.force += f;
-    b.torque += (c.state.point - b.position).cross(f);
-  }
+  // Sums per body (parallel over bodies), each in the fixed order gravity, pair contacts in
+  // (i, j) order, wall contacts in (sphere, wall) order.
+  parallel_items(bodies_.size(), [&](std::size_t k) {
+    Body& b = bodies_[k];
+    Vec3 force = b.mass * options_.gravity;
+    Vec3 torque = Vec3::Zero();
+    for (std::size_t e = body_begin_[k]; e < body_begin_[k + 1]; ++e) {
+      const std::uint64_t item = body_items_[e];
+      const std::size_t c = static_cast<std::size_t>(item >> 1);
+      if (!slot_active_[c]) continue;
+      const SlotForce& out = slot_out_[c];
+      const Vec3& f = out.force;
+      const Vec3 arm = out.point - b.position;
+      if (item & 1) {
+        force += f;
+        torque += arm.cross(f);
+      } else {
+        force -= f;
+        torque -= arm.cross(f);
+      }
+    }
+    for (std::size_t c = body_wall_begin_[k]; c < body_wall_begin_[k + 1]; ++c) {
+      if (!wall_slot_active_[c]) continue;
+      const ContactState& s = wall_slot_state_[c];
+      const Vec3 f = s.force();
+      force += f;
+      torque += (s.point - b.position).cross(f);
+    }
+    b.force = force;
+    b.torque = torque;
+  });
 }
 
 void World::integrate() {
@@ -248,8 +459,17 @@ void World::integrate() {
     b.position += b.velocity * dt;
     if (b.rotation_locked) return;
     const Vec3 t = local_damping(b.torque, b.angular_velocity, alpha);
-    const Vec3 momentum = b.angular_momentum() + t * dt;
     const Eigen::Quaterniond q0 = b.orientation;
+    if (b.moments.x() == b.moments.y() && b.moments.y() == b.moments.z()) {
+      // Isotropic body (a sphere): ω = L/I whatever the orientation, so the midpoint passes
+      // below would all return the same ω; evaluated directly (equal up to rounding).
+      const double inertia = b.moments.x();
+      const Vec3 omega = (inertia * b.angular_velocity + t * dt) / inertia;
+      b.orientation = (rotation_quaternion(dt * omega) * q0).normalized();
+      b.angular_velocity = omega;
+      return;
+    }
+    const Vec3 momentum = b.angular_momentum() + t * dt;
     // Explicit midpoint for dq/dt = ½ ω ⊗ q with ω = ω(q, L) and L constant over the step.
     Vec3 omega = b.angular_velocity_for(momentum, q0);
     for (int pass = 0; pass < 3; ++pass) {
@@ -265,13 +485,33 @@ void World::integrate() {
 
 void World::step(int count) {
   for (int s = 0; s < count; ++s) {
-    update_sphere_positions();
-    if (need_rebuild()) build_neighbours();
+    bool walls_stale = !walls_valid_;
+    if (update_positions_and_check()) {
+      // New candidates: the history travels through contacts_ / wall_contacts_.
+      if (pairs_valid_) export_pairs();
+      if (walls_valid_) export_walls();
+      pairs_valid_ = walls_valid_ = false;
+      build_neighbours();
+      walls_stale = true;
+    }
+    if (!pairs_valid_) {
+      derive_pair_index();
+      import_pairs();
+      pairs_valid_ = true;
+    }
+    if (walls_stale || walls_moved()) {
+      if (walls_valid_) export_walls();
+      build_wall_candidates();
+      import_walls();
+      walls_valid_ = true;
+    }
     compute_forces();
     integrate();
     time_ += options_.timestep;
     ++steps_;
   }
+  if (pairs_valid_) export_pairs();
+  if (walls_valid_) export_walls();
   update_sphere_positions();
 }
 
@@ -282,6 +522,7 @@ void World::rescale_friction(double new_friction) {
   options_.contact.friction = new_friction;
   for (PairContact& c : contacts_) dem::rescale_friction(c.state, new_friction);
   for (WallContact& c : wall_contacts_) dem::rescale_friction(c.state, new_friction);
+  pairs_valid_ = walls_valid_ = false;  // the slots take the new states from the lists
 }
 
 double kinetic_energy(const World& world) {

@@ -92,6 +92,16 @@ class World {
   void build_neighbours();
   void compute_forces();
   void integrate();
+  // Fast path (world.cpp): per-candidate contact slots mirror contacts_ / wall_contacts_ during
+  // step(); they are rebuilt from those lists whenever marked stale.
+  bool update_positions_and_check();
+  void derive_pair_index();
+  void export_pairs();
+  void import_pairs();
+  bool walls_moved() const;
+  void build_wall_candidates();
+  void export_walls();
+  void import_walls();
 
   WorldOptions options_;
   std::vector<Body> bodies_;
@@ -109,6 +119,36 @@ class World {
   double time_ = 0.0;
   std::int64_t steps_ = 0;
   std::int64_t builds_ = 0;
+
+  // Derived state of the fast path (never saved; see world.cpp).
+  std::vector<int> body_first_sphere_;      // per body, then the sphere count
+  std::vector<std::vector<int>> partners_;  // scratch of build_neighbours
+  std::vector<std::int64_t> cell_start_;    // scratch of build_neighbours
+  std::vector<int> cell_spheres_;           // scratch of build_neighbours
+  std::vector<std::size_t> cand_begin_;     // first candidate (i, ·) per sphere i
+  std::vector<std::size_t> down_begin_;     // per sphere j: range in down_
+  std::vector<std::size_t> down_;           // candidates (·, j) grouped by j, in order
+  std::vector<std::size_t> body_begin_;     // per body: range in body_items_
+  std::vector<std::uint64_t> body_items_;   // 2·candidate + (1 when the body holds j)
+  struct Kinematics {                       // what the contact kernels read of a body, packed
+    Vec3 position, velocity, angular_velocity;
+    double mass;
+  };
+  std::vector<Kinematics> kinematics_;  // per body, refreshed each step
+  struct SlotForce {                    // per touching candidate: force on j and the contact point
+    Vec3 force, point;
+  };
+  std::vector<SlotForce> slot_out_;             // per candidate
+  std::vector<ContactState> slot_state_;        // per candidate
+  std::vector<std::uint8_t> slot_active_;       // per candidate: touching at the last step
+  std::vector<std::pair<int, int>> wall_cand_;  // sorted (sphere, wall)
+  std::vector<ContactState> wall_slot_state_;   // per wall candidate
+  std::vector<std::uint8_t> wall_slot_active_;  // per wall candidate
+  std::vector<std::size_t> body_wall_begin_;    // per body: range in wall_cand_
+  std::vector<Wall> walls_at_build_;            // walls when wall_cand_ was built
+  std::vector<std::size_t> scratch_;            // counts / offsets
+  bool pairs_valid_ = false;  // slots mirror contacts_ for the current candidates_
+  bool walls_valid_ = false;  // wall slots mirror wall_contacts_ for the current wall_cand_
 };
 
 /// Total kinetic energy Σ ½·m·|v|² + ½·ω·L (J) (velocities at the half step).

@@ -117,8 +117,16 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
         } else if (g == "friction") {
           r.friction = f.number(cv, field);
           if (r.friction < 0) f.fail(field, "must not be negative, got " + toml_show(cv));
+        } else if (g == "damping_ratio") {
+          r.damping_ratio = f.number(cv, field);
+          if (!(r.damping_ratio >= 0 && r.damping_ratio < 1))
+            f.fail(field, "must be in [0, 1), got " + toml_show(cv));
+        } else if (g == "local_damping") {
+          r.local_damping = f.number(cv, field);
+          if (!(r.local_damping >= 0 && r.local_damping < 1))
+            f.fail(field, "must be in [0, 1), got " + toml_show(cv));
         } else {
-          f.fail(field, "unknown key (known: kn, ks, friction)");
+          f.fail(field, "unknown key (known: kn, ks, friction, damping_ratio, local_damping)");
         }
       }
     } else if (k == "target_relative_density") {

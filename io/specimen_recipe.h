@@ -31,6 +31,9 @@ struct SpecimenRecipe {
       library_recipe;  ///< a shapes recipe with [fill] to build one (paths relative to the recipe)
   double soil_density = 2700.0, rock_density = 2870.0;  ///< [kg/m³]
   double kn = 1e6, ks = 1e6, friction = 0.8;            ///< contact law, N/m
+  /// Viscous normal damping ratio β and PFC local damping α of the preparation (defaults of
+  /// dem::deposition_contact()).
+  double damping_ratio = 0.5, local_damping = 0.1;
   double target_relative_density = 0.5;
   int layers = 3;
   /// Friction values of the quasi-vibration calibration (deposition at the largest gives

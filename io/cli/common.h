@@ -15,6 +15,7 @@ void register_describe(CLI::App& app);
 void register_fill(CLI::App& app);
 void register_library(CLI::App& app);
 void register_volume(CLI::App& app);
+void register_specimen(CLI::App& app);
 
 /// Thread-count control shared by parallel subcommands: 0 = all cores.
 void set_threads(int threads);
@@ -25,6 +26,11 @@ class ProgressBar {
   ProgressBar(std::string label, bool quiet);
   ~ProgressBar();
   void update(std::size_t done, std::size_t total);
+  /// Changes the label (e.g. the current stage) from the next update on.
+  void set_label(std::string label) {
+    label_ = std::move(label);
+    last_permille_ = -1;
+  }
   void finish();
 
  private:

@@ -1,0 +1,520 @@
+#include "dem/specimen.h"
+
+#include "dem/checkpoint.h"
+#include "dem/deposition.h"
+#include "dem/placement.h"
+#include "dem/run.h"
+#include "dem/timestep.h"
+#include "geom/errors.h"
+#include "geom/random.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <sstream>
+
+namespace clumpkit::dem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Random streams of the stages (Rng::stream(seed, index)).
+enum Stream : std::uint64_t {
+  calibration_particles = 1,
+  calibration_placement,
+  layer_particles_stream,
+  layer_placement
+};
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+std::string hex(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%a", v);
+  return buf;
+}
+
+/// Small key = value files of finished stages; doubles in hexadecimal so they round-trip.
+using Record = std::map<std::string, std::string>;
+
+void write_record(const fs::path& path, const Record& r) {
+  const fs::path tmp = path.string() + ".tmp";
+  {
+    std::ofstream out(tmp);
+    for (const auto& [k, v] : r) out << k << " " << v << "\n";
+    if (!out) throw IoError("cannot write " + tmp.string());
+  }
+  fs::rename(tmp, path);
+}
+
+Record read_record(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) throw IoError("cannot read " + path.string());
+  Record r;
+  std::string k, v;
+  while (in >> k >> v) r[k] = v;
+  return r;
+}
+
+double number(const Record& r, const std::string& key, const fs::path& path) {
+  auto it = r.find(key);
+  if (it == r.end()) throw InvalidInput(path.string() + ": missing " + key);
+  return std::strtod(it->second.c_str(), nullptr);
+}
+
+/// Fingerprint of everything that decides the result (FNV-1a 64 of a canonical text).
+std::string fingerprint(const SpecimenSpec& s) {
+  std::ostringstream t;
+  t << hex(s.radius) << hex(s.height) << s.layers << hex(s.soil_density) << hex(s.rock_density)
+    << hex(s.contact.kn) << hex(s.contact.ks) << hex(s.contact.friction)
+    << hex(s.contact.damping_ratio) << hex(s.contact.local_damping)
+    << hex(s.target_relative_density) << s.seed << hex(s.porosity_guess) << hex(s.timestep_safety)
+    << hex(s.equilibrium_ratio) << s.max_steps << hex(s.margin) << hex(s.density_scaling)
+    << s.correction_rounds << hex(s.relative_density_tolerance);
+  for (double f : s.calibration_frictions) t << hex(f);
+  for (const ParticleClass& c : s.classes)
+    t << hex(c.min_size) << hex(c.max_size) << hex(c.mass_percent) << c.rock;
+  for (const RockTemplate& tp : s.templates) {
+    t << hex(tp.sieve_size) << hex(tp.volume);
+    for (const Sphere& sp : tp.spheres)
+      t << hex(sp.center.x()) << hex(sp.center.y()) << hex(sp.center.z()) << hex(sp.radius);
+  }
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char ch : t.str()) h = (h ^ ch) * 1099511628211ull;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%016" PRIx64, h);
+  return buf;
+}
+
+double top_height(const World& world) {
+  double top = 0.0;
+  for (const Body& b : world.bodies())
+    for (const Sphere& s : b.spheres)
+      top = std::max(top, (b.orientation * s.center + b.position).z() + s.radius);
+  return top;
+}
+
+/// Height of a uniform column with the same volume-weighted mean height as the bodies: H = 2·z̄
+/// (a level top surface at H puts the mean at H/2).
+double column_height(const World& world, const std::vector<double>& volumes) {
+  double v = 0.0, vz = 0.0;
+  for (std::size_t k = 0; k < volumes.size(); ++k) {
+    v += volumes[k];
+    vz += volumes[k] * world.bodies()[k].position.z();
+  }
+  return v > 0 ? 2.0 * vz / v : 0.0;
+}
+
+/// Central region of a settled pack: margin from the wall, the floor and the top.
+CylinderRegion central_region(double radius, double margin, double height) {
+  CylinderRegion r;
+  r.radius = radius - margin;
+  r.z_lo = margin;
+  r.z_hi = height - margin;
+  if (!(r.radius > 0) || !(r.z_hi > r.z_lo))
+    throw InvalidInput("specimen: the measurement margin " + std::to_string(margin) +
+                       " m leaves no central region in a pack " + std::to_string(height) +
+                       " m high of radius " + std::to_string(radius) + " m");
+  return r;
+}
+
+DepositionSpec deposition_spec(const SpecimenSpec& s, double friction) {
+  DepositionSpec d;
+  d.radius = s.radius;
+  d.soil_density = s.soil_density;
+  d.rock_density = s.rock_density;
+  d.contact = s.contact;
+  d.contact.friction = friction;
+  d.timestep_safety = s.timestep_safety;
+  d.max_steps = s.max_steps;
+  return d;
+}
+
+/// The density scaling λ of the preparation (SpecimenSpec::density_scaling).
+double density_scaling(const SpecimenSpec& s) {
+  if (s.density_scaling > 0) return s.density_scaling;
+  double d_min = INFINITY;
+  for (const ParticleClass& c : s.classes) d_min = std::min(d_min, c.min_size);
+  const double stress =
+      std::max(s.rock_density, s.soil_density) * (1.0 - s.porosity_guess) * 9.81 * s.height;
+  return std::clamp(0.005 * s.contact.kn / (stress * d_min), 1.0, 1000.0);
+}
+
+/// A deposition world with masses scaled by λ and the time step of the scaled bodies.
+World scaled_world(const std::vector<PlacementItem>& items, const std::vector<Placement>& placed,
+                   const SpecimenSpec& spec, double friction, double lambda) {
+  World world = make_deposition_world(items, placed, deposition_spec(spec, friction));
+  double dt = INFINITY;
+  for (Body& b : world.bodies()) {
+    b.mass *= lambda;
+    b.moments *= lambda;
+    dt = std::min(dt, body_critical_timestep(b, spec.contact.kn, spec.contact.ks));
+  }
+  if (std::isfinite(dt)) world.options().timestep = spec.timestep_safety * dt;
+  return world;
+}
+
+/// Settles `world` from its current step to equilibrium, counting the cap from `stage_start`
+/// (the step the stage began), with periodic checkpoints carrying `stage` and `stage_start`.
+RunOutcome settle(World& world, const SpecimenSpec& spec, long stage_start,
+                  const std::string& stage, const fs::path& checkpoint,
+                  const SpecimenControl& control, const std::function<void(double)>& progress) {
+  RunLimits limits;
+  limits.max_steps =
+      std::max(0L, spec.max_steps - (static_cast<long>(world.steps()) - stage_start));
+  limits.weight_ratio_below = spec.equilibrium_ratio;
+  if (!checkpoint.empty()) {
+    limits.checkpoint_path = checkpoint.string();
+    limits.checkpoint_every_seconds = control.checkpoint_every_seconds;
+    limits.checkpoint_info.stage = stage;
+    limits.checkpoint_info.random_state[0] = static_cast<std::uint64_t>(stage_start);
+  }
+  RunOutcome out = run_until(world, limits, [&](long done, long) {
+    if (progress)
+      progress(static_cast<double>(world.steps() - stage_start) /
+               static_cast<double>(spec.max_steps));
+    (void)done;
+  });
+  out.steps = static_cast<long>(world.steps()) - stage_start;
+  return out;
+}
+
+void check_spec(const SpecimenSpec& s) {
+  auto bad = [](const std::string& what) { throw InvalidInput("specimen: " + what); };
+  if (!(s.radius > 0) || !(s.height > 0)) bad("container radius and height must be positive");
+  if (s.layers < 1) bad("layers must be at least 1");
+  if (s.correction_rounds < 0 || !(s.relative_density_tolerance >= 0))
+    bad("correction rounds and tolerance must be non-negative");
+  if (s.classes.empty()) bad("the gradation has no classes");
+  if (!(s.target_relative_density >= 0 && s.target_relative_density <= 1))
+    bad("target relative density must lie in [0, 1]");
+  if (s.calibration_frictions.size() < 2) bad("need at least two calibration frictions");
+  for (double f : s.calibration_frictions)
+    if (!(f >= 0) || !std::isfinite(f)) bad("calibration frictions must be non-negative");
+  if (!(s.porosity_guess > 0 && s.porosity_guess < 1)) bad("porosity guess must lie in (0, 1)");
+  if (!(s.equilibrium_ratio > 0) || s.max_steps < 1) bad("settling limits must be positive");
+  if (!(s.density_scaling >= 0) || !std::isfinite(s.density_scaling))
+    bad("density scaling must be non-negative");
+}
+
+}  // namespace
+
+double relative_density(double porosity, double porosity_max, double porosity_min) {
+  const auto e = [](double n) { return n / (1.0 - n); };
+  return (e(porosity_max) - e(porosity)) / (e(porosity_max) - e(porosity_min));
+}
+
+double interpolate_friction(const std::vector<CalibrationPoint>& c, double target) {
+  if (c.size() < 2) throw InvalidInput("interpolate_friction: need at least two points");
+  for (std::size_t k = 0; k + 1 < c.size(); ++k) {
+    const double e0 = c[k].void_ratio, e1 = c[k + 1].void_ratio;
+    if ((e0 <= target && target <= e1) || (e1 <= target && target <= e0)) {
+      if (e1 == e0) return c[k].friction;
+      return c[k].friction + (target - e0) / (e1 - e0) * (c[k + 1].friction - c[k].friction);
+    }
+  }
+  // Outside the measured range: the nearer end.
+  return std::abs(target - c.front().void_ratio) < std::abs(target - c.back().void_ratio)
+             ? c.front().friction
+             : c.back().friction;
+}
+
+SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& control) {
+  check_spec(spec);
+  SpecimenResult result;
+  const bool checkpoints = !control.checkpoint_dir.empty();
+  const fs::path dir = control.checkpoint_dir;
+  if (checkpoints) {
+    const std::string print = fingerprint(spec);
+    const fs::path fp = dir / "spec.fingerprint";
+    if (control.resume && fs::exists(fp)) {
+      std::ifstream in(fp);
+      std::string old;
+      in >> old;
+      if (old != print)
+        throw InvalidInput(dir.string() +
+                           ": checkpoints are from another recipe or library (fingerprint " + old +
+                           ", this run " + print + "); remove them or drop --resume");
+    } else {
+      fs::remove_all(dir);
+    }
+    fs::create_directories(dir);
+    std::ofstream(fp) << print << "\n";
+  }
+  auto report = [&](const std::string& stage, double fraction) {
+    if (control.progress) control.progress(stage, std::clamp(fraction, 0.0, 1.0));
+  };
+
+  const double layer_volume = M_PI * spec.radius * spec.radius * spec.height / spec.layers;
+  double margin = spec.margin;
+  if (margin <= 0)
+    for (const ParticleClass& c : spec.classes) margin = std::max(margin, c.max_size);
+
+  const double lambda = density_scaling(spec);
+  result.density_scaling = lambda;
+
+  // Stage 1: calibration n(μ).
+  auto t0 = Clock::now();
+  std::vector<double> frictions = spec.calibration_frictions;
+  std::sort(frictions.begin(), frictions.end());
+  frictions.erase(std::unique(frictions.begin(), frictions.end()), frictions.end());
+  if (frictions.size() < 2) throw InvalidInput("specimen: need two distinct calibration frictions");
+  std::vector<CalibrationPoint> cal(frictions.size());
+  {
+    Rng particle_rng = Rng::stream(spec.seed, calibration_particles);
+    const LayerParticles sample =
+        layer_particles(spec.classes, spec.templates, (1.0 - spec.porosity_guess) * layer_volume,
+                        spec.soil_density, spec.rock_density, particle_rng);
+    Rng place_rng = Rng::stream(spec.seed, calibration_placement);
+    const std::vector<Placement> placed = place_in_cylinder(sample.items, spec.radius, place_rng);
+    std::vector<double> fraction(frictions.size(), 0.0);
+    std::mutex progress_mutex;
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, frictions.size(), 1),
+        [&](const tbb::blocked_range<std::size_t>& range) {
+          for (std::size_t k = range.begin(); k != range.end(); ++k) {
+            const std::string name = "calibration-" + std::to_string(k);
+            const fs::path done = checkpoints ? dir / (name + ".done") : fs::path();
+            if (checkpoints && control.resume && fs::exists(done)) {
+              const Record r = read_record(done);
+              cal[k] = {number(r, "friction", done), number(r, "porosity", done), 0.0,
+                        static_cast<long>(number(r, "steps", done)), r.at("stopped_by")};
+              cal[k].void_ratio = cal[k].porosity / (1.0 - cal[k].porosity);
+              continue;
+            }
+            const fs::path ckpt = checkpoints ? dir / (name + ".ckpt") : fs::path();
+            World world = checkpoints && control.resume && fs::exists(ckpt)
+                              ? load_checkpoint(ckpt.string())
+                              : scaled_world(sample.items, placed, spec, frictions[k], lambda);
+            const RunOutcome out = settle(world, spec, 0, name, ckpt, control, [&](double f) {
+              std::lock_guard<std::mutex> lock(progress_mutex);
+              fraction[k] = f;
+              double sum = 0;
+              for (double v : fraction) sum += v;
+              report("calibration", 0.5 * sum / static_cast<double>(fraction.size()));
+            });
+            const std::vector<double> volumes = body_volumes(world);
+            const CylinderRegion region =
+                central_region(spec.radius, margin, column_height(world, volumes));
+            CalibrationPoint& p = cal[k];
+            p.friction = frictions[k];
+            p.porosity = region_porosity(world, volumes, region);
+            p.void_ratio = p.porosity / (1.0 - p.porosity);
+            p.steps = out.steps;
+            p.stopped_by = out.stopped_by;
+            if (checkpoints) {
+              write_record(done, {{"friction", hex(p.friction)},
+                                  {"porosity", hex(p.porosity)},
+                                  {"steps", std::to_string(p.steps)},
+                                  {"stopped_by", p.stopped_by}});
+              fs::remove(ckpt);
+            }
+          }
+        });
+  }
+  result.calibration = cal;
+  result.porosity_min = cal.front().porosity;  // μ = smallest (0): densest
+  result.porosity_max = cal.back().porosity;   // μ = largest: loosest
+  const double e_max = result.porosity_max / (1.0 - result.porosity_max);
+  const double e_min = result.porosity_min / (1.0 - result.porosity_min);
+  const double e_target = e_max - spec.target_relative_density * (e_max - e_min);
+  result.target_porosity = e_target / (1.0 + e_target);
+  long cal_steps = 0;
+  for (const CalibrationPoint& p : cal) cal_steps += p.steps;
+  result.seconds.emplace_back("calibration", since(t0));
+  result.steps.emplace_back("calibration", cal_steps);
+
+  // Stages 2 and 3, repeated (at most spec.correction_rounds more times) while the specimen
+  // misses the target relative density by more than spec.relative_density_tolerance (the layer
+  // interfaces and the overburden make the stacked specimen differ from the single calibration
+  // sample at the same μ). Particle volumes always follow the true target porosity, so the
+  // height stays right; only μ* changes between rounds.
+  double porosity_for_friction = result.target_porosity;
+  double next_friction = interpolate_friction(cal, e_target);
+  World& world = result.world;
+  const double round_share = 0.45 / (1 + spec.correction_rounds);
+  for (int round = 0;; ++round) {
+    const std::string tag = "-" + std::to_string(round);
+    const double base = 0.5 + round * round_share;
+    const double friction = next_friction;
+    result.rounds.push_back({friction, 0.0, 0.0});
+
+    // Stage 2: one layer at the target porosity, compacted at μ*.
+    t0 = Clock::now();
+    Rng particle_rng = Rng::stream(spec.seed, layer_particles_stream);
+    const LayerParticles layer =
+        layer_particles(spec.classes, spec.templates, (1.0 - result.target_porosity) * layer_volume,
+                        spec.soil_density, spec.rock_density, particle_rng);
+    World layer_world;
+    const fs::path layer_done = checkpoints ? dir / ("layer" + tag + ".done") : fs::path();
+    const fs::path layer_world_file = checkpoints ? dir / ("layer" + tag + ".world") : fs::path();
+    if (checkpoints && control.resume && fs::exists(layer_done)) {
+      layer_world = load_checkpoint(layer_world_file.string());
+      ++result.resumed_stages;
+    } else {
+      const fs::path ckpt = checkpoints ? dir / ("layer" + tag + ".ckpt") : fs::path();
+      if (checkpoints && control.resume && fs::exists(ckpt)) {
+        layer_world = load_checkpoint(ckpt.string());
+      } else {
+        Rng place_rng = Rng::stream(spec.seed, layer_placement);
+        const std::vector<Placement> placed =
+            place_in_cylinder(layer.items, spec.radius, place_rng);
+        layer_world = scaled_world(layer.items, placed, spec, friction, lambda);
+      }
+      settle(layer_world, spec, 0, "layer" + tag, ckpt, control,
+             [&](double f) { report("layer compaction", base + 0.4 * round_share * f); });
+      if (checkpoints) {
+        save_checkpoint(layer_world_file.string(), layer_world);
+        write_record(layer_done, {{"steps", std::to_string(layer_world.steps())}});
+        fs::remove(ckpt);
+      }
+    }
+    {
+      const std::vector<double> volumes = body_volumes(layer_world);
+      result.layer_porosity_compacted =
+          region_porosity(layer_world, volumes,
+                          central_region(spec.radius, margin, column_height(layer_world, volumes)));
+    }
+    result.layer_height = top_height(layer_world);
+    result.steps.emplace_back("layer" + tag, static_cast<long>(layer_world.steps()));
+    result.seconds.emplace_back("layer" + tag, since(t0));
+
+    // Stage 3: layered duplication (each copy shifted up by the layer's top, so nothing
+    // overlaps), settled at μ* so the interfaces compact as the layer did, then μ restored to
+    // the material friction (shear history rescaled) and settled again.
+    t0 = Clock::now();
+    const fs::path spec_done = checkpoints ? dir / ("specimen" + tag + ".done") : fs::path();
+    const fs::path spec_world_file = checkpoints ? dir / ("specimen" + tag + ".world") : fs::path();
+    if (checkpoints && control.resume && fs::exists(spec_done)) {
+      world = load_checkpoint(spec_world_file.string());
+      ++result.resumed_stages;
+    } else {
+      const fs::path ckpt = checkpoints ? dir / ("specimen" + tag + ".ckpt") : fs::path();
+      CheckpointInfo info;
+      bool restored = false;
+      long restore_start = 0;
+      if (checkpoints && control.resume && fs::exists(ckpt)) {
+        world = load_checkpoint(ckpt.string(), &info);
+        restored = info.stage == "specimen-restore" + tag;
+        restore_start = static_cast<long>(info.random_state[0]);
+      } else {
+        world = World(layer_world.options());
+        for (int copy = 0; copy < spec.layers; ++copy)
+          for (const Body& b : layer_world.bodies()) {
+            Body c = b;
+            c.position.z() += copy * result.layer_height;
+            c.velocity.setZero();
+            c.angular_velocity.setZero();
+            world.add_body(std::move(c));
+          }
+        for (const Wall& w : layer_world.walls()) world.add_wall(w);
+      }
+      if (!restored) {
+        settle(world, spec, 0, "specimen-compact" + tag, ckpt, control, [&](double f) {
+          report("layered specimen at mu*", base + round_share * (0.4 + 0.3 * f));
+        });
+        restore_start = static_cast<long>(world.steps());
+        world.rescale_friction(spec.contact.friction);
+        if (checkpoints) {
+          CheckpointInfo restore_info;
+          restore_info.stage = "specimen-restore" + tag;
+          restore_info.random_state[0] = static_cast<std::uint64_t>(restore_start);
+          save_checkpoint(ckpt.string(), world, restore_info);
+        }
+      }
+      settle(world, spec, restore_start, "specimen-restore" + tag, ckpt, control, [&](double f) {
+        report("specimen at material friction", base + round_share * (0.7 + 0.3 * f));
+      });
+      if (checkpoints) {
+        save_checkpoint(spec_world_file.string(), world);
+        write_record(spec_done, {{"steps", std::to_string(world.steps())}});
+        fs::remove(ckpt);
+      }
+    }
+    result.steps.emplace_back("specimen" + tag, static_cast<long>(world.steps()));
+    result.body_template.clear();
+    for (int copy = 0; copy < spec.layers; ++copy)
+      result.body_template.insert(result.body_template.end(), layer.template_index.begin(),
+                                  layer.template_index.end());
+
+    // Stage 4: measurement (masses do not enter it).
+    result.body_volume = body_volumes(world);
+    result.height = column_height(world, result.body_volume);
+    result.region = central_region(spec.radius, margin, result.height);
+    result.porosity = region_porosity(world, result.body_volume, result.region);
+    result.relative_density =
+        relative_density(result.porosity, result.porosity_max, result.porosity_min);
+    result.friction_compaction = friction;
+    result.rounds.back().porosity = result.porosity;
+    result.rounds.back().relative_density = result.relative_density;
+    result.seconds.emplace_back("specimen" + tag, since(t0));
+    if (std::abs(result.relative_density - spec.target_relative_density) <=
+            spec.relative_density_tolerance ||
+        round >= spec.correction_rounds)
+      break;
+    // Next μ*: between the two closest builds that bracket the target, linearly (regula
+    // falsi on the measured n(μ) of the stacked specimen); without a bracket, the calibration
+    // curve at the porosity shifted by the last miss.
+    const SpecimenRound* below = nullptr;  // densest-side build closest to the target
+    const SpecimenRound* above = nullptr;
+    for (const SpecimenRound& x : result.rounds) {
+      if (x.porosity <= result.target_porosity && (!below || x.porosity > below->porosity))
+        below = &x;
+      if (x.porosity > result.target_porosity && (!above || x.porosity < above->porosity))
+        above = &x;
+    }
+    if (below && above && above->porosity > below->porosity) {
+      next_friction = below->friction + (result.target_porosity - below->porosity) /
+                                            (above->porosity - below->porosity) *
+                                            (above->friction - below->friction);
+    } else {
+      porosity_for_friction += result.target_porosity - result.porosity;
+      next_friction =
+          interpolate_friction(cal, porosity_for_friction / (1.0 - porosity_for_friction));
+    }
+  }
+
+  // True masses in the finished specimen.
+  for (Body& b : world.bodies()) {
+    b.mass /= lambda;
+    b.moments /= lambda;
+  }
+
+  t0 = Clock::now();
+  report("measurement", 0.95);
+  const double layer_span = result.height / spec.layers;
+  for (int k = 0; k < spec.layers; ++k) {
+    CylinderRegion r = result.region;
+    r.z_lo = std::max(result.region.z_lo, k * layer_span);
+    r.z_hi = std::min(result.region.z_hi, (k + 1) * layer_span);
+    result.layer_porosity.push_back(r.z_hi > r.z_lo ? region_porosity(world, result.body_volume, r)
+                                                    : std::nan(""));
+  }
+  const int bands = 2 * spec.layers;
+  const double band = (result.region.z_hi - result.region.z_lo) / bands;
+  for (int k = 0; k < bands; ++k) {
+    CylinderRegion r = result.region;
+    r.z_lo = result.region.z_lo + k * band;
+    r.z_hi = k + 1 == bands ? result.region.z_hi : r.z_lo + band;
+    result.band_porosity.push_back(region_porosity(world, result.body_volume, r));
+  }
+  result.coordination = coordination_number(world, result.region);
+  result.seconds.emplace_back("measurement", since(t0));
+  report("done", 1.0);
+  return result;
+}
+
+}  // namespace clumpkit::dem

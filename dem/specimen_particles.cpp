@@ -1,0 +1,85 @@
+#include "dem/specimen_particles.h"
+
+#include "geom/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+namespace clumpkit::dem {
+
+std::vector<double> class_volumes(const std::vector<ParticleClass>& classes, double solid_volume,
+                                  double soil_density, double rock_density) {
+  if (!(solid_volume > 0) || !(soil_density > 0) || !(rock_density > 0))
+    throw InvalidInput("class_volumes: volume and densities must be positive");
+  double specific = 0.0;  // Σ p_k / ρ_k, volume per unit mass
+  for (const ParticleClass& c : classes)
+    specific += c.mass_percent / 100.0 / (c.rock ? rock_density : soil_density);
+  if (!(specific > 0)) throw InvalidInput("class_volumes: the gradation holds no mass");
+  const double mass = solid_volume / specific;
+  std::vector<double> out;
+  for (const ParticleClass& c : classes)
+    out.push_back(c.mass_percent / 100.0 * mass / (c.rock ? rock_density : soil_density));
+  return out;
+}
+
+LayerParticles layer_particles(const std::vector<ParticleClass>& classes,
+                               const std::vector<RockTemplate>& templates, double solid_volume,
+                               double soil_density, double rock_density, Rng& rng) {
+  const std::vector<double> goal = class_volumes(classes, solid_volume, soil_density, rock_density);
+  struct Drawn {
+    PlacementItem item;
+    int template_index;
+    bool rock;
+  };
+  std::vector<Drawn> drawn;
+  LayerParticles out;
+  for (std::size_t k = 0; k < classes.size(); ++k) {
+    const ParticleClass& c = classes[k];
+    if (!(c.min_size > 0) || !(c.max_size >= c.min_size))
+      throw InvalidInput("layer_particles: class " + std::to_string(k) + " has bad sizes");
+    if (c.rock && templates.empty())
+      throw InvalidInput("layer_particles: rock class " + std::to_string(k) +
+                         " but the library holds no templates");
+    double volume = 0.0;
+    while (volume < goal[k]) {
+      const double size = rng.uniform(c.min_size, c.max_size);
+      Drawn d;
+      double v = 0.0;
+      if (c.rock) {
+        d.template_index = static_cast<int>(rng.below(templates.size()));
+        const RockTemplate& t = templates[d.template_index];
+        const double s = size / t.sieve_size;
+        for (const Sphere& sp : t.spheres) d.item.spheres.push_back({sp.center * s, sp.radius * s});
+        v = t.volume * s * s * s;
+        d.rock = true;
+      } else {
+        d.template_index = -1;
+        d.item.spheres.push_back({Vec3::Zero(), 0.5 * size});
+        v = M_PI / 6.0 * size * size * size;
+        d.rock = false;
+      }
+      // Keep the last particle only when it brings the class closer to its goal.
+      if (volume + v - goal[k] > goal[k] - volume) break;
+      double bound = 0.0;
+      for (const Sphere& sp : d.item.spheres) bound = std::max(bound, sp.center.norm() + sp.radius);
+      d.item.bounding_radius = bound;
+      volume += v;
+      (d.rock ? out.rock_volume : out.soil_volume) += v;
+      drawn.push_back(std::move(d));
+    }
+  }
+  // Rocks first, then soil; each largest first (stable, so equal sizes keep draw order).
+  std::stable_sort(drawn.begin(), drawn.end(), [](const Drawn& a, const Drawn& b) {
+    if (a.rock != b.rock) return a.rock;
+    return a.item.bounding_radius > b.item.bounding_radius;
+  });
+  for (Drawn& d : drawn) {
+    out.items.push_back(std::move(d.item));
+    out.template_index.push_back(d.template_index);
+  }
+  return out;
+}
+
+}  // namespace clumpkit::dem

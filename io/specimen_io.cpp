@@ -1,0 +1,348 @@
+#include "io/specimen_io.h"
+
+#include "dem/deposition.h"
+#include "geom/errors.h"
+#include "io/atomic_file.h"
+#include "io/clump_io.h"
+#include "io/png.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace clumpkit {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  std::string cell;
+  while (std::getline(ss, cell, ',')) out.push_back(cell);
+  return out;
+}
+
+std::string num(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<dem::RockTemplate> read_rock_templates(const std::string& library_dir) {
+  const fs::path csv = fs::path(library_dir) / "library.csv";
+  std::ifstream in(csv);
+  if (!in) throw IoError(csv.string() + ": cannot open clump library table");
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> head = split(line);
+  auto column = [&](const std::string& name) {
+    const auto it = std::find(head.begin(), head.end(), name);
+    if (it == head.end())
+      throw InvalidInput(csv.string() + ": column " + name + " missing (not a clump library?)");
+    return static_cast<std::size_t>(it - head.begin());
+  };
+  const std::size_t c_id = column("id"), c_w = column("W"), c_v = column("clump_volume");
+  std::vector<dem::RockTemplate> out;
+  int row = 1;
+  while (std::getline(in, line)) {
+    ++row;
+    if (line.empty()) continue;
+    const std::vector<std::string> cells = split(line);
+    if (cells.size() != head.size())
+      throw InvalidInput(csv.string() + ": line " + std::to_string(row) + " has " +
+                         std::to_string(cells.size()) + " fields, header " +
+                         std::to_string(head.size()));
+    dem::RockTemplate t;
+    t.sieve_size = std::strtod(cells[c_w].c_str(), nullptr);
+    t.volume = std::strtod(cells[c_v].c_str(), nullptr);
+    if (!(t.sieve_size > 0) || !(t.volume > 0) || !std::isfinite(t.sieve_size) ||
+        !std::isfinite(t.volume))
+      throw InvalidInput(csv.string() + ": line " + std::to_string(row) +
+                         ": W and clump_volume must be positive, got " + cells[c_w] + " and " +
+                         cells[c_v]);
+    char stem[16];
+    std::snprintf(stem, sizeof stem, "%05d", std::atoi(cells[c_id].c_str()));
+    t.spheres =
+        read_clump(
+            (fs::path(library_dir) / "particles" / (std::string(stem) + ".template.csv")).string())
+            .spheres;
+    out.push_back(std::move(t));
+  }
+  if (out.empty()) throw InvalidInput(csv.string() + ": the clump library holds no particles");
+  return out;
+}
+
+dem::SpecimenSpec specimen_spec(const SpecimenRecipe& r, std::vector<dem::RockTemplate> templates) {
+  dem::SpecimenSpec s;
+  s.radius = 0.5 * r.container_diameter;
+  s.height = r.container_height;
+  s.layers = r.layers;
+  s.soil_density = r.soil_density;
+  s.rock_density = r.rock_density;
+  s.contact = dem::deposition_contact();
+  s.contact.kn = r.kn;
+  s.contact.ks = r.ks;
+  s.contact.friction = r.friction;
+  s.contact.damping_ratio = r.damping_ratio;
+  s.contact.local_damping = r.local_damping;
+  s.target_relative_density = r.target_relative_density;
+  s.calibration_frictions = r.calibration_frictions;
+  s.seed = r.seed;
+  s.templates = std::move(templates);
+  // Fines (max size <= fines_below) move by mass into [fines_min, fines_max].
+  double fines = 0.0;
+  for (const SizeClass& c : r.classes) {
+    if (c.percent <= 0) continue;
+    if (c.max <= r.fines_below + 1e-12) {
+      fines += c.percent;
+      continue;
+    }
+    s.classes.push_back({c.min, c.max, c.percent, c.min >= r.soil_rock_threshold - 1e-12});
+  }
+  if (fines > 0) {
+    auto it = std::find_if(s.classes.begin(), s.classes.end(), [&](const dem::ParticleClass& c) {
+      return std::abs(c.min_size - r.fines_min) < 1e-12 &&
+             std::abs(c.max_size - r.fines_max) < 1e-12;
+    });
+    if (it != s.classes.end())
+      it->mass_percent += fines;
+    else
+      s.classes.push_back({r.fines_min, r.fines_max, fines, r.fines_min >= r.soil_rock_threshold});
+  }
+  return s;
+}
+
+void write_specimen_csv(const std::string& path, const dem::SpecimenResult& result) {
+  write_file_atomically(path, [&](std::ostream& o) {
+    const auto& bodies = result.world.bodies();
+    o << "# clumpkit specimen, SI units, world frame (x_world = q x_body + position). Bodies, "
+         "then their spheres.\n# bodies\n";
+    o << "body,kind,template,x,y,z,qw,qx,qy,qz,mass,volume\n";
+    for (std::size_t k = 0; k < bodies.size(); ++k) {
+      const dem::Body& b = bodies[k];
+      const int t = k < result.body_template.size() ? result.body_template[k] : -1;
+      o << k << "," << (b.spheres.size() > 1 ? "rock" : "soil") << "," << t << ","
+        << num(b.position.x()) << "," << num(b.position.y()) << "," << num(b.position.z()) << ","
+        << num(b.orientation.w()) << "," << num(b.orientation.x()) << "," << num(b.orientation.y())
+        << "," << num(b.orientation.z()) << "," << num(b.mass) << ","
+        << num(k < result.body_volume.size() ? result.body_volume[k] : 0.0) << "\n";
+    }
+    o << "# spheres\nsphere,body,x,y,z,r\n";
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < bodies.size(); ++k)
+      for (const Sphere& s : bodies[k].spheres) {
+        const Vec3 c = bodies[k].orientation * s.center + bodies[k].position;
+        o << n++ << "," << k << "," << num(c.x()) << "," << num(c.y()) << "," << num(c.z()) << ","
+          << num(s.radius) << "\n";
+      }
+  });
+}
+
+void write_specimen_vtp(const std::string& path, const dem::SpecimenResult& result) {
+  write_file_atomically(path, [&](std::ostream& o) {
+    const auto& bodies = result.world.bodies();
+    std::size_t n = 0;
+    for (const dem::Body& b : bodies) n += b.spheres.size();
+    o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
+         "byte_order=\"LittleEndian\">\n<PolyData>\n<Piece NumberOfPoints=\""
+      << n << "\" NumberOfVerts=\"" << n << "\">\n<Points>\n"
+      << "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (const dem::Body& b : bodies)
+      for (const Sphere& s : b.spheres) {
+        const Vec3 c = b.orientation * s.center + b.position;
+        o << num(c.x()) << " " << num(c.y()) << " " << num(c.z()) << "\n";
+      }
+    o << "</DataArray>\n</Points>\n<PointData Scalars=\"radius\">\n"
+      << "<DataArray type=\"Float64\" Name=\"radius\" format=\"ascii\">\n";
+    for (const dem::Body& b : bodies)
+      for (const Sphere& s : b.spheres) o << num(s.radius) << "\n";
+    o << "</DataArray>\n<DataArray type=\"Int32\" Name=\"body\" format=\"ascii\">\n";
+    for (std::size_t k = 0; k < bodies.size(); ++k)
+      for (std::size_t s = 0; s < bodies[k].spheres.size(); ++s) o << k << "\n";
+    o << "</DataArray>\n<DataArray type=\"Int32\" Name=\"kind\" format=\"ascii\">\n";
+    for (const dem::Body& b : bodies)
+      for (std::size_t s = 0; s < b.spheres.size(); ++s)
+        o << (b.spheres.size() > 1 ? 1 : 0) << "\n";
+    o << "</DataArray>\n</PointData>\n<Verts>\n"
+      << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    for (std::size_t k = 0; k < n; ++k) o << k << "\n";
+    o << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+    for (std::size_t k = 0; k < n; ++k) o << k + 1 << "\n";
+    o << "</DataArray>\n</Verts>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  });
+}
+
+void write_calibration_csv(const std::string& path, const dem::SpecimenResult& result) {
+  write_file_atomically(path, [&](std::ostream& o) {
+    o << "friction,porosity,void_ratio,relative_density,steps,stopped_by\n";
+    for (const dem::CalibrationPoint& p : result.calibration)
+      o << num(p.friction) << "," << num(p.porosity) << "," << num(p.void_ratio) << ","
+        << num(dem::relative_density(p.porosity, result.porosity_max, result.porosity_min)) << ","
+        << p.steps << "," << p.stopped_by << "\n";
+  });
+}
+
+void write_calibration_plot(const std::string& path, const dem::SpecimenResult& result,
+                            double target_relative_density) {
+  const int w = 640, h = 480, left = 70, right = 20, top = 30, bottom = 50;
+  cv::Mat img(h, w, CV_8UC3, cv::Scalar(255, 255, 255));
+  double fmax = 0, nlo = 1, nhi = 0;
+  for (const auto& p : result.calibration) {
+    fmax = std::max(fmax, p.friction);
+    nlo = std::min(nlo, p.porosity);
+    nhi = std::max(nhi, p.porosity);
+  }
+  nlo = std::min(nlo, result.target_porosity);
+  nhi = std::max(nhi, result.target_porosity);
+  const double pad = std::max(0.005, 0.1 * (nhi - nlo));
+  nlo -= pad;
+  nhi += pad;
+  if (!(fmax > 0)) fmax = 1;
+  auto px = [&](double mu, double n) {
+    return cv::Point(
+        left + static_cast<int>(std::lround((w - left - right) * mu / fmax)),
+        h - bottom - static_cast<int>(std::lround((h - top - bottom) * (n - nlo) / (nhi - nlo))));
+  };
+  const cv::Scalar black(0, 0, 0), grey(160, 160, 160), blue(200, 80, 20), red(30, 30, 210);
+  cv::rectangle(img, cv::Point(left, top), cv::Point(w - right, h - bottom), black, 1);
+  for (int k = 0; k <= 4; ++k) {
+    char buf[32];
+    const double mu = fmax * k / 4.0, n = nlo + (nhi - nlo) * k / 4.0;
+    std::snprintf(buf, sizeof buf, "%.2f", mu);
+    cv::putText(img, buf, px(mu, nlo) + cv::Point(-14, 18), cv::FONT_HERSHEY_SIMPLEX, 0.4, black);
+    std::snprintf(buf, sizeof buf, "%.3f", n);
+    cv::putText(img, buf, cv::Point(8, px(0, n).y + 4), cv::FONT_HERSHEY_SIMPLEX, 0.4, black);
+  }
+  cv::putText(img, "friction coefficient during compaction", cv::Point(left + 120, h - 12),
+              cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
+  cv::putText(img, "porosity n(mu) (clumpkit specimen calibration)", cv::Point(left, 20),
+              cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
+  cv::line(img, px(0, result.target_porosity), px(fmax, result.target_porosity), grey, 1,
+           cv::LINE_AA);
+  char label[96];
+  std::snprintf(label, sizeof label, "target Dr %.2f: n = %.4f, mu* = %.3f",
+                target_relative_density, result.target_porosity, result.friction_compaction);
+  cv::putText(img, label, px(0, result.target_porosity) + cv::Point(8, -6),
+              cv::FONT_HERSHEY_SIMPLEX, 0.4, grey);
+  for (std::size_t k = 0; k + 1 < result.calibration.size(); ++k)
+    cv::line(img, px(result.calibration[k].friction, result.calibration[k].porosity),
+             px(result.calibration[k + 1].friction, result.calibration[k + 1].porosity), blue, 2,
+             cv::LINE_AA);
+  for (const auto& p : result.calibration)
+    cv::circle(img, px(p.friction, p.porosity), 4, blue, cv::FILLED, cv::LINE_AA);
+  cv::circle(img, px(result.friction_compaction, result.target_porosity), 6, red, 2, cv::LINE_AA);
+  cv::Mat rgb;
+  cv::cvtColor(img, rgb, cv::COLOR_BGR2RGB);
+  write_png(path, rgb.cols, rgb.rows, 3, rgb.ptr<std::uint8_t>(0), rgb.step);
+}
+
+std::vector<std::string> write_slices(const std::string& dir, const dem::SpecimenResult& result,
+                                      double radius, const std::vector<double>& heights,
+                                      int pixels) {
+  fs::create_directories(dir);
+  std::vector<std::string> names;
+  const double scale = pixels / (2.0 * radius);  // pixels per metre
+  for (double z : heights) {
+    cv::Mat img(pixels, pixels, CV_8UC3, cv::Scalar(255, 255, 255));
+    auto to_px = [&](double x, double y) {
+      return cv::Point(static_cast<int>(std::lround((x + radius) * scale * 16)),
+                       static_cast<int>(std::lround((radius - y) * scale * 16)));
+    };
+    for (const dem::Body& b : result.world.bodies()) {
+      const bool rock = b.spheres.size() > 1;
+      for (const Sphere& s : b.spheres) {
+        const Vec3 c = b.orientation * s.center + b.position;
+        const double dz = z - c.z(), r2 = s.radius * s.radius - dz * dz;
+        if (r2 <= 0) continue;
+        const int r = static_cast<int>(std::lround(std::sqrt(r2) * scale * 16));
+        cv::circle(img, to_px(c.x(), c.y()), r,
+                   rock ? cv::Scalar(40, 40, 210) : cv::Scalar(200, 90, 30), cv::FILLED,
+                   cv::LINE_AA, 4);
+      }
+    }
+    cv::circle(img, to_px(0, 0), static_cast<int>(std::lround(radius * scale * 16)) - 16,
+               cv::Scalar(120, 120, 120), 1, cv::LINE_AA, 4);
+    char name[64];
+    std::snprintf(name, sizeof name, "z%05.0fmm.png", z * 1000.0);
+    cv::putText(img,
+                std::string("z = ") + std::to_string(static_cast<int>(std::lround(z * 1000))) +
+                    " mm  (rock red, soil blue)",
+                cv::Point(8, 18), cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0));
+    cv::Mat rgb;
+    cv::cvtColor(img, rgb, cv::COLOR_BGR2RGB);
+    write_png((fs::path(dir) / name).string(), rgb.cols, rgb.rows, 3, rgb.ptr<std::uint8_t>(0),
+              rgb.step);
+    names.push_back(name);
+  }
+  return names;
+}
+
+nlohmann::ordered_json specimen_report(const SpecimenRecipe& recipe, const dem::SpecimenResult& r) {
+  nlohmann::ordered_json j;
+  std::size_t spheres = 0, rocks = 0;
+  for (const dem::Body& b : r.world.bodies()) {
+    spheres += b.spheres.size();
+    rocks += b.spheres.size() > 1;
+  }
+  j["recipe"] = recipe.path;
+  j["seed"] = recipe.seed;
+  j["porosity"] = r.porosity;
+  j["relative_density"] = r.relative_density;
+  j["target_relative_density"] = recipe.target_relative_density;
+  j["target_porosity"] = r.target_porosity;
+  j["porosity_max"] = r.porosity_max;
+  j["porosity_min"] = r.porosity_min;
+  j["friction_compaction"] = r.friction_compaction;
+  j["friction"] = recipe.friction;
+  j["height"] = r.height;
+  j["layer_height"] = r.layer_height;
+  j["layer_porosity_compacted"] = r.layer_porosity_compacted;
+  j["bodies"] = r.world.bodies().size();
+  j["rocks"] = rocks;
+  j["soil"] = r.world.bodies().size() - rocks;
+  j["spheres"] = spheres;
+  j["layer_porosity"] = r.layer_porosity;
+  double lo = 1, hi = 0;
+  for (double n : r.layer_porosity) lo = std::min(lo, n), hi = std::max(hi, n);
+  j["layer_porosity_spread"] = hi - lo;
+  j["band_porosity"] = r.band_porosity;
+  j["coordination_number"] = r.coordination;
+  j["measurement_region"] = {{"radius", r.region.radius},
+                             {"z_lo", r.region.z_lo},
+                             {"z_hi", r.region.z_hi},
+                             {"method",
+                              "exact sphere-region volumes (union of each body's "
+                              "spheres, slice areas integrated over z)"}};
+  nlohmann::ordered_json cal = nlohmann::ordered_json::array();
+  for (const auto& p : r.calibration)
+    cal.push_back({{"friction", p.friction},
+                   {"porosity", p.porosity},
+                   {"steps", p.steps},
+                   {"stopped_by", p.stopped_by}});
+  j["calibration"] = cal;
+  nlohmann::ordered_json rounds = nlohmann::ordered_json::array();
+  for (const auto& x : r.rounds)
+    rounds.push_back({{"friction_compaction", x.friction},
+                      {"porosity", x.porosity},
+                      {"relative_density", x.relative_density}});
+  j["rounds"] = rounds;
+  j["timestep"] = r.world.options().timestep;
+  j["density_scaling"] = r.density_scaling;
+  nlohmann::ordered_json steps, seconds;
+  for (const auto& [k, v] : r.steps) steps[k] = v;
+  for (const auto& [k, v] : r.seconds) seconds[k] = v;
+  j["steps"] = steps;
+  j["seconds"] = seconds;
+  return j;
+}
+
+}  // namespace clumpkit

@@ -1,0 +1,52 @@
+// Specimen input and output: recipe → build spec, rock templates from a clump library, and the
+// files of `clumpkit specimen` (CSV, VTP, report, calibration plot, slice images).
+#pragma once
+
+#include "dem/specimen.h"
+#include "io/specimen_recipe.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace clumpkit {
+
+/// Rock templates of a `clumpkit library` directory: each particle's template spheres
+/// (particles/NNNNN.template.csv, principal frame), its measured sieve size W and exact clump
+/// volume (library.csv). Throws IoError/InvalidInput naming the file for a missing or bad file.
+std::vector<dem::RockTemplate> read_rock_templates(const std::string& library_dir);
+
+/// The build spec of a recipe: gradation classes with the fines (classes finer than
+/// fines_below) moved, by mass, into the class [fines_min, fines_max] (seed 000 §4.1); classes
+/// at or above the soil/rock threshold are rock. Contact damping as in deposition_contact().
+dem::SpecimenSpec specimen_spec(const SpecimenRecipe& recipe,
+                                std::vector<dem::RockTemplate> templates);
+
+/// specimen.csv: "# bodies" section (body, kind, template, x, y, z, qw, qx, qy, qz, mass,
+/// volume) then "# spheres" section (sphere, body, x, y, z, r), world frame, SI, round-trip
+/// precision.
+void write_specimen_csv(const std::string& path, const dem::SpecimenResult& result);
+
+/// specimen.vtp: VTK XML PolyData, one point per sphere with point data radius, body and kind
+/// (0 soil, 1 rock); in ParaView use a Glyph filter (sphere, scale by radius, factor 2).
+void write_specimen_vtp(const std::string& path, const dem::SpecimenResult& result);
+
+/// calibration.csv: friction, porosity, void_ratio, relative_density, steps, stopped_by.
+void write_calibration_csv(const std::string& path, const dem::SpecimenResult& result);
+
+/// calibration.png: porosity against friction with the target porosity and μ* marked.
+void write_calibration_plot(const std::string& path, const dem::SpecimenResult& result,
+                            double target_relative_density);
+
+/// Horizontal slice images at the given heights: rock red, soil blue (seed 000 Fig. 10), the
+/// container grey; `pixels` across the container diameter. Returns the file names written.
+std::vector<std::string> write_slices(const std::string& dir, const dem::SpecimenResult& result,
+                                      double radius, const std::vector<double>& heights,
+                                      int pixels = 600);
+
+/// report.json content (see `clumpkit specimen --help`).
+nlohmann::ordered_json specimen_report(const SpecimenRecipe& recipe,
+                                       const dem::SpecimenResult& result);
+
+}  // namespace clumpkit
