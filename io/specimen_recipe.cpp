@@ -188,13 +188,16 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
                                      " % above the threshold " +
                                      format_number(r.soil_rock_threshold) + " m, got " +
                                      format_number(100 * r.rock_mass_fraction) + " %");
-  if (r.sieves.front() >= r.container_diameter)
-    f.fail("container.diameter", "smaller than the largest particle (" +
+  if (2 * r.sieves.front() >= r.container_diameter)
+    f.fail("container.diameter", "not wider than twice the largest particle (" +
                                      format_number(r.sieves.front()) + " m), got " +
                                      format_number(r.container_diameter));
-  if (r.sieves.front() >= r.container_height / r.layers)
+  // Porosity is measured one largest sieve size away from floor, top and wall, in each layer
+  // too: a layer must be thicker than two of them, the container wider than two more.
+  if (2 * r.sieves.front() >= r.container_height / r.layers)
     f.fail("container.height", "a layer (" + format_number(r.container_height / r.layers) +
-                                   " m) is thinner than the largest particle, got " +
+                                   " m) must be thicker than twice the largest particle (" +
+                                   format_number(r.sieves.front()) + " m), got " +
                                    format_number(r.container_height));
   if (r.calibration_frictions.size() < 6)
     f.fail("calibration_frictions", "need the two end points and at least four in between, got " +

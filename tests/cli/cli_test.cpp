@@ -487,3 +487,149 @@ TEST(Cli, FillAllowOpenSaysItVoted) {
   EXPECT_NE(r.err.find("ray-parity voting"), std::string::npos);
   EXPECT_TRUE(fs::exists(d / "c.csv"));
 }
+
+// Issue 5: `clumpkit specimen` on a tiny recipe (a 60 mm cylinder, about 600 bodies) for
+// determinism and resume, the bundled quick recipe for the density target.
+namespace {
+
+const char* kTinyRocks = R"(name = "tiny-rocks"
+seed = 3
+
+[[fraction]]
+name = "rock 10-15 mm"
+method = "block"
+count = 6
+W = { uniform = [0.010, 0.015] }
+L_over_H = { uniform = [1.2, 2.0] }
+W_split = { uniform = [0.3, 0.7] }
+
+[fill]
+spheres = 8
+voxels = 16
+)";
+
+const char* kTinySpecimen = R"(name = "tiny-specimen"
+seed = 5
+soil_rock_threshold = 0.010
+rock_mass_fraction = 0.30
+target_relative_density = 0.5
+layers = 2
+
+[container]
+diameter = 0.060
+height = 0.100
+
+[gradation]
+sieves = [0.015, 0.010, 0.006]
+passing = [100, 70, 0]
+
+[fines]
+below = 0.005
+replace_with = [0.005, 0.010]
+
+[rock]
+recipe = "rocks.toml"
+)";
+
+fs::path tiny_specimen_recipe(const fs::path& d) {
+  write(d / "rocks.toml", kTinyRocks);
+  write(d / "tiny.toml", kTinySpecimen);
+  return d / "tiny.toml";
+}
+
+}  // namespace
+
+TEST(Cli, SpecimenSameForAnyThreadCountAndAfterAKill) {
+  const fs::path d = scratch();
+  const std::string base = "specimen --quiet --checkpoint-seconds 0.5 --recipe " +
+                           tiny_specimen_recipe(d).string() + " --out ";
+  Result r = clumpkit(base + (d / "t1").string() + " --threads 1", d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  r = clumpkit(base + (d / "t2").string() + " --threads 2 --json", d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto report = nlohmann::json::parse(r.out);
+  for (const char* f : {"specimen.csv", "calibration.csv", "specimen.vtp"})
+    EXPECT_EQ(slurp(d / "t1" / f), slurp(d / "t2" / f)) << f;
+  EXPECT_FALSE(fs::exists(d / "t2" / "checkpoints"));
+  EXPECT_FALSE(fs::exists(d / "t2.partial"));
+
+  // A real SIGKILL part-way (the run takes several seconds), then --resume: same bytes, and
+  // nothing at --out until the run has finished.
+  const std::string kill = "timeout -s KILL 3 " + std::string(CLUMPKIT_BINARY) + " " + base +
+                           (d / "k").string() + " --threads 2 >/dev/null 2>&1";
+  (void)std::system(kill.c_str());
+  EXPECT_FALSE(fs::exists(d / "k"));
+  ASSERT_TRUE(fs::exists(d / "k.partial"));
+  r = clumpkit(base + (d / "k").string() + " --threads 2 --resume", d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_EQ(slurp(d / "t1" / "specimen.csv"), slurp(d / "k" / "specimen.csv"));
+  EXPECT_EQ(slurp(d / "t1" / "calibration.csv"), slurp(d / "k" / "calibration.csv"));
+
+  // The report: bodies and spheres match specimen.csv, porosities in range, Dr consistent.
+  const std::string csv = slurp(d / "t2" / "specimen.csv");
+  const auto bodies_at = csv.find("body,kind"), spheres_at = csv.find("# spheres");
+  ASSERT_NE(spheres_at, std::string::npos);
+  const long body_lines = std::count(csv.begin() + bodies_at, csv.begin() + spheres_at, '\n') - 1;
+  const long sphere_lines = std::count(csv.begin() + spheres_at, csv.end(), '\n') - 2;
+  EXPECT_EQ(report["bodies"].get<long>(), body_lines);
+  EXPECT_EQ(report["spheres"].get<long>(), sphere_lines);
+  EXPECT_GT(report["rocks"].get<long>(), 0);
+  const double n = report["porosity"], n_max = report["porosity_max"],
+               n_min = report["porosity_min"];
+  EXPECT_GT(n_max, n_min);
+  EXPECT_GT(n, 0.3);
+  EXPECT_LT(n, 0.5);
+  const double e = n / (1 - n), e_max = n_max / (1 - n_max), e_min = n_min / (1 - n_min);
+  EXPECT_NEAR(report["relative_density"].get<double>(), (e_max - e) / (e_max - e_min), 1e-12);
+  EXPECT_EQ(report["layer_porosity"].size(), 2u);
+  EXPECT_EQ(report["calibration"].size(), 6u);
+  EXPECT_TRUE(fs::exists(d / "t2" / "calibration.png"));
+  EXPECT_TRUE(fs::exists(d / "t2" / "manifest.json"));
+  int slices = 0;
+  for (const auto& e2 : fs::directory_iterator(d / "t2" / "slices"))
+    slices += e2.path().extension() == ".png";
+  EXPECT_EQ(slices, 5);
+  const std::string vtp = slurp(d / "t2" / "specimen.vtp");
+  EXPECT_NE(vtp.find("NumberOfPoints=\"" + std::to_string(sphere_lines) + "\""), std::string::npos);
+}
+
+TEST(Cli, SpecimenBadRecipesFailBeforeSimulation) {
+  const fs::path d = scratch();
+  tiny_specimen_recipe(d);
+  const std::string good = kTinySpecimen;
+  auto run = [&](const std::string& from, const std::string& to) {
+    std::string text = good;
+    text.replace(text.find(from), from.size(), to);
+    write(d / "bad.toml", text);
+    return clumpkit(
+        "specimen --recipe " + (d / "bad.toml").string() + " --out " + (d / "o").string(), d);
+  };
+  expect_one_line_error(run("target_relative_density = 0.5", "target_relative_density = 1.5"),
+                        "target_relative_density: must be in [0, 1], got 1.5");
+  expect_one_line_error(run("passing = [100, 70, 0]", "passing = [90, 70, 0]"),
+                        "gradation.passing[0]");
+  expect_one_line_error(run("diameter = 0.060", "diameter = 0.020"), "container.diameter");
+  expect_one_line_error(run("recipe = \"rocks.toml\"", "library = \"no-such-dir\""),
+                        "rock.library: no clump library");
+  EXPECT_FALSE(fs::exists(d / "o"));
+  EXPECT_FALSE(fs::exists(d / "o.partial"));
+}
+
+TEST(Cli, QuickSpecimenReachesItsTargetRelativeDensity) {
+  const fs::path d = scratch();
+  const Result r = clumpkit("specimen --quiet --json --recipe " + std::string(CLUMPKIT_SOURCE_DIR) +
+                                "/assets/recipes/quick-specimen.toml --out " + (d / "q").string(),
+                            d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto report = nlohmann::json::parse(r.out);
+  std::printf("quick specimen: porosity %.4f, Dr %.3f, mu* %.3f, %.0f s\n",
+              report["porosity"].get<double>(), report["relative_density"].get<double>(),
+              report["friction_compaction"].get<double>(),
+              report["seconds"]["total"].get<double>());
+  EXPECT_NEAR(report["relative_density"].get<double>(), 0.5, 0.03);
+  double lo = 1, hi = 0;
+  for (double n : report["layer_porosity"]) lo = std::min(lo, n), hi = std::max(hi, n);
+  EXPECT_LE(hi - lo, 0.02);
+  // About the container height (0.2 m): the layer volumes follow the target porosity.
+  EXPECT_NEAR(report["height"].get<double>(), 0.2, 0.03);
+}

@@ -1,0 +1,163 @@
+// Tests of the specimen building blocks: gradation volumes, layer particle sets, relative
+// density and μ* interpolation, exact sphere–region volumes and the coordination number.
+#include "dem/specimen.h"
+#include "dem/region_volume.h"
+#include "dem/specimen_particles.h"
+#include "geom/errors.h"
+#include "geom/union_of_balls.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace clumpkit::dem {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+TEST(SpecimenParticles, ClassVolumesFollowMassAndDensity) {
+  // 40 % rock at 2870, 60 % soil at 2700 kg/m³: M = V / (0.4/2870 + 0.6/2700).
+  const std::vector<ParticleClass> classes = {{0.02, 0.04, 40.0, true}, {0.005, 0.01, 60.0, false}};
+  const auto v = class_volumes(classes, 1.0, 2700, 2870);
+  const double mass = 1.0 / (0.4 / 2870 + 0.6 / 2700);
+  EXPECT_NEAR(v[0], 0.4 * mass / 2870, 1e-15);
+  EXPECT_NEAR(v[1], 0.6 * mass / 2700, 1e-15);
+  EXPECT_NEAR(v[0] + v[1], 1.0, 1e-14);
+  EXPECT_THROW(class_volumes(classes, -1.0, 2700, 2870), InvalidInput);
+}
+
+TEST(SpecimenParticles, LayerFillsEachClassToWithinOneParticle) {
+  RockTemplate t;  // two unit balls one apart: W measured as 2, exact union volume
+  t.spheres = {{Vec3(-0.5, 0, 0), 1.0}, {Vec3(0.5, 0, 0), 1.0}};
+  t.sieve_size = 2.0;
+  t.volume = union_properties(Clump{t.spheres}).mass.volume;
+  const std::vector<ParticleClass> classes = {{0.02, 0.03, 40.0, true}, {0.005, 0.01, 60.0, false}};
+  Rng rng(9);
+  const double solid = 2e-4;
+  const LayerParticles p = layer_particles(classes, {t}, solid, 2700, 2870, rng);
+  const auto goal = class_volumes(classes, solid, 2700, 2870);
+  const double rock_max = t.volume * std::pow(0.03 / 2.0, 3);
+  const double soil_max = kPi / 6 * std::pow(0.01, 3);
+  EXPECT_NEAR(p.rock_volume, goal[0], 0.5 * rock_max);
+  EXPECT_NEAR(p.soil_volume, goal[1], 0.5 * soil_max);
+  // Rocks first, each group largest first, sizes inside their class.
+  bool soil_seen = false;
+  double last = INFINITY;
+  for (std::size_t k = 0; k < p.items.size(); ++k) {
+    const bool rock = p.template_index[k] >= 0;
+    if (!rock && !soil_seen) soil_seen = true, last = INFINITY;
+    EXPECT_FALSE(rock && soil_seen);
+    EXPECT_LE(p.items[k].bounding_radius, last);
+    last = p.items[k].bounding_radius;
+    if (rock) {
+      const double scale = p.items[k].spheres[0].radius;  // template radius 1
+      EXPECT_GE(2.0 * scale, 0.02 - 1e-15);
+      EXPECT_LE(2.0 * scale, 0.03 + 1e-15);
+    } else {
+      EXPECT_GE(2.0 * p.items[k].spheres[0].radius, 0.005 - 1e-15);
+      EXPECT_LE(2.0 * p.items[k].spheres[0].radius, 0.01 + 1e-15);
+    }
+  }
+  // The same Rng state gives the same set.
+  Rng again(9);
+  const LayerParticles q = layer_particles(classes, {t}, solid, 2700, 2870, again);
+  ASSERT_EQ(q.items.size(), p.items.size());
+  EXPECT_EQ(q.items.back().spheres[0].radius, p.items.back().spheres[0].radius);
+  Rng r3(1);
+  EXPECT_THROW(layer_particles(classes, {}, solid, 2700, 2870, r3), InvalidInput);
+}
+
+TEST(Specimen, RelativeDensityAndFrictionInterpolation) {
+  // e_max = 0.8/0.2... use n_max 0.45, n_min 0.35: Dr(n_max) = 0, Dr(n_min) = 1.
+  EXPECT_NEAR(relative_density(0.45, 0.45, 0.35), 0.0, 1e-15);
+  EXPECT_NEAR(relative_density(0.35, 0.45, 0.35), 1.0, 1e-15);
+  const double e_max = 0.45 / 0.55, e_min = 0.35 / 0.65, e = 0.5 * (e_max + e_min);
+  EXPECT_NEAR(relative_density(e / (1 + e), 0.45, 0.35), 0.5, 1e-14);
+  std::vector<CalibrationPoint> c = {
+      {0.0, 0, 0.5, 0, ""}, {0.2, 0, 0.6, 0, ""}, {0.4, 0, 0.7, 0, ""}, {0.8, 0, 0.8, 0, ""}};
+  EXPECT_NEAR(interpolate_friction(c, 0.65), 0.3, 1e-14);
+  EXPECT_NEAR(interpolate_friction(c, 0.75), 0.6, 1e-14);
+  EXPECT_EQ(interpolate_friction(c, 0.3), 0.0);  // beyond the densest point
+  EXPECT_EQ(interpolate_friction(c, 0.9), 0.8);
+  EXPECT_THROW(interpolate_friction({c[0]}, 0.5), InvalidInput);
+}
+
+Body ball(const Vec3& c, double r) {
+  Body b;
+  b.spheres = {{Vec3::Zero(), r}};
+  b.position = c;
+  b.mass = 1;
+  b.moments = Vec3::Ones();
+  return b;
+}
+
+TEST(RegionVolume, SphereInsideCutByPlaneAndOutside) {
+  const CylinderRegion region{0.5, 0.0, 1.0};
+  const double r = 0.1, v = 4.0 / 3.0 * kPi * r * r * r;
+  EXPECT_DOUBLE_EQ(body_region_volume(ball(Vec3(0, 0, 0.5), r), v, region), v);
+  EXPECT_EQ(body_region_volume(ball(Vec3(0, 0, 1.2), r), v, region), 0.0);
+  // Cut through the centre by the top plane: half. Below the floor z = 0 a cap of height h,
+  // πh²(3r − h)/3, is cut off.
+  EXPECT_NEAR(body_region_volume(ball(Vec3(0.1, 0, 1.0), r), v, region), 0.5 * v, 1e-9 * v);
+  const double h = 0.04;
+  EXPECT_NEAR(body_region_volume(ball(Vec3(0, 0.2, r - h), r), v, region),
+              v - kPi * h * h * (3 * r - h) / 3, 1e-9 * v);
+}
+
+TEST(RegionVolume, ComplementaryRegionsAddUpForACutClump) {
+  // A three-sphere clump straddling the region's side wall and a horizontal plane: the parts in
+  // complementary regions add up to the exact union volume.
+  Body c;
+  c.spheres = {
+      {Vec3(-0.05, 0, 0), 0.08}, {Vec3(0.05, 0.02, 0), 0.07}, {Vec3(0, -0.04, 0.05), 0.06}};
+  c.mass = 1;
+  c.moments = Vec3::Ones();
+  c.position = Vec3(0.48, 0.0, 0.5);
+  c.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
+  const double v = union_properties(Clump{c.spheres}).mass.volume;
+  const double lower = body_region_volume(c, v, {0.5, 0.0, 0.5});
+  const double upper = body_region_volume(c, v, {0.5, 0.5, 1.0});
+  const double wide = body_region_volume(c, v, {2.0, 0.0, 1.0});
+  EXPECT_NEAR(wide, v, 1e-12 * v);
+  EXPECT_GT(lower, 0.1 * v);
+  EXPECT_GT(upper, 0.1 * v);
+  EXPECT_LT(lower + upper, v);  // part of it lies outside r = 0.5
+  // Outside the cylinder r < 0.5 but inside r < 2: a ring. Ring = wide − (lower + upper).
+  const double outer_ring = wide - lower - upper;
+  EXPECT_GT(outer_ring, 0.05 * v);
+  // The same body moved to the axis lies wholly inside: its exact volume.
+  c.position = Vec3(0, 0, 0.5);
+  EXPECT_DOUBLE_EQ(body_region_volume(c, v, {0.5, 0.0, 1.0}), v);
+  // Halves by the plane z = 0.5 through a clump centred there, mirrored in z: a sphere pair
+  // symmetric about the plane gives equal halves.
+  Body s;
+  s.spheres = {{Vec3(0, 0, 0.03), 0.05}, {Vec3(0, 0, -0.03), 0.05}};
+  s.mass = 1;
+  s.moments = Vec3::Ones();
+  s.position = Vec3(0.1, 0.1, 0.5);
+  const double vs = union_properties(Clump{s.spheres}).mass.volume;
+  EXPECT_NEAR(body_region_volume(s, vs, {0.5, 0.0, 0.5}), 0.5 * vs, 1e-9 * vs);
+}
+
+TEST(RegionVolume, PorosityAndCoordinationOfASimpleWorld) {
+  World world;
+  const double r = 0.01;
+  // Three balls in a row touching with a small overlap, inside a region; one far away.
+  world.add_body(ball(Vec3(0, 0, 0.05), r));
+  world.add_body(ball(Vec3(0.0199, 0, 0.05), r));
+  world.add_body(ball(Vec3(0.0398, 0, 0.05), r));
+  world.add_body(ball(Vec3(0.3, 0.3, 0.05), r));
+  world.options().gravity = Vec3::Zero();
+  world.step(1);
+  const auto volumes = body_volumes(world);
+  const double v = 4.0 / 3.0 * kPi * r * r * r;
+  for (double x : volumes) EXPECT_DOUBLE_EQ(x, v);
+  const CylinderRegion region{0.1, 0.0, 0.1};
+  EXPECT_NEAR(region_porosity(world, volumes, region), 1.0 - 3 * v / region.volume(), 1e-12);
+  // Middle ball touches two, the ends one each: mean 4/3.
+  EXPECT_NEAR(coordination_number(world, region), 4.0 / 3.0, 1e-15);
+  EXPECT_THROW(region_porosity(world, volumes, {0.1, 0.1, 0.1}), InvalidInput);
+}
+
+}  // namespace
+}  // namespace clumpkit::dem
