@@ -21,6 +21,8 @@ struct Body {
 
   Vec3 position = Vec3::Zero();  ///< centroid in the world (m)
   Vec3 velocity = Vec3::Zero();  ///< m/s (at the half step, leapfrog)
+  /// Not integrated for a plain sphere centred on the origin (it changes nothing there): such a
+  /// body keeps the orientation it was given.
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
   Vec3 angular_velocity = Vec3::Zero();  ///< world frame (rad/s)
   /// Net force and torque (world, about the centroid) of the last step: gravity + contacts,

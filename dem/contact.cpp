@@ -24,12 +24,13 @@ double restitution_from_damping_ratio(double beta) {
 
 void update_contact(ContactState& s, const Vec3& normal, double overlap, const Vec3& point,
                     const Vec3& v, double effective_mass, const ContactParams& p, double dt) {
-  // 1. Rotate the stored shear into the new tangent plane, keeping its magnitude.
-  const double old_magnitude = s.shear.norm();
-  if (old_magnitude > 0.0) {
-    Vec3 projected = s.shear - normal * normal.dot(s.shear);
-    const double m = projected.norm();
-    s.shear = m > 0.0 ? Vec3(projected * (old_magnitude / m)) : Vec3(Vec3::Zero());
+  // 1. Rotate the stored shear into the new tangent plane, keeping its magnitude (one square
+  // root: the scale is sqrt(|old|² / |projected|²)).
+  const double old_squared = s.shear.squaredNorm();
+  if (old_squared > 0.0) {
+    const Vec3 projected = s.shear - normal * normal.dot(s.shear);
+    const double m2 = projected.squaredNorm();
+    s.shear = m2 > 0.0 ? Vec3(projected * std::sqrt(old_squared / m2)) : Vec3(Vec3::Zero());
   }
   s.normal = normal;
   s.point = point;
@@ -44,10 +45,13 @@ void update_contact(ContactState& s, const Vec3& normal, double overlap, const V
   const Vec3 vt = v - vn * normal;
   s.shear -= p.ks * dt * vt;
 
-  // 4. Coulomb limit.
+  // 4. Coulomb limit (squared comparison first: a sticking contact needs no square root).
   const double limit = p.friction * std::max(s.normal_force, 0.0);
-  const double magnitude = s.shear.norm();
-  if (magnitude > limit) s.shear *= (magnitude > 0.0 ? limit / magnitude : 0.0);
+  const double squared = s.shear.squaredNorm();
+  if (squared > limit * limit) {
+    const double magnitude = std::sqrt(squared);
+    s.shear *= limit / magnitude;
+  }
 }
 
 void rescale_friction(ContactState& s, double new_friction) {

@@ -353,11 +353,14 @@ void World::compute_forces() {
   const double dt = options_.timestep;
   const ContactParams& p = options_.contact;
 
-  kinematics_.resize(bodies_.size());
-  parallel_items(bodies_.size(), [&](std::size_t k) {
-    const Body& b = bodies_[k];
-    kinematics_[k] = Kinematics{b.position, b.velocity, b.angular_velocity, b.mass};
-  });
+  if (kinematics_.size() != bodies_.size() || !kinematics_valid_) {
+    kinematics_.resize(bodies_.size());
+    parallel_items(bodies_.size(), [&](std::size_t k) {
+      const Body& b = bodies_[k];
+      kinematics_[k] = Kinematics{b.position, b.velocity, b.angular_velocity, b.mass};
+    });
+    kinematics_valid_ = true;
+  }
   slot_out_.resize(candidates_.size());
 
   // Pair contacts, one slot per candidate: a touching pair keeps its shear history when it
@@ -452,8 +455,10 @@ void World::compute_forces() {
 void World::integrate() {
   const double dt = options_.timestep;
   const double alpha = options_.contact.local_damping;
-  parallel_items(bodies_.size(), [&](std::size_t k) {
-    Body& b = bodies_[k];
+  const bool have_reference = !dirty_ && sphere_at_build_.size() == sphere_world_.size();
+  const double limit = 0.25 * options_.skin * options_.skin;  // (skin/2)²
+  std::atomic<bool> moved{false};
+  auto advance = [&](Body& b) {
     const Vec3 f = local_damping(b.force, b.velocity, alpha);
     b.velocity += f * (dt / b.mass);
     b.position += b.velocity * dt;
@@ -465,8 +470,12 @@ void World::integrate() {
       // below would all return the same ω; evaluated directly (equal up to rounding).
       const double inertia = b.moments.x();
       const Vec3 omega = (inertia * b.angular_velocity + t * dt) / inertia;
-      b.orientation = (rotation_quaternion(dt * omega) * q0).normalized();
       b.angular_velocity = omega;
+      // A plain sphere centred on its body origin looks the same in every orientation, so its
+      // orientation is not integrated (as LAMMPS nve/sphere): it saves a sine, a cosine and a
+      // normalisation per sphere per step and changes no force or position.
+      if (b.spheres.size() == 1 && b.spheres[0].center.isZero(0.0)) return;
+      b.orientation = (rotation_quaternion(dt * omega) * q0).normalized();
       return;
     }
     const Vec3 momentum = b.angular_momentum() + t * dt;
@@ -478,15 +487,38 @@ void World::integrate() {
     }
     b.orientation = (rotation_quaternion(dt * omega) * q0).normalized();
     b.angular_velocity = b.angular_velocity_for(momentum, b.orientation);
+  };
+  // One pass per body: advance it, then refresh what the next step reads of it (its packed
+  // kinematics, its spheres' world positions and the Verlet-skin check), so the next step needs
+  // no separate passes over all bodies and spheres. Same formulas, same bits.
+  parallel_items(bodies_.size(), [&](std::size_t k) {
+    Body& b = bodies_[k];
+    advance(b);
+    kinematics_[k] = Kinematics{b.position, b.velocity, b.angular_velocity, b.mass};
+    bool far = false;
+    for (int i = body_first_sphere_[k]; i < body_first_sphere_[k + 1]; ++i) {
+      const Vec3& local = sphere_local_[i];
+      const Vec3 x = local.isZero(0.0) ? Vec3(b.position + Vec3::Zero())
+                                       : Vec3(b.position + b.orientation * local);
+      sphere_world_[i] = x;
+      if (have_reference && (x - sphere_at_build_[i]).squaredNorm() > limit) far = true;
+    }
+    if (far) moved.store(true, std::memory_order_relaxed);
   });
+  positions_fresh_ = true;
+  moved_ = !have_reference || moved.load();
   for (Wall& w : walls_)
     if (w.kind == Wall::Kind::plane) w.point += w.velocity * dt;
 }
 
 void World::step(int count) {
+  // Bodies may have been edited since the last call: refresh everything derived from them once.
+  kinematics_valid_ = false;
+  positions_fresh_ = false;
   for (int s = 0; s < count; ++s) {
     bool walls_stale = !walls_valid_;
-    if (update_positions_and_check()) {
+    const bool rebuild = positions_fresh_ ? moved_ : update_positions_and_check();
+    if (rebuild) {
       // New candidates: the history travels through contacts_ / wall_contacts_.
       if (pairs_valid_) export_pairs();
       if (walls_valid_) export_walls();

@@ -147,8 +147,11 @@ class World {
   std::vector<std::size_t> body_wall_begin_;    // per body: range in wall_cand_
   std::vector<Wall> walls_at_build_;            // walls when wall_cand_ was built
   std::vector<std::size_t> scratch_;            // counts / offsets
-  bool pairs_valid_ = false;  // slots mirror contacts_ for the current candidates_
-  bool walls_valid_ = false;  // wall slots mirror wall_contacts_ for the current wall_cand_
+  bool kinematics_valid_ = false;               // kinematics_ match bodies_ (set by integrate)
+  bool positions_fresh_ = false;  // sphere_world_ and moved_ set by integrate this call
+  bool moved_ = true;             // a sphere moved more than skin/2 since the last build
+  bool pairs_valid_ = false;      // slots mirror contacts_ for the current candidates_
+  bool walls_valid_ = false;      // wall slots mirror wall_contacts_ for the current wall_cand_
 };
 
 /// Total kinetic energy Σ ½·m·|v|² + ½·ω·L (J) (velocities at the half step).
