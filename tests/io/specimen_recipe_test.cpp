@@ -72,7 +72,8 @@ TEST(SpecimenRecipe, BadRecipesFailBeforeSimulation) {
       << e;
   EXPECT_NE(e.find("95"), std::string::npos) << e;
   e = error_of(with("diameter = 0.3", "diameter = 0.05"));
-  EXPECT_NE(e.find("container.diameter: not wider than twice the largest particle"), std::string::npos)
+  EXPECT_NE(e.find("container.diameter: not wider than twice the largest particle"),
+            std::string::npos)
       << e;
   e = error_of(with("recipe = \"srm-rock-blocks.toml\"", "library = \"no-such-library\""));
   EXPECT_NE(e.find("rock.library: no clump library"), std::string::npos) << e;
