@@ -342,6 +342,14 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
   // interfaces and the overburden make the stacked specimen differ from the single calibration
   // sample at the same μ). Particle volumes always follow the true target porosity, so the
   // height stays right; only μ* changes between rounds.
+  // The layer's particles and their loose placement depend on the target porosity only, so
+  // every round compacts the same placed layer (placed on first use: a resumed run may not
+  // need it).
+  Rng particle_rng = Rng::stream(spec.seed, layer_particles_stream);
+  const LayerParticles layer =
+      layer_particles(spec.classes, spec.templates, (1.0 - result.target_porosity) * layer_volume,
+                      spec.soil_density, spec.rock_density, particle_rng);
+  std::vector<Placement> layer_placed;
   double porosity_for_friction = result.target_porosity;
   double next_friction = interpolate_friction(cal, e_target);
   World& world = result.world;
@@ -354,25 +362,21 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
 
     // Stage 2: one layer at the target porosity, compacted at μ*.
     t0 = Clock::now();
-    Rng particle_rng = Rng::stream(spec.seed, layer_particles_stream);
-    const LayerParticles layer =
-        layer_particles(spec.classes, spec.templates, (1.0 - result.target_porosity) * layer_volume,
-                        spec.soil_density, spec.rock_density, particle_rng);
     World layer_world;
     const fs::path layer_done = checkpoints ? dir / ("layer" + tag + ".done") : fs::path();
     const fs::path layer_world_file = checkpoints ? dir / ("layer" + tag + ".world") : fs::path();
     if (checkpoints && control.resume && fs::exists(layer_done)) {
       layer_world = load_checkpoint(layer_world_file.string());
-      ++result.resumed_stages;
     } else {
       const fs::path ckpt = checkpoints ? dir / ("layer" + tag + ".ckpt") : fs::path();
       if (checkpoints && control.resume && fs::exists(ckpt)) {
         layer_world = load_checkpoint(ckpt.string());
       } else {
-        Rng place_rng = Rng::stream(spec.seed, layer_placement);
-        const std::vector<Placement> placed =
-            place_in_cylinder(layer.items, spec.radius, place_rng);
-        layer_world = scaled_world(layer.items, placed, spec, friction, lambda);
+        if (layer_placed.empty()) {
+          Rng place_rng = Rng::stream(spec.seed, layer_placement);
+          layer_placed = place_in_cylinder(layer.items, spec.radius, place_rng);
+        }
+        layer_world = scaled_world(layer.items, layer_placed, spec, friction, lambda);
       }
       settle(layer_world, spec, 0, "layer" + tag, ckpt, control,
              [&](double f) { report("layer compaction", base + 0.4 * round_share * f); });
@@ -400,7 +404,6 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
     const fs::path spec_world_file = checkpoints ? dir / ("specimen" + tag + ".world") : fs::path();
     if (checkpoints && control.resume && fs::exists(spec_done)) {
       world = load_checkpoint(spec_world_file.string());
-      ++result.resumed_stages;
     } else {
       const fs::path ckpt = checkpoints ? dir / ("specimen" + tag + ".ckpt") : fs::path();
       CheckpointInfo info;
@@ -445,10 +448,6 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
       }
     }
     result.steps.emplace_back("specimen" + tag, static_cast<long>(world.steps()));
-    result.body_template.clear();
-    for (int copy = 0; copy < spec.layers; ++copy)
-      result.body_template.insert(result.body_template.end(), layer.template_index.begin(),
-                                  layer.template_index.end());
 
     // Stage 4: measurement (masses do not enter it).
     result.body_volume = body_volumes(world);
@@ -486,6 +485,10 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
           interpolate_friction(cal, porosity_for_friction / (1.0 - porosity_for_friction));
     }
   }
+
+  for (int copy = 0; copy < spec.layers; ++copy)
+    result.body_template.insert(result.body_template.end(), layer.template_index.begin(),
+                                layer.template_index.end());
 
   // True masses in the finished specimen.
   for (Body& b : world.bodies()) {

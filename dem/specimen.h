@@ -81,9 +81,8 @@ struct SpecimenResult {
   double coordination = 0;             ///< mean coordination number in the central region
   std::vector<std::pair<std::string, double>> seconds;  ///< wall-clock seconds per stage
   std::vector<std::pair<std::string, long>> steps;      ///< steps per stage
-  long resumed_stages = 0;            ///< stages found finished in the checkpoint directory
-  double density_scaling = 1.0;       ///< λ used in the preparation
-  std::vector<SpecimenRound> rounds;  ///< every build, the last one is the result
+  double density_scaling = 1.0;                         ///< λ used in the preparation
+  std::vector<SpecimenRound> rounds;                    ///< every build, the last one is the result
 };
 
 /// Progress and checkpointing of build_specimen.

@@ -77,15 +77,8 @@ void World::update_sphere_positions() {
   });
 }
 
-bool World::need_rebuild() const {
-  if (dirty_ || sphere_at_build_.size() != sphere_world_.size()) return true;
-  const double limit = 0.25 * options_.skin * options_.skin;  // (skin/2)²
-  for (std::size_t k = 0; k < sphere_world_.size(); ++k)
-    if ((sphere_world_[k] - sphere_at_build_[k]).squaredNorm() > limit) return true;
-  return false;
-}
-
-// update_sphere_positions() and need_rebuild() in one parallel pass.
+// Sphere world positions and the Verlet-skin test (a sphere moved more than skin/2 since the
+// last build) in one parallel pass.
 bool World::update_positions_and_check() {
   const std::size_t n = sphere_body_.size();
   const bool have_reference = !dirty_ && sphere_at_build_.size() == n;
@@ -544,7 +537,7 @@ void World::step(int count) {
   }
   if (pairs_valid_) export_pairs();
   if (walls_valid_) export_walls();
-  update_sphere_positions();
+  if (!positions_fresh_) update_sphere_positions();  // integrate() already set them otherwise
 }
 
 void World::rescale_friction(double new_friction) {

@@ -40,7 +40,7 @@ struct WallContact {
 /// Deterministic DEM world. Each step (leapfrog, velocities at half steps, as in PFC):
 ///  1. sphere world positions from the bodies; neighbour list rebuilt if needed;
 ///  2. contact forces at x_n with the velocities v_{n−1/2}, contacts in sorted (i, j) order,
-///     then (sphere, wall) order, summed into bodies serially in that order;
+///     then (sphere, wall) order; each body sums its own contacts in that order;
 ///  3. F_n = gravity + contacts (stored in Body::force), PFC local damping if set;
 ///  4. v_{n+1/2} = v_{n−1/2} + F/m·dt, x_{n+1} = x_n + v_{n+1/2}·dt;
 ///     L_{n+1/2} = L_{n−1/2} + T·dt (world angular momentum, so a free body keeps L exactly),
@@ -88,7 +88,6 @@ class World {
   friend struct CheckpointAccess;  // dem/checkpoint.cpp saves and restores the private state
 
   void update_sphere_positions();
-  bool need_rebuild() const;
   void build_neighbours();
   void compute_forces();
   void integrate();

@@ -28,14 +28,17 @@ struct Item {
 
 }  // namespace
 
+void check_output_directory(const std::string& dir) {
+  if (fs::exists(dir) && !fs::exists(fs::path(dir) / "manifest.json") && !fs::is_empty(dir))
+    throw InvalidInput(dir +
+                       ": output directory exists and is not a clumpkit output; "
+                       "remove it or choose another --out");
+}
+
 void publish_directory(const std::string& staging, const std::string& dir) {
   std::error_code ec;
   if (fs::exists(dir)) {
-    const bool ours = fs::exists(fs::path(dir) / "manifest.json") || fs::is_empty(dir);
-    if (!ours)
-      throw InvalidInput(dir +
-                         ": output directory exists and is not a clumpkit output; "
-                         "remove it or choose another --out");
+    check_output_directory(dir);
     fs::remove_all(dir, ec);
     if (ec) throw IoError(dir + ": cannot replace output directory: " + ec.message());
   }

@@ -43,6 +43,10 @@ std::vector<int> particle_fractions(const ShapeRecipe& recipe);
 /// particle count.
 nlohmann::ordered_json manifest_head(const std::string& command, const ShapeRecipe& recipe);
 
+/// Throws InvalidInput unless `dir` may be replaced by an output: it does not exist, is empty
+/// or holds a manifest.json (a previous clumpkit output). Long jobs call it before they start.
+void check_output_directory(const std::string& dir);
+
 /// Replaces `dir` by `staging` (see run_shape_batch for the safety rule).
 void publish_directory(const std::string& staging, const std::string& dir);
 

@@ -55,10 +55,7 @@ void register_specimen(CLI::App& app) {
     set_threads(o->threads);
     const SpecimenRecipe recipe = read_specimen_recipe(o->recipe);
     const fs::path out = o->out;
-    if (fs::exists(out) && !fs::exists(out / "manifest.json") && !fs::is_empty(out))
-      throw InvalidInput(o->out +
-                         ": output directory exists and is not a clumpkit output; remove it or "
-                         "choose another --out");
+    check_output_directory(o->out);
     const fs::path staging = o->out + ".partial";
     if (!o->resume) fs::remove_all(staging);
     fs::create_directories(staging);
