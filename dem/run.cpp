@@ -41,15 +41,6 @@ RunOutcome run_until(World& world, const RunLimits& limits,
     world.step(static_cast<int>(chunk));
     outcome.steps += chunk;
 
-    if (checkpoints) {
-      const auto now = Clock::now();
-      if (std::chrono::duration<double>(now - last_checkpoint).count() >=
-          limits.checkpoint_every_seconds) {
-        save_checkpoint(limits.checkpoint_path, world, limits.checkpoint_info);
-        last_checkpoint = Clock::now();
-      }
-    }
-
     if (progress) progress(outcome.steps, limits.max_steps);
 
     if (limits.kinetic_energy_below > 0 && kinetic_energy(world) < limits.kinetic_energy_below) {
@@ -65,6 +56,17 @@ RunOutcome run_until(World& world, const RunLimits& limits,
         unbalanced_to_weight_ratio(world) < limits.weight_ratio_below) {
       outcome.stopped_by = "weight_ratio";
       return outcome;
+    }
+
+    // After the rules: a checkpoint at step s means the rules did not hold at s, so a run resumed
+    // from it (which first steps on) takes the same path as one never interrupted.
+    if (checkpoints) {
+      const auto now = Clock::now();
+      if (std::chrono::duration<double>(now - last_checkpoint).count() >=
+          limits.checkpoint_every_seconds) {
+        save_checkpoint(limits.checkpoint_path, world, limits.checkpoint_info);
+        last_checkpoint = Clock::now();
+      }
     }
   }
   outcome.stopped_by = "step_cap";

@@ -36,15 +36,16 @@ struct RunOutcome {
 
 /// Steps `world` in chunks that end where world.steps() is a multiple of check_every (or at
 /// the cap), so the checks fall on the same absolute steps after a resume from a checkpoint.
-/// After each chunk the rules are tested in this order and the first one met stops the run:
-/// kinetic energy below its threshold, mean unbalanced-force ratio below its threshold,
-/// unbalanced-to-weight ratio below its threshold, step cap reached. Rules are only tested after at
-/// least one step (max_steps = 0 returns at once, "step_cap"). When checkpoint_every_seconds > 0
-/// and checkpoint_path is set, a checkpoint (save_checkpoint with checkpoint_info) is written after
-/// the first chunk that ends at least that many wall-clock seconds after the start or the previous
-/// checkpoint; saving only reads the world, so the simulation result does not depend on when
-/// checkpoints happen. `progress(done, max_steps)` is called after every chunk (after its
-/// checkpoint, if any). Throws InvalidInput for a negative max_steps, check_every ≤ 0 or negative
+/// After each chunk `progress(done, max_steps)` is called and the rules are tested in this
+/// order; the first one met stops the run: kinetic energy below its threshold, mean
+/// unbalanced-force ratio below its threshold, unbalanced-to-weight ratio below its threshold,
+/// step cap reached. Rules are only tested after at least one step (max_steps = 0 returns at
+/// once, "step_cap"). When checkpoint_every_seconds > 0 and checkpoint_path is set, a checkpoint
+/// (save_checkpoint with checkpoint_info) is written after the first chunk that ends at least
+/// that many wall-clock seconds after the start or the previous checkpoint and at which no rule
+/// held; saving only reads the world, so the result does not depend on when checkpoints happen,
+/// and a run resumed from one (which steps on before testing again) follows the uninterrupted
+/// run. Throws InvalidInput for a negative max_steps, check_every ≤ 0 or negative
 /// thresholds.
 RunOutcome run_until(World& world, const RunLimits& limits,
                      const std::function<void(long, long)>& progress = {});

@@ -16,6 +16,7 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -83,7 +84,8 @@ std::string fingerprint(const SpecimenSpec& s) {
     << hex(s.contact.damping_ratio) << hex(s.contact.local_damping)
     << hex(s.target_relative_density) << s.seed << hex(s.porosity_guess) << hex(s.timestep_safety)
     << hex(s.equilibrium_ratio) << s.max_steps << hex(s.margin) << hex(s.density_scaling)
-    << s.correction_rounds << hex(s.relative_density_tolerance);
+    << s.correction_rounds << hex(s.relative_density_tolerance) << s.settle_window
+    << hex(s.height_tolerance);
   for (double f : s.calibration_frictions) t << hex(f);
   for (const ParticleClass& c : s.classes)
     t << hex(c.min_size) << hex(c.max_size) << hex(c.mass_percent) << c.rock;
@@ -167,14 +169,35 @@ World scaled_world(const std::vector<PlacementItem>& items, const std::vector<Pl
   return world;
 }
 
-/// Settles `world` from its current step to equilibrium, counting the cap from `stage_start`
-/// (the step the stage began), with periodic checkpoints carrying `stage` and `stage_start`.
+double smallest_size(const SpecimenSpec& s) {
+  double d = INFINITY;
+  for (const ParticleClass& c : s.classes) d = std::min(d, c.min_size);
+  return d;
+}
+
+std::uint64_t bits(double v) {
+  std::uint64_t u;
+  std::memcpy(&u, &v, sizeof u);
+  return u;
+}
+
+double from_bits(std::uint64_t u) {
+  double v;
+  std::memcpy(&v, &u, sizeof v);
+  return v;
+}
+
+/// Settles `world` from its current step to equilibrium (SpecimenSpec::equilibrium_ratio or the
+/// settled-height rule), counting the cap from `stage_start` (the step the stage began), with
+/// periodic checkpoints carrying `stage`, `stage_start` (random_state[0]) and the column height
+/// of the last window boundary (random_state[1]), so a resumed run tests the height rule
+/// against the same reference as the uninterrupted one. `resumed` is the info of the checkpoint
+/// the world came from, or null for a fresh stage.
 RunOutcome settle(World& world, const SpecimenSpec& spec, long stage_start,
                   const std::string& stage, const fs::path& checkpoint,
-                  const SpecimenControl& control, const std::function<void(double)>& progress) {
+                  const SpecimenControl& control, const std::function<void(double)>& progress,
+                  const CheckpointInfo* resumed = nullptr) {
   RunLimits limits;
-  limits.max_steps =
-      std::max(0L, spec.max_steps - (static_cast<long>(world.steps()) - stage_start));
   limits.weight_ratio_below = spec.equilibrium_ratio;
   if (!checkpoint.empty()) {
     limits.checkpoint_path = checkpoint.string();
@@ -182,14 +205,42 @@ RunOutcome settle(World& world, const SpecimenSpec& spec, long stage_start,
     limits.checkpoint_info.stage = stage;
     limits.checkpoint_info.random_state[0] = static_cast<std::uint64_t>(stage_start);
   }
-  RunOutcome out = run_until(world, limits, [&](long done, long) {
-    if (progress)
-      progress(static_cast<double>(world.steps() - stage_start) /
-               static_cast<double>(spec.max_steps));
-    (void)done;
-  });
-  out.steps = static_cast<long>(world.steps()) - stage_start;
-  return out;
+  const long window = spec.settle_window > 0 ? spec.settle_window : spec.max_steps;
+  const double tolerance = spec.height_tolerance * smallest_size(spec);
+  const std::vector<double> volumes = body_volumes(world);
+  double reference = resumed ? from_bits(resumed->random_state[1]) : NAN;
+  RunOutcome out;
+  for (;;) {
+    const long done = static_cast<long>(world.steps()) - stage_start;
+    if (done % window == 0) {
+      // A window boundary (also where a resumed run may start): the height rule, then the new
+      // reference.
+      const double h = column_height(world, volumes);
+      if (spec.settle_window > 0 && done > 0 && std::isfinite(reference) &&
+          std::abs(h - reference) < tolerance && unbalanced_to_weight_ratio(world) < 1.0) {
+        out.steps = done;
+        out.stopped_by = "settled_height";
+        return out;
+      }
+      reference = h;
+    }
+    if (done >= spec.max_steps) {
+      out.steps = done;
+      out.stopped_by = "step_cap";
+      return out;
+    }
+    limits.max_steps = std::min(window - done % window, spec.max_steps - done);
+    limits.checkpoint_info.random_state[1] = bits(reference);
+    out = run_until(world, limits, [&](long, long) {
+      if (progress)
+        progress(static_cast<double>(world.steps() - stage_start) /
+                 static_cast<double>(spec.max_steps));
+    });
+    if (out.stopped_by != "step_cap") {
+      out.steps = static_cast<long>(world.steps()) - stage_start;
+      return out;
+    }
+  }
 }
 
 void check_spec(const SpecimenSpec& s) {
@@ -206,6 +257,8 @@ void check_spec(const SpecimenSpec& s) {
     if (!(f >= 0) || !std::isfinite(f)) bad("calibration frictions must be non-negative");
   if (!(s.porosity_guess > 0 && s.porosity_guess < 1)) bad("porosity guess must lie in (0, 1)");
   if (!(s.equilibrium_ratio > 0) || s.max_steps < 1) bad("settling limits must be positive");
+  if (s.settle_window < 0 || !(s.height_tolerance >= 0))
+    bad("settle window and height tolerance must be non-negative");
   if (!(s.density_scaling >= 0) || !std::isfinite(s.density_scaling))
     bad("density scaling must be non-negative");
 }
@@ -296,16 +349,19 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
               continue;
             }
             const fs::path ckpt = checkpoints ? dir / (name + ".ckpt") : fs::path();
-            World world = checkpoints && control.resume && fs::exists(ckpt)
-                              ? load_checkpoint(ckpt.string())
-                              : scaled_world(sample.items, placed, spec, frictions[k], lambda);
-            const RunOutcome out = settle(world, spec, 0, name, ckpt, control, [&](double f) {
+            CheckpointInfo info;
+            const bool resumed = checkpoints && control.resume && fs::exists(ckpt);
+            World world = resumed ? load_checkpoint(ckpt.string(), &info)
+                                  : scaled_world(sample.items, placed, spec, frictions[k], lambda);
+            const auto show = [&](double f) {
               std::lock_guard<std::mutex> lock(progress_mutex);
               fraction[k] = f;
               double sum = 0;
               for (double v : fraction) sum += v;
               report("calibration", 0.5 * sum / static_cast<double>(fraction.size()));
-            });
+            };
+            const RunOutcome out =
+                settle(world, spec, 0, name, ckpt, control, show, resumed ? &info : nullptr);
             const std::vector<double> volumes = body_volumes(world);
             const CylinderRegion region =
                 central_region(spec.radius, margin, column_height(world, volumes));
@@ -369,8 +425,10 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
       layer_world = load_checkpoint(layer_world_file.string());
     } else {
       const fs::path ckpt = checkpoints ? dir / ("layer" + tag + ".ckpt") : fs::path();
-      if (checkpoints && control.resume && fs::exists(ckpt)) {
-        layer_world = load_checkpoint(ckpt.string());
+      CheckpointInfo info;
+      const bool resumed = checkpoints && control.resume && fs::exists(ckpt);
+      if (resumed) {
+        layer_world = load_checkpoint(ckpt.string(), &info);
       } else {
         if (layer_placed.empty()) {
           Rng place_rng = Rng::stream(spec.seed, layer_placement);
@@ -378,8 +436,12 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
         }
         layer_world = scaled_world(layer.items, layer_placed, spec, friction, lambda);
       }
-      settle(layer_world, spec, 0, "layer" + tag, ckpt, control,
-             [&](double f) { report("layer compaction", base + 0.4 * round_share * f); });
+      settle(
+          layer_world, spec, 0, "layer" + tag, ckpt, control,
+          [&](double f) { report("layer compaction", base + 0.4 * round_share * f); },
+          resumed ? &info : nullptr);
+      // μ back to the material friction, shear history rescaled (issue 5 stage 3).
+      layer_world.rescale_friction(spec.contact.friction);
       if (checkpoints) {
         save_checkpoint(layer_world_file.string(), layer_world);
         write_record(layer_done, {{"steps", std::to_string(layer_world.steps())}});
@@ -396,9 +458,8 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
     result.steps.emplace_back("layer" + tag, static_cast<long>(layer_world.steps()));
     result.seconds.emplace_back("layer" + tag, since(t0));
 
-    // Stage 3: layered duplication (each copy shifted up by the layer's top, so nothing
-    // overlaps), settled at μ* so the interfaces compact as the layer did, then μ restored to
-    // the material friction (shear history rescaled) and settled again.
+    // Stage 3: layered duplication of the layer (already at the material friction): each copy
+    // shifted up by the layer's top, so nothing overlaps, then settled to equilibrium.
     t0 = Clock::now();
     const fs::path spec_done = checkpoints ? dir / ("specimen" + tag + ".done") : fs::path();
     const fs::path spec_world_file = checkpoints ? dir / ("specimen" + tag + ".world") : fs::path();
@@ -407,12 +468,9 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
     } else {
       const fs::path ckpt = checkpoints ? dir / ("specimen" + tag + ".ckpt") : fs::path();
       CheckpointInfo info;
-      bool restored = false;
-      long restore_start = 0;
-      if (checkpoints && control.resume && fs::exists(ckpt)) {
+      const bool resumed = checkpoints && control.resume && fs::exists(ckpt);
+      if (resumed) {
         world = load_checkpoint(ckpt.string(), &info);
-        restored = info.stage == "specimen-restore" + tag;
-        restore_start = static_cast<long>(info.random_state[0]);
       } else {
         world = World(layer_world.options());
         for (int copy = 0; copy < spec.layers; ++copy)
@@ -425,22 +483,10 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
           }
         for (const Wall& w : layer_world.walls()) world.add_wall(w);
       }
-      if (!restored) {
-        settle(world, spec, 0, "specimen-compact" + tag, ckpt, control, [&](double f) {
-          report("layered specimen at mu*", base + round_share * (0.4 + 0.3 * f));
-        });
-        restore_start = static_cast<long>(world.steps());
-        world.rescale_friction(spec.contact.friction);
-        if (checkpoints) {
-          CheckpointInfo restore_info;
-          restore_info.stage = "specimen-restore" + tag;
-          restore_info.random_state[0] = static_cast<std::uint64_t>(restore_start);
-          save_checkpoint(ckpt.string(), world, restore_info);
-        }
-      }
-      settle(world, spec, restore_start, "specimen-restore" + tag, ckpt, control, [&](double f) {
-        report("specimen at material friction", base + round_share * (0.7 + 0.3 * f));
-      });
+      settle(
+          world, spec, 0, "specimen" + tag, ckpt, control,
+          [&](double f) { report("layered specimen", base + round_share * (0.4 + 0.6 * f)); },
+          resumed ? &info : nullptr);
       if (checkpoints) {
         save_checkpoint(spec_world_file.string(), world);
         write_record(spec_done, {{"steps", std::to_string(world.steps())}});
