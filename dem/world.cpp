@@ -102,6 +102,13 @@ bool World::update_positions_and_check() {
   return !have_reference || moved.load();
 }
 
+// Candidate pairs: spheres of different bodies closer than r_i + r_j + skin. Each pair is found
+// by its larger sphere (ties: by the lower index), which scans the cells within 2·r + skin of
+// it, so the cell size can follow the typical sphere instead of the largest: in a soil–rock
+// mixture (5 mm soil, clump spheres up to 50 mm) a largest-sphere grid puts thousands of small
+// spheres in each of the 27 cells a small sphere scans. The cell size is the one of a few
+// radius quantiles with the fewest expected distance checks. The candidate set does not depend
+// on the grid, so neither does anything downstream.
 void World::build_neighbours() {
   ++builds_;
   dirty_ = false;
@@ -109,15 +116,39 @@ void World::build_neighbours() {
   candidates_.clear();
   const std::size_t n = sphere_world_.size();
   if (n < 2) return;
+  const double skin = options_.skin;
 
-  // Cell size ≥ largest diameter + skin, so every candidate lies in the 27 surrounding cells.
-  double h = options_.skin;
   Vec3 lo = sphere_world_[0], hi = sphere_world_[0];
   for (std::size_t k = 0; k < n; ++k) {
     lo = lo.cwiseMin(sphere_world_[k]);
     hi = hi.cwiseMax(sphere_world_[k]);
   }
-  h += 2.0 * *std::max_element(sphere_radius_.begin(), sphere_radius_.end());
+  const Vec3 extent = (hi - lo).cwiseMax(Vec3::Constant(1e-300));
+  const double volume = extent.prod();
+
+  // Cell size: h = 2·r_q + skin for r_q a radius quantile; cost ≈ Σ_i (2·k_i + 1)³ · (spheres
+  // per cell) with k_i = ⌈(2·r_i + skin)/h⌉ cells scanned each way.
+  std::vector<double> sorted_radius(sphere_radius_);
+  std::sort(sorted_radius.begin(), sorted_radius.end());
+  double h = 2.0 * sorted_radius.back() + skin;
+  {
+    double best = std::numeric_limits<double>::infinity();
+    for (double q : {0.5, 0.75, 0.9, 0.97, 1.0}) {
+      const double r_q = sorted_radius[static_cast<std::size_t>(q * static_cast<double>(n - 1))];
+      const double size = 2.0 * r_q + skin;
+      if (!(size > 0.0)) continue;
+      double per_cell = static_cast<double>(n) * size * size * size / volume;
+      per_cell = std::max(per_cell, 1.0);
+      double cost = 0.0;
+      for (std::size_t k = 0; k < n; k += std::max<std::size_t>(1, n / 4096)) {
+        const double reach = std::ceil((2.0 * sorted_radius[k] + skin) / size);
+        cost += (2.0 * reach + 1.0) * (2.0 * reach + 1.0) * (2.0 * reach + 1.0);
+      }
+      cost *= per_cell;
+      if (cost < best) best = cost, h = size;
+    }
+  }
+  if (!(h > 0.0)) h = 1.0;  // every radius and the skin zero: any size will do
   std::int64_t dims[3];
   double cells = 1.0;
   for (;;) {
@@ -159,41 +190,62 @@ void World::build_neighbours() {
     std::sort(keyed.begin(), keyed.end());
   }
 
+  // Each sphere a lists the partners b it finds (r_b < r_a, or equal radii and b > a).
   partners_.resize(n);
-  parallel_items(n, [&](std::size_t i) {
-    const Vec3& x = sphere_world_[i];
+  parallel_items(n, [&](std::size_t a) {
+    const Vec3& x = sphere_world_[a];
+    const double ra = sphere_radius_[a];
+    const int body = sphere_body_[a];
     const std::int64_t c[3] = {cell_of(x, 0), cell_of(x, 1), cell_of(x, 2)};
-    std::vector<int>& out = partners_[i];
+    const auto reach = static_cast<std::int64_t>(std::ceil((2.0 * ra + skin) / h));
+    std::vector<int>& out = partners_[a];
     out.clear();
-    auto consider = [&](int j) {
-      if (j <= static_cast<int>(i) || sphere_body_[j] == sphere_body_[i]) return;
-      const double reach = sphere_radius_[i] + sphere_radius_[j] + options_.skin;
-      if ((sphere_world_[j] - x).squaredNorm() < reach * reach) out.push_back(j);
+    auto consider = [&](int b) {
+      const double rb = sphere_radius_[b];
+      if (rb > ra || (rb == ra && b <= static_cast<int>(a)) || sphere_body_[b] == body) return;
+      const double r = ra + rb + skin;
+      if ((sphere_world_[b] - x).squaredNorm() < r * r) out.push_back(b);
     };
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      for (std::int64_t dy = -1; dy <= 1; ++dy)
-        for (std::int64_t dz = -1; dz <= 1; ++dz) {
-          const std::int64_t cx = c[0] + dx, cy = c[1] + dy, cz = c[2] + dz;
-          if (cx < 0 || cy < 0 || cz < 0 || cx >= dims[0] || cy >= dims[1] || cz >= dims[2])
-            continue;
-          const std::int64_t cell = key_of(cx, cy, cz);
-          if (dense) {
-            for (std::int64_t s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s)
-              consider(cell_spheres_[s]);
-          } else {
-            auto first = std::lower_bound(keyed.begin(), keyed.end(), std::make_pair(cell, -1));
-            for (auto it = first; it != keyed.end() && it->first == cell; ++it)
-              consider(it->second);
+    const std::int64_t x0 = std::max<std::int64_t>(c[0] - reach, 0);
+    const std::int64_t x1 = std::min<std::int64_t>(c[0] + reach, dims[0] - 1);
+    const std::int64_t y0 = std::max<std::int64_t>(c[1] - reach, 0);
+    const std::int64_t y1 = std::min<std::int64_t>(c[1] + reach, dims[1] - 1);
+    const std::int64_t z0 = std::max<std::int64_t>(c[2] - reach, 0);
+    const std::int64_t z1 = std::min<std::int64_t>(c[2] + reach, dims[2] - 1);
+    for (std::int64_t cx = x0; cx <= x1; ++cx)
+      for (std::int64_t cy = y0; cy <= y1; ++cy) {
+        if (dense) {
+          // Cells (cx, cy, z0..z1) are consecutive in the table.
+          const std::int64_t first = key_of(cx, cy, z0), last = key_of(cx, cy, z1);
+          for (std::int64_t s = cell_start_[first]; s < cell_start_[last + 1]; ++s)
+            consider(cell_spheres_[s]);
+        } else {
+          for (std::int64_t cz = z0; cz <= z1; ++cz) {
+            const std::int64_t cell = key_of(cx, cy, cz);
+            auto it = std::lower_bound(keyed.begin(), keyed.end(), std::make_pair(cell, -1));
+            for (; it != keyed.end() && it->first == cell; ++it) consider(it->second);
           }
         }
-    std::sort(out.begin(), out.end());
+      }
   });
+
+  // Pairs (min, max) grouped by their first sphere (counting sort), each group sorted by j.
   scratch_.assign(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) scratch_[i + 1] = scratch_[i] + partners_[i].size();
+  for (std::size_t a = 0; a < n; ++a)
+    for (int b : partners_[a]) ++scratch_[std::min<std::size_t>(a, b) + 1];
+  for (std::size_t i = 0; i < n; ++i) scratch_[i + 1] += scratch_[i];
   candidates_.resize(scratch_[n]);
+  {
+    std::vector<std::size_t> fill(scratch_.begin(), scratch_.end() - 1);
+    for (std::size_t a = 0; a < n; ++a)
+      for (int b : partners_[a]) {
+        const int i = std::min(static_cast<int>(a), b), j = std::max(static_cast<int>(a), b);
+        candidates_[fill[i]++] = {i, j};
+      }
+  }
   parallel_items(n, [&](std::size_t i) {
-    std::size_t k = scratch_[i];
-    for (int j : partners_[i]) candidates_[k++] = {static_cast<int>(i), j};
+    std::sort(candidates_.begin() + static_cast<std::ptrdiff_t>(scratch_[i]),
+              candidates_.begin() + static_cast<std::ptrdiff_t>(scratch_[i + 1]));
   });
 }
 
