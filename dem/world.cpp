@@ -288,6 +288,15 @@ void World::derive_pair_index() {
       std::sort(body_items_.begin() + static_cast<std::ptrdiff_t>(body_begin_[b]),
                 body_items_.begin() + static_cast<std::ptrdiff_t>(body_begin_[b + 1]));
   });
+  item_of_i_.resize(m);
+  item_of_j_.resize(m);
+  parallel_items(nb, [&](std::size_t b) {
+    for (std::size_t e = body_begin_[b]; e < body_begin_[b + 1]; ++e) {
+      const std::uint64_t item = body_items_[e];
+      (item & 1 ? item_of_j_ : item_of_i_)[item >> 1] = e;
+    }
+  });
+  item_out_.assign(body_items_.size(), Wrench{Vec3::Zero(), Vec3::Zero()});
   slot_state_.resize(m);
   slot_active_.assign(m, 0);
 }
@@ -304,6 +313,7 @@ void World::import_pairs() {
     const auto k = static_cast<std::size_t>(it - candidates_.begin());
     slot_state_[k] = pc.state;
     slot_active_[k] = 1;
+    // The wrenches are written by the next contact pass (every active slot is refreshed there).
   });
 }
 
@@ -406,10 +416,11 @@ void World::compute_forces() {
     });
     kinematics_valid_ = true;
   }
-  slot_out_.resize(candidates_.size());
 
   // Pair contacts, one slot per candidate: a touching pair keeps its shear history when it
-  // touched at the last step too, else it starts from a fresh state.
+  // touched at the last step too, else it starts from a fresh state. Each touching pair writes
+  // its wrench on either body into that body's item range; a pair that stops touching clears
+  // them, so inactive items always hold zeros.
   const std::size_t ncand = candidates_.size();
   parallel_items(ncand, [&](std::size_t k) {
     // The partner j is far from i in memory for a mixed packing: fetch a few candidates ahead.
@@ -420,19 +431,19 @@ void World::compute_forces() {
       __builtin_prefetch(&kinematics_[sphere_body_[ahead]]);
     }
     const auto [i, j] = candidates_[k];
+    auto release = [&] {
+      if (!slot_active_[k]) return;
+      slot_active_[k] = 0;
+      item_out_[item_of_i_[k]] = Wrench{Vec3::Zero(), Vec3::Zero()};
+      item_out_[item_of_j_[k]] = Wrench{Vec3::Zero(), Vec3::Zero()};
+    };
     const Vec3 d = sphere_world_[j] - sphere_world_[i];
     const double touch = sphere_radius_[i] + sphere_radius_[j];
     const double d2 = d.squaredNorm();
-    if (d2 > touch * touch * (1.0 + 1e-9)) {  // clearly apart: no square root
-      slot_active_[k] = 0;
-      return;
-    }
-    const double dist = std::sqrt(d2);  // = d.norm()
+    if (d2 > touch * touch * (1.0 + 1e-9)) return release();  // clearly apart: no square root
+    const double dist = std::sqrt(d2);                        // = d.norm()
     const double delta = touch - dist;
-    if (!(delta > 0.0)) {
-      slot_active_[k] = 0;
-      return;
-    }
+    if (!(delta > 0.0)) return release();
     ContactState& state = slot_state_[k];
     if (!slot_active_[k]) state = ContactState();
     slot_active_[k] = 1;
@@ -444,7 +455,10 @@ void World::compute_forces() {
     const Vec3 vb = b.velocity + b.angular_velocity.cross(point - b.position);
     const double m_eff = a.mass * b.mass / (a.mass + b.mass);
     update_contact(state, n, delta, point, vb - va, m_eff, p, dt);
-    slot_out_[k] = SlotForce{state.force(), point};
+    const Vec3 f = state.force();
+    // Body of j receives +f, body of i −f; torques about each centroid.
+    item_out_[item_of_j_[k]] = Wrench{f, (point - b.position).cross(f)};
+    item_out_[item_of_i_[k]] = Wrench{-f, -(point - a.position).cross(f)};
   });
 
   // Wall contacts, one slot per wall candidate, likewise.
@@ -471,19 +485,8 @@ void World::compute_forces() {
     Vec3 force = b.mass * options_.gravity;
     Vec3 torque = Vec3::Zero();
     for (std::size_t e = body_begin_[k]; e < body_begin_[k + 1]; ++e) {
-      const std::uint64_t item = body_items_[e];
-      const std::size_t c = static_cast<std::size_t>(item >> 1);
-      if (!slot_active_[c]) continue;
-      const SlotForce& out = slot_out_[c];
-      const Vec3& f = out.force;
-      const Vec3 arm = out.point - b.position;
-      if (item & 1) {
-        force += f;
-        torque += arm.cross(f);
-      } else {
-        force -= f;
-        torque -= arm.cross(f);
-      }
+      force += item_out_[e].force;
+      torque += item_out_[e].torque;
     }
     for (std::size_t c = body_wall_begin_[k]; c < body_wall_begin_[k + 1]; ++c) {
       if (!wall_slot_active_[c]) continue;

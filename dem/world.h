@@ -134,10 +134,14 @@ class World {
     double mass;
   };
   std::vector<Kinematics> kinematics_;  // per body, refreshed each step
-  struct SlotForce {                    // per touching candidate: force on j and the contact point
-    Vec3 force, point;
+  struct Wrench {                       // one contact's force and torque on one of its bodies
+    Vec3 force, torque;
   };
-  std::vector<SlotForce> slot_out_;             // per candidate
+  // Per body item (body_items_ order): the wrench of that contact on that body, written by the
+  // contact kernel (zero while not touching), so each body sums a contiguous range.
+  std::vector<Wrench> item_out_;
+  std::vector<std::size_t> item_of_i_;          // per candidate: its item on the body holding i
+  std::vector<std::size_t> item_of_j_;          // per candidate: its item on the body holding j
   std::vector<ContactState> slot_state_;        // per candidate
   std::vector<std::uint8_t> slot_active_;       // per candidate: touching at the last step
   std::vector<std::pair<int, int>> wall_cand_;  // sorted (sphere, wall)
