@@ -25,6 +25,20 @@ Eigen::Quaterniond rotation_quaternion(const Vec3& phi) {
   return Eigen::Quaterniond(std::cos(h), axis.x(), axis.y(), axis.z());
 }
 
+// v + ω × (p − x) and (p − x) × f written per component: Eigen's code for these expressions
+// stores two scalars and reloads them as one packed pair, which defeats store forwarding and
+// cost a third of the contact kernel (perf). Same formulas, same bits.
+inline Vec3 point_velocity(const Vec3& v, const Vec3& w, const Vec3& p, const Vec3& x) {
+  const double rx = p.x() - x.x(), ry = p.y() - x.y(), rz = p.z() - x.z();
+  return Vec3(v.x() + (w.y() * rz - w.z() * ry), v.y() + (w.z() * rx - w.x() * rz),
+              v.z() + (w.x() * ry - w.y() * rx));
+}
+
+inline Vec3 moment(const Vec3& p, const Vec3& x, const Vec3& f) {
+  const double rx = p.x() - x.x(), ry = p.y() - x.y(), rz = p.z() - x.z();
+  return Vec3(ry * f.z() - rz * f.y(), rz * f.x() - rx * f.z(), rx * f.y() - ry * f.x());
+}
+
 template <class F>
 void parallel_items(std::size_t n, F&& f) {
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 32),
@@ -451,14 +465,14 @@ void World::compute_forces() {
     const Kinematics& b = kinematics_[sphere_body_[j]];
     const Vec3 n = dist > 0.0 ? Vec3(d / dist) : Vec3(Vec3::UnitZ());
     const Vec3 point = sphere_world_[i] + (sphere_radius_[i] - 0.5 * delta) * n;
-    const Vec3 va = a.velocity + a.angular_velocity.cross(point - a.position);
-    const Vec3 vb = b.velocity + b.angular_velocity.cross(point - b.position);
+    const Vec3 va = point_velocity(a.velocity, a.angular_velocity, point, a.position);
+    const Vec3 vb = point_velocity(b.velocity, b.angular_velocity, point, b.position);
     const double m_eff = a.mass * b.mass / (a.mass + b.mass);
     update_contact(state, n, delta, point, vb - va, m_eff, p, dt);
     const Vec3 f = state.force();
     // Body of j receives +f, body of i −f; torques about each centroid.
-    item_out_[item_of_j_[k]] = Wrench{f, (point - b.position).cross(f)};
-    item_out_[item_of_i_[k]] = Wrench{-f, -(point - a.position).cross(f)};
+    item_out_[item_of_j_[k]] = Wrench{f, moment(point, b.position, f)};
+    item_out_[item_of_i_[k]] = Wrench{-f, -moment(point, a.position, f)};
   });
 
   // Wall contacts, one slot per wall candidate, likewise.
