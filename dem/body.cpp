@@ -23,14 +23,22 @@ double Body::bounding_radius() const {
   return r;
 }
 
-Vec3 Body::angular_momentum() const {
-  const Mat3 rot = orientation.toRotationMatrix();
-  return rot * moments.cwiseProduct(rot.transpose() * angular_velocity);
+Vec3 angular_momentum(const Vec3& moments, const Eigen::Quaterniond& q, const Vec3& omega) {
+  const Mat3 rot = q.toRotationMatrix();
+  return rot * moments.cwiseProduct(rot.transpose() * omega);
 }
 
-Vec3 Body::angular_velocity_for(const Vec3& angular_momentum, const Eigen::Quaterniond& q) const {
+Vec3 angular_velocity_for(const Vec3& moments, const Vec3& momentum, const Eigen::Quaterniond& q) {
   const Mat3 rot = q.toRotationMatrix();
-  return rot * (rot.transpose() * angular_momentum).cwiseQuotient(moments);
+  return rot * (rot.transpose() * momentum).cwiseQuotient(moments);
+}
+
+Vec3 Body::angular_momentum() const {
+  return dem::angular_momentum(moments, orientation, angular_velocity);
+}
+
+Vec3 Body::angular_velocity_for(const Vec3& momentum, const Eigen::Quaterniond& q) const {
+  return dem::angular_velocity_for(moments, momentum, q);
 }
 
 double Body::kinetic_energy() const {

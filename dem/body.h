@@ -44,6 +44,12 @@ struct Body {
   double kinetic_energy() const;
 };
 
+/// Angular momentum R·diag(I)·Rᵀ·ω of a body with principal moments `moments` at orientation q
+/// (world frame, kg·m²/s).
+Vec3 angular_momentum(const Vec3& moments, const Eigen::Quaterniond& q, const Vec3& omega);
+/// World angular velocity R·diag(I)⁻¹·Rᵀ·L for a world angular momentum L at orientation q.
+Vec3 angular_velocity_for(const Vec3& moments, const Vec3& momentum, const Eigen::Quaterniond& q);
+
 /// A solid sphere of the given radius (m) and density (kg/m³) centred at `center`:
 /// m = 4/3·π·r³·ρ, I = 2/5·m·r² about every axis. Throws InvalidInput for a non-positive or
 /// non-finite radius or density.

@@ -24,34 +24,8 @@ double restitution_from_damping_ratio(double beta) {
 
 void update_contact(ContactState& s, const Vec3& normal, double overlap, const Vec3& point,
                     const Vec3& v, double effective_mass, const ContactParams& p, double dt) {
-  // 1. Rotate the stored shear into the new tangent plane, keeping its magnitude (one square
-  // root: the scale is sqrt(|old|² / |projected|²)).
-  const double old_squared = s.shear.squaredNorm();
-  if (old_squared > 0.0) {
-    const Vec3 projected = s.shear - normal * normal.dot(s.shear);
-    const double m2 = projected.squaredNorm();
-    s.shear = m2 > 0.0 ? Vec3(projected * std::sqrt(old_squared / m2)) : Vec3(Vec3::Zero());
-  }
-  s.normal = normal;
-  s.point = point;
-  s.overlap = overlap;
-
-  // 2. Normal spring + dashpot.
-  const double vn = v.dot(normal);
-  const double c = 2.0 * p.damping_ratio * std::sqrt(effective_mass * p.kn);
-  s.normal_force = p.kn * overlap - c * vn;
-
-  // 3. Incremental shear spring.
-  const Vec3 vt = v - vn * normal;
-  s.shear -= p.ks * dt * vt;
-
-  // 4. Coulomb limit (squared comparison first: a sticking contact needs no square root).
-  const double limit = p.friction * std::max(s.normal_force, 0.0);
-  const double squared = s.shear.squaredNorm();
-  if (squared > limit * limit) {
-    const double magnitude = std::sqrt(squared);
-    s.shear *= limit / magnitude;
-  }
+  update_contact_with_dashpot(s, normal, overlap, point, v, normal_dashpot(effective_mass, p), p,
+                              dt);
 }
 
 void rescale_friction(ContactState& s, double new_friction) {

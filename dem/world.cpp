@@ -140,27 +140,36 @@ void World::build_neighbours() {
   const Vec3 extent = (hi - lo).cwiseMax(Vec3::Constant(1e-300));
   const double volume = extent.prod();
 
-  // Cell size: h = 2·r_q + skin for r_q a radius quantile; cost ≈ Σ_i (2·k_i + 1)³ · (spheres
-  // per cell) with k_i = ⌈(2·r_i + skin)/h⌉ cells scanned each way.
+  // Cell size h: sphere a scans the cells within R_a = 2·r_a + skin of it, column by column
+  // (dense table: a column of cells is one contiguous run). Expected cost per sphere ≈ columns
+  // visited + spheres checked ≈ (2R/h + 1)² · c_column + ρ·(2R + h)²·2R, ρ the number density
+  // over the bounding box; h tried at a few radius quantiles (2·r_q + skin) and halves of them,
+  // keeping the cell table at most 8n + 65536 cells.
   std::vector<double> sorted_radius(sphere_radius_);
   std::sort(sorted_radius.begin(), sorted_radius.end());
   double h = 2.0 * sorted_radius.back() + skin;
   {
+    const double density = static_cast<double>(n) / volume;
+    const double max_cells = 8.0 * static_cast<double>(n) + 65536.0;
+    constexpr double kColumnCost = 4.0;  // a column start ≈ a few sphere checks
     double best = std::numeric_limits<double>::infinity();
-    for (double q : {0.5, 0.75, 0.9, 0.97, 1.0}) {
-      const double r_q = sorted_radius[static_cast<std::size_t>(q * static_cast<double>(n - 1))];
-      const double size = 2.0 * r_q + skin;
-      if (!(size > 0.0)) continue;
-      double per_cell = static_cast<double>(n) * size * size * size / volume;
-      per_cell = std::max(per_cell, 1.0);
-      double cost = 0.0;
-      for (std::size_t k = 0; k < n; k += std::max<std::size_t>(1, n / 4096)) {
-        const double reach = std::ceil((2.0 * sorted_radius[k] + skin) / size);
-        cost += (2.0 * reach + 1.0) * (2.0 * reach + 1.0) * (2.0 * reach + 1.0);
+    for (double q : {0.1, 0.25, 0.5, 0.75, 0.9, 0.97, 1.0})
+      for (double f : {1.0, 0.5}) {
+        const double r_q = sorted_radius[static_cast<std::size_t>(q * static_cast<double>(n - 1))];
+        const double size = f * (2.0 * r_q + skin);
+        if (!(size > 0.0)) continue;
+        double cells = 1.0;
+        for (int a = 0; a < 3; ++a) cells *= std::floor(extent[a] / size) + 1.0;
+        if (cells > max_cells) continue;
+        double cost = 0.0;
+        for (std::size_t k = 0; k < n; k += std::max<std::size_t>(1, n / 4096)) {
+          const double reach = 2.0 * sorted_radius[k] + skin;
+          const double across = 2.0 * reach / size + 1.0;
+          cost += kColumnCost * across * across +
+                  density * (2.0 * reach + size) * (2.0 * reach + size) * 2.0 * reach;
+        }
+        if (cost < best) best = cost, h = size;
       }
-      cost *= per_cell;
-      if (cost < best) best = cost, h = size;
-    }
   }
   if (!(h > 0.0)) h = 1.0;  // every radius and the skin zero: any size will do
   std::int64_t dims[3];
@@ -197,7 +206,11 @@ void World::build_neighbours() {
     for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
     cell_spheres_.resize(n);
     scratch_.assign(cell_start_.begin(), cell_start_.end() - 1);
-    for (std::size_t k = 0; k < n; ++k) cell_spheres_[scratch_[key[k]]++] = static_cast<int>(k);
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec3& x = sphere_world_[k];
+      cell_spheres_[scratch_[key[k]]++] =
+          CellSphere{x.x(), x.y(), x.z(), sphere_radius_[k], static_cast<int>(k), sphere_body_[k]};
+    }
   } else {
     keyed.resize(n);
     for (std::size_t k = 0; k < n; ++k) keyed[k] = {key[k], static_cast<int>(k)};
@@ -210,24 +223,46 @@ void World::build_neighbours() {
     const Vec3& x = sphere_world_[a];
     const double ra = sphere_radius_[a];
     const int body = sphere_body_[a];
-    const std::int64_t c[3] = {cell_of(x, 0), cell_of(x, 1), cell_of(x, 2)};
-    const auto reach = static_cast<std::int64_t>(std::ceil((2.0 * ra + skin) / h));
+    const double reach = 2.0 * ra + skin;  // farthest partner centre: r_a + r_b + skin, r_b ≤ r_a
     std::vector<int>& out = partners_[a];
     out.clear();
-    auto consider = [&](int b) {
-      const double rb = sphere_radius_[b];
-      if (rb > ra || (rb == ra && b <= static_cast<int>(a)) || sphere_body_[b] == body) return;
+    // Branch-free tests: which sphere of a pair finds it depends on radii in random order, so a
+    // branch on it is mispredicted half the time; only the rare hit branches.
+    auto consider = [&](const CellSphere& c) {
+      const double rb = c.r;
+      const bool finds = (rb < ra) | ((rb == ra) & (c.index > static_cast<int>(a)));
+      const double dx = c.x - x.x(), dy = c.y - x.y(), dz = c.z - x.z();
       const double r = ra + rb + skin;
-      if ((sphere_world_[b] - x).squaredNorm() < r * r) out.push_back(b);
+      if (finds & (c.body != body) & (dx * dx + dy * dy + dz * dz < r * r)) out.push_back(c.index);
     };
-    const std::int64_t x0 = std::max<std::int64_t>(c[0] - reach, 0);
-    const std::int64_t x1 = std::min<std::int64_t>(c[0] + reach, dims[0] - 1);
-    const std::int64_t y0 = std::max<std::int64_t>(c[1] - reach, 0);
-    const std::int64_t y1 = std::min<std::int64_t>(c[1] + reach, dims[1] - 1);
-    const std::int64_t z0 = std::max<std::int64_t>(c[2] - reach, 0);
-    const std::int64_t z1 = std::min<std::int64_t>(c[2] + reach, dims[2] - 1);
-    for (std::int64_t cx = x0; cx <= x1; ++cx)
+    auto consider_index = [&](int b) {
+      const Vec3& y = sphere_world_[b];
+      consider(CellSphere{y.x(), y.y(), y.z(), sphere_radius_[b], b, sphere_body_[b]});
+    };
+    // Cells overlapping the box x ± reach; per column, only z cells within the reach left
+    // after the column's horizontal distance (columns beyond the reach are skipped).
+    auto first_cell = [&](double v, int axis) {
+      return std::max<std::int64_t>(static_cast<std::int64_t>(std::floor((v - lo[axis]) / h)), 0);
+    };
+    auto last_cell = [&](double v, int axis) {
+      return std::min<std::int64_t>(static_cast<std::int64_t>(std::floor((v - lo[axis]) / h)),
+                                    dims[axis] - 1);
+    };
+    auto gap = [&](double v, std::int64_t cell, int axis) {  // distance from v to a cell's slab
+      const double c0 = lo[axis] + static_cast<double>(cell) * h;
+      return v < c0 ? c0 - v : std::max(v - (c0 + h), 0.0);
+    };
+    const std::int64_t x0 = first_cell(x.x() - reach, 0), x1 = last_cell(x.x() + reach, 0);
+    const std::int64_t y0 = first_cell(x.y() - reach, 1), y1 = last_cell(x.y() + reach, 1);
+    for (std::int64_t cx = x0; cx <= x1; ++cx) {
+      const double gx = gap(x.x(), cx, 0);
       for (std::int64_t cy = y0; cy <= y1; ++cy) {
+        const double gy = gap(x.y(), cy, 1);
+        const double left = reach * reach - gx * gx - gy * gy;
+        if (!(left >= 0.0)) continue;
+        const double dz = std::sqrt(left);
+        const std::int64_t z0 = first_cell(x.z() - dz, 2), z1 = last_cell(x.z() + dz, 2);
+        if (z0 > z1) continue;
         if (dense) {
           // Cells (cx, cy, z0..z1) are consecutive in the table.
           const std::int64_t first = key_of(cx, cy, z0), last = key_of(cx, cy, z1);
@@ -237,10 +272,11 @@ void World::build_neighbours() {
           for (std::int64_t cz = z0; cz <= z1; ++cz) {
             const std::int64_t cell = key_of(cx, cy, cz);
             auto it = std::lower_bound(keyed.begin(), keyed.end(), std::make_pair(cell, -1));
-            for (; it != keyed.end() && it->first == cell; ++it) consider(it->second);
+            for (; it != keyed.end() && it->first == cell; ++it) consider_index(it->second);
           }
         }
       }
+    }
   });
 
   // Pairs (min, max) grouped by their first sphere (counting sort), each group sorted by j.
@@ -313,6 +349,54 @@ void World::derive_pair_index() {
   item_out_.assign(body_items_.size(), Wrench{Vec3::Zero(), Vec3::Zero()});
   slot_state_.resize(m);
   slot_active_.assign(m, 0);
+  slot_damping_.resize(m);
+  damping_valid_ = false;
+}
+
+// The dashpot of every candidate pair from the bodies' current (packed) masses.
+void World::update_damping() {
+  const ContactParams& p = options_.contact;
+  parallel_items(candidates_.size(), [&](std::size_t k) {
+    const double ma = kinematics_[sphere_body_[candidates_[k].first]].mass;
+    const double mb = kinematics_[sphere_body_[candidates_[k].second]].mass;
+    slot_damping_[k] = normal_dashpot(ma * mb / (ma + mb), p);
+  });
+  damping_valid_ = true;
+}
+
+// bodies_ -> packed state, at the start of step(count): the caller may have edited anything.
+void World::load_bodies() {
+  const std::size_t nb = bodies_.size();
+  kinematics_.resize(nb);
+  body_wrench_.resize(nb);
+  rotation_.resize(nb);
+  body_touched_.assign(nb, 0);
+  parallel_items(nb, [&](std::size_t k) {
+    const Body& b = bodies_[k];
+    kinematics_[k] = Kinematics{b.position, b.velocity, b.angular_velocity, b.mass};
+    body_wrench_[k] = Wrench{b.force, b.torque};
+    Spin spin = Spin::general;
+    if (b.rotation_locked)
+      spin = Spin::locked;
+    else if (b.moments.x() == b.moments.y() && b.moments.y() == b.moments.z())
+      spin = b.spheres.size() == 1 && b.spheres[0].center.isZero(0.0) ? Spin::plain_sphere
+                                                                      : Spin::isotropic;
+    rotation_[k] = Rotation{b.orientation, b.moments, spin};
+  });
+  damping_valid_ = false;  // masses may have changed
+}
+
+// Packed state -> bodies_, at the end of step(count).
+void World::store_bodies() {
+  parallel_items(bodies_.size(), [&](std::size_t k) {
+    Body& b = bodies_[k];
+    b.position = kinematics_[k].position;
+    b.velocity = kinematics_[k].velocity;
+    b.angular_velocity = kinematics_[k].angular_velocity;
+    b.orientation = rotation_[k].orientation;
+    b.force = body_wrench_[k].force;
+    b.torque = body_wrench_[k].torque;
+  });
 }
 
 void World::import_pairs() {
@@ -421,20 +505,12 @@ void World::export_walls() {
 void World::compute_forces() {
   const double dt = options_.timestep;
   const ContactParams& p = options_.contact;
-
-  if (kinematics_.size() != bodies_.size() || !kinematics_valid_) {
-    kinematics_.resize(bodies_.size());
-    parallel_items(bodies_.size(), [&](std::size_t k) {
-      const Body& b = bodies_[k];
-      kinematics_[k] = Kinematics{b.position, b.velocity, b.angular_velocity, b.mass};
-    });
-    kinematics_valid_ = true;
-  }
+  if (!damping_valid_) update_damping();
 
   // Pair contacts, one slot per candidate: a touching pair keeps its shear history when it
   // touched at the last step too, else it starts from a fresh state. Each touching pair writes
-  // its wrench on either body into that body's item range; a pair that stops touching clears
-  // them, so inactive items always hold zeros.
+  // its wrench on either body into that body's item range and marks the items live; a pair
+  // that stops touching marks them dead.
   const std::size_t ncand = candidates_.size();
   parallel_items(ncand, [&](std::size_t k) {
     // The partner j is far from i in memory for a mixed packing: fetch a few candidates ahead.
@@ -467,12 +543,15 @@ void World::compute_forces() {
     const Vec3 point = sphere_world_[i] + (sphere_radius_[i] - 0.5 * delta) * n;
     const Vec3 va = point_velocity(a.velocity, a.angular_velocity, point, a.position);
     const Vec3 vb = point_velocity(b.velocity, b.angular_velocity, point, b.position);
-    const double m_eff = a.mass * b.mass / (a.mass + b.mass);
-    update_contact(state, n, delta, point, vb - va, m_eff, p, dt);
+    update_contact_with_dashpot(state, n, delta, point, vb - va, slot_damping_[k], p, dt);
     const Vec3 f = state.force();
     // Body of j receives +f, body of i −f; torques about each centroid.
-    item_out_[item_of_j_[k]] = Wrench{f, moment(point, b.position, f)};
-    item_out_[item_of_i_[k]] = Wrench{-f, -moment(point, a.position, f)};
+    const std::size_t ej = item_of_j_[k], ei = item_of_i_[k];
+    item_out_[ej] = Wrench{f, moment(point, b.position, f)};
+    item_out_[ei] = Wrench{-f, -moment(point, a.position, f)};
+    // Several threads may mark the same body: relaxed atomic stores of the same value.
+    __atomic_store_n(&body_touched_[sphere_body_[i]], std::uint8_t{1}, __ATOMIC_RELAXED);
+    __atomic_store_n(&body_touched_[sphere_body_[j]], std::uint8_t{1}, __ATOMIC_RELAXED);
   });
 
   // Wall contacts, one slot per wall candidate, likewise.
@@ -486,32 +565,35 @@ void World::compute_forces() {
     ContactState& state = wall_slot_state_[k];
     if (!wall_slot_active_[k]) state = ContactState();
     wall_slot_active_[k] = 1;
-    const Body& b = bodies_[sphere_body_[s]];
+    const Kinematics& b = kinematics_[sphere_body_[s]];
     const Vec3 vb = b.velocity + b.angular_velocity.cross(hit.point - b.position);
     const Vec3 vw = walls_[w].kind == Wall::Kind::plane ? walls_[w].velocity : Vec3::Zero();
     update_contact(state, hit.normal, hit.overlap, hit.point, vb - vw, b.mass, p, dt);
   });
 
-  // Sums per body (parallel over bodies), each in the fixed order gravity, pair contacts in
-  // (i, j) order, wall contacts in (sphere, wall) order.
-  parallel_items(bodies_.size(), [&](std::size_t k) {
-    Body& b = bodies_[k];
-    Vec3 force = b.mass * options_.gravity;
-    Vec3 torque = Vec3::Zero();
+  // The sums per body are made by integrate(), in the same pass that advances the body.
+}
+
+// Net wrench on body k: gravity, then its pair contacts in (i, j) order, then its wall contacts
+// in (sphere, wall) order — a fixed order, whatever the thread count (see body_touched_).
+inline World::Wrench World::sum_wrench(std::size_t k) const {
+  const Kinematics& b = kinematics_[k];
+  Vec3 force = b.mass * options_.gravity;
+  Vec3 torque = Vec3::Zero();
+  if (body_touched_[k]) {
     for (std::size_t e = body_begin_[k]; e < body_begin_[k + 1]; ++e) {
       force += item_out_[e].force;
       torque += item_out_[e].torque;
     }
-    for (std::size_t c = body_wall_begin_[k]; c < body_wall_begin_[k + 1]; ++c) {
-      if (!wall_slot_active_[c]) continue;
-      const ContactState& s = wall_slot_state_[c];
-      const Vec3 f = s.force();
-      force += f;
-      torque += (s.point - b.position).cross(f);
-    }
-    b.force = force;
-    b.torque = torque;
-  });
+  }
+  for (std::size_t c = body_wall_begin_[k]; c < body_wall_begin_[k + 1]; ++c) {
+    if (!wall_slot_active_[c]) continue;
+    const ContactState& s = wall_slot_state_[c];
+    const Vec3 f = s.force();
+    force += f;
+    torque += (s.point - b.position).cross(f);
+  }
+  return Wrench{force, torque};
 }
 
 void World::integrate() {
@@ -520,50 +602,70 @@ void World::integrate() {
   const bool have_reference = !dirty_ && sphere_at_build_.size() == sphere_world_.size();
   const double limit = 0.25 * options_.skin * options_.skin;  // (skin/2)²
   std::atomic<bool> moved{false};
-  auto advance = [&](Body& b) {
-    const Vec3 f = local_damping(b.force, b.velocity, alpha);
+  // Every body but a plain sphere (kept out of line so the loop below stays small).
+  auto advance = [&](Kinematics & b, const Wrench& wrench, Rotation& r) __attribute__((noinline)) {
+    const Vec3 f = alpha == 0.0 ? wrench.force : local_damping(wrench.force, b.velocity, alpha);
     b.velocity += f * (dt / b.mass);
     b.position += b.velocity * dt;
-    if (b.rotation_locked) return;
-    const Vec3 t = local_damping(b.torque, b.angular_velocity, alpha);
-    const Eigen::Quaterniond q0 = b.orientation;
-    if (b.moments.x() == b.moments.y() && b.moments.y() == b.moments.z()) {
+    if (r.spin == Spin::locked) return;
+    const Vec3 t =
+        alpha == 0.0 ? wrench.torque : local_damping(wrench.torque, b.angular_velocity, alpha);
+    const Eigen::Quaterniond q0 = r.orientation;
+    if (r.spin != Spin::general) {
       // Isotropic body (a sphere): ω = L/I whatever the orientation, so the midpoint passes
       // below would all return the same ω; evaluated directly (equal up to rounding).
-      const double inertia = b.moments.x();
+      const double inertia = r.moments.x();
       const Vec3 omega = (inertia * b.angular_velocity + t * dt) / inertia;
       b.angular_velocity = omega;
       // A plain sphere centred on its body origin looks the same in every orientation, so its
       // orientation is not integrated (as LAMMPS nve/sphere): it saves a sine, a cosine and a
       // normalisation per sphere per step and changes no force or position.
-      if (b.spheres.size() == 1 && b.spheres[0].center.isZero(0.0)) return;
-      b.orientation = (rotation_quaternion(dt * omega) * q0).normalized();
+      if (r.spin == Spin::plain_sphere) return;
+      r.orientation = (rotation_quaternion(dt * omega) * q0).normalized();
       return;
     }
-    const Vec3 momentum = b.angular_momentum() + t * dt;
+    const Vec3 momentum = angular_momentum(r.moments, q0, b.angular_velocity) + t * dt;
     // Explicit midpoint for dq/dt = ½ ω ⊗ q with ω = ω(q, L) and L constant over the step.
-    Vec3 omega = b.angular_velocity_for(momentum, q0);
+    Vec3 omega = angular_velocity_for(r.moments, momentum, q0);
     for (int pass = 0; pass < 3; ++pass) {
       const Eigen::Quaterniond half = (rotation_quaternion(0.5 * dt * omega) * q0).normalized();
-      omega = b.angular_velocity_for(momentum, half);
+      omega = angular_velocity_for(r.moments, momentum, half);
     }
-    b.orientation = (rotation_quaternion(dt * omega) * q0).normalized();
-    b.angular_velocity = b.angular_velocity_for(momentum, b.orientation);
+    r.orientation = (rotation_quaternion(dt * omega) * q0).normalized();
+    b.angular_velocity = angular_velocity_for(r.moments, momentum, r.orientation);
   };
-  // One pass per body: advance it, then refresh what the next step reads of it (its packed
-  // kinematics, its spheres' world positions and the Verlet-skin check), so the next step needs
-  // no separate passes over all bodies and spheres. Same formulas, same bits.
+  // One pass per body: sum its wrench, advance it, then refresh its spheres' world positions
+  // and the Verlet-skin check, so a step makes one pass over the bodies and their spheres.
   parallel_items(bodies_.size(), [&](std::size_t k) {
-    Body& b = bodies_[k];
-    advance(b);
-    kinematics_[k] = Kinematics{b.position, b.velocity, b.angular_velocity, b.mass};
+    const Wrench wrench = sum_wrench(k);
+    body_touched_[k] = 0;  // for the next step's contact pass
+    body_wrench_[k] = wrench;
+    Kinematics& b = kinematics_[k];
+    Rotation& r = rotation_[k];
     bool far = false;
-    for (int i = body_first_sphere_[k]; i < body_first_sphere_[k + 1]; ++i) {
-      const Vec3& local = sphere_local_[i];
-      const Vec3 x = local.isZero(0.0) ? Vec3(b.position + Vec3::Zero())
-                                       : Vec3(b.position + b.orientation * local);
-      sphere_world_[i] = x;
-      if (have_reference && (x - sphere_at_build_[i]).squaredNorm() > limit) far = true;
+    const int first = body_first_sphere_[k], last = body_first_sphere_[k + 1];
+    if (r.spin == Spin::plain_sphere) {
+      // advance() for a plain sphere, written out: the same formulas and bits.
+      const Vec3 f = alpha == 0.0 ? wrench.force : local_damping(wrench.force, b.velocity, alpha);
+      b.velocity += f * (dt / b.mass);
+      b.position += b.velocity * dt;
+      const Vec3 t =
+          alpha == 0.0 ? wrench.torque : local_damping(wrench.torque, b.angular_velocity, alpha);
+      const double inertia = r.moments.x();
+      b.angular_velocity = (inertia * b.angular_velocity + t * dt) / inertia;
+      const Vec3 x = b.position + Vec3::Zero();  // the general formula's bits for a centred sphere
+      sphere_world_[first] = x;
+      far = have_reference && (x - sphere_at_build_[first]).squaredNorm() > limit;
+    } else {
+      advance(b, wrench, r);
+      for (int i = first; i < last; ++i) {
+        const Vec3& local = sphere_local_[i];
+        // q·0 is exactly +0 (Eigen's formula), so a centred sphere skips it.
+        const Vec3 x = local.isZero(0.0) ? Vec3(b.position + Vec3::Zero())
+                                         : Vec3(b.position + r.orientation * local);
+        sphere_world_[i] = x;
+        if (have_reference && (x - sphere_at_build_[i]).squaredNorm() > limit) far = true;
+      }
     }
     if (far) moved.store(true, std::memory_order_relaxed);
   });
@@ -575,7 +677,7 @@ void World::integrate() {
 
 void World::step(int count) {
   // Bodies may have been edited since the last call: refresh everything derived from them once.
-  kinematics_valid_ = false;
+  load_bodies();
   positions_fresh_ = false;
   for (int s = 0; s < count; ++s) {
     bool walls_stale = !walls_valid_;
@@ -604,6 +706,7 @@ void World::step(int count) {
     time_ += options_.timestep;
     ++steps_;
   }
+  store_bodies();
   if (pairs_valid_) export_pairs();
   if (walls_valid_) export_walls();
   if (!positions_fresh_) update_sphere_positions();  // integrate() already set them otherwise

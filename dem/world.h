@@ -123,23 +123,55 @@ class World {
   std::vector<int> body_first_sphere_;      // per body, then the sphere count
   std::vector<std::vector<int>> partners_;  // scratch of build_neighbours
   std::vector<std::int64_t> cell_start_;    // scratch of build_neighbours
-  std::vector<int> cell_spheres_;           // scratch of build_neighbours
-  std::vector<std::size_t> cand_begin_;     // first candidate (i, ·) per sphere i
-  std::vector<std::size_t> down_begin_;     // per sphere j: range in down_
-  std::vector<std::size_t> down_;           // candidates (·, j) grouped by j, in order
-  std::vector<std::size_t> body_begin_;     // per body: range in body_items_
-  std::vector<std::uint64_t> body_items_;   // 2·candidate + (1 when the body holds j)
-  struct Kinematics {                       // what the contact kernels read of a body, packed
+  struct CellSphere {  // a sphere as build_neighbours scans it: cell by cell, in index order
+    double x, y, z, r;
+    int index, body;
+  };
+  std::vector<CellSphere> cell_spheres_;   // scratch of build_neighbours
+  std::vector<std::size_t> cand_begin_;    // first candidate (i, ·) per sphere i
+  std::vector<std::size_t> down_begin_;    // per sphere j: range in down_
+  std::vector<std::size_t> down_;          // candidates (·, j) grouped by j, in order
+  std::vector<std::size_t> body_begin_;    // per body: range in body_items_
+  std::vector<std::uint64_t> body_items_;  // 2·candidate + (1 when the body holds j)
+  // During step(count) the bodies' state lives in these packed arrays (loaded from bodies_ when
+  // the call begins, stored back when it ends), so the per-step passes stream small records
+  // instead of whole Body objects with their sphere vectors.
+  struct Kinematics {  // the translational and spin state of a body: what the contact kernels read
     Vec3 position, velocity, angular_velocity;
     double mass;
   };
-  std::vector<Kinematics> kinematics_;  // per body, refreshed each step
-  struct Wrench {                       // one contact's force and torque on one of its bodies
+  std::vector<Kinematics> kinematics_;  // per body
+  struct Wrench {                       // a force and a torque
     Vec3 force, torque;
   };
+  std::vector<Wrench> body_wrench_;  // per body: gravity + contacts of the last step
+  enum class Spin : std::uint8_t {
+    plain_sphere,  // isotropic, one sphere on the origin: orientation not integrated
+    isotropic,     // Ixx = Iyy = Izz: ω = L/I directly
+    general,       // midpoint quaternion integration
+    locked         // rotation_locked: translation only
+  };
+  struct Rotation {  // what the integrator reads of a body's rotation
+    Eigen::Quaterniond orientation;
+    Vec3 moments;
+    Spin spin;
+  };
+  std::vector<Rotation> rotation_;  // per body
+  Wrench sum_wrench(std::size_t body) const;
+  void load_bodies();
+  void store_bodies();
+  void update_damping();
   // Per body item (body_items_ order): the wrench of that contact on that body, written by the
   // contact kernel (zero while not touching), so each body sums a contiguous range.
   std::vector<Wrench> item_out_;
+  // Per body: one of its pairs touched in this step's contact pass (else its items are all zero
+  // and the sum skips them: the sums start from gravity and +0 and never reach −0, so adding +0
+  // would change no bit). A per-body test, predictable both in free fall and in a packing.
+  std::vector<std::uint8_t> body_touched_;
+  // Per candidate: the normal dashpot 2·β·sqrt(m_eff·kn) (update_contact's formula), computed
+  // when the candidates or the masses change instead of at every contact and step.
+  std::vector<double> slot_damping_;
+  bool damping_valid_ = false;
   std::vector<std::size_t> item_of_i_;          // per candidate: its item on the body holding i
   std::vector<std::size_t> item_of_j_;          // per candidate: its item on the body holding j
   std::vector<ContactState> slot_state_;        // per candidate
@@ -150,7 +182,6 @@ class World {
   std::vector<std::size_t> body_wall_begin_;    // per body: range in wall_cand_
   std::vector<Wall> walls_at_build_;            // walls when wall_cand_ was built
   std::vector<std::size_t> scratch_;            // counts / offsets
-  bool kinematics_valid_ = false;               // kinematics_ match bodies_ (set by integrate)
   bool positions_fresh_ = false;  // sphere_world_ and moved_ set by integrate this call
   bool moved_ = true;             // a sphere moved more than skin/2 since the last build
   bool pairs_valid_ = false;      // slots mirror contacts_ for the current candidates_
