@@ -24,8 +24,11 @@ double restitution_from_damping_ratio(double beta) {
 
 void update_contact(ContactState& s, const Vec3& normal, double overlap, const Vec3& point,
                     const Vec3& v, double effective_mass, const ContactParams& p, double dt) {
-  update_contact_with_dashpot(s, normal, overlap, point, v, normal_dashpot(effective_mass, p), p,
-                              dt);
+  update_contact_force(s.shear, s.normal_force, normal, overlap, v,
+                       normal_dashpot(effective_mass, p), p, dt);
+  s.normal = normal;
+  s.point = point;
+  s.overlap = overlap;
 }
 
 void rescale_friction(ContactState& s, double new_friction) {

@@ -61,39 +61,36 @@ inline double normal_dashpot(double effective_mass, const ContactParams& params)
   return 2.0 * params.damping_ratio * std::sqrt(effective_mass * params.kn);
 }
 
-/// update_contact with the normal dashpot coefficient c = 2·β·sqrt(m_eff·kn) (N·s/m) given
-/// instead of the effective mass: the world computes it once per contact pair rather than at
-/// every step (same value, same result). Inline: the world's contact kernel calls it once per
-/// contact and step.
-inline void update_contact_with_dashpot(ContactState& s, const Vec3& normal, double overlap,
-                                        const Vec3& point, const Vec3& v, double c,
-                                        const ContactParams& p, double dt) {
+/// Steps 1–4 of update_contact on the two quantities a contact carries from step to step, the
+/// shear force and the normal force, with the normal dashpot coefficient c = 2·β·sqrt(m_eff·kn)
+/// (N·s/m) given instead of the effective mass (the world computes it once per pair). Inline:
+/// the world's contact kernel calls it once per contact and step.
+inline void update_contact_force(Vec3& shear, double& normal_force, const Vec3& normal,
+                                 double overlap, const Vec3& v, double c, const ContactParams& p,
+                                 double dt) {
   // 1. Rotate the stored shear into the new tangent plane, keeping its magnitude (one square
   // root: the scale is sqrt(|old|² / |projected|²)).
-  const double old_squared = s.shear.squaredNorm();
+  const double old_squared = shear.squaredNorm();
   if (old_squared > 0.0) {
-    const Vec3 projected = s.shear - normal * normal.dot(s.shear);
+    const Vec3 projected = shear - normal * normal.dot(shear);
     const double m2 = projected.squaredNorm();
-    s.shear = m2 > 0.0 ? Vec3(projected * std::sqrt(old_squared / m2)) : Vec3(Vec3::Zero());
+    shear = m2 > 0.0 ? Vec3(projected * std::sqrt(old_squared / m2)) : Vec3(Vec3::Zero());
   }
-  s.normal = normal;
-  s.point = point;
-  s.overlap = overlap;
 
   // 2. Normal spring + dashpot.
   const double vn = v.dot(normal);
-  s.normal_force = p.kn * overlap - c * vn;
+  normal_force = p.kn * overlap - c * vn;
 
   // 3. Incremental shear spring.
   const Vec3 vt = v - vn * normal;
-  s.shear -= p.ks * dt * vt;
+  shear -= p.ks * dt * vt;
 
   // 4. Coulomb limit (squared comparison first: a sticking contact needs no square root).
-  const double limit = p.friction * std::max(s.normal_force, 0.0);
-  const double squared = s.shear.squaredNorm();
+  const double limit = p.friction * std::max(normal_force, 0.0);
+  const double squared = shear.squaredNorm();
   if (squared > limit * limit) {
     const double magnitude = std::sqrt(squared);
-    s.shear *= limit / magnitude;
+    shear *= limit / magnitude;
   }
 }
 

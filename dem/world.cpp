@@ -347,7 +347,8 @@ void World::derive_pair_index() {
     }
   });
   item_out_.assign(body_items_.size(), Wrench{Vec3::Zero(), Vec3::Zero()});
-  slot_state_.resize(m);
+  slot_force_.resize(m);
+  slot_geometry_.resize(m);
   slot_active_.assign(m, 0);
   slot_damping_.resize(m);
   damping_valid_ = false;
@@ -409,7 +410,8 @@ void World::import_pairs() {
     const auto it = std::lower_bound(first, last, std::make_pair(pc.i, pc.j));
     if (it == last || it->second != pc.j) return;  // no longer a candidate: history dropped
     const auto k = static_cast<std::size_t>(it - candidates_.begin());
-    slot_state_[k] = pc.state;
+    slot_force_[k] = SlotForce{pc.state.shear, pc.state.normal_force};
+    slot_geometry_[k] = SlotGeometry{pc.state.normal, pc.state.point, pc.state.overlap};
     slot_active_[k] = 1;
     // The wrenches are written by the next contact pass (every active slot is refreshed there).
   });
@@ -422,7 +424,12 @@ void World::export_pairs() {
     PairContact& c = contacts_.emplace_back();
     c.i = candidates_[k].first;
     c.j = candidates_[k].second;
-    c.state = slot_state_[k];
+    const SlotGeometry& g = slot_geometry_[k];
+    c.state.normal = g.normal;
+    c.state.point = g.point;
+    c.state.overlap = g.overlap;
+    c.state.normal_force = slot_force_[k].normal_force;
+    c.state.shear = slot_force_[k].shear;
   }
 }
 
@@ -534,8 +541,8 @@ void World::compute_forces() {
     const double dist = std::sqrt(d2);                        // = d.norm()
     const double delta = touch - dist;
     if (!(delta > 0.0)) return release();
-    ContactState& state = slot_state_[k];
-    if (!slot_active_[k]) state = ContactState();
+    SlotForce& state = slot_force_[k];
+    if (!slot_active_[k]) state = SlotForce{Vec3::Zero(), 0.0};
     slot_active_[k] = 1;
     const Kinematics& a = kinematics_[sphere_body_[i]];
     const Kinematics& b = kinematics_[sphere_body_[j]];
@@ -543,8 +550,10 @@ void World::compute_forces() {
     const Vec3 point = sphere_world_[i] + (sphere_radius_[i] - 0.5 * delta) * n;
     const Vec3 va = point_velocity(a.velocity, a.angular_velocity, point, a.position);
     const Vec3 vb = point_velocity(b.velocity, b.angular_velocity, point, b.position);
-    update_contact_with_dashpot(state, n, delta, point, vb - va, slot_damping_[k], p, dt);
-    const Vec3 f = state.force();
+    update_contact_force(state.shear, state.normal_force, n, delta, vb - va, slot_damping_[k], p,
+                         dt);
+    if (record_geometry_) slot_geometry_[k] = SlotGeometry{n, point, delta};
+    const Vec3 f = state.normal_force * n + state.shear;  // ContactState::force()
     // Body of j receives +f, body of i −f; torques about each centroid.
     const std::size_t ej = item_of_j_[k], ei = item_of_i_[k];
     item_out_[ej] = Wrench{f, moment(point, b.position, f)};
@@ -701,6 +710,8 @@ void World::step(int count) {
       import_walls();
       walls_valid_ = true;
     }
+    // Contacts report their geometry as of the last step; earlier steps need not write it.
+    record_geometry_ = s + 1 == count;
     compute_forces();
     integrate();
     time_ += options_.timestep;

@@ -172,9 +172,22 @@ class World {
   // when the candidates or the masses change instead of at every contact and step.
   std::vector<double> slot_damping_;
   bool damping_valid_ = false;
-  std::vector<std::size_t> item_of_i_;          // per candidate: its item on the body holding i
-  std::vector<std::size_t> item_of_j_;          // per candidate: its item on the body holding j
-  std::vector<ContactState> slot_state_;        // per candidate
+  std::vector<std::size_t> item_of_i_;  // per candidate: its item on the body holding i
+  std::vector<std::size_t> item_of_j_;  // per candidate: its item on the body holding j
+  // Per candidate, the contact state in two parts: what the contact law carries from step to
+  // step (read and written every step), and the geometry (normal, point, overlap), which only
+  // the contact lists report, so it is written on the last step of step(count) alone.
+  struct SlotForce {
+    Vec3 shear;
+    double normal_force;
+  };
+  struct SlotGeometry {
+    Vec3 normal, point;
+    double overlap;
+  };
+  std::vector<SlotForce> slot_force_;
+  std::vector<SlotGeometry> slot_geometry_;
+  bool record_geometry_ = true;                 // this step's contact pass writes slot_geometry_
   std::vector<std::uint8_t> slot_active_;       // per candidate: touching at the last step
   std::vector<std::pair<int, int>> wall_cand_;  // sorted (sphere, wall)
   std::vector<ContactState> wall_slot_state_;   // per wall candidate
