@@ -13,18 +13,22 @@
 namespace clumpkit::dem {
 namespace {
 
+// Gravity, μ = 0.5, damping ratio 0.3, kn = ks = `stiffness` (N/m).
+WorldOptions cloud_options(double timestep, double stiffness, double skin) {
+  WorldOptions o;
+  o.timestep = timestep;
+  o.skin = skin;
+  o.contact.kn = stiffness;
+  o.contact.ks = stiffness;
+  o.contact.friction = 0.5;
+  o.contact.damping_ratio = 0.3;
+  return o;
+}
+
 // A polydisperse cloud like a soil–rock mixture: many small spheres, some large ones and a few
 // clumps of unequal spheres (radii 0.6–30 mm), packed so that many pairs overlap.
 World mixed_cloud(double skin, std::uint64_t seed) {
-  WorldOptions o;
-  o.gravity = Vec3(0.0, 0.0, -9.81);
-  o.timestep = 2e-6;
-  o.skin = skin;
-  o.contact.kn = 1e5;
-  o.contact.ks = 1e5;
-  o.contact.friction = 0.5;
-  o.contact.damping_ratio = 0.3;
-  World world(o);
+  World world(cloud_options(2e-6, 1e5, skin));
   Rng rng(seed);
   const double box = 0.12;
   auto point = [&] {
@@ -104,14 +108,7 @@ TEST(DemWorld, ContactsAreExactlyTheTouchingPairsOfAPolydisperseCloud) {
 // Spheres (radii 1.5–6 mm, a few of 10–20 mm) and clumps placed without overlap in a box, moving
 // at up to 0.5 m/s under gravity: they collide at moderate speeds and settle on the floor.
 World gentle_cloud(double skin, std::uint64_t seed) {
-  WorldOptions o;
-  o.timestep = 1e-5;
-  o.skin = skin;
-  o.contact.kn = 1e4;
-  o.contact.ks = 1e4;
-  o.contact.friction = 0.5;
-  o.contact.damping_ratio = 0.3;
-  World world(o);
+  World world(cloud_options(1e-5, 1e4, skin));
   Rng rng(seed);
   std::vector<Sphere> placed;
   auto free = [&](const std::vector<Sphere>& spheres) {
