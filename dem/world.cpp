@@ -516,8 +516,8 @@ void World::compute_forces() {
 
   // Pair contacts, one slot per candidate: a touching pair keeps its shear history when it
   // touched at the last step too, else it starts from a fresh state. Each touching pair writes
-  // its wrench on either body into that body's item range and marks the items live; a pair
-  // that stops touching marks them dead.
+  // its wrench on either body into that body's item range and marks both bodies touched; a
+  // pair that stops touching zeroes its items.
   const std::size_t ncand = candidates_.size();
   parallel_items(ncand, [&](std::size_t k) {
     // The partner j is far from i in memory for a mixed packing: fetch a few candidates ahead.
