@@ -25,6 +25,17 @@ WorldOptions cloud_options(double timestep, double stiffness, double skin) {
   return o;
 }
 
+// `count` spheres with radii in [r_min, r_max), centres within ±spread of c on each axis.
+Clump random_clump(Rng& rng, const Vec3& c, int count, double spread, double r_min, double r_max) {
+  Clump clump;
+  for (int s = 0; s < count; ++s)
+    clump.spheres.push_back(
+        Sphere{c + Vec3(rng.uniform(-spread, spread), rng.uniform(-spread, spread),
+                        rng.uniform(-spread, spread)),
+               rng.uniform(r_min, r_max)});
+  return clump;
+}
+
 // A polydisperse cloud like a soil–rock mixture: many small spheres, some large ones and a few
 // clumps of unequal spheres (radii 0.6–30 mm), packed so that many pairs overlap.
 World mixed_cloud(double skin, std::uint64_t seed) {
@@ -42,12 +53,7 @@ World mixed_cloud(double skin, std::uint64_t seed) {
   }
   for (int k = 0; k < 40; ++k) {
     const Vec3 c = point();
-    Clump clump;
-    for (int s = 0; s < 5; ++s)
-      clump.spheres.push_back(
-          Sphere{c + Vec3(rng.uniform(-0.008, 0.008), rng.uniform(-0.008, 0.008),
-                          rng.uniform(-0.008, 0.008)),
-                 rng.uniform(0.002, 0.009)});
+    const Clump clump = random_clump(rng, c, 5, 0.008, 0.002, 0.009);
     world.add_body(make_clump_body(clump, 2800.0));
   }
   world.add_wall(Wall::plane(Vec3::Zero(), Vec3::UnitZ()));
@@ -137,12 +143,7 @@ World gentle_cloud(double skin, std::uint64_t seed) {
   }
   for (int k = 0; k < 25;) {
     const Vec3 c = point();
-    Clump clump;
-    for (int s = 0; s < 4; ++s)
-      clump.spheres.push_back(
-          Sphere{c + Vec3(rng.uniform(-0.006, 0.006), rng.uniform(-0.006, 0.006),
-                          rng.uniform(-0.006, 0.006)),
-                 rng.uniform(0.003, 0.007)});
+    const Clump clump = random_clump(rng, c, 4, 0.006, 0.003, 0.007);
     if (!free(clump.spheres)) continue;
     placed.insert(placed.end(), clump.spheres.begin(), clump.spheres.end());
     Body b = make_clump_body(clump, 2800.0);
