@@ -611,26 +611,30 @@ void World::integrate() {
   const bool have_reference = !dirty_ && sphere_at_build_.size() == sphere_world_.size();
   const double limit = 0.25 * options_.skin * options_.skin;  // (skin/2)²
   std::atomic<bool> moved{false};
-  // Every body but a plain sphere (kept out of line so the loop below stays small).
-  auto advance = [&](Kinematics & b, const Wrench& wrench, Rotation& r) __attribute__((noinline)) {
+  // What every body shares: the leapfrog translation, the damped torque and, for an isotropic
+  // body (a sphere), ω = L/I whatever the orientation (the midpoint passes below would all
+  // return the same ω; evaluated directly, equal up to rounding).
+  auto translate = [&](Kinematics& b, const Wrench& wrench) {
     const Vec3 f = alpha == 0.0 ? wrench.force : local_damping(wrench.force, b.velocity, alpha);
     b.velocity += f * (dt / b.mass);
     b.position += b.velocity * dt;
+  };
+  auto damped_torque = [&](const Kinematics& b, const Wrench& wrench) {
+    return alpha == 0.0 ? wrench.torque : local_damping(wrench.torque, b.angular_velocity, alpha);
+  };
+  auto spin_isotropic = [&](Kinematics& b, const Vec3& t, const Rotation& r) {
+    const double inertia = r.moments.x();
+    b.angular_velocity = (inertia * b.angular_velocity + t * dt) / inertia;
+  };
+  // Every body but a plain sphere (kept out of line so the loop below stays small).
+  auto advance = [&](Kinematics & b, const Wrench& wrench, Rotation& r) __attribute__((noinline)) {
+    translate(b, wrench);
     if (r.spin == Spin::locked) return;
-    const Vec3 t =
-        alpha == 0.0 ? wrench.torque : local_damping(wrench.torque, b.angular_velocity, alpha);
+    const Vec3 t = damped_torque(b, wrench);
     const Eigen::Quaterniond q0 = r.orientation;
-    if (r.spin != Spin::general) {
-      // Isotropic body (a sphere): ω = L/I whatever the orientation, so the midpoint passes
-      // below would all return the same ω; evaluated directly (equal up to rounding).
-      const double inertia = r.moments.x();
-      const Vec3 omega = (inertia * b.angular_velocity + t * dt) / inertia;
-      b.angular_velocity = omega;
-      // A plain sphere centred on its body origin looks the same in every orientation, so its
-      // orientation is not integrated (as LAMMPS nve/sphere): it saves a sine, a cosine and a
-      // normalisation per sphere per step and changes no force or position.
-      if (r.spin == Spin::plain_sphere) return;
-      r.orientation = (rotation_quaternion(dt * omega) * q0).normalized();
+    if (r.spin == Spin::isotropic) {
+      spin_isotropic(b, t, r);
+      r.orientation = (rotation_quaternion(dt * b.angular_velocity) * q0).normalized();
       return;
     }
     const Vec3 momentum = angular_momentum(r.moments, q0, b.angular_velocity) + t * dt;
@@ -654,14 +658,10 @@ void World::integrate() {
     bool far = false;
     const int first = body_first_sphere_[k], last = body_first_sphere_[k + 1];
     if (r.spin == Spin::plain_sphere) {
-      // advance() for a plain sphere, written out: the same formulas and bits.
-      const Vec3 f = alpha == 0.0 ? wrench.force : local_damping(wrench.force, b.velocity, alpha);
-      b.velocity += f * (dt / b.mass);
-      b.position += b.velocity * dt;
-      const Vec3 t =
-          alpha == 0.0 ? wrench.torque : local_damping(wrench.torque, b.angular_velocity, alpha);
-      const double inertia = r.moments.x();
-      b.angular_velocity = (inertia * b.angular_velocity + t * dt) / inertia;
+      // A plain sphere centred on its body origin looks the same in every orientation, so its
+      // orientation is not integrated (as LAMMPS nve/sphere): no sine, cosine or normalisation.
+      translate(b, wrench);
+      spin_isotropic(b, damped_torque(b, wrench), r);
       const Vec3 x = b.position + Vec3::Zero();  // the general formula's bits for a centred sphere
       sphere_world_[first] = x;
       far = have_reference && (x - sphere_at_build_[first]).squaredNorm() > limit;
