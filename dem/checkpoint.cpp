@@ -153,6 +153,7 @@ struct CheckpointAccess {
     w.vec(o.gravity);
     w.f64(o.timestep);
     w.f64(o.skin);
+    w.f64(o.near_skin_fraction);
     w.f64(o.contact.kn), w.f64(o.contact.ks), w.f64(o.contact.friction);
     w.f64(o.contact.damping_ratio), w.f64(o.contact.local_damping);
     w.i64(world.steps_);
@@ -182,8 +183,13 @@ struct CheckpointAccess {
       w.i32(c.sphere), w.i32(c.wall), w.state(c.state);
     w.u64(world.sphere_at_build_.size());
     for (const Vec3& x : world.sphere_at_build_) w.vec(x);
-    w.u64(world.candidates_.size());
-    for (const auto& [i, j] : world.candidates_) w.i32(i), w.i32(j);
+    w.u64(world.neighbours_.size());
+    for (const auto& [i, j] : world.neighbours_) w.i32(i), w.i32(j);
+    // The near list itself is filtered again on loading, from these.
+    w.u64(world.sphere_at_filter_.size());
+    for (const Vec3& x : world.sphere_at_filter_) w.vec(x);
+    w.f64(world.near_limit_);
+    w.i64(world.filters_);
   }
 
   static World read(Reader& r) {
@@ -191,6 +197,7 @@ struct CheckpointAccess {
     o.gravity = r.vec();
     o.timestep = r.f64();
     o.skin = r.f64();
+    o.near_skin_fraction = r.f64();
     o.contact.kn = r.f64(), o.contact.ks = r.f64(), o.contact.friction = r.f64();
     o.contact.damping_ratio = r.f64(), o.contact.local_damping = r.f64();
     const std::int64_t steps = r.i64();
@@ -276,11 +283,21 @@ struct CheckpointAccess {
     world.sphere_at_build_.resize(at_build);
     for (Vec3& x : world.sphere_at_build_) x = r.vec();
     const std::size_t candidates = r.count(8, "neighbour pair");
-    world.candidates_.resize(candidates);
-    for (auto& [i, j] : world.candidates_) {
+    world.neighbours_.resize(candidates);
+    for (auto& [i, j] : world.neighbours_) {
       i = r.i32(), j = r.i32();
       check_sphere(i, "neighbour pair"), check_sphere(j, "neighbour pair");
     }
+    const std::size_t at_filter = r.count(24, "near-list position");
+    if (at_filter != 0 && at_filter != static_cast<std::size_t>(n_spheres))
+      r.fail("near list holds " + std::to_string(at_filter) + " positions for " +
+             std::to_string(n_spheres) + " spheres");
+    world.sphere_at_filter_.resize(at_filter);
+    for (Vec3& x : world.sphere_at_filter_) x = r.vec();
+    world.near_limit_ = r.f64();
+    if (!(world.near_limit_ >= 0.0)) r.fail("corrupt near-list limit");
+    world.filters_ = r.i64();
+    world.near_valid_ = false;  // filtered from the restored lists at the next step
 
     world.steps_ = steps;
     world.time_ = time;

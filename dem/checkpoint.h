@@ -17,14 +17,15 @@ struct CheckpointInfo {
 };
 
 /// Current checkpoint format version (bumped on any layout change).
-inline constexpr std::uint32_t kCheckpointVersion = 1;
+inline constexpr std::uint32_t kCheckpointVersion = 2;
 
 /// Writes `world` and `info` to `path`: magic "CLUMPKITCKPT", version, then little-endian
-/// integers and raw IEEE-754 doubles — options (gravity, timestep, skin, contact parameters),
-/// step count, time, every body (spheres, mass, moments, position, velocity, orientation,
-/// angular velocity, force, torque, rotation lock), walls (moving planes with their current
-/// point), pair and wall contacts with their full state (shear history included), the
-/// neighbour list (build positions and candidate pairs) and a trailing FNV-1a 64 checksum.
+/// integers and raw IEEE-754 doubles — options (gravity, timestep, skin, near-skin fraction,
+/// contact parameters), step count, time, every body (spheres, mass, moments, position,
+/// velocity, orientation, angular velocity, force, torque, rotation lock), walls (moving planes
+/// with their current point), pair and wall contacts with their full state (shear history
+/// included), the neighbour lists (build positions and pairs, filter positions and limit) and a
+/// trailing FNV-1a 64 checksum.
 /// Written to PATH.tmp, then renamed over `path`, so a reader never sees a partial file.
 /// Throws IoError when the file cannot be written.
 void save_checkpoint(const std::string& path, const World& world, const CheckpointInfo& info = {});

@@ -5,6 +5,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <atomic>
@@ -56,6 +57,9 @@ World::World(WorldOptions options) : options_(options) {
   if (!(options_.skin >= 0.0) || !std::isfinite(options_.skin))
     throw InvalidInput("DEM world: skin must be non-negative, got " +
                        std::to_string(options_.skin));
+  if (!(options_.near_skin_fraction > 0.0 && options_.near_skin_fraction <= 1.0))
+    throw InvalidInput("DEM world: near_skin_fraction must be in (0, 1], got " +
+                       std::to_string(options_.near_skin_fraction));
   body_first_sphere_.push_back(0);
 }
 
@@ -91,12 +95,12 @@ void World::update_sphere_positions() {
   });
 }
 
-// Sphere world positions and the Verlet-skin test (a sphere moved more than skin/2 since the
-// last build) in one parallel pass.
+// Sphere world positions and the Verlet-list test (a sphere moved more than sqrt(near_limit_)
+// since the last filter) in one parallel pass.
 bool World::update_positions_and_check() {
   const std::size_t n = sphere_body_.size();
-  const bool have_reference = !dirty_ && sphere_at_build_.size() == n;
-  const double limit = 0.25 * options_.skin * options_.skin;  // (skin/2)²
+  const bool have_reference = !dirty_ && sphere_at_filter_.size() == n;
+  const double limit = near_limit_;
   std::atomic<bool> moved{false};
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256),
                     [&](const tbb::blocked_range<std::size_t>& r) {
@@ -108,7 +112,7 @@ bool World::update_positions_and_check() {
                         const Vec3 x = local.isZero(0.0) ? Vec3(b.position + Vec3::Zero())
                                                          : Vec3(b.position + b.orientation * local);
                         sphere_world_[k] = x;
-                        if (have_reference && (x - sphere_at_build_[k]).squaredNorm() > limit)
+                        if (have_reference && (x - sphere_at_filter_[k]).squaredNorm() > limit)
                           far = true;
                       }
                       if (far) moved.store(true, std::memory_order_relaxed);
@@ -127,7 +131,7 @@ void World::build_neighbours() {
   ++builds_;
   dirty_ = false;
   sphere_at_build_ = sphere_world_;
-  candidates_.clear();
+  neighbours_.clear();
   const std::size_t n = sphere_world_.size();
   if (n < 2) return;
   const double skin = options_.skin;
@@ -284,19 +288,73 @@ void World::build_neighbours() {
   for (std::size_t a = 0; a < n; ++a)
     for (int b : partners_[a]) ++scratch_[std::min<std::size_t>(a, b) + 1];
   for (std::size_t i = 0; i < n; ++i) scratch_[i + 1] += scratch_[i];
-  candidates_.resize(scratch_[n]);
+  neighbours_.resize(scratch_[n]);
   {
     std::vector<std::size_t> fill(scratch_.begin(), scratch_.end() - 1);
     for (std::size_t a = 0; a < n; ++a)
       for (int b : partners_[a]) {
         const int i = std::min(static_cast<int>(a), b), j = std::max(static_cast<int>(a), b);
-        candidates_[fill[i]++] = {i, j};
+        neighbours_[fill[i]++] = {i, j};
       }
   }
   parallel_items(n, [&](std::size_t i) {
-    std::sort(candidates_.begin() + static_cast<std::ptrdiff_t>(scratch_[i]),
-              candidates_.begin() + static_cast<std::ptrdiff_t>(scratch_[i + 1]));
+    std::sort(neighbours_.begin() + static_cast<std::ptrdiff_t>(scratch_[i]),
+              neighbours_.begin() + static_cast<std::ptrdiff_t>(scratch_[i + 1]));
   });
+}
+
+// Called once a sphere has moved more than sqrt(near_limit_) since the last filter (or there is
+// none). Let D be the largest displacement since the last build: the skin list still holds every
+// pair that can touch while each sphere stays within skin/2 − D of where it is now, so when that
+// leaves room for a fair step the near list is filtered again from it (a linear pass), else the
+// grid search runs. Filtering at near skin s and allowing moves of min(s/2, skin/2 − D) keeps
+// both lists complete, with as many builds as the one-list scheme when spheres move steadily.
+// Returns true after a grid build (the wall candidates follow the build positions).
+bool World::refresh_neighbours() {
+  const std::size_t n = sphere_world_.size();
+  const double skin = options_.skin;
+  const double near = options_.near_skin_fraction * skin;
+  double left = -1.0;  // how far every sphere may still move before neighbours_ expires
+  if (!dirty_ && sphere_at_build_.size() == n) {
+    const double moved2 = tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, n, 1024), 0.0,
+        [&](const tbb::blocked_range<std::size_t>& r, double m) {
+          for (std::size_t k = r.begin(); k != r.end(); ++k)
+            m = std::max(m, (sphere_world_[k] - sphere_at_build_[k]).squaredNorm());
+          return m;
+        },
+        [](double a, double b) { return std::max(a, b); });
+    // A relative margin keeps the rounding of this bound on the safe side.
+    left = (0.5 * skin - std::sqrt(moved2)) * (1.0 - 1e-9);
+  }
+  const bool build = !(left >= 0.25 * near);
+  if (build) {
+    build_neighbours();
+    left = 0.5 * skin;
+  }
+  sphere_at_filter_ = sphere_world_;
+  const double allowed = std::min(0.5 * near, left);
+  near_limit_ = allowed * allowed;
+  near_valid_ = false;
+  return build;
+}
+
+// The near list: pairs of neighbours_ closer than r_i + r_j + near skin at sphere_at_filter_.
+void World::filter_candidates() {
+  ++filters_;
+  const double near = options_.near_skin_fraction * options_.skin;
+  const std::size_t m = neighbours_.size();
+  std::vector<std::uint8_t>& keep = filter_keep_;
+  keep.resize(m);
+  parallel_items(m, [&](std::size_t k) {
+    const auto [i, j] = neighbours_[k];
+    const double r = sphere_radius_[i] + sphere_radius_[j] + near;
+    keep[k] = (sphere_at_filter_[j] - sphere_at_filter_[i]).squaredNorm() < r * r;
+  });
+  candidates_.clear();
+  for (std::size_t k = 0; k < m; ++k)
+    if (keep[k]) candidates_.push_back(neighbours_[k]);
+  near_valid_ = true;
 }
 
 // Index of the candidate list: per sphere its candidates as i (a range of candidates_) and as j
@@ -608,8 +666,8 @@ inline World::Wrench World::sum_wrench(std::size_t k) const {
 void World::integrate() {
   const double dt = options_.timestep;
   const double alpha = options_.contact.local_damping;
-  const bool have_reference = !dirty_ && sphere_at_build_.size() == sphere_world_.size();
-  const double limit = 0.25 * options_.skin * options_.skin;  // (skin/2)²
+  const bool have_reference = !dirty_ && sphere_at_filter_.size() == sphere_world_.size();
+  const double limit = near_limit_;
   std::atomic<bool> moved{false};
   // What every body shares: the leapfrog translation, the damped torque and, for an isotropic
   // body (a sphere), ω = L/I whatever the orientation (the midpoint passes below would all
@@ -664,7 +722,7 @@ void World::integrate() {
       spin_isotropic(b, damped_torque(b, wrench), r);
       const Vec3 x = b.position + Vec3::Zero();  // the general formula's bits for a centred sphere
       sphere_world_[first] = x;
-      far = have_reference && (x - sphere_at_build_[first]).squaredNorm() > limit;
+      far = have_reference && (x - sphere_at_filter_[first]).squaredNorm() > limit;
     } else {
       advance(b, wrench, r);
       for (int i = first; i < last; ++i) {
@@ -673,7 +731,7 @@ void World::integrate() {
         const Vec3 x = local.isZero(0.0) ? Vec3(b.position + Vec3::Zero())
                                          : Vec3(b.position + r.orientation * local);
         sphere_world_[i] = x;
-        if (have_reference && (x - sphere_at_build_[i]).squaredNorm() > limit) far = true;
+        if (have_reference && (x - sphere_at_filter_[i]).squaredNorm() > limit) far = true;
       }
     }
     if (far) moved.store(true, std::memory_order_relaxed);
@@ -690,14 +748,17 @@ void World::step(int count) {
   positions_fresh_ = false;
   for (int s = 0; s < count; ++s) {
     bool walls_stale = !walls_valid_;
-    const bool rebuild = positions_fresh_ ? moved_ : update_positions_and_check();
-    if (rebuild) {
-      // New candidates: the history travels through contacts_ / wall_contacts_.
+    const bool moved = positions_fresh_ ? moved_ : update_positions_and_check();
+    if (moved || !near_valid_) {
+      // New candidates: the history travels through contacts_ (and wall_contacts_ after a build).
       if (pairs_valid_) export_pairs();
-      if (walls_valid_) export_walls();
-      pairs_valid_ = walls_valid_ = false;
-      build_neighbours();
-      walls_stale = true;
+      pairs_valid_ = false;
+      if (moved && refresh_neighbours()) {
+        if (walls_valid_) export_walls();
+        walls_valid_ = false;
+        walls_stale = true;
+      }
+      filter_candidates();
     }
     if (!pairs_valid_) {
       derive_pair_index();

@@ -18,6 +18,11 @@ struct WorldOptions {
   /// Verlet skin (m): candidate pairs are those closer than r_i + r_j + skin; the list is
   /// rebuilt once any sphere has moved more than skin/2 since the last build.
   double skin = 1e-3;
+  /// Two-level Verlet list: the contact pass scans only the skin-list pairs closer than
+  /// r_i + r_j + near_skin_fraction·skin, filtered again from the skin list (no grid search)
+  /// once a sphere has moved near_skin_fraction·skin/2. In (0, 1]; 1 = one list. Like the skin,
+  /// a performance setting only: results do not depend on it.
+  double near_skin_fraction = 0.125;
   ContactParams contact;
 };
 
@@ -81,14 +86,18 @@ class World {
   int sphere_count() const { return static_cast<int>(sphere_body_.size()); }
   double time() const { return time_; }
   std::int64_t steps() const { return steps_; }
-  /// Number of neighbour-list builds so far (for tests of the Verlet skin).
+  /// Number of neighbour-list builds (grid searches) so far (for tests of the Verlet skin).
   std::int64_t neighbour_builds() const { return builds_; }
+  /// Number of near-list filters so far, builds included (for tests of near_skin_fraction).
+  std::int64_t near_filters() const { return filters_; }
 
  private:
   friend struct CheckpointAccess;  // dem/checkpoint.cpp saves and restores the private state
 
   void update_sphere_positions();
+  bool refresh_neighbours();
   void build_neighbours();
+  void filter_candidates();
   void compute_forces();
   void integrate();
   // Fast path (world.cpp): per-candidate contact slots mirror contacts_ / wall_contacts_ during
@@ -110,8 +119,18 @@ class World {
   std::vector<Vec3> sphere_local_;  // body frame
   std::vector<double> sphere_radius_;
   std::vector<Vec3> sphere_world_;
+  // Two-level Verlet list. The skin list neighbours_ holds the pairs closer than
+  // r_i + r_j + skin at sphere_at_build_ (grid search); the near list candidates_ those of
+  // neighbours_ closer than r_i + r_j + near_skin_fraction·skin at sphere_at_filter_. The contact
+  // slots follow candidates_. Both lists hold every touching pair while no sphere has moved more
+  // than sqrt(near_limit_) from sphere_at_filter_ (refresh_neighbours sets it).
   std::vector<Vec3> sphere_at_build_;
+  std::vector<std::pair<int, int>> neighbours_;  // sorted (i, j)
+  std::vector<Vec3> sphere_at_filter_;
+  double near_limit_ = 0.0;                      // squared displacement
   std::vector<std::pair<int, int>> candidates_;  // sorted (i, j)
+  bool near_valid_ = false;                      // candidates_ filtered for sphere_at_filter_
+  std::int64_t filters_ = 0;
   bool dirty_ = true;
   std::vector<PairContact> contacts_;       // sorted (i, j)
   std::vector<WallContact> wall_contacts_;  // sorted (sphere, wall)
@@ -195,8 +214,9 @@ class World {
   std::vector<std::size_t> body_wall_begin_;    // per body: range in wall_cand_
   std::vector<Wall> walls_at_build_;            // walls when wall_cand_ was built
   std::vector<std::size_t> scratch_;            // counts / offsets
+  std::vector<std::uint8_t> filter_keep_;       // scratch of filter_candidates
   bool positions_fresh_ = false;  // sphere_world_ and moved_ set by integrate this call
-  bool moved_ = true;             // a sphere moved more than skin/2 since the last build
+  bool moved_ = true;             // a sphere moved more than sqrt(near_limit_) since the filter
   bool pairs_valid_ = false;      // slots mirror contacts_ for the current candidates_
   bool walls_valid_ = false;      // wall slots mirror wall_contacts_ for the current wall_cand_
 };

@@ -357,9 +357,10 @@ Row timed(const std::string& name, const std::string& lcase, World w, int thread
   const double rate = static_cast<double>(w.sphere_count()) * static_cast<double>(steps) / t;
   std::printf(
       "  %-16s threads %d steps %ld: %.2f s, %.3e sphere-steps/s, cpu use %.0f %%, contacts %zu + "
-      "%zu wall, builds %lld, zmax %.4f, state %016llx\n",
+      "%zu wall, builds %lld, filters %lld, zmax %.4f, state %016llx\n",
       name.c_str(), threads, steps, t, rate, 100.0 * cpu, w.contacts().size(),
-      w.wall_contacts().size(), static_cast<long long>(w.neighbour_builds()), max_top(w),
+      w.wall_contacts().size(), static_cast<long long>(w.neighbour_builds()),
+      static_cast<long long>(w.near_filters()), max_top(w),
       static_cast<unsigned long long>(state_hash(w)));
   std::fflush(stdout);
   return Row{name, lcase, threads, steps, rate, state_hash(w)};

@@ -352,6 +352,11 @@ TEST(DemWorld, CriticalTimestepAndBadInput) {
   WorldOptions bad;
   bad.timestep = 0.0;
   EXPECT_THROW(World{bad}, InvalidInput);
+  for (double fraction : {0.0, -0.5, 1.5, std::nan("")}) {
+    WorldOptions near;
+    near.near_skin_fraction = fraction;
+    EXPECT_THROW(World{near}, InvalidInput) << fraction;
+  }
   EXPECT_THROW(Wall::cylinder(0, 0, 0), InvalidInput);
 }
 

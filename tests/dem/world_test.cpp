@@ -167,5 +167,20 @@ TEST(DemWorld, ResultsDoNotDependOnTheVerletSkin) {
   EXPECT_EQ(state_hash(thin), state_hash(thick));
 }
 
+TEST(DemWorld, ResultsDoNotDependOnTheNearList) {
+  // The near list keeps the skin-list pairs that can touch before its next filter, so it changes
+  // only how many candidates the contact pass scans.
+  World one = gentle_cloud(0.004, 5);
+  World two = gentle_cloud(0.004, 5);
+  one.options().near_skin_fraction = 1.0;
+  two.options().near_skin_fraction = 0.05;
+  one.step(8000);
+  two.step(8000);
+  EXPECT_EQ(one.near_filters(), one.neighbour_builds());  // one list: every filter is a build
+  EXPECT_GT(two.near_filters(), 4 * two.neighbour_builds());
+  EXPECT_GT(two.contacts().size(), 20u);
+  EXPECT_EQ(state_hash(one), state_hash(two));
+}
+
 }  // namespace
 }  // namespace clumpkit::dem
