@@ -396,15 +396,7 @@ void World::derive_pair_index() {
       std::sort(body_items_.begin() + static_cast<std::ptrdiff_t>(body_begin_[b]),
                 body_items_.begin() + static_cast<std::ptrdiff_t>(body_begin_[b + 1]));
   });
-  item_of_i_.resize(m);
-  item_of_j_.resize(m);
-  parallel_items(nb, [&](std::size_t b) {
-    for (std::size_t e = body_begin_[b]; e < body_begin_[b + 1]; ++e) {
-      const std::uint64_t item = body_items_[e];
-      (item & 1 ? item_of_j_ : item_of_i_)[item >> 1] = e;
-    }
-  });
-  item_out_.assign(body_items_.size(), Wrench{Vec3::Zero(), Vec3::Zero()});
+  slot_out_.assign(m, SlotOut{Vec3::Zero(), Vec3::Zero()});
   slot_force_.resize(m);
   slot_geometry_.resize(m);
   slot_active_.assign(m, 0);
@@ -574,8 +566,8 @@ void World::compute_forces() {
 
   // Pair contacts, one slot per candidate: a touching pair keeps its shear history when it
   // touched at the last step too, else it starts from a fresh state. Each touching pair writes
-  // its wrench on either body into that body's item range and marks both bodies touched; a
-  // pair that stops touching zeroes its items.
+  // its force and contact point into its slot and marks both bodies touched; a pair that stops
+  // touching zeroes its slot.
   const std::size_t ncand = candidates_.size();
   parallel_items(ncand, [&](std::size_t k) {
     // The partner j is far from i in memory for a mixed packing: fetch a few candidates ahead.
@@ -589,8 +581,7 @@ void World::compute_forces() {
     auto release = [&] {
       if (!slot_active_[k]) return;
       slot_active_[k] = 0;
-      item_out_[item_of_i_[k]] = Wrench{Vec3::Zero(), Vec3::Zero()};
-      item_out_[item_of_j_[k]] = Wrench{Vec3::Zero(), Vec3::Zero()};
+      slot_out_[k] = SlotOut{Vec3::Zero(), Vec3::Zero()};
     };
     const Vec3 d = sphere_world_[j] - sphere_world_[i];
     const double touch = sphere_radius_[i] + sphere_radius_[j];
@@ -612,10 +603,8 @@ void World::compute_forces() {
                          dt);
     if (record_geometry_) slot_geometry_[k] = SlotGeometry{n, point, delta};
     const Vec3 f = state.normal_force * n + state.shear;  // ContactState::force()
-    // Body of j receives +f, body of i −f; torques about each centroid.
-    const std::size_t ej = item_of_j_[k], ei = item_of_i_[k];
-    item_out_[ej] = Wrench{f, moment(point, b.position, f)};
-    item_out_[ei] = Wrench{-f, -moment(point, a.position, f)};
+    // Body of j receives +f, body of i −f (sum_wrench forms the torques).
+    slot_out_[k] = SlotOut{f, point};
     // Several threads may mark the same body: relaxed atomic stores of the same value.
     __atomic_store_n(&body_touched_[sphere_body_[i]], std::uint8_t{1}, __ATOMIC_RELAXED);
     __atomic_store_n(&body_touched_[sphere_body_[j]], std::uint8_t{1}, __ATOMIC_RELAXED);
@@ -649,8 +638,12 @@ inline World::Wrench World::sum_wrench(std::size_t k) const {
   Vec3 torque = Vec3::Zero();
   if (body_touched_[k]) {
     for (std::size_t e = body_begin_[k]; e < body_begin_[k + 1]; ++e) {
-      force += item_out_[e].force;
-      torque += item_out_[e].torque;
+      const std::uint64_t item = body_items_[e];
+      const SlotOut& out = slot_out_[item >> 1];
+      // ±1 times a value is its exact negation or itself, as the unary minus (branch free).
+      const double sign = item & 1 ? 1.0 : -1.0;
+      force += sign * out.force;
+      torque += sign * moment(out.point, b.position, out.force);
     }
   }
   for (std::size_t c = body_wall_begin_[k]; c < body_wall_begin_[k + 1]; ++c) {

@@ -180,19 +180,21 @@ class World {
   void load_bodies();
   void store_bodies();
   void update_damping();
-  // Per body item (body_items_ order): the wrench of that contact on that body, written by the
-  // contact kernel (zero while not touching), so each body sums a contiguous range.
-  std::vector<Wrench> item_out_;
+  // Per candidate: the force on the body of j and its point of application, written by the
+  // contact kernel in candidate order (zero while not touching); each body gathers its items
+  // (body_items_) and forms ±force and the torque about its own centroid.
+  struct SlotOut {
+    Vec3 force, point;
+  };
+  std::vector<SlotOut> slot_out_;
   // Per body: one of its pairs touched in this step's contact pass (else its items are all zero
-  // and the sum skips them: the sums start from gravity and +0 and never reach −0, so adding +0
+  // and the sum skips them: the sums start from gravity and +0 and never reach −0, so adding ±0
   // would change no bit). A per-body test, predictable both in free fall and in a packing.
   std::vector<std::uint8_t> body_touched_;
   // Per candidate: the normal dashpot 2·β·sqrt(m_eff·kn) (update_contact's formula), computed
   // when the candidates or the masses change instead of at every contact and step.
   std::vector<double> slot_damping_;
   bool damping_valid_ = false;
-  std::vector<std::size_t> item_of_i_;  // per candidate: its item on the body holding i
-  std::vector<std::size_t> item_of_j_;  // per candidate: its item on the body holding j
   // Per candidate, the contact state in two parts: what the contact law carries from step to
   // step (read and written every step), and the geometry (normal, point, overlap), which only
   // the contact lists report, so it is written on the last step of step(count) alone.
