@@ -276,24 +276,23 @@ struct CheckpointAccess {
       c.state = r.state();
     }
 
-    const std::size_t at_build = r.count(24, "neighbour position");
-    if (at_build != 0 && at_build != static_cast<std::size_t>(n_spheres))
-      r.fail("neighbour list holds " + std::to_string(at_build) + " positions for " +
-             std::to_string(n_spheres) + " spheres");
-    world.sphere_at_build_.resize(at_build);
-    for (Vec3& x : world.sphere_at_build_) x = r.vec();
+    // Reference positions of a neighbour list: none (never built) or one per sphere.
+    auto read_positions = [&](std::vector<Vec3>& out, const std::string& list) {
+      const std::size_t count = r.count(24, (list + " position").c_str());
+      if (count != 0 && count != static_cast<std::size_t>(n_spheres))
+        r.fail(list + " holds " + std::to_string(count) + " positions for " +
+               std::to_string(n_spheres) + " spheres");
+      out.resize(count);
+      for (Vec3& x : out) x = r.vec();
+    };
+    read_positions(world.sphere_at_build_, "neighbour list");
     const std::size_t candidates = r.count(8, "neighbour pair");
     world.neighbours_.resize(candidates);
     for (auto& [i, j] : world.neighbours_) {
       i = r.i32(), j = r.i32();
       check_sphere(i, "neighbour pair"), check_sphere(j, "neighbour pair");
     }
-    const std::size_t at_filter = r.count(24, "near-list position");
-    if (at_filter != 0 && at_filter != static_cast<std::size_t>(n_spheres))
-      r.fail("near list holds " + std::to_string(at_filter) + " positions for " +
-             std::to_string(n_spheres) + " spheres");
-    world.sphere_at_filter_.resize(at_filter);
-    for (Vec3& x : world.sphere_at_filter_) x = r.vec();
+    read_positions(world.sphere_at_filter_, "near list");
     world.near_limit_ = r.f64();
     if (!(world.near_limit_ >= 0.0)) r.fail("corrupt near-list limit");
     world.filters_ = r.i64();
