@@ -21,6 +21,7 @@
 //   FILE: output of run.sh (SUMMARY lines), for the ratio column. Env CLUMPKIT_DEM_BENCH_FULL=1
 //   is --full.
 #include "dem/checkpoint.h"
+#include "dem/state_hash.h"
 #include "dem/world.h"
 #include "geom/random.h"
 
@@ -311,23 +312,6 @@ World clumps_world(const Molecule& m) {
     w.add_body(std::move(b));
   }
   return w;
-}
-
-// FNV-1a over every body's state: equal hashes = bit-identical runs.
-std::uint64_t state_hash(const World& w) {
-  std::uint64_t h = 1469598103934665603ull;
-  auto mix = [&](const double* p, int n) {
-    const auto* c = reinterpret_cast<const unsigned char*>(p);
-    for (std::size_t k = 0; k < sizeof(double) * n; ++k) h = (h ^ c[k]) * 1099511628211ull;
-  };
-  for (const Body& b : w.bodies()) {
-    mix(b.position.data(), 3);
-    mix(b.velocity.data(), 3);
-    mix(b.orientation.coeffs().data(), 4);
-    mix(b.angular_velocity.data(), 3);
-  }
-  for (const PairContact& c : w.contacts()) mix(c.state.shear.data(), 3);
-  return h;
 }
 
 double max_top(const World& w) {

@@ -1,6 +1,7 @@
 // Neighbour search and contact bookkeeping of dem::World against brute force, and the
 // invariance of results under the Verlet skin (a pure performance setting).
 #include "dem/world.h"
+#include "dem/state_hash.h"
 #include "geom/random.h"
 
 #include <gtest/gtest.h>
@@ -74,22 +75,6 @@ std::set<std::pair<int, int>> touching_pairs(const World& w) {
       if (w.sphere_body(i) != w.sphere_body(j) && (x[j] - x[i]).norm() < r[i] + r[j])
         out.insert({i, j});
   return out;
-}
-
-std::uint64_t state_hash(const World& w) {
-  std::uint64_t h = 1469598103934665603ull;
-  auto add = [&](double v) {
-    std::uint64_t u;
-    std::memcpy(&u, &v, sizeof u);
-    for (int k = 0; k < 8; ++k) h = (h ^ ((u >> (8 * k)) & 0xff)) * 1099511628211ull;
-  };
-  for (const Body& b : w.bodies()) {
-    for (int k = 0; k < 3; ++k) add(b.position[k]), add(b.velocity[k]), add(b.angular_velocity[k]);
-    add(b.orientation.w()), add(b.orientation.x()), add(b.orientation.y()), add(b.orientation.z());
-  }
-  for (const PairContact& c : w.contacts())
-    for (int k = 0; k < 3; ++k) add(c.state.shear[k]), add(c.state.normal[k]);
-  return h;
 }
 
 TEST(DemWorld, ContactsAreExactlyTheTouchingPairsOfAPolydisperseCloud) {
