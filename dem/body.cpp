@@ -17,6 +17,10 @@ void check_density(double density) {
 
 }  // namespace
 
+std::string kind_name(BodyKind kind) {
+  return kind == BodyKind::rock ? "rock" : "soil";
+}
+
 double Body::bounding_radius() const {
   double r = 0.0;
   for (const Sphere& s : spheres) r = std::max(r, s.center.norm() + s.radius);
@@ -52,20 +56,32 @@ Body make_sphere_body(const Vec3& center, double radius, double density) {
   check_density(density);
   Body body;
   body.spheres.push_back(Sphere{Vec3::Zero(), radius});
-  body.mass = 4.0 / 3.0 * kPi * radius * radius * radius * density;
+  body.volume = 4.0 / 3.0 * kPi * radius * radius * radius;
+  body.mass = body.volume * density;
   body.moments = Vec3::Constant(0.4 * body.mass * radius * radius);
   body.position = center;
   return body;
 }
 
 Body make_clump_body(const ClumpTemplate& clump_template, double density, const Vec3& position,
-                     const Eigen::Quaterniond& orientation) {
+                     const Eigen::Quaterniond& orientation, double scale, int template_id) {
   check_density(density);
+  if (!(scale > 0.0) || !std::isfinite(scale))
+    throw InvalidInput("DEM clump body: scale must be positive, got " + std::to_string(scale));
   if (clump_template.spheres.empty()) throw InvalidInput("DEM clump body: template has no spheres");
   Body body;
-  body.spheres = clump_template.spheres;
-  body.mass = density * clump_template.mass.volume;
-  body.moments = density * clump_template.principal_moments;
+  body.kind = BodyKind::rock;
+  body.template_id = template_id;
+  body.scale = scale;
+  body.spheres.reserve(clump_template.spheres.size());
+  for (const Sphere& s : clump_template.spheres)
+    body.spheres.push_back(scale == 1.0 ? s : Sphere{s.center * scale, s.radius * scale});
+  // V·s·s·s in this order: the layer's drawn volume sums (and so its particle counts) are the
+  // ones computed before bodies carried their template.
+  body.volume = clump_template.mass.volume * scale * scale * scale;
+  body.mass = density * body.volume;
+  body.moments =
+      density * clump_template.principal_moments * (scale * scale * scale * scale * scale);
   if (!(body.moments.minCoeff() > 0.0))
     throw InvalidInput("DEM clump body: principal moments must be positive");
   body.position = position;

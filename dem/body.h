@@ -6,18 +6,34 @@
 
 #include <Eigen/Geometry>
 
+#include <cstdint>
+#include <string>
 #include <vector>
 
 namespace clumpkit::dem {
+
+/// What a body is made of; explicit, never inferred from its sphere count (a one-sphere
+/// template is still a rock).
+enum class BodyKind : std::uint8_t { soil, rock };
+
+/// "soil" or "rock", as written in specimen files.
+std::string kind_name(BodyKind kind);
 
 /// A rigid body: spheres fixed in the body frame (the principal frame: centroid at the origin,
 /// inertia axes along x, y, z), its mass and principal moments, and its state in the world.
 /// Units SI. Orientation is a Hamilton unit quaternion rotating the body frame into the world
 /// frame: x_world = orientation · x_body + position.
+/// A rock carries the identity of its library template: `template_id` and the `scale` s by which
+/// the template's spheres were multiplied, so its volume is V_t·s³ and its moments ρ·I_t·s⁵,
+/// taken from the template once instead of recomputed per body.
 struct Body {
   std::vector<Sphere> spheres;  ///< body frame (m); a plain sphere is one sphere at the origin
   double mass = 0.0;            ///< kg
   Vec3 moments = Vec3::Zero();  ///< principal moments of inertia (kg·m²) about body x, y, z
+  double volume = 0.0;          ///< exact solid volume of the union of the spheres (m³)
+  BodyKind kind = BodyKind::soil;
+  int template_id = -1;  ///< index of the template in its library; −1 for a plain soil sphere
+  double scale = 1.0;    ///< template length scale (body = template × scale); 1 for soil
 
   Vec3 position = Vec3::Zero();  ///< centroid in the world (m)
   Vec3 velocity = Vec3::Zero();  ///< m/s (at the half step, leapfrog)
@@ -50,21 +66,25 @@ Vec3 angular_momentum(const Vec3& moments, const Eigen::Quaterniond& q, const Ve
 /// World angular velocity R·diag(I)⁻¹·Rᵀ·L for a world angular momentum L at orientation q.
 Vec3 angular_velocity_for(const Vec3& moments, const Vec3& momentum, const Eigen::Quaterniond& q);
 
-/// A solid sphere of the given radius (m) and density (kg/m³) centred at `center`:
-/// m = 4/3·π·r³·ρ, I = 2/5·m·r² about every axis. Throws InvalidInput for a non-positive or
-/// non-finite radius or density.
+/// A solid soil sphere of the given radius (m) and density (kg/m³) centred at `center`:
+/// V = 4/3·π·r³, m = ρ·V, I = 2/5·m·r² about every axis. Throws InvalidInput for a
+/// non-positive or non-finite radius or density.
 Body make_sphere_body(const Vec3& center, double radius, double density);
 
-/// A rigid clump from a clump template (spheres already in the principal frame, unit-density
-/// mass properties): mass = ρ·V, moments = ρ·principal moments. Placed at `position` with
-/// `orientation` (body -> world). Throws InvalidInput for a non-positive density.
+/// A rigid rock clump from a clump template (spheres in the principal frame, exact unit-density
+/// mass properties) scaled by `scale`: spheres ×s, V = V_t·s³, mass = ρ·V, moments =
+/// ρ·I_t·s⁵ (inertia scales with mass × length²). Placed at `position` with `orientation`
+/// (body -> world); `template_id` is recorded on the body. Throws InvalidInput for a
+/// non-positive density or scale, or a template without spheres or positive moments.
 Body make_clump_body(const ClumpTemplate& clump_template, double density, const Vec3& position,
-                     const Eigen::Quaterniond& orientation);
+                     const Eigen::Quaterniond& orientation, double scale = 1.0,
+                     int template_id = -1);
 
 /// A rigid clump from spheres in any frame: exact union mass properties (union_properties via
 /// make_clump_template), spheres rotated into the principal frame; the body is placed where the
 /// clump was (position = centroid, orientation = principal frame -> clump frame), so its
-/// spheres land on the given ones. Density in kg/m³, clump in metres.
+/// spheres land on the given ones. Density in kg/m³, clump in metres. A rock without a library
+/// template (template_id −1).
 Body make_clump_body(const Clump& clump, double density);
 
 }  // namespace clumpkit::dem

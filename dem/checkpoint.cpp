@@ -1,6 +1,7 @@
 #include "dem/checkpoint.h"
 
 #include "geom/errors.h"
+#include "geom/hash.h"
 
 #include <cmath>
 #include <cstring>
@@ -15,15 +16,6 @@ namespace clumpkit::dem {
 namespace {
 
 constexpr char kMagic[12] = {'C', 'L', 'U', 'M', 'P', 'K', 'I', 'T', 'C', 'K', 'P', 'T'};
-
-std::uint64_t fnv1a(const char* data, std::size_t size) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (std::size_t k = 0; k < size; ++k) {
-    h ^= static_cast<unsigned char>(data[k]);
-    h *= 0x100000001b3ULL;
-  }
-  return h;
-}
 
 // Little-endian encoder.
 class Writer {
@@ -170,6 +162,10 @@ struct CheckpointAccess {
       w.vec(b.position), w.vec(b.velocity), w.quat(b.orientation), w.vec(b.angular_velocity);
       w.vec(b.force), w.vec(b.torque);
       w.u8(b.rotation_locked ? 1 : 0);
+      w.f64(b.volume);
+      w.u8(static_cast<std::uint8_t>(b.kind));
+      w.i32(b.template_id);
+      w.f64(b.scale);
     }
     w.u64(world.walls_.size());
     for (const Wall& wall : world.walls_) {
@@ -230,6 +226,13 @@ struct CheckpointAccess {
       const std::uint8_t locked = r.u8();
       if (locked > 1) r.fail("corrupt rotation lock of body " + std::to_string(k));
       b.rotation_locked = locked == 1;
+      b.volume = r.f64();
+      const std::uint8_t kind = r.u8();
+      if (kind > 1)
+        r.fail("unknown kind " + std::to_string(kind) + " of body " + std::to_string(k));
+      b.kind = static_cast<BodyKind>(kind);
+      b.template_id = r.i32();
+      b.scale = r.f64();
       const Eigen::Quaterniond q = b.orientation;
       try {
         world.add_body(std::move(b));

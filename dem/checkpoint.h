@@ -17,12 +17,13 @@ struct CheckpointInfo {
 };
 
 /// Current checkpoint format version (bumped on any layout change).
-inline constexpr std::uint32_t kCheckpointVersion = 2;
+inline constexpr std::uint32_t kCheckpointVersion = 3;
 
 /// Writes `world` and `info` to `path`: magic "CLUMPKITCKPT", version, then little-endian
 /// integers and raw IEEE-754 doubles — options (gravity, timestep, skin, near-skin fraction,
 /// contact parameters), step count, time, every body (spheres, mass, moments, position,
-/// velocity, orientation, angular velocity, force, torque, rotation lock), walls (moving planes
+/// velocity, orientation, angular velocity, force, torque, rotation lock, volume, kind,
+/// template id, scale), walls (moving planes
 /// with their current point), pair and wall contacts with their full state (shear history
 /// included), the neighbour lists (build positions and pairs, filter positions and limit) and a
 /// trailing FNV-1a 64 checksum.

@@ -3,7 +3,6 @@
 #pragma once
 
 #include "dem/placement.h"
-#include "dem/run.h"
 #include "dem/world.h"
 
 #include <vector>
@@ -24,37 +23,18 @@ inline ContactParams deposition_contact() {
 
 /// Settings of a gravity deposition (SI).
 struct DepositionSpec {
-  double radius = 0.0;         ///< cylinder radius (m), axis x = y = 0
-  double soil_density = 2700;  ///< kg/m³, bodies of one sphere
-  double rock_density = 2870;  ///< kg/m³, clumps (bodies of several spheres)
+  double radius = 0.0;  ///< cylinder radius (m), axis x = y = 0
   ContactParams contact = deposition_contact();
-  double timestep_safety = 0.2;    ///< time step = safety × critical_timestep(world)
-  long max_steps = 200000;         ///< step cap of deposit()
-  double unbalanced_ratio = 1e-3;  ///< deposit() stops once the mean ratio is below this
+  double timestep_safety = 0.2;  ///< time step = safety × critical_timestep(world)
 };
 
-/// Builds a World from placed items: an item of one sphere becomes a sphere body of soil
-/// density, an item of several spheres a clump body of rock density (exact union mass
-/// properties, spheres in the principal frame, placed so its spheres land where the placement
-/// puts them). Walls: the floor plane z = 0 (normal +z) and the inside of the cylinder of
-/// spec.radius around the z-axis. Gravity −9.81 m/s² along z, contact = spec.contact,
-/// time step = spec.timestep_safety × critical_timestep(world). Throws InvalidInput for
-/// mismatched sizes, an item without spheres, a non-positive radius or safety factor.
-World make_deposition_world(const std::vector<PlacementItem>& items,
+/// Builds a World from bodies (at the origin, unrotated, with their masses) moved to their
+/// placements (a soil sphere keeps the identity orientation): each body keeps its spheres, mass
+/// properties, kind and template identity. Walls: the floor plane z = 0 (normal +z) and the inside
+/// of the cylinder of spec.radius around the z-axis. Gravity −9.81 m/s² along z, contact =
+/// spec.contact, time step = spec.timestep_safety × critical_timestep(world). Throws InvalidInput
+/// for mismatched sizes, a body without spheres, a non-positive radius or safety factor.
+World make_deposition_world(const std::vector<Body>& bodies,
                             const std::vector<Placement>& placements, const DepositionSpec& spec);
-
-/// Runs `world` (run_until) until the mean unbalanced-force ratio is below
-/// spec.unbalanced_ratio or spec.max_steps steps were taken; returns the outcome
-/// (stopped_by "unbalanced_ratio" or "step_cap").
-RunOutcome deposit(World& world, const DepositionSpec& spec);
-
-/// Porosity estimate of the cylindrical sub-region r < radius (around the z-axis),
-/// z in [z_lo, z_hi]: the fraction of the points of a cubic lattice of the given spacing (cell
-/// centres of a grid anchored at (−radius, −radius, z_lo)) inside the region that lie in no
-/// sphere of any body. Overlaps (clump spheres, contacts) count once. An estimate whose error
-/// shrinks with the spacing; exact sphere–region volumes are future work. Throws InvalidInput
-/// for non-positive radius or spacing, z_hi <= z_lo, or a region holding no lattice point.
-double lattice_porosity(const World& world, double radius, double z_lo, double z_hi,
-                        double spacing);
 
 }  // namespace clumpkit::dem

@@ -21,17 +21,6 @@ double CylinderRegion::volume() const {
 
 namespace {
 
-std::string sphere_key(const std::vector<Sphere>& spheres) {
-  std::string key(spheres.size() * 4 * sizeof(double), '\0');
-  char* p = key.data();
-  for (const Sphere& s : spheres) {
-    const double v[4] = {s.center.x(), s.center.y(), s.center.z(), s.radius};
-    std::memcpy(p, v, sizeof v);
-    p += sizeof v;
-  }
-  return key;
-}
-
 template <class F>
 double simpson(const F& f, double a, double b, double fa, double fm, double fb, double whole,
                double tol, int depth) {
@@ -67,29 +56,14 @@ double integrate(const F& f, double a, double b, double tol, int pieces = 8) {
 }  // namespace
 
 std::vector<double> body_volumes(const World& world) {
-  const auto& bodies = world.bodies();
-  std::vector<double> out(bodies.size(), 0.0);
-  std::map<std::string, std::size_t> first;  // sphere list -> first body with it
-  std::vector<std::size_t> todo;
-  for (std::size_t k = 0; k < bodies.size(); ++k) {
-    const Body& b = bodies[k];
-    if (b.spheres.size() == 1) {
-      const double r = b.spheres[0].radius;
-      out[k] = 4.0 / 3.0 * M_PI * r * r * r;
-    } else if (first.emplace(sphere_key(b.spheres), k).second) {
-      todo.push_back(k);
-    }
+  std::vector<double> out;
+  out.reserve(world.bodies().size());
+  for (const Body& b : world.bodies()) {
+    if (!(b.volume > 0.0))
+      throw InvalidInput("body_volumes: body " + std::to_string(out.size()) +
+                         " has no volume (bodies come from make_sphere_body or make_clump_body)");
+    out.push_back(b.volume);
   }
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, todo.size(), 1),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t t = r.begin(); t != r.end(); ++t) {
-                        Clump c;
-                        c.spheres = bodies[todo[t]].spheres;
-                        out[todo[t]] = union_properties(c).mass.volume;
-                      }
-                    });
-  for (std::size_t k = 0; k < bodies.size(); ++k)
-    if (bodies[k].spheres.size() > 1) out[k] = out[first.at(sphere_key(bodies[k].spheres))];
   return out;
 }
 

@@ -15,8 +15,9 @@ struct CylinderRegion {
   double volume() const;
 };
 
-/// Exact volume (m³) of the union of each body's spheres (union_properties; bodies with equal
-/// sphere lists share one computation, so duplicated layers cost nothing extra).
+/// Exact volume (m³) of the union of each body's spheres: Body::volume (scaled from the body's
+/// template, or 4/3·π·r³ for a soil sphere). Throws InvalidInput for a body without a positive
+/// volume.
 std::vector<double> body_volumes(const World& world);
 
 /// Volume of (union of the body's spheres) ∩ region. A body wholly inside counts its exact

@@ -6,6 +6,7 @@
 #include "dem/run.h"
 #include "dem/timestep.h"
 #include "geom/errors.h"
+#include "geom/hash.h"
 #include "geom/random.h"
 
 #include <tbb/blocked_range.h>
@@ -13,7 +14,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cinttypes>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -76,31 +76,6 @@ double number(const Record& r, const std::string& key, const fs::path& path) {
   return std::strtod(it->second.c_str(), nullptr);
 }
 
-/// Fingerprint of everything that decides the result (FNV-1a 64 of a canonical text).
-std::string fingerprint(const SpecimenSpec& s) {
-  std::ostringstream t;
-  t << hex(s.radius) << hex(s.height) << s.layers << hex(s.soil_density) << hex(s.rock_density)
-    << hex(s.contact.kn) << hex(s.contact.ks) << hex(s.contact.friction)
-    << hex(s.contact.damping_ratio) << hex(s.contact.local_damping)
-    << hex(s.target_relative_density) << s.seed << hex(s.porosity_guess) << hex(s.timestep_safety)
-    << hex(s.equilibrium_ratio) << s.max_steps << hex(s.margin) << hex(s.density_scaling)
-    << s.correction_rounds << hex(s.relative_density_tolerance) << s.settle_window
-    << hex(s.height_tolerance);
-  for (double f : s.calibration_frictions) t << hex(f);
-  for (const ParticleClass& c : s.classes)
-    t << hex(c.min_size) << hex(c.max_size) << hex(c.mass_percent) << c.rock;
-  for (const RockTemplate& tp : s.templates) {
-    t << hex(tp.sieve_size) << hex(tp.volume);
-    for (const Sphere& sp : tp.spheres)
-      t << hex(sp.center.x()) << hex(sp.center.y()) << hex(sp.center.z()) << hex(sp.radius);
-  }
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char ch : t.str()) h = (h ^ ch) * 1099511628211ull;
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%016" PRIx64, h);
-  return buf;
-}
-
 double top_height(const World& world) {
   double top = 0.0;
   for (const Body& b : world.bodies())
@@ -136,12 +111,9 @@ CylinderRegion central_region(double radius, double margin, double height) {
 DepositionSpec deposition_spec(const SpecimenSpec& s, double friction) {
   DepositionSpec d;
   d.radius = s.radius;
-  d.soil_density = s.soil_density;
-  d.rock_density = s.rock_density;
   d.contact = s.contact;
   d.contact.friction = friction;
   d.timestep_safety = s.timestep_safety;
-  d.max_steps = s.max_steps;
   return d;
 }
 
@@ -156,9 +128,9 @@ double density_scaling(const SpecimenSpec& s) {
 }
 
 /// A deposition world with masses scaled by λ and the time step of the scaled bodies.
-World scaled_world(const std::vector<PlacementItem>& items, const std::vector<Placement>& placed,
+World scaled_world(const std::vector<Body>& bodies, const std::vector<Placement>& placed,
                    const SpecimenSpec& spec, double friction, double lambda) {
-  World world = make_deposition_world(items, placed, deposition_spec(spec, friction));
+  World world = make_deposition_world(bodies, placed, deposition_spec(spec, friction));
   double dt = INFINITY;
   for (Body& b : world.bodies()) {
     b.mass *= lambda;
@@ -285,13 +257,74 @@ double interpolate_friction(const std::vector<CalibrationPoint>& c, double targe
              : c.back().friction;
 }
 
+// The canonical text must name every field: these asserts fail to compile when a field is added
+// to one of the structs, so it cannot be forgotten here (a forgotten contact parameter would let
+// --resume mix two specs).
+static_assert(sizeof(ContactParams) == 5 * sizeof(double), "add the new field to canonical_text");
+static_assert(sizeof(ParticleClass) == 3 * sizeof(double) + sizeof(double),
+              "add the new field to canonical_text");
+
+std::string canonical_text(const SpecimenSpec& s) {
+  std::ostringstream t;
+  auto line = [&](const char* key, const std::string& value) { t << key << " " << value << "\n"; };
+  auto vec = [&](const Vec3& v) { return hex(v.x()) + " " + hex(v.y()) + " " + hex(v.z()); };
+  line("radius", hex(s.radius));
+  line("height", hex(s.height));
+  line("layers", std::to_string(s.layers));
+  line("soil_density", hex(s.soil_density));
+  line("rock_density", hex(s.rock_density));
+  line("contact.kn", hex(s.contact.kn));
+  line("contact.ks", hex(s.contact.ks));
+  line("contact.friction", hex(s.contact.friction));
+  line("contact.damping_ratio", hex(s.contact.damping_ratio));
+  line("contact.local_damping", hex(s.contact.local_damping));
+  line("target_relative_density", hex(s.target_relative_density));
+  for (double f : s.calibration_frictions) line("calibration_friction", hex(f));
+  line("seed", std::to_string(s.seed));
+  line("porosity_guess", hex(s.porosity_guess));
+  line("timestep_safety", hex(s.timestep_safety));
+  line("equilibrium_ratio", hex(s.equilibrium_ratio));
+  line("settle_window", std::to_string(s.settle_window));
+  line("height_tolerance", hex(s.height_tolerance));
+  line("max_steps", std::to_string(s.max_steps));
+  line("correction_rounds", std::to_string(s.correction_rounds));
+  line("relative_density_tolerance", hex(s.relative_density_tolerance));
+  line("density_scaling", hex(s.density_scaling));
+  line("margin", hex(s.margin));
+  for (const ParticleClass& c : s.classes)
+    line("class", hex(c.min_size) + " " + hex(c.max_size) + " " + hex(c.mass_percent) + " " +
+                      (c.rock ? "rock" : "soil"));
+  for (const RockTemplate& tp : s.templates) {
+    const ClumpTemplate& c = tp.clump;
+    line("template", hex(tp.sieve_size) + " " + std::to_string(c.spheres.size()));
+    line("template.volume", hex(c.mass.volume));
+    line("template.centroid", vec(c.mass.centroid));
+    line("template.inertia", vec(c.mass.inertia.row(0).transpose()) + " " +
+                                 vec(c.mass.inertia.row(1).transpose()) + " " +
+                                 vec(c.mass.inertia.row(2).transpose()));
+    line("template.moments", vec(c.principal_moments));
+    line("template.pose",
+         hex(c.orientation.w()) + " " + vec(c.orientation.vec()) + " " + vec(c.position));
+    line("template.density_factor", hex(c.density_factor));
+    for (const Sphere& sp : c.spheres) line("sphere", vec(sp.center) + " " + hex(sp.radius));
+  }
+  return t.str();
+}
+
+std::string spec_fingerprint(const SpecimenSpec& spec) {
+  Fnv1a h;
+  h.add(std::string_view("clumpkit " CLUMPKIT_VERSION "\n"));
+  h.add(std::string_view(canonical_text(spec)));
+  return h.hex();
+}
+
 SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& control) {
   check_spec(spec);
   SpecimenResult result;
   const bool checkpoints = !control.checkpoint_dir.empty();
   const fs::path dir = control.checkpoint_dir;
   if (checkpoints) {
-    const std::string print = fingerprint(spec);
+    const std::string print = spec_fingerprint(spec);
     const fs::path fp = dir / "spec.fingerprint";
     if (control.resume && fs::exists(fp)) {
       std::ifstream in(fp);
@@ -332,7 +365,8 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
         layer_particles(spec.classes, spec.templates, (1.0 - spec.porosity_guess) * layer_volume,
                         spec.soil_density, spec.rock_density, particle_rng);
     Rng place_rng = Rng::stream(spec.seed, calibration_placement);
-    const std::vector<Placement> placed = place_in_cylinder(sample.items, spec.radius, place_rng);
+    const std::vector<Placement> placed =
+        place_in_cylinder(placement_items(sample.bodies), spec.radius, place_rng);
     std::vector<double> fraction(frictions.size(), 0.0);
     std::mutex progress_mutex;
     tbb::parallel_for(
@@ -352,7 +386,7 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
             CheckpointInfo info;
             const bool resumed = checkpoints && control.resume && fs::exists(ckpt);
             World world = resumed ? load_checkpoint(ckpt.string(), &info)
-                                  : scaled_world(sample.items, placed, spec, frictions[k], lambda);
+                                  : scaled_world(sample.bodies, placed, spec, frictions[k], lambda);
             const auto show = [&](double f) {
               std::lock_guard<std::mutex> lock(progress_mutex);
               fraction[k] = f;
@@ -432,9 +466,9 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
       } else {
         if (layer_placed.empty()) {
           Rng place_rng = Rng::stream(spec.seed, layer_placement);
-          layer_placed = place_in_cylinder(layer.items, spec.radius, place_rng);
+          layer_placed = place_in_cylinder(placement_items(layer.bodies), spec.radius, place_rng);
         }
-        layer_world = scaled_world(layer.items, layer_placed, spec, friction, lambda);
+        layer_world = scaled_world(layer.bodies, layer_placed, spec, friction, lambda);
       }
       settle(
           layer_world, spec, 0, "layer" + tag, ckpt, control,
@@ -496,10 +530,10 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
     result.steps.emplace_back("specimen" + tag, static_cast<long>(world.steps()));
 
     // Stage 4: measurement (masses do not enter it).
-    result.body_volume = body_volumes(world);
-    result.height = column_height(world, result.body_volume);
+    const std::vector<double> volumes = body_volumes(world);
+    result.height = column_height(world, volumes);
     result.region = central_region(spec.radius, margin, result.height);
-    result.porosity = region_porosity(world, result.body_volume, result.region);
+    result.porosity = region_porosity(world, volumes, result.region);
     result.relative_density =
         relative_density(result.porosity, result.porosity_max, result.porosity_min);
     result.friction_compaction = friction;
@@ -532,10 +566,6 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
     }
   }
 
-  for (int copy = 0; copy < spec.layers; ++copy)
-    result.body_template.insert(result.body_template.end(), layer.template_index.begin(),
-                                layer.template_index.end());
-
   // True masses in the finished specimen.
   for (Body& b : world.bodies()) {
     b.mass /= lambda;
@@ -544,12 +574,13 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
 
   t0 = Clock::now();
   report("measurement", 0.95);
+  const std::vector<double> volumes = body_volumes(world);
   const double layer_span = result.height / spec.layers;
   for (int k = 0; k < spec.layers; ++k) {
     CylinderRegion r = result.region;
     r.z_lo = std::max(result.region.z_lo, k * layer_span);
     r.z_hi = std::min(result.region.z_hi, (k + 1) * layer_span);
-    result.layer_porosity.push_back(r.z_hi > r.z_lo ? region_porosity(world, result.body_volume, r)
+    result.layer_porosity.push_back(r.z_hi > r.z_lo ? region_porosity(world, volumes, r)
                                                     : std::nan(""));
   }
   const int bands = 2 * spec.layers;
@@ -558,7 +589,7 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
     CylinderRegion r = result.region;
     r.z_lo = result.region.z_lo + k * band;
     r.z_hi = k + 1 == bands ? result.region.z_hi : r.z_lo + band;
-    result.band_porosity.push_back(region_porosity(world, result.body_volume, r));
+    result.band_porosity.push_back(region_porosity(world, volumes, r));
   }
   result.coordination = coordination_number(world, result.region);
   result.seconds.emplace_back("measurement", since(t0));

@@ -79,9 +79,7 @@ struct SpecimenRound {
 
 /// The finished specimen and its measurements.
 struct SpecimenResult {
-  World world;
-  std::vector<int> body_template;   ///< per body: library template index, -1 for a soil sphere
-  std::vector<double> body_volume;  ///< exact volume of each body (m³)
+  World world;  ///< bodies carry kind, template id, scale and exact volume
   std::vector<CalibrationPoint> calibration;  ///< sorted by friction
   double porosity_max = 0, porosity_min = 0;  ///< from the calibration
   double target_porosity = 0, friction_compaction = 0;
@@ -119,6 +117,15 @@ double relative_density(double porosity, double porosity_max, double porosity_mi
 /// than two points.
 double interpolate_friction(const std::vector<CalibrationPoint>& calibration,
                             double target_void_ratio);
+
+/// Every field of the spec as text, one "key value" line each, doubles in hexadecimal (exact),
+/// templates with all their spheres and mass properties: two specs that differ in any field
+/// have different texts.
+std::string canonical_text(const SpecimenSpec& spec);
+
+/// The resume fingerprint: FNV-1a 64 (16 hex digits) of the program version and
+/// canonical_text(spec), so checkpoints are reused only by the same program on the same spec.
+std::string spec_fingerprint(const SpecimenSpec& spec);
 
 /// Runs the stages:
 ///  1. calibration: the particles of one layer at spec.porosity_guess, placed loose and

@@ -29,9 +29,8 @@ LayerParticles layer_particles(const std::vector<ParticleClass>& classes,
                                double soil_density, double rock_density, Rng& rng) {
   const std::vector<double> goal = class_volumes(classes, solid_volume, soil_density, rock_density);
   struct Drawn {
-    PlacementItem item;
-    int template_index;
-    bool rock;
+    Body body;
+    double bound;
   };
   std::vector<Drawn> drawn;
   LayerParticles out;
@@ -48,38 +47,39 @@ LayerParticles layer_particles(const std::vector<ParticleClass>& classes,
       Drawn d;
       double v = 0.0;
       if (c.rock) {
-        d.template_index = static_cast<int>(rng.below(templates.size()));
-        const RockTemplate& t = templates[d.template_index];
+        const int index = static_cast<int>(rng.below(templates.size()));
+        const RockTemplate& t = templates[index];
         const double s = size / t.sieve_size;
-        for (const Sphere& sp : t.spheres) d.item.spheres.push_back({sp.center * s, sp.radius * s});
-        v = t.volume * s * s * s;
-        d.rock = true;
+        d.body = make_clump_body(t.clump, rock_density, Vec3::Zero(),
+                                 Eigen::Quaterniond::Identity(), s, index);
+        v = d.body.volume;
       } else {
-        d.template_index = -1;
-        d.item.spheres.push_back({Vec3::Zero(), 0.5 * size});
+        d.body = make_sphere_body(Vec3::Zero(), 0.5 * size, soil_density);
         v = M_PI / 6.0 * size * size * size;
-        d.rock = false;
       }
       // Keep the last particle only when it brings the class closer to its goal.
       if (volume + v - goal[k] > goal[k] - volume) break;
-      double bound = 0.0;
-      for (const Sphere& sp : d.item.spheres) bound = std::max(bound, sp.center.norm() + sp.radius);
-      d.item.bounding_radius = bound;
+      d.bound = d.body.bounding_radius();
       volume += v;
-      (d.rock ? out.rock_volume : out.soil_volume) += v;
+      (c.rock ? out.rock_volume : out.soil_volume) += v;
       drawn.push_back(std::move(d));
     }
   }
   // Rocks first, then soil; each largest first (stable, so equal sizes keep draw order).
   std::stable_sort(drawn.begin(), drawn.end(), [](const Drawn& a, const Drawn& b) {
-    if (a.rock != b.rock) return a.rock;
-    return a.item.bounding_radius > b.item.bounding_radius;
+    const bool ra = a.body.kind == BodyKind::rock, rb = b.body.kind == BodyKind::rock;
+    if (ra != rb) return ra;
+    return a.bound > b.bound;
   });
-  for (Drawn& d : drawn) {
-    out.items.push_back(std::move(d.item));
-    out.template_index.push_back(d.template_index);
-  }
+  for (Drawn& d : drawn) out.bodies.push_back(std::move(d.body));
   return out;
+}
+
+std::vector<PlacementItem> placement_items(const std::vector<Body>& bodies) {
+  std::vector<PlacementItem> items;
+  items.reserve(bodies.size());
+  for (const Body& b : bodies) items.push_back({b.spheres, b.bounding_radius()});
+  return items;
 }
 
 }  // namespace clumpkit::dem

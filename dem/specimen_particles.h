@@ -2,7 +2,9 @@
 // volumes fill a given solid volume (seed 000 §4.2, "new volumes of each size group").
 #pragma once
 
+#include "dem/body.h"
 #include "dem/placement.h"
+#include "geom/clump_template.h"
 #include "geom/random.h"
 #include "geom/sphere.h"
 
@@ -17,22 +19,25 @@ struct ParticleClass {
   bool rock = false;                      ///< rock clumps (true) or soil spheres (false)
 };
 
-/// A rock clump of the library: spheres in its principal frame (centroid at the origin), its
-/// sieve size W (the intermediate dimension, seed 000 §1.1) and its exact union volume, in the
-/// library's units; layer_items scales it to the size it draws.
+/// A rock clump of the library: its clump template (spheres in the principal frame, exact
+/// unit-density volume and principal moments, as the library computed them) and its sieve size
+/// W (the intermediate dimension, seed 000 §1.1), in the library's units; layer_particles
+/// scales it to the size it draws.
 struct RockTemplate {
-  std::vector<Sphere> spheres;
+  ClumpTemplate clump;
   double sieve_size = 0.0;
-  double volume = 0.0;
 };
 
-/// The bodies of one layer: placement items (rocks first, largest first, then soil spheres,
-/// largest first), which of them are rock, and the template index of each rock (-1 for soil).
+/// The bodies of one layer, at the origin and unrotated (rocks first, largest first, then soil
+/// spheres, largest first): each rock carries its template index and scale, and mass properties
+/// scaled from its template; each soil sphere is a plain sphere body.
 struct LayerParticles {
-  std::vector<PlacementItem> items;
-  std::vector<int> template_index;
+  std::vector<Body> bodies;
   double rock_volume = 0.0, soil_volume = 0.0;  ///< drawn solid volumes (m³)
 };
+
+/// What place_in_cylinder needs of each body: its spheres (body frame) and bounding radius.
+std::vector<PlacementItem> placement_items(const std::vector<Body>& bodies);
 
 /// Solid volume of each class (m³) for a total solid volume: with mass fractions p_k and
 /// densities ρ_k, the total mass is M = V / Σ p_k/ρ_k and class k gets p_k·M/ρ_k.
@@ -42,7 +47,8 @@ std::vector<double> class_volumes(const std::vector<ParticleClass>& classes, dou
 /// Draws the particles of each class until its volume (class_volumes) is reached: the last
 /// particle is kept when that brings the drawn volume closer to the goal. Soil sphere
 /// diameters and rock sieve sizes are uniform in the class; a rock is a uniformly chosen
-/// template scaled by (drawn size / template sieve size). Classes are drawn in order from one
+/// template scaled by (drawn size / template sieve size), with density rock_density, a soil
+/// sphere has density soil_density. Classes are drawn in order from one
 /// Rng, so the result is fixed by its state. Throws InvalidInput for a rock class without
 /// templates, a non-positive volume, size or density.
 LayerParticles layer_particles(const std::vector<ParticleClass>& classes,

@@ -56,6 +56,7 @@ std::vector<int> particle_fractions(const ShapeRecipe& recipe) {
 nlohmann::ordered_json manifest_head(const std::string& command, const ShapeRecipe& recipe) {
   nlohmann::ordered_json m;
   m["tool"] = "clumpkit";
+  m["format_version"] = kManifestFormat;
   m["version"] = CLUMPKIT_VERSION;
   m["command"] = command;
   m["recipe_path"] = recipe.path;

@@ -39,8 +39,12 @@ void for_each_particle(const ShapeRecipe& recipe, const std::vector<int>& fracti
 /// Fraction index of every particle of the recipe, in id order.
 std::vector<int> particle_fractions(const ShapeRecipe& recipe);
 
-/// The manifest fields every output shares: tool, version, command, recipe path and text, seed,
-/// particle count.
+/// Format version of every manifest.json / library.json (one schema: tool, format_version,
+/// version, command, recipe_path, recipe (its text), seed, then the command's own fields).
+inline constexpr int kManifestFormat = 1;
+
+/// The manifest fields every output shares: tool, format_version, version, command, recipe path
+/// and text, seed, particle count.
 nlohmann::ordered_json manifest_head(const std::string& command, const ShapeRecipe& recipe);
 
 /// Throws InvalidInput unless `dir` may be replaced by an output: it does not exist, is empty

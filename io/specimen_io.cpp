@@ -51,6 +51,7 @@ std::vector<dem::RockTemplate> read_rock_templates(const std::string& library_di
     return static_cast<std::size_t>(it - head.begin());
   };
   const std::size_t c_id = column("id"), c_w = column("W"), c_v = column("clump_volume");
+  const std::size_t c_i[3] = {column("I1"), column("I2"), column("I3")};
   std::vector<dem::RockTemplate> out;
   int row = 1;
   while (std::getline(in, line)) {
@@ -63,15 +64,23 @@ std::vector<dem::RockTemplate> read_rock_templates(const std::string& library_di
                          std::to_string(head.size()));
     dem::RockTemplate t;
     t.sieve_size = std::strtod(cells[c_w].c_str(), nullptr);
-    t.volume = std::strtod(cells[c_v].c_str(), nullptr);
-    if (!(t.sieve_size > 0) || !(t.volume > 0) || !std::isfinite(t.sieve_size) ||
-        !std::isfinite(t.volume))
+    ClumpTemplate& clump = t.clump;
+    clump.mass.volume = std::strtod(cells[c_v].c_str(), nullptr);
+    if (!(t.sieve_size > 0) || !(clump.mass.volume > 0) || !std::isfinite(t.sieve_size) ||
+        !std::isfinite(clump.mass.volume))
       throw InvalidInput(csv.string() + ": line " + std::to_string(row) +
                          ": W and clump_volume must be positive, got " + cells[c_w] + " and " +
                          cells[c_v]);
+    for (int a = 0; a < 3; ++a) {
+      clump.principal_moments[a] = std::strtod(cells[c_i[a]].c_str(), nullptr);
+      if (!(clump.principal_moments[a] > 0) || !std::isfinite(clump.principal_moments[a]))
+        throw InvalidInput(csv.string() + ": line " + std::to_string(row) + ": I" +
+                           std::to_string(a + 1) + " must be positive, got " + cells[c_i[a]]);
+    }
+    clump.mass.inertia = clump.principal_moments.asDiagonal();
     char stem[16];
     std::snprintf(stem, sizeof stem, "%05d", std::atoi(cells[c_id].c_str()));
-    t.spheres =
+    clump.spheres =
         read_clump(
             (fs::path(library_dir) / "particles" / (std::string(stem) + ".template.csv")).string())
             .spheres;
@@ -124,17 +133,19 @@ dem::SpecimenSpec specimen_spec(const SpecimenRecipe& r, std::vector<dem::RockTe
 void write_specimen_csv(const std::string& path, const dem::SpecimenResult& result) {
   write_file_atomically(path, [&](std::ostream& o) {
     const auto& bodies = result.world.bodies();
-    o << "# clumpkit specimen, SI units, world frame (x_world = q x_body + position). Bodies, "
-         "then their spheres.\n# bodies\n";
-    o << "body,kind,template,x,y,z,qw,qx,qy,qz,mass,volume\n";
+    o << "# clumpkit specimen format " << kSpecimenCsvFormat
+      << ", SI units, world frame (x_world = q x_body + position). Bodies, then their spheres.\n"
+         "# I1,I2,I3: principal moments (kg m2) about the body frame axes (the template's "
+         "principal frame); scale: template length scale (1 for soil)\n# bodies\n";
+    o << "body,kind,template,x,y,z,qw,qx,qy,qz,mass,volume,scale,I1,I2,I3\n";
     for (std::size_t k = 0; k < bodies.size(); ++k) {
       const dem::Body& b = bodies[k];
-      const int t = k < result.body_template.size() ? result.body_template[k] : -1;
-      o << k << "," << (b.spheres.size() > 1 ? "rock" : "soil") << "," << t << ","
-        << num(b.position.x()) << "," << num(b.position.y()) << "," << num(b.position.z()) << ","
-        << num(b.orientation.w()) << "," << num(b.orientation.x()) << "," << num(b.orientation.y())
-        << "," << num(b.orientation.z()) << "," << num(b.mass) << ","
-        << num(k < result.body_volume.size() ? result.body_volume[k] : 0.0) << "\n";
+      o << k << "," << dem::kind_name(b.kind) << "," << b.template_id << "," << num(b.position.x())
+        << "," << num(b.position.y()) << "," << num(b.position.z()) << "," << num(b.orientation.w())
+        << "," << num(b.orientation.x()) << "," << num(b.orientation.y()) << ","
+        << num(b.orientation.z()) << "," << num(b.mass) << "," << num(b.volume) << ","
+        << num(b.scale) << "," << num(b.moments.x()) << "," << num(b.moments.y()) << ","
+        << num(b.moments.z()) << "\n";
     }
     o << "# spheres\nsphere,body,x,y,z,r\n";
     std::size_t n = 0;
@@ -171,7 +182,7 @@ void write_specimen_vtp(const std::string& path, const dem::SpecimenResult& resu
     o << "</DataArray>\n<DataArray type=\"Int32\" Name=\"kind\" format=\"ascii\">\n";
     for (const dem::Body& b : bodies)
       for (std::size_t s = 0; s < b.spheres.size(); ++s)
-        o << (b.spheres.size() > 1 ? 1 : 0) << "\n";
+        o << (b.kind == dem::BodyKind::rock ? 1 : 0) << "\n";
     o << "</DataArray>\n</PointData>\n<Verts>\n"
       << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
     for (std::size_t k = 0; k < n; ++k) o << k << "\n";
@@ -258,7 +269,7 @@ std::vector<std::string> write_slices(const std::string& dir, const dem::Specime
                        static_cast<int>(std::lround((radius - y) * scale * 16)));
     };
     for (const dem::Body& b : result.world.bodies()) {
-      const bool rock = b.spheres.size() > 1;
+      const bool rock = b.kind == dem::BodyKind::rock;
       for (const Sphere& s : b.spheres) {
         const Vec3 c = b.orientation * s.center + b.position;
         const double dz = z - c.z(), r2 = s.radius * s.radius - dz * dz;
@@ -291,7 +302,7 @@ nlohmann::ordered_json specimen_report(const SpecimenRecipe& recipe, const dem::
   std::size_t spheres = 0, rocks = 0;
   for (const dem::Body& b : r.world.bodies()) {
     spheres += b.spheres.size();
-    rocks += b.spheres.size() > 1;
+    rocks += b.kind == dem::BodyKind::rock;
   }
   j["recipe"] = recipe.path;
   j["seed"] = recipe.seed;

@@ -13,8 +13,10 @@
 namespace clumpkit {
 
 /// Rock templates of a `clumpkit library` directory: each particle's template spheres
-/// (particles/NNNNN.template.csv, principal frame), its measured sieve size W and exact clump
-/// volume (library.csv). Throws IoError/InvalidInput naming the file for a missing or bad file.
+/// (particles/NNNNN.template.csv, principal frame), its measured sieve size W, exact clump
+/// volume and unit-density principal moments I1, I2, I3 (library.csv), so bodies take their
+/// mass properties from the library instead of recomputing them. Throws IoError/InvalidInput naming
+/// the file for a missing or bad file.
 std::vector<dem::RockTemplate> read_rock_templates(const std::string& library_dir);
 
 /// The build spec of a recipe: gradation classes with the fines (classes finer than
@@ -23,9 +25,14 @@ std::vector<dem::RockTemplate> read_rock_templates(const std::string& library_di
 dem::SpecimenSpec specimen_spec(const SpecimenRecipe& recipe,
                                 std::vector<dem::RockTemplate> templates);
 
+/// Format version of specimen.csv, in its first line ("# clumpkit specimen format N"). 2: the
+/// body rows gained scale, I1, I2, I3.
+inline constexpr int kSpecimenCsvFormat = 2;
+
 /// specimen.csv: "# bodies" section (body, kind, template, x, y, z, qw, qx, qy, qz, mass,
-/// volume) then "# spheres" section (sphere, body, x, y, z, r), world frame, SI, round-trip
-/// precision.
+/// volume, scale, I1, I2, I3: principal moments in kg m² about the body axes, the template's
+/// principal frame, which the quaternion rotates into the world) then "# spheres" section
+/// (sphere, body, x, y, z, r), world frame, SI, round-trip precision.
 void write_specimen_csv(const std::string& path, const dem::SpecimenResult& result);
 
 /// specimen.vtp: VTK XML PolyData, one point per sphere with point data radius, body and kind

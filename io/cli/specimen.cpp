@@ -106,10 +106,11 @@ void register_specimen(CLI::App& app) {
                           [&](std::ostream& s) { s << report.dump(2) << "\n"; });
     nlohmann::ordered_json manifest;
     manifest["tool"] = "clumpkit";
+    manifest["format_version"] = kManifestFormat;
     manifest["version"] = CLUMPKIT_VERSION;
     manifest["command"] = "specimen";
-    manifest["recipe"] = recipe.path;
-    manifest["recipe_text"] = recipe.text;
+    manifest["recipe_path"] = recipe.path;
+    manifest["recipe"] = recipe.text;
     manifest["seed"] = recipe.seed;
     write_file_atomically((staging / "manifest.json").string(),
                           [&](std::ostream& s) { s << manifest.dump(2) << "\n"; });

@@ -3,12 +3,16 @@
 #include "dem/specimen.h"
 #include "dem/region_volume.h"
 #include "dem/specimen_particles.h"
+#include "geom/clump_template.h"
 #include "geom/errors.h"
 #include "geom/union_of_balls.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iterator>
+#include <set>
+#include <string>
 
 namespace clumpkit::dem {
 namespace {
@@ -27,44 +31,50 @@ TEST(SpecimenParticles, ClassVolumesFollowMassAndDensity) {
 }
 
 TEST(SpecimenParticles, LayerFillsEachClassToWithinOneParticle) {
-  RockTemplate t;  // two unit balls one apart: W measured as 2, exact union volume
-  t.spheres = {{Vec3(-0.5, 0, 0), 1.0}, {Vec3(0.5, 0, 0), 1.0}};
+  RockTemplate t;  // two unit balls one apart: W measured as 2, exact union mass properties
+  t.clump = make_clump_template(Clump{{{Vec3(-0.5, 0, 0), 1.0}, {Vec3(0.5, 0, 0), 1.0}}});
   t.sieve_size = 2.0;
-  t.volume = union_properties(Clump{t.spheres}).mass.volume;
   const std::vector<ParticleClass> classes = {{0.02, 0.03, 40.0, true}, {0.005, 0.01, 60.0, false}};
   Rng rng(9);
   const double solid = 2e-4;
   const LayerParticles p = layer_particles(classes, {t}, solid, 2700, 2870, rng);
   const auto goal = class_volumes(classes, solid, 2700, 2870);
-  const double rock_max = t.volume * std::pow(0.03 / 2.0, 3);
+  const double rock_max = t.clump.mass.volume * std::pow(0.03 / 2.0, 3);
   const double soil_max = kPi / 6 * std::pow(0.01, 3);
   EXPECT_NEAR(p.rock_volume, goal[0], 0.5 * rock_max);
   EXPECT_NEAR(p.soil_volume, goal[1], 0.5 * soil_max);
-  // Rocks first, each group largest first, sizes inside their class.
+  // Rocks first, each group largest first, sizes inside their class; every rock knows its
+  // template and scale, and its mass properties are the template's scaled (V s³, I s⁵).
   bool soil_seen = false;
   double last = INFINITY;
-  for (std::size_t k = 0; k < p.items.size(); ++k) {
-    const bool rock = p.template_index[k] >= 0;
+  int rocks = 0;
+  for (const Body& b : p.bodies) {
+    const bool rock = b.kind == BodyKind::rock;
     if (!rock && !soil_seen) soil_seen = true, last = INFINITY;
     EXPECT_FALSE(rock && soil_seen);
-    EXPECT_LE(p.items[k].bounding_radius, last);
-    last = p.items[k].bounding_radius;
+    EXPECT_LE(b.bounding_radius(), last);
+    last = b.bounding_radius();
     if (rock) {
-      const double scale = p.items[k].spheres[0].radius;  // template radius 1
-      EXPECT_GE(2.0 * scale, 0.02 - 1e-15);
-      EXPECT_LE(2.0 * scale, 0.03 + 1e-15);
+      ++rocks;
+      EXPECT_EQ(b.template_id, 0);
+      EXPECT_EQ(b.spheres[0].radius, b.scale);  // template radius 1
+      EXPECT_GE(2.0 * b.scale, 0.02 - 1e-15);
+      EXPECT_LE(2.0 * b.scale, 0.03 + 1e-15);
+      const double s3 = b.scale * b.scale * b.scale;
+      EXPECT_NEAR(b.volume, t.clump.mass.volume * s3, 1e-15 * b.volume);
+      EXPECT_NEAR(b.mass, 2870 * t.clump.mass.volume * s3, 1e-12 * b.mass);
+      for (int a = 0; a < 3; ++a)
+        EXPECT_NEAR(b.moments[a], 2870 * t.clump.principal_moments[a] * s3 * b.scale * b.scale,
+                    1e-12 * b.moments[a]);
     } else {
-      EXPECT_GE(2.0 * p.items[k].spheres[0].radius, 0.005 - 1e-15);
-      EXPECT_LE(2.0 * p.items[k].spheres[0].radius, 0.01 + 1e-15);
+      EXPECT_EQ(b.template_id, -1);
+      EXPECT_GE(2.0 * b.spheres[0].radius, 0.005 - 1e-15);
+      EXPECT_LE(2.0 * b.spheres[0].radius, 0.01 + 1e-15);
+      EXPECT_NEAR(b.mass, 2700 * b.volume, 1e-12 * b.mass);
     }
   }
-  // The same Rng state gives the same set.
-  Rng again(9);
-  const LayerParticles q = layer_particles(classes, {t}, solid, 2700, 2870, again);
-  ASSERT_EQ(q.items.size(), p.items.size());
-  EXPECT_EQ(q.items.back().spheres[0].radius, p.items.back().spheres[0].radius);
-  Rng r3(1);
-  EXPECT_THROW(layer_particles(classes, {}, solid, 2700, 2870, r3), InvalidInput);
+  EXPECT_GT(rocks, 0);
+  EXPECT_TRUE(soil_seen);
 }
 
 TEST(Specimen, RelativeDensityAndFrictionInterpolation) {
@@ -88,6 +98,7 @@ Body ball(const Vec3& c, double r) {
   b.position = c;
   b.mass = 1;
   b.moments = Vec3::Ones();
+  b.volume = 4.0 / 3.0 * kPi * r * r * r;
   return b;
 }
 
@@ -157,6 +168,72 @@ TEST(RegionVolume, PorosityAndCoordinationOfASimpleWorld) {
   // Middle ball touches two, the ends one each: mean 4/3.
   EXPECT_NEAR(coordination_number(world, region), 4.0 / 3.0, 1e-15);
   EXPECT_THROW(region_porosity(world, volumes, {0.1, 0.1, 0.1}), InvalidInput);
+}
+
+// The resume fingerprint: a spec changed in any one field (every field of the spec, its contact
+// law, its gradation classes and its templates) gets another fingerprint; equal specs agree.
+TEST(Specimen, FingerprintChangesWithEveryField) {
+  SpecimenSpec base;
+  base.classes = {{0.005, 0.01, 60.0, false}, {0.01, 0.02, 40.0, true}};
+  RockTemplate t;
+  t.clump = make_clump_template(Clump{{{Vec3(-0.5, 0, 0), 1.0}, {Vec3(0.5, 0, 0), 1.0}}});
+  t.sieve_size = 2.0;
+  base.templates = {t};
+  using Edit = void (*)(SpecimenSpec&);
+  const Edit edits[] = {
+      [](SpecimenSpec& s) { s.radius *= 1.0000001; },
+      [](SpecimenSpec& s) { s.height += 1e-9; },
+      [](SpecimenSpec& s) { s.layers += 1; },
+      [](SpecimenSpec& s) { s.soil_density += 1; },
+      [](SpecimenSpec& s) { s.rock_density += 1; },
+      [](SpecimenSpec& s) { s.contact.kn *= 2; },
+      [](SpecimenSpec& s) { s.contact.ks *= 2; },
+      [](SpecimenSpec& s) { s.contact.friction += 0.01; },
+      [](SpecimenSpec& s) { s.contact.damping_ratio += 0.01; },
+      [](SpecimenSpec& s) { s.contact.local_damping += 0.01; },
+      [](SpecimenSpec& s) { s.target_relative_density += 0.01; },
+      [](SpecimenSpec& s) { s.calibration_frictions.back() = 0.7; },
+      [](SpecimenSpec& s) { s.calibration_frictions.push_back(1.0); },
+      [](SpecimenSpec& s) { s.seed += 1; },
+      [](SpecimenSpec& s) { s.porosity_guess += 0.01; },
+      [](SpecimenSpec& s) { s.timestep_safety += 0.01; },
+      [](SpecimenSpec& s) { s.equilibrium_ratio *= 2; },
+      [](SpecimenSpec& s) { s.settle_window += 1; },
+      [](SpecimenSpec& s) { s.height_tolerance += 0.01; },
+      [](SpecimenSpec& s) { s.max_steps += 1; },
+      [](SpecimenSpec& s) { s.correction_rounds += 1; },
+      [](SpecimenSpec& s) { s.relative_density_tolerance += 0.001; },
+      [](SpecimenSpec& s) { s.density_scaling = 10; },
+      [](SpecimenSpec& s) { s.margin = 0.01; },
+      [](SpecimenSpec& s) { s.classes[0].min_size *= 1.01; },
+      [](SpecimenSpec& s) { s.classes[0].max_size *= 1.01; },
+      [](SpecimenSpec& s) { s.classes[0].mass_percent += 1; },
+      [](SpecimenSpec& s) { s.classes[1].rock = false; },
+      [](SpecimenSpec& s) { s.classes.pop_back(); },
+      [](SpecimenSpec& s) { s.templates[0].sieve_size *= 1.01; },
+      [](SpecimenSpec& s) { s.templates[0].clump.mass.volume *= 1.01; },
+      [](SpecimenSpec& s) { s.templates[0].clump.mass.centroid.x() = 1e-9; },
+      [](SpecimenSpec& s) { s.templates[0].clump.mass.inertia(0, 1) = 1e-9; },
+      [](SpecimenSpec& s) { s.templates[0].clump.principal_moments.z() *= 1.01; },
+      [](SpecimenSpec& s) { s.templates[0].clump.orientation.x() = 1e-9; },
+      [](SpecimenSpec& s) { s.templates[0].clump.position.y() = 1e-9; },
+      [](SpecimenSpec& s) { s.templates[0].clump.density_factor = 1.2; },
+      [](SpecimenSpec& s) { s.templates[0].clump.spheres[1].radius *= 1.01; },
+      [](SpecimenSpec& s) { s.templates[0].clump.spheres[0].center.z() = 1e-9; },
+      [](SpecimenSpec& s) { s.templates[0].clump.spheres.pop_back(); },
+      [](SpecimenSpec& s) { s.templates.push_back(s.templates[0]); },
+  };
+  const std::string print = spec_fingerprint(base);
+  EXPECT_EQ(print.size(), 16u);
+  EXPECT_EQ(spec_fingerprint(SpecimenSpec(base)), print);
+  std::set<std::string> seen = {print};
+  for (std::size_t k = 0; k < std::size(edits); ++k) {
+    SpecimenSpec changed = base;
+    edits[k](changed);
+    const std::string other = spec_fingerprint(changed);
+    EXPECT_NE(other, print) << "edit " << k << " kept the fingerprint";
+    EXPECT_TRUE(seen.insert(other).second) << "edit " << k << " collides with another";
+  }
 }
 
 }  // namespace
