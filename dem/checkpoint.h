@@ -1,4 +1,4 @@
-// Binary checkpoints of a DEM World that continue bit-identically after loading (issue 5).
+// Binary checkpoints of a DEM World that continue bit-identically after loading.
 #pragma once
 
 #include "dem/world.h"

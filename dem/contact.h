@@ -10,7 +10,7 @@
 
 namespace clumpkit::dem {
 
-/// Contact parameters (SI). Defaults follow issue 5 (kn = ks = 1e6 N/m, μ = 0.8).
+/// Contact parameters (SI). Defaults follow Jin et al. 2017 §4.1 (kn = ks = 1e6 N/m, μ = 0.8).
 struct ContactParams {
   double kn = 1e6;        ///< normal stiffness (N/m)
   double ks = 1e6;        ///< shear stiffness (N/m)

@@ -9,11 +9,11 @@
 
 namespace clumpkit::dem {
 
-/// Contact parameters for deposition: issue 5 defaults (kn = ks = 1e6 N/m, μ = 0.8) with
-/// viscous normal damping β = 0.5 and light PFC local damping α = 0.1. Measured on 150 soil
-/// spheres (tests/dem/deposition_test.cpp): this reaches a mean unbalanced-force ratio of 1e-3
-/// in about 130k steps, while local damping alone (α = 0.3 or 0.7, with or without β) had not
-/// in 400k steps, because strong local damping also brakes the fall under gravity.
+/// Contact parameters for deposition: the initial values of Jin et al. 2017 §4.1 (kn = ks = 1e6
+/// N/m, μ = 0.8) with viscous normal damping β = 0.5 and light PFC local damping α = 0.1. Measured
+/// on 150 soil spheres (tests/dem/deposition_test.cpp): this reaches a mean unbalanced-force ratio
+/// of 1e-3 in about 130k steps, while local damping alone (α = 0.3 or 0.7, with or without β) had
+/// not in 400k steps, because strong local damping also brakes the fall under gravity.
 inline ContactParams deposition_contact() {
   ContactParams p;
   p.damping_ratio = 0.5;

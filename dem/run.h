@@ -1,4 +1,4 @@
-// Running a DEM world until a stop rule holds, with wall-clock-periodic checkpoints (issue 5).
+// Running a DEM world until a stop rule holds, with wall-clock-periodic checkpoints.
 #pragma once
 
 #include "dem/checkpoint.h"

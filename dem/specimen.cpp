@@ -474,7 +474,7 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
           layer_world, spec, 0, "layer" + tag, ckpt, control,
           [&](double f) { report("layer compaction", base + 0.4 * round_share * f); },
           resumed ? &info : nullptr);
-      // μ back to the material friction, shear history rescaled (issue 5 stage 3).
+      // μ back to the material friction for stage 3, shear history rescaled.
       layer_world.rescale_friction(spec.contact.friction);
       if (checkpoints) {
         save_checkpoint(layer_world_file.string(), layer_world);

@@ -1,5 +1,5 @@
 // Building a DEM specimen to a target relative density: calibration by quasi-vibration
-// compaction, one compacted layer, layered duplication and measurement (seed 000 §4, issue 5).
+// compaction, one compacted layer, layered duplication and measurement (Jin et al. 2017 §4).
 #pragma once
 
 #include "dem/region_volume.h"
@@ -133,11 +133,11 @@ std::string spec_fingerprint(const SpecimenSpec& spec);
 ///     gravity at each calibration friction (quasi-vibration compaction, Huang et al. 2015; runs
 ///     in parallel), porosity measured in the central region → n(μ), n_max, n_min, μ*;
 ///  2. layer: particles whose solid volume fills one layer (height/layers) at the target
-///     porosity (seed 000 §4.2), placed and compacted at μ*, then μ restored to the material
+///     porosity (Jin et al. 2017 §4.2), placed and compacted at μ*, then μ restored to the material
 ///     friction (shear history rescaled);
 ///  3. specimen: the layer copied `layers` times, each shifted up by the layer's top height
 ///     (clumps whole, new ids), and settled to equilibrium at the material friction
-///     (seed 000 §4.2 steps 1–3: "cycle to equilibrium");
+///     (Jin et al. 2017 §4.2 steps 1–3: "cycle to equilibrium");
 ///     stages 2–3 are repeated (correction_rounds) while the relative density misses;
 ///  4. measurement: porosity of the central region (exact sphere–region volumes), Dr, height,
 ///     per-layer and per-band porosity, coordination number.

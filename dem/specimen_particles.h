@@ -1,5 +1,5 @@
 // Particle sets of a specimen layer from a gradation: soil spheres and scaled rock clumps whose
-// volumes fill a given solid volume (seed 000 §4.2, "new volumes of each size group").
+// volumes fill a given solid volume (Jin et al. 2017 §4.2, "new volumes of each size group").
 #pragma once
 
 #include "dem/body.h"
@@ -21,7 +21,7 @@ struct ParticleClass {
 
 /// A rock clump of the library: its clump template (spheres in the principal frame, exact
 /// unit-density volume and principal moments, as the library computed them) and its sieve size
-/// W (the intermediate dimension, seed 000 §1.1), in the library's units; layer_particles
+/// W (the intermediate dimension, Jin et al. 2017 §1.1), in the library's units; layer_particles
 /// scales it to the size it draws.
 struct RockTemplate {
   ClumpTemplate clump;

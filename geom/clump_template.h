@@ -18,8 +18,8 @@ struct ClumpTemplate {
   /// template frame -> source frame).
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
   Vec3 position = Vec3::Zero();
-  /// Mass equivalence (seed 000 §2.2): V_mesh / V_clump, the factor by which a DEM code scales
-  /// the clump density so the clump weighs what the rock weighs. 1 when no mesh volume is given.
+  /// Mass equivalence (Jin et al. 2017 §2.2): V_mesh / V_clump, the factor by which a DEM code
+  /// scales the clump density so the clump weighs what the rock weighs (1 without a mesh volume).
   double density_factor = 1.0;
 };
 

@@ -11,7 +11,7 @@ namespace clumpkit {
 /// Principal frame of the solid: centroid and inertia axes, with the extents of the mesh along
 /// each axis. Columns of `axes` are unit vectors ordered so that extents are S ≤ I ≤ L
 /// (column 0 = short axis, column 2 = long axis). The extents are those of the bounding box
-/// aligned with the inertia axes (documented choice for S, I, L in seed 003).
+/// aligned with the inertia axes (documented choice for S, I, L in Hu et al. 2023).
 /// Signs: the largest-magnitude component of each axis is positive, except that column 0 is
 /// negated when needed to make `axes` a proper rotation (det = +1).
 /// Equal principal moments (relative gap < 1e-8) leave the axes undefined; then the axes in the
@@ -29,9 +29,9 @@ struct PrincipalFrame {
 /// Throws InvalidInput for an empty mesh or one with non-positive volume.
 PrincipalFrame principal_frame(const Mesh& mesh);
 
-/// L, W, H as measured with a caliper (seed 000 §1.1): L the largest dimension (diameter of the
-/// vertex set), W the largest dimension in the plane perpendicular to L, H the largest dimension
-/// perpendicular to both L and W. Computed on the vertices (exact for polyhedra):
+/// L, W, H as measured with a caliper (Jin et al. 2017 §1.1): L the largest dimension (diameter of
+/// the vertex set), W the largest dimension in the plane perpendicular to L, H the largest
+/// dimension perpendicular to both L and W. Computed on the vertices (exact for polyhedra):
 ///  - L = max pairwise distance of the convex-hull vertices (O(h²), h hull vertices);
 ///  - W = max pairwise distance of the hull vertices projected on the plane ⟂ dir_L
 ///    (the 2-D diameter of that projection), dir_W = direction of that pair in the plane;
@@ -45,7 +45,7 @@ struct CaliperDimensions {
 /// Throws InvalidInput for a mesh without vertices.
 CaliperDimensions caliper_dimensions(const Mesh& mesh);
 
-/// 2-D roundness C = P²/(4πA) of a simple polygon (seed 001 eq. 1). 1 for a circle.
+/// 2-D roundness C = P²/(4πA) of a simple polygon (Zhang & Zhou 2015 eq. 1). 1 for a circle.
 /// Either orientation. Throws InvalidInput for fewer than 3 vertices or zero area.
 double polygon_roundness(const std::vector<Eigen::Vector2d>& polygon);
 
@@ -64,8 +64,8 @@ double polygon_roundness(const std::vector<Eigen::Vector2d>& polygon);
 /// of its convex hull. Throws InvalidInput for a zero or non-finite direction.
 std::vector<Eigen::Vector2d> silhouette(const Mesh& mesh, const Vec3& direction, bool convex);
 
-/// Weighted roundness (seed 001 eq. 2): R = Σ C_i A_i / Σ A_i over three orthogonal views taken
-/// along the principal (inertia) axes. `convex` selects the silhouette path (see silhouette).
+/// Weighted roundness (Zhang & Zhou 2015 eq. 2): R = Σ C_i A_i / Σ A_i over three orthogonal views
+/// taken along the principal (inertia) axes. `convex` selects the silhouette path (see silhouette).
 struct Roundness {
   double weighted = 1.0;
   std::array<double, 3> view{1.0, 1.0, 1.0};  ///< C along the S, I, L axis respectively
@@ -79,9 +79,9 @@ struct Descriptors {
   double area = 0.0;
   double sphericity = 0.0;            ///< Wadell: π^(1/3) (6V)^(2/3) / A
   double equivalent_diameter = 0.0;   ///< (6V/π)^(1/3)
-  double L = 0.0, W = 0.0, H = 0.0;   ///< caliper dimensions, seed 000 §1.1
+  double L = 0.0, W = 0.0, H = 0.0;   ///< caliper dimensions, Jin et al. 2017 §1.1
   Vec3 axes = Vec3::Zero();           ///< (S, I, L) principal-axis lengths
-  double E = 0.0, F = 0.0, AR = 0.0;  ///< I/L, S/I, S/L (seed 003)
+  double E = 0.0, F = 0.0, AR = 0.0;  ///< I/L, S/I, S/L (Hu et al. 2023)
   double convexity = 0.0;             ///< V / V_hull
   Roundness roundness;
 };

@@ -13,7 +13,7 @@ namespace clumpkit {
 struct FieldOptions {
   /// Voxels across the smallest principal extent S of the mesh (ignored if voxel_size > 0; the
   /// smallest bounding-box extent when vote_sign is set).
-  /// 40 resolves the corners of seed 000 blocks well enough for ~350-sphere clumps.
+  /// 40 resolves the corners of the Jin et al. 2017 blocks well enough for ~350-sphere clumps.
   int voxels = 40;
   double voxel_size = 0.0;  ///< explicit voxel edge length, units of the mesh
   /// Decide inside/outside by Embree ray-parity voting (RayInside) instead of OpenVDB's sign,

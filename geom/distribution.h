@@ -8,7 +8,8 @@
 namespace clumpkit {
 
 /// A recipe parameter: a constant or a random draw. The lognormal is truncated to [min, max] by
-/// redrawing (seed 000 fits L/H with a lognormal). `integers` draws uniformly from {a, ..., b}.
+/// redrawing (Jin et al. 2017 fit L/H with a lognormal). `integers` draws uniformly from
+/// {a, ..., b}.
 struct Distribution {
   enum class Kind { Constant, Uniform, Normal, Lognormal, Integers };
   Kind kind = Kind::Constant;

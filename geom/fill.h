@@ -1,4 +1,4 @@
-// Greedy maximal-inscribed-sphere fill (seed 001 §2.3, ODEC): a mesh becomes a clump of
+// Greedy maximal-inscribed-sphere fill (Zhang & Zhou 2015 §2.3, ODEC): a mesh becomes a clump of
 // overlapping spheres chosen by how much uncovered volume each one adds.
 #pragma once
 
@@ -14,7 +14,7 @@ namespace clumpkit {
 struct FillOptions {
   int spheres = 0;        ///< sphere budget (0 = none)
   double coverage = 0.0;  ///< stop when this fraction of the interior volume is covered (0 = none)
-  double min_radius = 0.0;  ///< R_lim of seed 000: smaller spheres are never placed
+  double min_radius = 0.0;  ///< R_lim of Jin et al. 2017: smaller spheres are never placed
   FieldOptions field;       ///< resolution of the distance field and coverage grid
   double ridge = 0.8;       ///< medial-candidate slope threshold (see medial_candidates)
   /// How far spheres may reach past the surface. A sphere whose centre lies d inside gets radius
@@ -22,8 +22,8 @@ struct FillOptions {
   /// voxels). A small relative tolerance fills edges and corners much better for a small
   /// overshoot, because a cap of height ε·r holds ∝ ε²r³ outside but the shell adds ∝ ε·r³
   /// inside; it scales with each sphere, so small corner spheres poke out proportionally little.
-  /// Seed 000 block, default: overshoot 0.5–1.0 % of the volume, stated in every fidelity report.
-  /// Set both to 0 to keep every sphere strictly inside.
+  /// Block of Jin et al. 2017, default: overshoot 0.5–1.0 % of the volume, stated in every fidelity
+  /// report. Set both to 0 to keep every sphere strictly inside.
   double tolerance = -1.0;
   double tolerance_voxels = 0.0;
   double tolerance_relative = 0.03;

@@ -52,7 +52,7 @@ PixelSliceResult pixel_slice_volume(const Clump& clump, const PixelSliceOptions&
     for (const Sphere& s : clump.spheres) {
       const double dz = z - s.center.z();
       if (std::abs(dz) >= s.radius) continue;
-      // Slice radius R' = √(R² − (z_cp − z₀)²), seed 000 eq. 2.
+      // Slice radius R' = √(R² − (z_cp − z₀)²), Jin et al. 2017 eq. 2.
       disks.push_back({s.center.x(), s.center.y(), std::sqrt((s.radius - dz) * (s.radius + dz))});
     }
     image.setTo(0);

@@ -1,4 +1,4 @@
-// Pixel virtual slicing (seed 000 §3): clump volume from rasterised horizontal slices.
+// Pixel virtual slicing (Jin et al. 2017 §3): clump volume from rasterised horizontal slices.
 #pragma once
 
 #include "geom/sphere.h"
@@ -16,7 +16,7 @@ enum class PixelRule {
   Touch,   ///< the disk's interior meets the pixel square at all (over-counts the rim)
 };
 
-/// Options of pixel_slice_volume. Defaults follow seed 000 Table 1.
+/// Options of pixel_slice_volume. Defaults follow Jin et al. 2017 Table 1.
 struct PixelSliceOptions {
   int slices_across_smallest = 100;  ///< slices across the smallest ball's diameter (>= 1)
   double pixel = 0;                  ///< pixel size, clump units; 0 = the slice spacing
@@ -36,10 +36,10 @@ struct PixelSliceResult {
   std::vector<double> exact_area;  ///< exact area of the slice (union_of_disks)
 };
 
-/// Volume of a clump by seed 000 §3 (virtual slicing + digital image processing): the clump is
-/// cut by horizontal planes at spacing h = 2·r_min / slices_across_smallest, at the mid-heights
+/// Volume of a clump by Jin et al. 2017 §3 (virtual slicing + digital image processing): the clump
+/// is cut by horizontal planes at spacing h = 2·r_min / slices_across_smallest, at the mid-heights
 /// z_k = z_min + (k + ½)h of the slabs covering [z_min, z_max]; each ball cut by a plane gives a
-/// disk of radius R' = √(R² − (z − z₀)²) (seed 000 eq. 2). Each slice is rasterised into a
+/// disk of radius R' = √(R² − (z − z₀)²) (Jin et al. 2017 eq. 2). Each slice is rasterised into a
 /// cv::Mat over the clump's xy bounding box (pixel grid anchored at its lower corner, so all
 /// slices share one grid) by an exact per-row span computation — not cv::circle, whose
 /// Bresenham rim follows neither rule: for pixel row [y₀, y₀ + p] a disk (cx, cy, r) fills
@@ -47,7 +47,7 @@ struct PixelSliceResult {
 ///           from cy to the row (0 when cy lies in it), if δ < r;
 ///   Centre: the columns whose centre x satisfies |x − cx| < w, w = √(r² − (y_c − cy)²), y_c the
 ///           row's centre, if |y_c − cy| < r.
-/// The volume is Σ_k (filled pixels_k · p²) · h (seed 000 §3.2). Units: those of the clump.
+/// The volume is Σ_k (filled pixels_k · p²) · h (Jin et al. 2017 §3.2). Units: those of the clump.
 /// Throws InvalidInput for bad spheres or options, or when one slice would exceed 10⁸ pixels.
 PixelSliceResult pixel_slice_volume(const Clump& clump, const PixelSliceOptions& opt);
 

@@ -1,5 +1,5 @@
 // Medial candidates of a distance field: interior voxels on a ridge of the distance, each the
-// centre of a maximal inscribed ball (seed 001 §2.2).
+// centre of a maximal inscribed ball (Zhang & Zhou 2015 §2.2).
 #pragma once
 
 #include "geom/distance_field.h"

@@ -165,7 +165,7 @@ struct BallSlicer {
     for (const Sphere& b : balls) {
       const double dz = z - b.center.z();
       if (std::abs(dz) >= b.radius) continue;
-      // Slice radius R' = √(R² − (z − z₀)²), seed 000 eq. 2 (factored for accuracy).
+      // Slice radius R' = √(R² − (z − z₀)²), Jin et al. 2017 eq. 2 (factored for accuracy).
       disks.push_back({b.center.x(), b.center.y(), std::sqrt((b.radius - dz) * (b.radius + dz))});
     }
     const SliceMoments s = disk_union(disks);

@@ -31,8 +31,8 @@ struct Disk {
 SliceMoments union_of_disks(const std::vector<Disk>& disks);
 
 /// Mass properties (unit density) of the union of the clump's balls by integrating the exact
-/// slice moments of union_of_disks over z — the analytic limit of the virtual slicing of seed 000
-/// §3 (slice radius R' = √(R² − (z − z₀)²), seed 000 eq. 2). The z-range is split at event
+/// slice moments of union_of_disks over z — the analytic limit of the virtual slicing of
+/// Jin et al. 2017 §3 (slice radius R' = √(R² − (z − z₀)²), eq. 2). The z-range is split at event
 /// heights: ball tops and bottoms, the top and bottom of each pairwise intersection circle (slice
 /// circles tangent) and triple points of three spheres (slice vertex structure changes), keeping
 /// only events on the union's surface. Between events the slice moments are analytic functions of

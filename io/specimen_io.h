@@ -19,9 +19,9 @@ namespace clumpkit {
 /// the file for a missing or bad file.
 std::vector<dem::RockTemplate> read_rock_templates(const std::string& library_dir);
 
-/// The build spec of a recipe: gradation classes with the fines (classes finer than
-/// fines_below) moved, by mass, into the class [fines_min, fines_max] (seed 000 §4.1); classes
-/// at or above the soil/rock threshold are rock. Contact damping as in deposition_contact().
+/// The build spec of a recipe: gradation classes with the fines (classes finer than fines_below)
+/// moved, by mass, into the class [fines_min, fines_max] (Jin et al. 2017 §4.1); classes at or
+/// above the soil/rock threshold are rock. Contact damping as in deposition_contact().
 dem::SpecimenSpec specimen_spec(const SpecimenRecipe& recipe,
                                 std::vector<dem::RockTemplate> templates);
 
@@ -46,7 +46,7 @@ void write_calibration_csv(const std::string& path, const dem::SpecimenResult& r
 void write_calibration_plot(const std::string& path, const dem::SpecimenResult& result,
                             double target_relative_density);
 
-/// Horizontal slice images at the given heights: rock red, soil blue (seed 000 Fig. 10), the
+/// Horizontal slice images at the given heights: rock red, soil blue (Jin et al. 2017 Fig. 10), the
 /// container grey; `pixels` across the container diameter. Returns the file names written.
 std::vector<std::string> write_slices(const std::string& dir, const dem::SpecimenResult& result,
                                       double radius, const std::vector<double>& heights,

@@ -1,5 +1,5 @@
 // Specimen recipes (TOML): container, gradation, rock library, materials, contact law and the
-// target relative density of a DEM specimen (seed 000 §4).
+// target relative density of a DEM specimen (Jin et al. 2017 §4).
 #pragma once
 
 #include <cstdint>
@@ -14,7 +14,7 @@ struct SizeClass {
   double percent = 0.0;         ///< mass percent of the whole sample in this class
 };
 
-/// Everything `clumpkit specimen` needs, SI units. Defaults are seed 000's values.
+/// Everything `clumpkit specimen` needs, SI units. Defaults are the values of Jin et al. 2017.
 struct SpecimenRecipe {
   std::string path, text;
   std::uint64_t seed = 1;
@@ -23,7 +23,7 @@ struct SpecimenRecipe {
   std::vector<double> passing;        ///< percent passing each sieve, descending, first = 100
   std::vector<SizeClass> classes;     ///< derived from sieves and passing
   double soil_rock_threshold = 0.02;  ///< particles above are rock clumps, below soil spheres [m]
-  double rock_mass_fraction = 0.4;    ///< rock mass / total mass, seed 000's 40 %
+  double rock_mass_fraction = 0.4;    ///< rock mass / total mass, 40 % in Jin et al. 2017
   double fines_below = 0.005;         ///< soil finer than this ...
   double fines_min = 0.005, fines_max = 0.010;  ///< ... is replaced by the same mass in this range
   std::string library;                          ///< directory made by `clumpkit library`, or

@@ -1,4 +1,4 @@
-// Rock-block generator of Jin et al. 2017 (seed 000 §2.1): a meshed cuboid with randomly
+// Rock-block generator of Jin et al. 2017 (§2.1): a meshed cuboid with randomly
 // scaled node radii.
 #pragma once
 
@@ -7,9 +7,9 @@
 
 namespace clumpkit {
 
-/// Parameters of seed 000 §2.1: a cuboid L×W×H (along x, y, z) whose six faces are meshed with
-/// every edge split into `nd` segments; each node's distance from the centre is multiplied by a
-/// uniform random factor in [sl, su] (seed 000 eq. 1: γ = r·RAND(Sl, Su)).
+/// Parameters of Jin et al. 2017 §2.1: a cuboid L×W×H (along x, y, z) whose six faces are meshed
+/// with every edge split into `nd` segments; each node's distance from the centre is multiplied by
+/// a uniform random factor in [sl, su] (Jin et al. 2017 eq. 1: γ = r·RAND(Sl, Su)).
 struct BlockParams {
   double L = 1.0, W = 1.0, H = 1.0;
   int nd = 2;

@@ -1,4 +1,4 @@
-// Random convex-hull grains with a target weighted roundness (Zhang & Zhou 2015, seed 001 §2.1).
+// Random convex-hull grains with a target weighted roundness (Zhang & Zhou 2015 §2.1).
 #pragma once
 
 #include "geom/mesh.h"
@@ -6,8 +6,8 @@
 
 namespace clumpkit {
 
-/// Seed 001 §2.1: N random points on a sphere of diameter d, their convex hull, redrawn until the
-/// weighted roundness R (seed 001 eq. 2) lies in [roundness_min, roundness_max].
+/// Zhang & Zhou 2015 §2.1: N random points on a sphere of diameter d, their convex hull, redrawn
+/// until the weighted roundness R (Zhang & Zhou 2015 eq. 2) lies in [roundness_min, roundness_max].
 /// Points uniform on a sphere give R ≈ 1.05–1.15 only, so each attempt also draws a flattening
 /// of the point cloud: y is scaled by b ~ U(aspect_min, 1) and z by c ~ U(aspect_min, b), which
 /// reaches the flatter bands (1.2–1.6) of the paper's Figs. 9–11. `aspect_min = 1` is the plain

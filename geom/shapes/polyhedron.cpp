@@ -87,7 +87,7 @@ Mesh make_polyhedron(const PolyhedronParams& p, Rng& rng) {
   }
   Mesh m = convex_hull(corners);  // deduplicates corners shared by 4+ planes
 
-  // Stretch along the principal axes to E and F (seed 003: E = I/L, F = S/I).
+  // Stretch along the principal axes to E and F (Hu et al. 2023: E = I/L, F = S/I).
   PrincipalFrame f;
   to_principal_frame(m, f);
   for (int iter = 0; iter < 8; ++iter) {

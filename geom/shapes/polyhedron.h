@@ -1,5 +1,5 @@
 // Angular polyhedra from a sphere cut by random planes, stretched to target axis ratios
-// (Hu et al. 2023, seed 003 §3.1 and §3.4).
+// (Hu et al. 2023 §3.1 and §3.4).
 #pragma once
 
 #include "geom/mesh.h"
@@ -7,8 +7,8 @@
 
 namespace clumpkit {
 
-/// Seed 003: a sphere cut by `planes` random planes gives an angular parent particle; it is then
-/// stretched to principal-axis ratios E = I/L and F = S/I and scaled to the volume-equivalent
+/// Hu et al. 2023: a sphere cut by `planes` random planes gives an angular parent particle; it is
+/// then stretched to principal-axis ratios E = I/L and F = S/I and scaled to the volume-equivalent
 /// diameter D.
 /// Plane normals are uniform on the unit sphere; each plane's distance from the centre is
 /// uniform in [offset_min, offset_max] times the sphere radius (defaults 0.6–0.95: every plane

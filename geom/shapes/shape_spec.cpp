@@ -16,10 +16,10 @@ constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 const std::map<std::string, std::vector<ParameterInfo>>& tables() {
   static const std::map<std::string, std::vector<ParameterInfo>> t = {
       {"block",
-       {{"W", true, kNone, "width, the sieve size (seed 000 §1.1) [m]"},
+       {{"W", true, kNone, "width, the sieve size (Jin et al. 2017 §1.1) [m]"},
         {"L", false, kNone, "length [m]; give L and H, or L_over_H and W_split"},
         {"H", false, kNone, "height [m]"},
-        {"L_over_H", false, kNone, "L/H ratio (seed 000 Fig. 2: lognormal)"},
+        {"L_over_H", false, kNone, "L/H ratio (Jin et al. 2017 Fig. 2: lognormal)"},
         {"W_split", false, 0.5, "W/H = (L/H)^W_split, in [0, 1]"},
         {"nd", false, 2, "segments per cuboid edge, Nd"},
         {"sl", false, 0.8, "lower radial scale factor, Sl"},

@@ -49,7 +49,7 @@ struct GeneratedShape {
 };
 
 /// Draws the parameters and builds the mesh. For `block`, either L, W, H are given, or W with
-/// L_over_H (seed 000 Fig. 2: lognormal) and W_split, where W/H = (L/H)^W_split so that
+/// L_over_H (Jin et al. 2017 Fig. 2: lognormal) and W_split, where W/H = (L/H)^W_split so that
 /// H ≤ W ≤ L.
 GeneratedShape generate_shape(const FractionSpec& spec, Rng& rng);
 

@@ -19,9 +19,9 @@ void register_describe(CLI::App& app) {
   auto* c = app.add_subcommand(
       "describe",
       "Shape descriptors of a closed mesh (STL, OBJ, PLY), in the units of the mesh: volume, "
-      "area, Wadell sphericity, volume-equivalent diameter, caliper L W H (seed 000 §1.1), "
-      "principal-axis lengths S I L (inertia-aligned box) with E F AR (seed 003), convexity "
-      "V/V_hull, weighted roundness over three principal views (seed 001 eq. 2)");
+      "area, Wadell sphericity, volume-equivalent diameter, caliper L W H (Jin et al. 2017 §1.1), "
+      "principal-axis lengths S I L (inertia-aligned box) with E F AR (Hu et al. 2023), convexity "
+      "V/V_hull, weighted roundness over three principal views (Zhang & Zhou 2015 eq. 2)");
   c->add_option("MESH", o->mesh, "Mesh file")->required();
   c->add_flag("--json", o->json, "Print one JSON object on stdout");
   c->callback([o] {

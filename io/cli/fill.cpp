@@ -45,13 +45,14 @@ void register_fill(CLI::App& app) {
       "fill",
       "Clump of overlapping spheres inscribed in a closed mesh (units of the mesh): the largest "
       "inscribed sphere, then repeatedly the medial sphere covering the most uncovered volume "
-      "(seed 001 §2.3). Writes x,y,z,r CSV and prints a fidelity report.");
+      "(Zhang & Zhou 2015 §2.3). Writes x,y,z,r CSV and prints a fidelity report.");
   c->add_option("MESH", o->mesh, "Closed mesh (STL, OBJ, PLY)")->required();
   c->add_option("-o,--output", o->out, "Clump CSV to write")->required();
   c->add_option("--spheres", o->spheres, "Sphere budget, at least 1 (default 50 if no --coverage)");
   c->add_option("--coverage", o->fill.coverage,
                 "Stop at this covered fraction of the volume, in (0, 1]");
-  c->add_option("--min-radius", o->fill.min_radius, "Smallest sphere radius R_lim (seed 000)")
+  c->add_option("--min-radius", o->fill.min_radius,
+                "Smallest sphere radius R_lim (Jin et al. 2017)")
       ->capture_default_str();
   c->add_option("--voxels", o->fill.field.voxels, "Voxels across the smallest principal extent")
       ->capture_default_str();

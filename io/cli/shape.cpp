@@ -67,7 +67,7 @@ void register_shape(CLI::App& app) {
     auto p = std::make_shared<BlockParams>();
     auto* c = shape->add_subcommand(
         "block",
-        "Rock block of seed 000 §2.1: cuboid L x W x H (x, y, z), edges split in Nd, node "
+        "Rock block of Jin et al. 2017 §2.1: cuboid L x W x H (x, y, z), edges split in Nd, node "
         "radii scaled by U(Sl, Su). Lengths in any unit; the mesh keeps it.");
     c->add_option("--L", p->L, "Length (x)")->required();
     c->add_option("--W", p->W, "Width (y)")->required();
@@ -87,7 +87,7 @@ void register_shape(CLI::App& app) {
     auto band = std::make_shared<std::string>("1:10");
     auto* c = shape->add_subcommand(
         "hull",
-        "Random convex hull of seed 001 §2.1: N points on a sphere of diameter d, redrawn "
+        "Random convex hull of Zhang & Zhou 2015 §2.1: N points on a sphere of diameter d, redrawn "
         "until the weighted roundness is in the band");
     c->add_option("--diameter", p->diameter, "Sphere diameter d")->required();
     c->add_option("--points", p->points, "Number of random points N")->capture_default_str();
@@ -119,7 +119,7 @@ void register_shape(CLI::App& app) {
     auto p = std::make_shared<PolyhedronParams>();
     auto* c = shape->add_subcommand(
         "polyhedron",
-        "Sphere cut by random planes (seed 003), stretched to E = I/L and F = S/I, "
+        "Sphere cut by random planes (Hu et al. 2023), stretched to E = I/L and F = S/I, "
         "scaled to volume-equivalent diameter D");
     c->add_option("--diameter", p->diameter, "Volume-equivalent diameter D")->required();
     c->add_option("--planes", p->planes, "Number of random cutting planes")->capture_default_str();

@@ -51,7 +51,7 @@ void register_volume(CLI::App& app) {
       "area, centroid, inertia about the centroid at unit density), inclusion-exclusion (volume, "
       "area over the alpha-0 dual complex), analytic-slice (exact slice areas, Gauss-Legendre in "
       "z), "
-      "pixel-slice (seed 000 §3: rasterised slices), voxel (OpenVDB level set), or all.");
+      "pixel-slice (Jin et al. 2017 §3: rasterised slices), voxel (OpenVDB level set), or all.");
   c->add_option("CLUMP", o->clump, "Clump CSV (x,y,z,r)")->required();
   c->add_option("--method", o->method,
                 "exact|inclusion-exclusion|analytic-slice|pixel-slice|voxel|all")
@@ -111,7 +111,7 @@ void register_volume(CLI::App& app) {
         std::filesystem::create_directories(o->png, ec);
         if (ec) throw IoError(o->png + ": cannot create directory: " + ec.message());
         po.on_slice = [&](int k, int w, int h, const std::uint8_t* px) {
-          // Filled region black on white, as in seed 000 Fig. 7.
+          // Filled region black on white, as in Jin et al. 2017 Fig. 7.
           std::vector<std::uint8_t> inv(px, px + std::size_t(w) * h);
           for (auto& v : inv) v = 255 - v;
           char name[32];

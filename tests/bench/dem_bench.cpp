@@ -1,5 +1,5 @@
-// Lean DEM speed against the LAMMPS baseline decks of ../shared/baselines/lammps (issue 5,
-// acceptance 4): the same three cases built with our World, timed on 1 and 2 threads, in
+// Lean DEM speed against the LAMMPS baseline decks of ../shared/baselines/lammps: the same
+// three cases built with our World, timed on 1 and 2 threads, in
 // sphere-steps per second (spheres × steps / loop seconds, the figure run.sh prints).
 //  (a) 20,000 falling spheres (in.spheres): d = 10 mm, ρ = 2700, kn = ks = 1e6 N/m, μ = 0.8,
 //      normal damping ratio 0.3, dt = 5e-6 s, skin 2 mm, cylinder R = 0.15 m + floor, gravity;
@@ -413,7 +413,7 @@ int main(int argc, char** argv) {
   if (full) steps = 40000, settle = 100000, dense = 10000;
   auto wanted = [&](const char* c) { return cases.find(c) != std::string::npos; };
 
-  std::printf("# dem_bench: lean DEM on the LAMMPS baseline cases (issue 5 acceptance 4)\n\n");
+  std::printf("# dem_bench: lean DEM on the LAMMPS baseline cases\n\n");
   std::vector<Row> rows;
   if (wanted("spheres")) {
     const World w = spheres_world();

@@ -1,5 +1,5 @@
 // Sphere fill: time per fill at the default resolution (one thread), and covered fraction versus
-// sphere count on seed 000's block, greedy coverage fill against the biggest-sphere-first
+// sphere count on the Jin et al. 2017 block, greedy coverage fill against the biggest-sphere-first
 // baseline in the same run. Prints a Markdown table for tests/bench/RESULTS.md.
 #include "geom/fidelity.h"
 #include "geom/fill.h"

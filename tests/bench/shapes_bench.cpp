@@ -1,5 +1,5 @@
 // Particles per second for each shape method, generation plus all descriptors, one thread.
-// Issue 2 goal: >= 200 blocks per second per core. Baseline in the same run: the cost of the
+// Goal: >= 200 blocks per second per core. Baseline in the same run: the cost of the
 // cheapest descriptor pass (volume + area) on the same meshes, so ratios survive noisy machines.
 #include "geom/descriptors.h"
 #include "geom/shapes/block.h"

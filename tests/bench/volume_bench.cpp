@@ -1,6 +1,6 @@
 // Union-of-spheres volume: speed of the exact engine against the other methods in the same
-// run, seed 000 Tables 1 and 2, and the voxel method's error against voxel size. Prints Markdown
-// for tests/bench/RESULTS.md. One thread.
+// run, Jin et al. 2017 Tables 1 and 2, and the voxel method's error against voxel size. Prints
+// Markdown for tests/bench/RESULTS.md. One thread.
 #include "geom/fidelity.h"
 #include "geom/fill.h"
 #include "geom/inclusion_exclusion.h"
@@ -50,7 +50,8 @@ double pixel_error(const Clump& c, PixelRule rule, double exact) {
 int main() {
   tbb::global_control single_thread(tbb::global_control::max_allowed_parallelism, 1);
   std::printf(
-      "# volume_bench (one thread)\n\n## Speed, 50-sphere clump (fill of seed 000's block)\n\n");
+      "# volume_bench (one thread)\n\n"
+      "## Speed, 50-sphere clump (fill of the Jin et al. 2017 block)\n\n");
   const Mesh b1 = block(1);
   const Clump c50 = fill_block(b1, 50);
   const double exact = seconds_per_call([&] { union_properties(c50); });
@@ -91,7 +92,8 @@ int main() {
   }
 
   std::printf(
-      "\n## Seed 000 Table 1: pixel slicing, 100 slices across the 7 mm sphere, pixel = spacing\n\n"
+      "\n## Jin et al. 2017 Table 1: pixel slicing, 100 slices across the 7 mm sphere, "
+      "pixel = spacing\n\n"
       "| model | exact [cm3] | touch rule | centre rule | paper |\n|---|---|---|---|---|\n");
   const Clump one{{{Vec3(0, 0, 0), 7.0}}};
   const Clump two{{{Vec3(0, 0, 0), 7.0}, {Vec3(10.003022114627893, 0, 0), 10.0}}};
@@ -107,8 +109,8 @@ int main() {
   }
 
   std::printf(
-      "\n## Seed 000 Table 2: block 75.1 x 58.0 x 49.8, Nd 2, Sl 0.8, Su 1.2 (seed 1; mean of "
-      "seeds 1-5)\n\n"
+      "\n## Jin et al. 2017 Table 2: block 75.1 x 58.0 x 49.8, Nd 2, Sl 0.8, Su 1.2 (seed 1; "
+      "mean of seeds 1-5)\n\n"
       "| spheres | geometric volume [cm3] | exact clump volume [cm3] | deviation | mean deviation "
       "seeds 1-5 "
       "| paper deviation |\n|---|---|---|---|---|---|\n");

@@ -147,7 +147,7 @@ TEST(Cli, EveryShapeKindWritesAValidMesh) {
   EXPECT_NEAR(j["E"].get<double>(), 0.667, 0.01);
 }
 
-// Acceptance 5 of issue 2: byte-identical outputs for --threads 1 and --threads 2.
+// Byte-identical outputs for --threads 1 and --threads 2.
 TEST(Cli, ShapesIsByteIdenticalForAnyThreadCount) {
   const fs::path d = scratch();
   write(d / "r.toml", kSmallRecipe);
@@ -186,8 +186,7 @@ TEST(Cli, ShapesIsByteIdenticalForAnyThreadCount) {
   EXPECT_NE(slurp(d / "t1" / "shapes.csv"), slurp(d / "t6" / "shapes.csv"));
 }
 
-// Acceptance 6 of issue 2: bad inputs give one line naming file, field and value, exit 2, and no
-// partial output.
+// Bad inputs give one line naming file, field and value, exit 2, and no partial output.
 TEST(Cli, EmptyMeshFile) {
   const fs::path d = scratch();
   write(d / "empty.stl", "");
@@ -293,7 +292,7 @@ TEST(Cli, BundledRecipesParse) {
   EXPECT_TRUE(fs::exists(d / "rf" / "meshes" / "00059.stl"));
 }
 
-// Issue 3: `clumpkit fill` output, JSON report and bad input.
+// `clumpkit fill` output, JSON report and bad input.
 TEST(Cli, FillWritesClumpAndReport) {
   const fs::path d = scratch();
   ASSERT_EQ(
@@ -334,7 +333,7 @@ TEST(Cli, FillBadInput) {
   EXPECT_FALSE(fs::exists(d / "c.csv"));
 }
 
-// Issue 3: `clumpkit library` is byte-identical for 1 and 2 threads, and a killed run resumes to
+// `clumpkit library` is byte-identical for 1 and 2 threads, and a killed run resumes to
 // the same bytes.
 namespace {
 const char* kLibraryRecipe = R"(seed = 11
@@ -427,7 +426,7 @@ TEST(Cli, LibraryBadInput) {
       "different recipe");
 }
 
-// Issue 4: `clumpkit volume`, every method on oracle C2, and bad or degenerate input.
+// `clumpkit volume`, every method on oracle C2, and bad or degenerate input.
 TEST(Cli, VolumeAllMethodsOnOracleC2) {
   const fs::path d = scratch();
   write(d / "c2.csv", "# two unit balls 1 apart\nx,y,z,r\n0,0,0,1\n0,0,1,1\n");
@@ -488,8 +487,8 @@ TEST(Cli, FillAllowOpenSaysItVoted) {
   EXPECT_TRUE(fs::exists(d / "c.csv"));
 }
 
-// Issue 5: `clumpkit specimen` on a tiny recipe (a 60 mm cylinder, about 600 bodies) for
-// determinism and resume, the bundled quick recipe for the density target.
+// `clumpkit specimen` on a tiny recipe (a 60 mm cylinder, about 600 bodies) for determinism and
+// resume, the bundled quick recipe for the density target.
 namespace {
 
 const char* kTinyRocks = R"(name = "tiny-rocks"

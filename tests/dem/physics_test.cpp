@@ -1,4 +1,4 @@
-// Physics tests of the lean DEM engine against analytic answers (issue 5, acceptance 1).
+// Physics tests of the lean DEM engine against analytic answers.
 #include "dem/world.h"
 #include "geom/errors.h"
 #include "geom/random.h"

@@ -1,4 +1,4 @@
-// Tests of the non-overlapping random placement in a cylinder (issue 5, specimen stage 1).
+// Tests of the non-overlapping random placement in a cylinder (first step of a specimen build).
 #include "dem/placement.h"
 #include "geom/errors.h"
 #include "geom/random.h"

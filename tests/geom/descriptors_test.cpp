@@ -402,7 +402,7 @@ TEST(Silhouette, RejectsZeroDirection) {
   EXPECT_THROW(silhouette(box_mesh(1, 1, 1), Vec3::Zero(), true), InvalidInput);
 }
 
-// ---- Weighted roundness (seed 001 eq. 2) ----
+// ---- Weighted roundness (Zhang & Zhou 2015 eq. 2) ----
 
 TEST(WeightedRoundness, Box2x1x1) {
   const Mesh m = box_mesh(2, 1, 1);

@@ -1,5 +1,5 @@
-// Issue 4 acceptance 2: the exact power-diagram engine and analytic slicing, two independent
-// methods, agree on random clumps of 50, 200 and 1000 balls.
+// The exact power-diagram engine and analytic slicing, two independent methods, agree on random
+// clumps of 50, 200 and 1000 balls.
 #include "geom/random.h"
 #include "geom/slicing.h"
 #include "geom/union_of_balls.h"

@@ -1,4 +1,4 @@
-// Tests of the greedy maximal-inscribed-sphere fill and its fidelity report (issue 3).
+// Tests of the greedy maximal-inscribed-sphere fill and its fidelity report.
 #include "geom/fill.h"
 #include "geom/cgal_mesh.h"
 #include "geom/errors.h"
@@ -96,7 +96,7 @@ TEST(Fill, ZeroToleranceKeepsEverySphereInside) {
   EXPECT_LT(f.overshoot_depth_max, 1e-9);
 }
 
-// Acceptance 3 of issue 3: unit cube, 50 spheres, covered >= 0.91, overshoot <= 0.01.
+// Unit cube, 50 spheres, covered >= 0.91, overshoot <= 0.01.
 TEST(Fill, UnitCubeFiftySpheres) {
   const Mesh cube = make_box(Vec3(1, 1, 1));
   FillOptions o;
@@ -107,7 +107,7 @@ TEST(Fill, UnitCubeFiftySpheres) {
   EXPECT_LE(f.overshoot_fraction, 0.01);
 }
 
-// Acceptance 2 of issue 3: seed 000's block, mean over seeds 1-5.
+// The block of Jin et al. 2017 at the sphere counts of its Table 2, mean over seeds 1-5.
 TEST(Fill, SeedZeroBlockCoverageAtEqualSphereCount) {
   const int counts[3] = {47, 93, 344};
   const double goals[3] = {0.86, 0.91, 0.965};
@@ -193,8 +193,8 @@ TEST(Fill, RejectsBadOptions) {
   EXPECT_THROW(fill(cube, o), InvalidInput);
 }
 
-// Issue 3: a mesh that is not watertight (one triangle missing) is filled with inside/outside
-// from Embree ray-parity voting, as well as the closed mesh is.
+// A mesh that is not watertight (one triangle missing) is filled with inside/outside from Embree
+// ray-parity voting, as well as the closed mesh is.
 TEST(Fill, OpenMeshByRayVoting) {
   Rng rng(1);
   const Mesh closed = make_block(BlockParams{75.1, 58.0, 49.8, 2, 0.8, 1.2}, rng);

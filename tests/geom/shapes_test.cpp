@@ -1,5 +1,5 @@
-// Tests of the shape generators: block (seed 000), hull (seed 001), polyhedron (seed 003),
-// primitives.
+// Tests of the shape generators: block (Jin et al. 2017), hull (Zhang & Zhou 2015),
+// polyhedron (Hu et al. 2023), primitives.
 #include "geom/cgal_mesh.h"
 #include "geom/descriptors.h"
 #include "geom/errors.h"
@@ -79,8 +79,8 @@ TEST(Block, RadialScalingStaysWithinBounds) {
   }
 }
 
-// Acceptance 3 of issue 2: 1000 random parameter sets, each mesh closed, 2-manifold, outward and
-// free of self-intersections (CGAL).
+// 1000 random parameter sets, each mesh closed, 2-manifold, outward and free of
+// self-intersections (CGAL).
 TEST(Block, ThousandRandomParameterSetsAreValidSolids) {
   Rng draw(2024);
   for (int i = 0; i < 1000; ++i) {
@@ -122,8 +122,8 @@ TEST(Block, RejectsBadParameters) {
   }
 }
 
-// Acceptance 4 of issue 2: 100 grains per roundness band of seed 001, each inside its band when
-// measured independently by describe().
+// 100 grains per roundness band of Zhang & Zhou 2015, each inside its band when measured
+// independently by describe().
 TEST(Hull, HundredGrainsPerBandAreInTheirBand) {
   const double bands[3][2] = {{1.1, 1.2}, {1.2, 1.4}, {1.4, 1.6}};
   for (const auto& band : bands) {

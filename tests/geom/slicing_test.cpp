@@ -308,7 +308,7 @@ TEST(UnionPropertiesBySlicing, RejectsBadSpheres) {
   EXPECT_THROW(union_properties_by_slicing(Clump{{{Vec3(0, 0, 0), -1.0}}}), InvalidInput);
 }
 
-// ---- Pixel slicing (seed 000 §3, Table 1) ----
+// ---- Pixel slicing (Jin et al. 2017 §3, Table 1) ----
 
 const double kSphere7 = 4.0 / 3.0 * kPi * 343.0;  // 1436.755 mm³ (paper: 1.4367 cm³)
 
@@ -336,7 +336,7 @@ TEST(PixelSlicing, Table1SingleSphereTouchOvercountsCentreDoesNot) {
   EXPECT_GT(e_touch, 0.025);
   EXPECT_LT(e_touch, 0.032);
   EXPECT_LT(std::abs(e_centre), 0.003);
-  // Per-slice exact areas: π R'², R'² = R² − z² (seed 000 eq. 2); their midpoint sum is the
+  // Per-slice exact areas: π R'², R'² = R² − z² (Jin et al. 2017 eq. 2); their midpoint sum is the
   // slab estimate of the volume, without the pixel bias.
   double slab = 0;
   for (std::size_t k = 0; k < touch.z.size(); ++k) {

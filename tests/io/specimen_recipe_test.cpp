@@ -1,5 +1,5 @@
 // Tests of specimen recipes: bundled recipes parse, bad ones fail before any simulation with the
-// file, field and value in one line (issue 5 acceptance 5).
+// file, field and value in one line.
 #include "io/specimen_recipe.h"
 #include "geom/errors.h"
 
