@@ -1,8 +1,8 @@
 // Rigid DEM bodies (a plain sphere or a clump of spheres in its principal frame) and their state.
 #pragma once
 
-#include "geom/clump_template.h"
 #include "geom/sphere.h"
+#include "geom/template/clump_template.h"
 
 #include <Eigen/Geometry>
 

@@ -2,7 +2,7 @@
 // local damping, and friction rescaling that keeps the shear history.
 #pragma once
 
-#include "geom/mesh.h"
+#include "geom/mesh/mesh.h"
 
 #include <algorithm>
 #include <cmath>

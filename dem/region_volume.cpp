@@ -1,8 +1,8 @@
 #include "dem/region_volume.h"
 
 #include "geom/errors.h"
-#include "geom/slicing.h"
-#include "geom/union_of_balls.h"
+#include "geom/volume/slicing.h"
+#include "geom/volume/union_of_balls.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

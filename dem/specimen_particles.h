@@ -4,9 +4,9 @@
 
 #include "dem/body.h"
 #include "dem/placement.h"
-#include "geom/clump_template.h"
 #include "geom/random.h"
 #include "geom/sphere.h"
+#include "geom/template/clump_template.h"
 
 #include <vector>
 

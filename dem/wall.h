@@ -1,7 +1,7 @@
 // Rigid walls for DEM: planes (floor, moving platen) and the inside of a vertical cylinder.
 #pragma once
 
-#include "geom/mesh.h"
+#include "geom/mesh/mesh.h"
 
 namespace clumpkit::dem {
 

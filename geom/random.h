@@ -1,7 +1,7 @@
 // Seeded, platform-independent random numbers: generator, distributions and per-item streams.
 #pragma once
 
-#include "geom/mesh.h"
+#include "geom/mesh/mesh.h"
 
 #include <cstdint>
 

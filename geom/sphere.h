@@ -2,7 +2,7 @@
 // and DEM routine shares.
 #pragma once
 
-#include "geom/mesh.h"
+#include "geom/mesh/mesh.h"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 #include "io/mesh_io.h"
 
-#include "geom/cgal_mesh.h"
 #include "geom/errors.h"
+#include "geom/mesh/cgal_mesh.h"
 #include "io/atomic_file.h"
 
 #include <Eigen/Geometry>

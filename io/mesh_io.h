@@ -1,7 +1,7 @@
 // Triangle mesh files: read and validate STL / OBJ / PLY, write them atomically.
 #pragma once
 
-#include "geom/mesh.h"
+#include "geom/mesh/mesh.h"
 
 #include <string>
 

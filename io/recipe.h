@@ -1,7 +1,7 @@
 // Reading shape recipes (TOML): seed and fractions of particles to generate.
 #pragma once
 
-#include "geom/fill.h"
+#include "geom/fill/fill.h"
 #include "geom/shapes/shape_spec.h"
 
 #include <cstdint>

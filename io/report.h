@@ -1,7 +1,7 @@
 // JSON and CSV renderings of shape descriptors, shared by `describe`, `shapes` and `library`.
 #pragma once
 
-#include "geom/descriptors.h"
+#include "geom/descriptors/descriptors.h"
 
 #include <nlohmann/json.hpp>
 

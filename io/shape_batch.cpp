@@ -1,6 +1,6 @@
 #include "io/shape_batch.h"
 
-#include "geom/descriptors.h"
+#include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"
 #include "io/atomic_file.h"
 #include "io/mesh_io.h"

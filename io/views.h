@@ -1,7 +1,7 @@
 // Picture of a clump against its mesh: three orthogonal views in one PNG.
 #pragma once
 
-#include "geom/mesh.h"
+#include "geom/mesh/mesh.h"
 #include "geom/sphere.h"
 
 #include <string>

@@ -2,7 +2,7 @@
 // scaled node radii.
 #pragma once
 
-#include "geom/mesh.h"
+#include "geom/mesh/mesh.h"
 #include "geom/random.h"
 
 namespace clumpkit {

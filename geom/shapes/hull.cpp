@@ -1,8 +1,8 @@
 #include "geom/shapes/hull.h"
 
-#include "geom/cgal_mesh.h"
-#include "geom/descriptors.h"
+#include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"
+#include "geom/mesh/cgal_mesh.h"
 
 #include <cmath>
 #include <string>

@@ -1,7 +1,7 @@
 // Random convex-hull grains with a target weighted roundness (Zhang & Zhou 2015 §2.1).
 #pragma once
 
-#include "geom/mesh.h"
+#include "geom/mesh/mesh.h"
 #include "geom/random.h"
 
 namespace clumpkit {

@@ -2,7 +2,7 @@
 // (Hu et al. 2023 §3.1 and §3.4).
 #pragma once
 
-#include "geom/mesh.h"
+#include "geom/mesh/mesh.h"
 #include "geom/random.h"
 
 namespace clumpkit {

@@ -1,7 +1,7 @@
 // Primitive closed meshes: box, icosphere and ellipsoid, for tests and simple particles.
 #pragma once
 
-#include "geom/mesh.h"
+#include "geom/mesh/mesh.h"
 
 namespace clumpkit {
 

@@ -2,9 +2,9 @@
 // that draws one particle of it.
 #pragma once
 
-#include "geom/distribution.h"
-#include "geom/mesh.h"
+#include "geom/mesh/mesh.h"
 #include "geom/random.h"
+#include "geom/shapes/distribution.h"
 
 #include <map>
 #include <string>

@@ -1,5 +1,5 @@
 // `clumpkit describe MESH`: shape descriptors of a closed mesh.
-#include "geom/descriptors.h"
+#include "geom/descriptors/descriptors.h"
 #include "io/cli/common.h"
 #include "io/mesh_io.h"
 #include "io/report.h"

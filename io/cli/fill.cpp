@@ -1,7 +1,7 @@
 // `clumpkit fill MESH -o CLUMP.csv`: greedy maximal-inscribed-sphere clump of one mesh.
-#include "geom/fill.h"
+#include "geom/fill/fill.h"
 #include "geom/errors.h"
-#include "geom/fidelity.h"
+#include "geom/fill/fidelity.h"
 #include "io/cli/common.h"
 #include "io/clump_io.h"
 #include "io/mesh_io.h"

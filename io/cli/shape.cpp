@@ -1,5 +1,5 @@
 // `clumpkit shape <block|hull|polyhedron|ellipsoid|box>`: one particle to a mesh file.
-#include "geom/descriptors.h"
+#include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"
 #include "geom/shapes/block.h"
 #include "geom/shapes/hull.h"

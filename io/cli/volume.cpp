@@ -1,11 +1,11 @@
 // `clumpkit volume CLUMP.csv`: volume, area, centroid and inertia of a union of spheres by
 // several methods (exact power diagram, inclusion–exclusion, analytic and pixel slicing, voxels).
 #include "geom/errors.h"
-#include "geom/inclusion_exclusion.h"
-#include "geom/pixel_slicing.h"
-#include "geom/slicing.h"
-#include "geom/union_of_balls.h"
-#include "geom/voxel_volume.h"
+#include "geom/volume/inclusion_exclusion.h"
+#include "geom/volume/pixel_slicing.h"
+#include "geom/volume/slicing.h"
+#include "geom/volume/union_of_balls.h"
+#include "geom/volume/voxel_volume.h"
 #include "io/cli/common.h"
 #include "io/clump_io.h"
 #include "io/png.h"

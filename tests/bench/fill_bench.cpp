@@ -1,8 +1,8 @@
 // Sphere fill: time per fill at the default resolution (one thread), and covered fraction versus
 // sphere count on the Jin et al. 2017 block, greedy coverage fill against the biggest-sphere-first
 // baseline in the same run. Prints a Markdown table for tests/bench/RESULTS.md.
-#include "geom/fidelity.h"
-#include "geom/fill.h"
+#include "geom/fill/fidelity.h"
+#include "geom/fill/fill.h"
 #include "geom/shapes/block.h"
 #include "geom/shapes/primitives.h"
 

@@ -1,7 +1,7 @@
 // Particles per second for each shape method, generation plus all descriptors, one thread.
 // Goal: >= 200 blocks per second per core. Baseline in the same run: the cost of the
 // cheapest descriptor pass (volume + area) on the same meshes, so ratios survive noisy machines.
-#include "geom/descriptors.h"
+#include "geom/descriptors/descriptors.h"
 #include "geom/shapes/block.h"
 #include "geom/shapes/hull.h"
 #include "geom/shapes/polyhedron.h"

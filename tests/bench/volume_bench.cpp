@@ -1,14 +1,14 @@
 // Union-of-spheres volume: speed of the exact engine against the other methods in the same
 // run, Jin et al. 2017 Tables 1 and 2, and the voxel method's error against voxel size. Prints
 // Markdown for tests/bench/RESULTS.md. One thread.
-#include "geom/fidelity.h"
-#include "geom/fill.h"
-#include "geom/inclusion_exclusion.h"
-#include "geom/pixel_slicing.h"
+#include "geom/fill/fidelity.h"
+#include "geom/fill/fill.h"
 #include "geom/shapes/block.h"
-#include "geom/slicing.h"
-#include "geom/union_of_balls.h"
-#include "geom/voxel_volume.h"
+#include "geom/volume/inclusion_exclusion.h"
+#include "geom/volume/pixel_slicing.h"
+#include "geom/volume/slicing.h"
+#include "geom/volume/union_of_balls.h"
+#include "geom/volume/voxel_volume.h"
 
 #include <tbb/global_control.h>
 

@@ -1,9 +1,9 @@
 // Tests of DEM bodies made from clump templates: template identity and exact scaling of mass
 // properties (V s³, I s⁵) against the per-body union computation they replace.
 #include "dem/body.h"
-#include "geom/clump_template.h"
 #include "geom/errors.h"
 #include "geom/random.h"
+#include "geom/template/clump_template.h"
 
 #include <gtest/gtest.h>
 

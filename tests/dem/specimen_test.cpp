@@ -3,9 +3,9 @@
 #include "dem/specimen.h"
 #include "dem/region_volume.h"
 #include "dem/specimen_particles.h"
-#include "geom/clump_template.h"
 #include "geom/errors.h"
-#include "geom/union_of_balls.h"
+#include "geom/template/clump_template.h"
+#include "geom/volume/union_of_balls.h"
 
 #include <gtest/gtest.h>
 

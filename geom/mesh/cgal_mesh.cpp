@@ -1,0 +1,146 @@
+#include "geom/mesh/cgal_mesh.h"
+
+#include "geom/errors.h"
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <algorithm>
+
+namespace clumpkit {
+
+namespace {
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_3;
+using SurfaceMesh = CGAL::Surface_mesh<Point>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+SurfaceMesh to_surface_mesh(const Mesh& mesh) {
+  SurfaceMesh sm;
+  std::vector<SurfaceMesh::Vertex_index> v;
+  v.reserve(mesh.vertices.size());
+  for (const auto& p : mesh.vertices) v.push_back(sm.add_vertex(Point(p.x(), p.y(), p.z())));
+  for (const auto& t : mesh.triangles) {
+    if (sm.add_face(v[t[0]], v[t[1]], v[t[2]]) == SurfaceMesh::null_face())
+      throw InvalidInput("mesh is not a manifold surface: a triangle could not be added");
+  }
+  return sm;
+}
+
+Mesh from_surface_mesh(const SurfaceMesh& sm) {
+  Mesh mesh;
+  std::vector<int> index(sm.number_of_vertices() + sm.number_of_removed_vertices(), -1);
+  for (auto v : sm.vertices()) {
+    index[v.idx()] = static_cast<int>(mesh.vertices.size());
+    const Point& p = sm.point(v);
+    mesh.vertices.emplace_back(p.x(), p.y(), p.z());
+  }
+  for (auto f : sm.faces()) {
+    std::array<int, 3> t{};
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(sm.halfedge(f), sm)) {
+      if (k < 3) t[k] = index[v.idx()];
+      ++k;
+    }
+    if (k != 3) throw NumericError("convex hull produced a non-triangular face");
+    mesh.triangles.push_back(t);
+  }
+  return mesh;
+}
+}  // namespace
+
+Mesh convex_hull(const std::vector<Vec3>& points) {
+  // The hull is read off a Delaunay triangulation (its infinite cells) rather than taken from
+  // CGAL::convex_hull_3: in CGAL 5.5 quickhull can erase the same list node twice (CGAL issues
+  // 6543 and 8625; seen here under valgrind as a use-after-free that changed results run to
+  // run). Points are sorted and deduplicated first so the result does not depend on input order.
+  std::vector<Vec3> sorted = points;
+  auto lex = [](const Vec3& a, const Vec3& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  };
+  std::sort(sorted.begin(), sorted.end(), lex);
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  if (sorted.size() < 4)
+    throw InvalidInput("convex hull needs at least 4 distinct points, got " +
+                       std::to_string(sorted.size()));
+  for (const auto& p : sorted)
+    if (!p.allFinite()) throw InvalidInput("convex hull: a point has a non-finite coordinate");
+
+  using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;
+  using Tds = CGAL::Triangulation_data_structure_3<Vb>;
+  using Delaunay = CGAL::Delaunay_triangulation_3<K, Tds>;
+  std::vector<std::pair<Point, int>> input;
+  input.reserve(sorted.size());
+  for (std::size_t i = 0; i < sorted.size(); ++i)
+    input.emplace_back(Point(sorted[i].x(), sorted[i].y(), sorted[i].z()), static_cast<int>(i));
+  const Delaunay dt(input.begin(), input.end());
+  if (dt.dimension() < 3) throw InvalidInput("convex hull: points are coplanar or collinear");
+
+  Vec3 centre = Vec3::Zero();
+  for (const auto& p : sorted) centre += p;
+  centre /= static_cast<double>(sorted.size());
+
+  Mesh hull;
+  std::vector<int> id(sorted.size(), -1);
+  auto vertex = [&](int i) {
+    if (id[i] < 0) {
+      id[i] = static_cast<int>(hull.vertices.size());
+      hull.vertices.push_back(sorted[i]);
+    }
+    return id[i];
+  };
+  for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
+    if (!dt.is_infinite(c)) continue;
+    const int inf = c->index(dt.infinite_vertex());
+    std::array<int, 3> t;
+    for (int k = 0; k < 3; ++k) t[k] = c->vertex((inf + 1 + k) % 4)->info();
+    // Orient outward: the centre of the points is strictly inside the hull.
+    const Vec3 n = (sorted[t[1]] - sorted[t[0]]).cross(sorted[t[2]] - sorted[t[0]]);
+    if (n.dot(sorted[t[0]] - centre) < 0) std::swap(t[1], t[2]);
+    hull.triangles.push_back({vertex(t[0]), vertex(t[1]), vertex(t[2])});
+  }
+  canonicalize(hull);
+  return hull;
+}
+
+bool self_intersects(const Mesh& mesh) {
+  const SurfaceMesh sm = to_surface_mesh(mesh);
+  return PMP::does_self_intersect(sm);
+}
+
+bool orient_outward(Mesh& mesh) {
+  std::vector<Point> pts;
+  pts.reserve(mesh.vertices.size());
+  for (const auto& p : mesh.vertices) pts.emplace_back(p.x(), p.y(), p.z());
+  std::vector<std::vector<std::size_t>> polys;
+  polys.reserve(mesh.triangles.size());
+  for (const auto& t : mesh.triangles)
+    polys.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
+  const auto before = polys;
+  PMP::orient_polygon_soup(pts, polys);
+  if (pts.size() != mesh.vertices.size())
+    throw InvalidInput("mesh is not manifold: orienting it required duplicating vertices");
+  SurfaceMesh sm;
+  PMP::polygon_soup_to_polygon_mesh(pts, polys, sm);
+  if (CGAL::is_closed(sm)) PMP::orient_to_bound_a_volume(sm);
+  Mesh out = from_surface_mesh(sm);
+  bool changed = out.triangles.size() != mesh.triangles.size();
+  for (size_t i = 0; !changed && i < out.triangles.size(); ++i) {
+    // Same triangle up to rotation of indices?
+    const auto& a = out.triangles[i];
+    const auto& b = mesh.triangles[i];
+    const bool same = (a == b) || (a == std::array<int, 3>{b[1], b[2], b[0]}) ||
+                      (a == std::array<int, 3>{b[2], b[0], b[1]});
+    changed = !same;
+  }
+  mesh = std::move(out);
+  return changed;
+}
+
+}  // namespace clumpkit

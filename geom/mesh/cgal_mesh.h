@@ -1,0 +1,21 @@
+// CGAL-backed mesh operations: convex hull, self-intersection test, outward re-orientation.
+#pragma once
+
+#include "geom/mesh/mesh.h"
+
+#include <vector>
+
+namespace clumpkit {
+
+/// Convex hull of a point set as an outward-oriented triangle mesh (CGAL convex_hull_3).
+/// Throws InvalidInput if the points span less than three dimensions.
+Mesh convex_hull(const std::vector<Vec3>& points);
+
+/// True if any two non-adjacent triangles intersect (CGAL PMP::does_self_intersect).
+bool self_intersects(const Mesh& mesh);
+
+/// Makes the orientation of a closed manifold mesh consistent and outward (CGAL PMP
+/// orient_polygon_soup + orient_to_bound_a_volume). Returns true if any triangle was flipped.
+bool orient_outward(Mesh& mesh);
+
+}  // namespace clumpkit

@@ -1,0 +1,235 @@
+#include "geom/mesh/mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+namespace clumpkit {
+
+double signed_volume(const Mesh& mesh) {
+  double v = 0.0;
+  for (const auto& t : mesh.triangles) {
+    const Vec3& a = mesh.vertices[t[0]];
+    const Vec3& b = mesh.vertices[t[1]];
+    const Vec3& c = mesh.vertices[t[2]];
+    v += a.dot(b.cross(c));
+  }
+  return v / 6.0;
+}
+
+double surface_area(const Mesh& mesh) {
+  double s = 0.0;
+  for (const auto& t : mesh.triangles) {
+    const Vec3& a = mesh.vertices[t[0]];
+    s += (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a).norm();
+  }
+  return 0.5 * s;
+}
+
+namespace {
+
+// Volume integrals of 1, x, and x xᵀ over the solid, from signed tetrahedra (o, a, b, c).
+// For a tetrahedron with one vertex at the origin and volume V:
+//   ∫x dV = V (a+b+c)/4,  ∫x xᵀ dV = V/20 (a aᵀ + b bᵀ + c cᵀ + s sᵀ), s = a+b+c.
+struct Moments {
+  double volume = 0.0;
+  Vec3 first = Vec3::Zero();
+  Mat3 second = Mat3::Zero();
+};
+
+Moments moments_about(const Mesh& mesh, const Vec3& origin) {
+  Moments m;
+  for (const auto& t : mesh.triangles) {
+    const Vec3 a = mesh.vertices[t[0]] - origin;
+    const Vec3 b = mesh.vertices[t[1]] - origin;
+    const Vec3 c = mesh.vertices[t[2]] - origin;
+    const double v = a.dot(b.cross(c)) / 6.0;
+    const Vec3 s = a + b + c;
+    m.volume += v;
+    m.first += v * s / 4.0;
+    m.second +=
+        v / 20.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
+  }
+  return m;
+}
+
+Vec3 box_centre(const Mesh& mesh) {
+  const auto bb = bounding_box(mesh);
+  return 0.5 * (bb[0] + bb[1]);
+}
+
+}  // namespace
+
+Vec3 solid_centroid(const Mesh& mesh) {
+  // Integrate about the box centre to limit cancellation for meshes far from the origin.
+  const Vec3 o = box_centre(mesh);
+  const Moments m = moments_about(mesh, o);
+  return o + m.first / m.volume;
+}
+
+Mat3 solid_inertia(const Mesh& mesh) {
+  const Vec3 c = solid_centroid(mesh);
+  const Moments m = moments_about(mesh, c);
+  // Inertia from the covariance: I = tr(C) δ - C.
+  return m.second.trace() * Mat3::Identity() - m.second;
+}
+
+MeshCheck check_mesh(const Mesh& mesh) {
+  MeshCheck r;
+  const int nv = static_cast<int>(mesh.vertices.size());
+  // Directed edge counts; key = (from, to).
+  std::map<std::pair<int, int>, int> directed;
+  const auto bb =
+      mesh.vertices.empty() ? std::array<Vec3, 2>{Vec3::Zero(), Vec3::Zero()} : bounding_box(mesh);
+  const double scale = (bb[1] - bb[0]).norm();
+  for (const auto& t : mesh.triangles) {
+    bool bad_index = false;
+    for (int k = 0; k < 3; ++k) bad_index |= t[k] < 0 || t[k] >= nv;
+    if (bad_index || t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+      r.degenerate = true;
+      continue;
+    }
+    const Vec3& a = mesh.vertices[t[0]];
+    const double area2 = (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a).norm();
+    if (!(area2 > 1e-14 * scale * scale)) r.degenerate = true;
+    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+  }
+  bool oriented = true;
+  for (const auto& [e, n] : directed) {
+    if (n > 1) oriented = false;
+    if (e.first < e.second || directed.find({e.second, e.first}) == directed.end()) {
+      const auto it = directed.find({e.second, e.first});
+      const int total = n + (it == directed.end() ? 0 : it->second);
+      if (total == 1) {
+        ++r.boundary_edges;
+        oriented = false;
+      } else if (total > 2) {
+        ++r.nonmanifold_edges;
+      } else if (it == directed.end()) {
+        oriented = false;  // the two uses run in the same direction
+      }
+    }
+  }
+  // Vertex manifoldness: the triangles around each vertex must form a single fan.
+  bool vertex_manifold = true;
+  if (r.nonmanifold_edges == 0 && !mesh.triangles.empty()) {
+    std::vector<std::vector<int>> star(nv);
+    for (int f = 0; f < static_cast<int>(mesh.triangles.size()); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const int v = mesh.triangles[f][k];
+        if (v >= 0 && v < nv) star[v].push_back(f);
+      }
+    for (int v = 0; v < nv && vertex_manifold; ++v) {
+      const auto& faces = star[v];
+      if (faces.empty()) continue;
+      // Union-find over faces of the star, joined when they share an edge through v.
+      std::vector<int> parent(faces.size());
+      for (size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+      auto find = [&](int x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+      };
+      std::unordered_map<int, int> seen;  // other endpoint -> star index
+      for (size_t i = 0; i < faces.size(); ++i) {
+        for (int w : mesh.triangles[faces[i]]) {
+          if (w == v) continue;
+          auto [it, inserted] = seen.emplace(w, static_cast<int>(i));
+          if (!inserted) parent[find(static_cast<int>(i))] = find(it->second);
+        }
+      }
+      const int root = find(0);
+      for (size_t i = 1; i < faces.size(); ++i)
+        if (find(static_cast<int>(i)) != root) vertex_manifold = false;
+    }
+  }
+  r.closed = r.boundary_edges == 0 && !mesh.triangles.empty();
+  r.manifold = r.nonmanifold_edges == 0 && vertex_manifold;
+  r.oriented = oriented && r.manifold;
+  r.volume = signed_volume(mesh);
+  return r;
+}
+
+void flip_orientation(Mesh& mesh) {
+  for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+}
+
+void weld_vertices(Mesh& mesh, double relative_tolerance) {
+  if (mesh.vertices.empty()) return;
+  const auto bb = bounding_box(mesh);
+  const double tol = relative_tolerance * (bb[1] - bb[0]).norm();
+  std::vector<int> remap(mesh.vertices.size());
+  std::vector<Vec3> kept;
+  if (tol > 0.0) {
+    // Quantize to a grid of cell `tol` and merge cell matches; STL writers repeat vertices
+    // bit-for-bit, so this also merges exactly equal coordinates.
+    std::map<std::array<long long, 3>, int> cell;
+    for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+      const Vec3& p = mesh.vertices[i];
+      std::array<long long, 3> key;
+      for (int k = 0; k < 3; ++k) key[k] = std::llround((p[k] - bb[0][k]) / tol);
+      auto [it, inserted] = cell.emplace(key, static_cast<int>(kept.size()));
+      if (inserted) kept.push_back(p);
+      remap[i] = it->second;
+    }
+  } else {
+    std::map<std::array<double, 3>, int> same;  // exact matches only
+    for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+      const Vec3& p = mesh.vertices[i];
+      auto [it, inserted] =
+          same.emplace(std::array<double, 3>{p.x(), p.y(), p.z()}, static_cast<int>(kept.size()));
+      if (inserted) kept.push_back(p);
+      remap[i] = it->second;
+    }
+  }
+  std::vector<std::array<int, 3>> tris;
+  tris.reserve(mesh.triangles.size());
+  for (auto t : mesh.triangles) {
+    for (int& k : t) k = remap[k];
+    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) tris.push_back(t);
+  }
+  mesh.vertices = std::move(kept);
+  mesh.triangles = std::move(tris);
+}
+
+std::vector<int> lexicographic_rank(const std::vector<Vec3>& points) {
+  std::vector<int> order(points.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    const Vec3& p = points[a];
+    const Vec3& q = points[b];
+    return std::lexicographical_compare(p.data(), p.data() + 3, q.data(), q.data() + 3);
+  });
+  std::vector<int> rank(points.size());
+  for (std::size_t i = 0; i < order.size(); ++i) rank[order[i]] = static_cast<int>(i);
+  return rank;
+}
+
+void canonicalize(Mesh& mesh) {
+  const std::vector<int> rank = lexicographic_rank(mesh.vertices);
+  std::vector<Vec3> vertices(mesh.vertices.size());
+  for (std::size_t i = 0; i < rank.size(); ++i) vertices[rank[i]] = mesh.vertices[i];
+  for (auto& t : mesh.triangles) {
+    for (int& k : t) k = rank[k];
+    // Rotate (keeps orientation) so the smallest index comes first.
+    while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
+  }
+  std::sort(mesh.triangles.begin(), mesh.triangles.end());
+  mesh.vertices = std::move(vertices);
+}
+
+void transform(Mesh& mesh, const Mat3& rotation, const Vec3& translation) {
+  for (auto& p : mesh.vertices) p = rotation * p + translation;
+}
+
+std::array<Vec3, 2> bounding_box(const Mesh& mesh) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = -lo;
+  for (const auto& p : mesh.vertices) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return {lo, hi};
+}
+
+}  // namespace clumpkit
