@@ -4,6 +4,7 @@
 
 #include "dem/body.h"
 #include "dem/contact.h"
+#include "dem/neighbour_search.h"
 #include "dem/wall.h"
 
 #include <cstdint>
@@ -139,14 +140,8 @@ class World {
   std::int64_t builds_ = 0;
 
   // Derived state of the fast path (never saved; see world.cpp).
-  std::vector<int> body_first_sphere_;      // per body, then the sphere count
-  std::vector<std::vector<int>> partners_;  // scratch of build_neighbours
-  std::vector<std::int64_t> cell_start_;    // scratch of build_neighbours
-  struct CellSphere {  // a sphere as build_neighbours scans it: cell by cell, in index order
-    double x, y, z, r;
-    int index, body;
-  };
-  std::vector<CellSphere> cell_spheres_;   // scratch of build_neighbours
+  std::vector<int> body_first_sphere_;     // per body, then the sphere count
+  NeighbourGrid grid_;                     // scratch of build_neighbours
   std::vector<std::size_t> cand_begin_;    // first candidate (i, ·) per sphere i
   std::vector<std::size_t> down_begin_;    // per sphere j: range in down_
   std::vector<std::size_t> down_;          // candidates (·, j) grouped by j, in order
