@@ -215,6 +215,32 @@ RunOutcome settle(World& world, const SpecimenSpec& spec, long stage_start,
   }
 }
 
+/// A settling stage of the layer or the specimen, with its checkpoint files in `dir`:
+/// NAME.done + NAME.world once finished (the world is loaded as it was saved), NAME.ckpt while
+/// it runs (a resumed run continues from it), else `start()` makes the initial world. After
+/// settling, `finish` (if any) edits the world before it is saved.
+World settled_stage(const std::string& name, const fs::path& dir, const SpecimenSpec& spec,
+                    const SpecimenControl& control, const std::function<World()>& start,
+                    const std::function<void(double)>& progress,
+                    const std::function<void(World&)>& finish = {}) {
+  const bool checkpoints = !dir.empty();
+  const fs::path done = checkpoints ? dir / (name + ".done") : fs::path();
+  const fs::path saved = checkpoints ? dir / (name + ".world") : fs::path();
+  if (checkpoints && control.resume && fs::exists(done)) return load_checkpoint(saved.string());
+  const fs::path ckpt = checkpoints ? dir / (name + ".ckpt") : fs::path();
+  CheckpointInfo info;
+  const bool resumed = checkpoints && control.resume && fs::exists(ckpt);
+  World world = resumed ? load_checkpoint(ckpt.string(), &info) : start();
+  settle(world, spec, 0, name, ckpt, control, progress, resumed ? &info : nullptr);
+  if (finish) finish(world);
+  if (checkpoints) {
+    save_checkpoint(saved.string(), world);
+    write_record(done, {{"steps", std::to_string(world.steps())}});
+    fs::remove(ckpt);
+  }
+  return world;
+}
+
 void check_spec(const SpecimenSpec& s) {
   auto bad = [](const std::string& what) { throw InvalidInput("specimen: " + what); };
   if (!(s.radius > 0) || !(s.height > 0)) bad("container radius and height must be positive");
@@ -452,36 +478,18 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
 
     // Stage 2: one layer at the target porosity, compacted at μ*.
     t0 = Clock::now();
-    World layer_world;
-    const fs::path layer_done = checkpoints ? dir / ("layer" + tag + ".done") : fs::path();
-    const fs::path layer_world_file = checkpoints ? dir / ("layer" + tag + ".world") : fs::path();
-    if (checkpoints && control.resume && fs::exists(layer_done)) {
-      layer_world = load_checkpoint(layer_world_file.string());
-    } else {
-      const fs::path ckpt = checkpoints ? dir / ("layer" + tag + ".ckpt") : fs::path();
-      CheckpointInfo info;
-      const bool resumed = checkpoints && control.resume && fs::exists(ckpt);
-      if (resumed) {
-        layer_world = load_checkpoint(ckpt.string(), &info);
-      } else {
-        if (layer_placed.empty()) {
-          Rng place_rng = Rng::stream(spec.seed, layer_placement);
-          layer_placed = place_in_cylinder(placement_items(layer.bodies), spec.radius, place_rng);
-        }
-        layer_world = scaled_world(layer.bodies, layer_placed, spec, friction, lambda);
-      }
-      settle(
-          layer_world, spec, 0, "layer" + tag, ckpt, control,
-          [&](double f) { report("layer compaction", base + 0.4 * round_share * f); },
-          resumed ? &info : nullptr);
-      // μ back to the material friction for stage 3, shear history rescaled.
-      layer_world.rescale_friction(spec.contact.friction);
-      if (checkpoints) {
-        save_checkpoint(layer_world_file.string(), layer_world);
-        write_record(layer_done, {{"steps", std::to_string(layer_world.steps())}});
-        fs::remove(ckpt);
-      }
-    }
+    // μ back to the material friction for stage 3 once compacted, shear history rescaled.
+    const World layer_world = settled_stage(
+        "layer" + tag, checkpoints ? dir : fs::path(), spec, control,
+        [&] {
+          if (layer_placed.empty()) {
+            Rng place_rng = Rng::stream(spec.seed, layer_placement);
+            layer_placed = place_in_cylinder(placement_items(layer.bodies), spec.radius, place_rng);
+          }
+          return scaled_world(layer.bodies, layer_placed, spec, friction, lambda);
+        },
+        [&](double f) { report("layer compaction", base + 0.4 * round_share * f); },
+        [&](World& w) { w.rescale_friction(spec.contact.friction); });
     {
       const std::vector<double> volumes = body_volumes(layer_world);
       result.layer_porosity_compacted =
@@ -495,38 +503,22 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
     // Stage 3: layered duplication of the layer (already at the material friction): each copy
     // shifted up by the layer's top, so nothing overlaps, then settled to equilibrium.
     t0 = Clock::now();
-    const fs::path spec_done = checkpoints ? dir / ("specimen" + tag + ".done") : fs::path();
-    const fs::path spec_world_file = checkpoints ? dir / ("specimen" + tag + ".world") : fs::path();
-    if (checkpoints && control.resume && fs::exists(spec_done)) {
-      world = load_checkpoint(spec_world_file.string());
-    } else {
-      const fs::path ckpt = checkpoints ? dir / ("specimen" + tag + ".ckpt") : fs::path();
-      CheckpointInfo info;
-      const bool resumed = checkpoints && control.resume && fs::exists(ckpt);
-      if (resumed) {
-        world = load_checkpoint(ckpt.string(), &info);
-      } else {
-        world = World(layer_world.options());
-        for (int copy = 0; copy < spec.layers; ++copy)
-          for (const Body& b : layer_world.bodies()) {
-            Body c = b;
-            c.position.z() += copy * result.layer_height;
-            c.velocity.setZero();
-            c.angular_velocity.setZero();
-            world.add_body(std::move(c));
-          }
-        for (const Wall& w : layer_world.walls()) world.add_wall(w);
-      }
-      settle(
-          world, spec, 0, "specimen" + tag, ckpt, control,
-          [&](double f) { report("layered specimen", base + round_share * (0.4 + 0.6 * f)); },
-          resumed ? &info : nullptr);
-      if (checkpoints) {
-        save_checkpoint(spec_world_file.string(), world);
-        write_record(spec_done, {{"steps", std::to_string(world.steps())}});
-        fs::remove(ckpt);
-      }
-    }
+    world = settled_stage(
+        "specimen" + tag, checkpoints ? dir : fs::path(), spec, control,
+        [&] {
+          World stacked(layer_world.options());
+          for (int copy = 0; copy < spec.layers; ++copy)
+            for (const Body& b : layer_world.bodies()) {
+              Body c = b;
+              c.position.z() += copy * result.layer_height;
+              c.velocity.setZero();
+              c.angular_velocity.setZero();
+              stacked.add_body(std::move(c));
+            }
+          for (const Wall& w : layer_world.walls()) stacked.add_wall(w);
+          return stacked;
+        },
+        [&](double f) { report("layered specimen", base + round_share * (0.4 + 0.6 * f)); });
     result.steps.emplace_back("specimen" + tag, static_cast<long>(world.steps()));
 
     // Stage 4: measurement (masses do not enter it).
