@@ -9,6 +9,32 @@
 
 namespace clumpkit::dem {
 
+std::vector<ParticleClass> replace_fines(const std::vector<SieveClass>& gradation,
+                                         double fines_below, double fines_min, double fines_max,
+                                         double soil_rock_threshold) {
+  std::vector<ParticleClass> classes;
+  double fines = 0.0;
+  for (const SieveClass& c : gradation) {
+    if (c.mass_percent <= 0) continue;
+    if (c.max_size <= fines_below + 1e-12) {
+      fines += c.mass_percent;
+      continue;
+    }
+    classes.push_back(
+        {c.min_size, c.max_size, c.mass_percent, c.min_size >= soil_rock_threshold - 1e-12});
+  }
+  if (fines > 0) {
+    auto it = std::find_if(classes.begin(), classes.end(), [&](const ParticleClass& c) {
+      return std::abs(c.min_size - fines_min) < 1e-12 && std::abs(c.max_size - fines_max) < 1e-12;
+    });
+    if (it != classes.end())
+      it->mass_percent += fines;
+    else
+      classes.push_back({fines_min, fines_max, fines, fines_min >= soil_rock_threshold});
+  }
+  return classes;
+}
+
 std::vector<double> class_volumes(const std::vector<ParticleClass>& classes, double solid_volume,
                                   double soil_density, double rock_density) {
   if (!(solid_volume > 0) || !(soil_density > 0) || !(rock_density > 0))

@@ -19,6 +19,23 @@ struct ParticleClass {
   bool rock = false;                      ///< rock clumps (true) or soil spheres (false)
 };
 
+/// One sieve class of a gradation as measured (SI): sieve sizes and the percent of the total
+/// solid mass between them.
+struct SieveClass {
+  double min_size = 0.0, max_size = 0.0;  ///< m
+  double mass_percent = 0.0;
+};
+
+/// The particle classes of a gradation (Jin et al. 2017 §4.1): classes without mass are dropped;
+/// the fines (classes whose max size is at most fines_below) are removed and their mass is moved
+/// into the class [fines_min, fines_max] (added at the end when the gradation has no such
+/// class), so the model needs no particles finer than fines_min; classes whose min size is at
+/// least soil_rock_threshold are rock (clumps), the others soil (spheres). Sizes compare with a
+/// tolerance of 1e-12 m. Total mass percent is kept.
+std::vector<ParticleClass> replace_fines(const std::vector<SieveClass>& gradation,
+                                         double fines_below, double fines_min, double fines_max,
+                                         double soil_rock_threshold);
+
 /// A rock clump of the library: its clump template (spheres in the principal frame, exact
 /// unit-density volume and principal moments, as the library computed them) and its sieve size
 /// W (the intermediate dimension, Jin et al. 2017 §1.1), in the library's units; layer_particles

@@ -107,26 +107,10 @@ dem::SpecimenSpec specimen_spec(const SpecimenRecipe& r, std::vector<dem::RockTe
   s.calibration_frictions = r.calibration_frictions;
   s.seed = r.seed;
   s.templates = std::move(templates);
-  // Fines (max size <= fines_below) move by mass into [fines_min, fines_max].
-  double fines = 0.0;
-  for (const SizeClass& c : r.classes) {
-    if (c.percent <= 0) continue;
-    if (c.max <= r.fines_below + 1e-12) {
-      fines += c.percent;
-      continue;
-    }
-    s.classes.push_back({c.min, c.max, c.percent, c.min >= r.soil_rock_threshold - 1e-12});
-  }
-  if (fines > 0) {
-    auto it = std::find_if(s.classes.begin(), s.classes.end(), [&](const dem::ParticleClass& c) {
-      return std::abs(c.min_size - r.fines_min) < 1e-12 &&
-             std::abs(c.max_size - r.fines_max) < 1e-12;
-    });
-    if (it != s.classes.end())
-      it->mass_percent += fines;
-    else
-      s.classes.push_back({r.fines_min, r.fines_max, fines, r.fines_min >= r.soil_rock_threshold});
-  }
+  std::vector<dem::SieveClass> gradation;
+  for (const SizeClass& c : r.classes) gradation.push_back({c.min, c.max, c.percent});
+  s.classes =
+      dem::replace_fines(gradation, r.fines_below, r.fines_min, r.fines_max, r.soil_rock_threshold);
   return s;
 }
 

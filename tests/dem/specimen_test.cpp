@@ -30,6 +30,38 @@ TEST(SpecimenParticles, ClassVolumesFollowMassAndDensity) {
   EXPECT_THROW(class_volumes(classes, -1.0, 2700, 2870), InvalidInput);
 }
 
+// Jin et al. 2017 §4.1: soil finer than 5 mm is replaced by the same mass of 5–10 mm.
+TEST(SpecimenParticles, FinesMoveByMassIntoTheReplacementClass) {
+  const std::vector<SieveClass> gradation = {
+      {0.0, 0.001, 4.0},  {0.001, 0.005, 11.0}, {0.005, 0.01, 20.0}, {0.01, 0.02, 25.0},
+      {0.02, 0.04, 30.0}, {0.04, 0.06, 10.0},   {0.06, 0.08, 0.0}};
+  const auto c = replace_fines(gradation, 0.005, 0.005, 0.010, 0.02);
+  ASSERT_EQ(c.size(), 4u);  // two fines classes merged, the empty class dropped
+  EXPECT_EQ(c[0].min_size, 0.005);
+  EXPECT_DOUBLE_EQ(c[0].mass_percent, 20.0 + 4.0 + 11.0);
+  EXPECT_FALSE(c[0].rock);
+  EXPECT_FALSE(c[1].rock);  // 10–20 mm: soil, below the 20 mm threshold
+  EXPECT_TRUE(c[2].rock);   // 20–40 mm
+  EXPECT_TRUE(c[3].rock);
+  double total = 0;
+  for (const ParticleClass& k : c) total += k.mass_percent;
+  EXPECT_DOUBLE_EQ(total, 100.0);  // mass kept
+  // No 5–10 mm class in the gradation: the replacement class is added at the end.
+  const auto added =
+      replace_fines({{0.0, 0.005, 15.0}, {0.02, 0.04, 85.0}}, 0.005, 0.005, 0.01, 0.02);
+  ASSERT_EQ(added.size(), 2u);
+  EXPECT_EQ(added[1].min_size, 0.005);
+  EXPECT_EQ(added[1].max_size, 0.01);
+  EXPECT_EQ(added[1].mass_percent, 15.0);
+  EXPECT_FALSE(added[1].rock);
+  // Nothing finer than fines_below: the gradation passes unchanged.
+  const auto same =
+      replace_fines({{0.005, 0.01, 40.0}, {0.02, 0.04, 60.0}}, 0.005, 0.005, 0.01, 0.02);
+  ASSERT_EQ(same.size(), 2u);
+  EXPECT_EQ(same[0].mass_percent, 40.0);
+  EXPECT_TRUE(same[1].rock);
+}
+
 TEST(SpecimenParticles, LayerFillsEachClassToWithinOneParticle) {
   RockTemplate t;  // two unit balls one apart: W measured as 2, exact union mass properties
   t.clump = make_clump_template(Clump{{{Vec3(-0.5, 0, 0), 1.0}, {Vec3(0.5, 0, 0), 1.0}}});
