@@ -138,23 +138,27 @@ constexpr std::size_t kChecksumBytes = 8;
 
 }  // namespace
 
-/// Reads and restores World's private state (declared a friend in dem/world.h).
-struct CheckpointAccess {
+namespace {
+
+// The world through its public interface: options, bodies, walls, contact lists and
+// World::list_state (clock and Verlet lists).
+struct WorldCodec {
   static void write(Writer& w, const World& world) {
-    const WorldOptions& o = world.options_;
+    const WorldOptions& o = world.options();
+    const World::ListState lists = world.list_state();
     w.vec(o.gravity);
     w.f64(o.timestep);
     w.f64(o.skin);
     w.f64(o.near_skin_fraction);
     w.f64(o.contact.kn), w.f64(o.contact.ks), w.f64(o.contact.friction);
     w.f64(o.contact.damping_ratio), w.f64(o.contact.local_damping);
-    w.i64(world.steps_);
-    w.f64(world.time_);
-    w.i64(world.builds_);
-    w.u8(world.dirty_ ? 1 : 0);
+    w.i64(lists.steps);
+    w.f64(lists.time);
+    w.i64(lists.builds);
+    w.u8(lists.stale ? 1 : 0);
 
-    w.u64(world.bodies_.size());
-    for (const Body& b : world.bodies_) {
+    w.u64(world.bodies().size());
+    for (const Body& b : world.bodies()) {
       w.u64(b.spheres.size());
       for (const Sphere& s : b.spheres) w.vec(s.center), w.f64(s.radius);
       w.f64(b.mass);
@@ -167,25 +171,25 @@ struct CheckpointAccess {
       w.i32(b.template_id);
       w.f64(b.scale);
     }
-    w.u64(world.walls_.size());
-    for (const Wall& wall : world.walls_) {
+    w.u64(world.walls().size());
+    for (const Wall& wall : world.walls()) {
       w.u8(wall.kind == Wall::Kind::plane ? 0 : 1);
       w.vec(wall.point), w.vec(wall.normal), w.f64(wall.radius), w.vec(wall.velocity);
     }
-    w.u64(world.contacts_.size());
-    for (const PairContact& c : world.contacts_) w.i32(c.i), w.i32(c.j), w.state(c.state);
-    w.u64(world.wall_contacts_.size());
-    for (const WallContact& c : world.wall_contacts_)
+    w.u64(world.contacts().size());
+    for (const PairContact& c : world.contacts()) w.i32(c.i), w.i32(c.j), w.state(c.state);
+    w.u64(world.wall_contacts().size());
+    for (const WallContact& c : world.wall_contacts())
       w.i32(c.sphere), w.i32(c.wall), w.state(c.state);
-    w.u64(world.sphere_at_build_.size());
-    for (const Vec3& x : world.sphere_at_build_) w.vec(x);
-    w.u64(world.neighbours_.size());
-    for (const auto& [i, j] : world.neighbours_) w.i32(i), w.i32(j);
+    w.u64(lists.build_positions.size());
+    for (const Vec3& x : lists.build_positions) w.vec(x);
+    w.u64(lists.skin_pairs.size());
+    for (const auto& [i, j] : lists.skin_pairs) w.i32(i), w.i32(j);
     // The near list itself is filtered again on loading, from these.
-    w.u64(world.sphere_at_filter_.size());
-    for (const Vec3& x : world.sphere_at_filter_) w.vec(x);
-    w.f64(world.near_limit_);
-    w.i64(world.filters_);
+    w.u64(lists.filter_positions.size());
+    for (const Vec3& x : lists.filter_positions) w.vec(x);
+    w.f64(lists.near_limit);
+    w.i64(lists.filters);
   }
 
   static World read(Reader& r) {
@@ -239,7 +243,7 @@ struct CheckpointAccess {
       } catch (const InvalidInput& e) {
         r.fail("body " + std::to_string(k) + ": " + e.what());
       }
-      world.bodies_.back().orientation = q;  // exact bits, not re-normalised
+      world.bodies().back().orientation = q;  // exact bits, not re-normalised
     }
 
     const std::size_t walls = r.count(1 + 10 * 8, "wall");
@@ -254,7 +258,7 @@ struct CheckpointAccess {
     }
 
     const int n_spheres = world.sphere_count();
-    const int n_walls = static_cast<int>(world.walls_.size());
+    const int n_walls = static_cast<int>(world.walls().size());
     auto check_sphere = [&](int s, const char* what) {
       if (s < 0 || s >= n_spheres)
         r.fail(std::string(what) + " refers to sphere " + std::to_string(s) + " of " +
@@ -262,15 +266,15 @@ struct CheckpointAccess {
     };
 
     const std::size_t contacts = r.count(8 + kStateBytes, "contact");
-    world.contacts_.resize(contacts);
-    for (PairContact& c : world.contacts_) {
+    std::vector<PairContact> pair_contacts(contacts);
+    for (PairContact& c : pair_contacts) {
       c.i = r.i32(), c.j = r.i32();
       check_sphere(c.i, "contact"), check_sphere(c.j, "contact");
       c.state = r.state();
     }
     const std::size_t wall_contacts = r.count(8 + kStateBytes, "wall contact");
-    world.wall_contacts_.resize(wall_contacts);
-    for (WallContact& c : world.wall_contacts_) {
+    std::vector<WallContact> wall_list(wall_contacts);
+    for (WallContact& c : wall_list) {
       c.sphere = r.i32(), c.wall = r.i32();
       check_sphere(c.sphere, "wall contact");
       if (c.wall < 0 || c.wall >= n_walls)
@@ -288,27 +292,32 @@ struct CheckpointAccess {
       out.resize(count);
       for (Vec3& x : out) x = r.vec();
     };
-    read_positions(world.sphere_at_build_, "neighbour list");
+    World::ListState lists;
+    read_positions(lists.build_positions, "neighbour list");
     const std::size_t candidates = r.count(8, "neighbour pair");
-    world.neighbours_.resize(candidates);
-    for (auto& [i, j] : world.neighbours_) {
+    lists.skin_pairs.resize(candidates);
+    for (auto& [i, j] : lists.skin_pairs) {
       i = r.i32(), j = r.i32();
       check_sphere(i, "neighbour pair"), check_sphere(j, "neighbour pair");
     }
-    read_positions(world.sphere_at_filter_, "near list");
-    world.near_limit_ = r.f64();
-    if (!(world.near_limit_ >= 0.0)) r.fail("corrupt near-list limit");
-    world.filters_ = r.i64();
-    world.near_valid_ = false;  // filtered from the restored lists at the next step
-
-    world.steps_ = steps;
-    world.time_ = time;
-    world.builds_ = builds;
-    world.dirty_ = dirty == 1;
-    world.update_sphere_positions();
+    read_positions(lists.filter_positions, "near list");
+    lists.near_limit = r.f64();
+    if (!(lists.near_limit >= 0.0)) r.fail("corrupt near-list limit");
+    lists.filters = r.i64();
+    lists.steps = steps;
+    lists.time = time;
+    lists.builds = builds;
+    lists.stale = dirty == 1;
+    try {
+      world.restore(std::move(lists), std::move(pair_contacts), std::move(wall_list));
+    } catch (const InvalidInput& e) {
+      r.fail(e.what());
+    }
     return world;
   }
 };
+
+}  // namespace
 
 void save_checkpoint(const std::string& path, const World& world, const CheckpointInfo& info) {
   Writer w;
@@ -316,7 +325,7 @@ void save_checkpoint(const std::string& path, const World& world, const Checkpoi
   w.u32(kCheckpointVersion);
   w.str(info.stage);
   for (std::uint64_t v : info.random_state) w.u64(v);
-  CheckpointAccess::write(w, world);
+  WorldCodec::write(w, world);
   w.u64(fnv1a(w.bytes.data(), w.bytes.size()));
 
   const std::string tmp = path + ".tmp";
@@ -368,7 +377,7 @@ World load_checkpoint(const std::string& path, CheckpointInfo* info) {
   CheckpointInfo read_info;
   read_info.stage = header.str("stage");
   for (std::uint64_t& v : read_info.random_state) v = header.u64();
-  World world = CheckpointAccess::read(header);
+  World world = WorldCodec::read(header);
   if (header.position() != end)
     header.fail(std::to_string(end - header.position()) + " unexpected bytes before the checksum");
   if (info) *info = std::move(read_info);

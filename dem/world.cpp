@@ -43,6 +43,114 @@ inline Vec3 moment(const Vec3& p, const Vec3& x, const Vec3& f) {
 
 }  // namespace
 
+namespace detail {
+
+// The packed records of step(count) (see StepCache).
+struct Kinematics {  // the translational and spin state of a body: what the contact kernels read
+  Vec3 position, velocity, angular_velocity;
+  double mass;
+};
+
+struct Wrench {  // a force and a torque
+  Vec3 force, torque;
+};
+
+enum class Spin : std::uint8_t {
+  plain_sphere,  // isotropic, one sphere on the origin: orientation not integrated
+  isotropic,     // Ixx = Iyy = Izz: ω = L/I directly
+  general,       // midpoint quaternion integration
+  locked         // rotation_locked: translation only
+};
+
+struct Rotation {  // what the integrator reads of a body's rotation
+  Eigen::Quaterniond orientation;
+  Vec3 moments;
+  Spin spin;
+};
+
+struct SlotOut {
+  Vec3 force, point;
+};
+
+struct SlotForce {
+  Vec3 shear;
+  double normal_force;
+};
+
+struct SlotGeometry {
+  Vec3 normal, point;
+  double overlap;
+};
+
+}  // namespace detail
+
+// What World::step derives from the persistent state and keeps between calls: the index of the
+// near list, per-candidate contact slots, wall candidates and the packed body state. Never saved:
+// every part is rebuilt from the persistent state when marked stale (a fresh cache is all stale).
+struct detail::StepCache {
+  NeighbourGrid grid_;                     // scratch of build_neighbours
+  std::vector<std::size_t> cand_begin_;    // first candidate (i, ·) per sphere i
+  std::vector<std::size_t> down_begin_;    // per sphere j: range in down_
+  std::vector<std::size_t> down_;          // candidates (·, j) grouped by j, in order
+  std::vector<std::size_t> body_begin_;    // per body: range in body_items_
+  std::vector<std::uint64_t> body_items_;  // 2·candidate + (1 when the body holds j)
+  // During step(count) the bodies' state lives in these packed arrays (loaded from bodies_ when
+  // the call begins, stored back when it ends), so the per-step passes stream small records
+  // instead of whole Body objects with their sphere vectors.
+  std::vector<Kinematics> kinematics_;  // per body
+  std::vector<Wrench> body_wrench_;     // per body: gravity + contacts of the last step
+  std::vector<Rotation> rotation_;      // per body
+  // Per candidate: the force on the body of j and its point of application, written by the
+  // contact kernel in candidate order (zero while not touching); each body gathers its items
+  // (body_items_) and forms ±force and the torque about its own centroid.
+  std::vector<SlotOut> slot_out_;
+  // Per body: one of its pairs touched in this step's contact pass (else its items are all zero
+  // and the sum skips them: the sums start from gravity and +0 and never reach −0, so adding ±0
+  // would change no bit). A per-body test, predictable both in free fall and in a packing.
+  std::vector<std::uint8_t> body_touched_;
+  // Per candidate: the normal dashpot 2·β·sqrt(m_eff·kn) (update_contact's formula), computed
+  // when the candidates or the masses change instead of at every contact and step.
+  std::vector<double> slot_damping_;
+  bool damping_valid_ = false;
+  // Per candidate, the contact state in two parts: what the contact law carries from step to
+  // step (read and written every step), and the geometry (normal, point, overlap), which only
+  // the contact lists report, so it is written on the last step of step(count) alone.
+  std::vector<SlotForce> slot_force_;
+  std::vector<SlotGeometry> slot_geometry_;
+  bool record_geometry_ = true;                 // this step's contact pass writes slot_geometry_
+  std::vector<std::uint8_t> slot_active_;       // per candidate: touching at the last step
+  std::vector<std::pair<int, int>> wall_cand_;  // sorted (sphere, wall)
+  std::vector<ContactState> wall_slot_state_;   // per wall candidate
+  std::vector<std::uint8_t> wall_slot_active_;  // per wall candidate
+  std::vector<std::size_t> body_wall_begin_;    // per body: range in wall_cand_
+  std::vector<Wall> walls_at_build_;            // walls when wall_cand_ was built
+  std::vector<std::size_t> scratch_;            // counts / offsets
+  std::vector<std::uint8_t> filter_keep_;       // scratch of filter_candidates
+  bool positions_fresh_ = false;  // sphere_world_ and moved_ set by integrate this call
+  bool moved_ = true;             // a sphere moved more than sqrt(near_limit_) since the filter
+  bool pairs_valid_ = false;      // slots mirror contacts_ for the current candidates_
+  bool walls_valid_ = false;      // wall slots mirror wall_contacts_ for the current wall_cand_
+};
+
+namespace detail {
+StepCacheHolder::StepCacheHolder() : cache_(std::make_unique<StepCache>()) {}
+StepCacheHolder::~StepCacheHolder() = default;
+StepCacheHolder::StepCacheHolder(const StepCacheHolder& other)
+    : cache_(std::make_unique<StepCache>(other.get())) {}
+StepCacheHolder& StepCacheHolder::operator=(const StepCacheHolder& other) {
+  if (this != &other) cache_ = std::make_unique<StepCache>(other.get());
+  return *this;
+}
+StepCacheHolder::StepCacheHolder(StepCacheHolder&& other) noexcept = default;
+StepCacheHolder& StepCacheHolder::operator=(StepCacheHolder&& other) noexcept = default;
+StepCache& StepCacheHolder::get() const {
+  if (!cache_) cache_ = std::make_unique<StepCache>();
+  return *cache_;
+}
+}  // namespace detail
+
+using namespace detail;
+
 World::World(WorldOptions options) : options_(options) {
   if (!(options_.timestep > 0.0) || !std::isfinite(options_.timestep))
     throw InvalidInput("DEM world: timestep must be positive, got " +
@@ -57,6 +165,7 @@ World::World(WorldOptions options) : options_(options) {
 }
 
 int World::add_body(Body body) {
+  StepCache& sc = cache_.get();
   if (body.spheres.empty()) throw InvalidInput("DEM world: body has no spheres");
   if (!(body.mass > 0.0) || !(body.moments.minCoeff() > 0.0))
     throw InvalidInput("DEM world: body mass and moments must be positive");
@@ -71,13 +180,14 @@ int World::add_body(Body body) {
   bodies_.push_back(std::move(body));
   sphere_world_.resize(sphere_body_.size());
   dirty_ = true;
-  pairs_valid_ = walls_valid_ = false;
+  sc.pairs_valid_ = sc.walls_valid_ = false;
   return index;
 }
 
 int World::add_wall(const Wall& wall) {
+  StepCache& sc = cache_.get();
   walls_.push_back(wall);
-  walls_valid_ = false;
+  sc.walls_valid_ = false;
   return static_cast<int>(walls_.size()) - 1;
 }
 
@@ -116,10 +226,12 @@ bool World::update_positions_and_check() {
 // The skin list (dem/neighbour_search.h): pairs of different bodies closer than
 // r_i + r_j + skin at the current positions, which become the build positions.
 void World::build_neighbours() {
+  StepCache& sc = cache_.get();
   ++builds_;
   dirty_ = false;
   sphere_at_build_ = sphere_world_;
-  find_skin_pairs(sphere_world_, sphere_radius_, sphere_body_, options_.skin, grid_, neighbours_);
+  find_skin_pairs(sphere_world_, sphere_radius_, sphere_body_, options_.skin, sc.grid_,
+                  neighbours_);
 }
 
 // Called once a sphere has moved more than sqrt(near_limit_) since the last filter (or there is
@@ -160,135 +272,143 @@ bool World::refresh_neighbours() {
 
 // The near list: pairs of neighbours_ closer than r_i + r_j + near skin at sphere_at_filter_.
 void World::filter_candidates() {
+  StepCache& sc = cache_.get();
   ++filters_;
   filter_pairs(neighbours_, sphere_at_filter_, sphere_radius_,
-               options_.near_skin_fraction * options_.skin, filter_keep_, candidates_);
+               options_.near_skin_fraction * options_.skin, sc.filter_keep_, candidates_);
   near_valid_ = true;
 }
 
 // Index of the candidate list: per sphere its candidates as i (a range of candidates_) and as j
-// (down_), per body every candidate it takes part in, in candidate order — the order in which
+// (sc.down_), per body every candidate it takes part in, in candidate order — the order in which
 // the serial sum of the reference implementation added them — and empty slots.
 void World::derive_pair_index() {
+  StepCache& sc = cache_.get();
   const std::size_t n = sphere_body_.size();
   const std::size_t m = candidates_.size();
-  cand_begin_.assign(n + 1, 0);
-  down_begin_.assign(n + 1, 0);
-  for (const auto& [i, j] : candidates_) ++cand_begin_[i + 1], ++down_begin_[j + 1];
+  sc.cand_begin_.assign(n + 1, 0);
+  sc.down_begin_.assign(n + 1, 0);
+  for (const auto& [i, j] : candidates_) ++sc.cand_begin_[i + 1], ++sc.down_begin_[j + 1];
   for (std::size_t s = 0; s < n; ++s) {
-    cand_begin_[s + 1] += cand_begin_[s];
-    down_begin_[s + 1] += down_begin_[s];
+    sc.cand_begin_[s + 1] += sc.cand_begin_[s];
+    sc.down_begin_[s + 1] += sc.down_begin_[s];
   }
-  down_.resize(m);
-  scratch_.assign(down_begin_.begin(), down_begin_.end() - 1);
-  for (std::size_t k = 0; k < m; ++k) down_[scratch_[candidates_[k].second]++] = k;
+  sc.down_.resize(m);
+  sc.scratch_.assign(sc.down_begin_.begin(), sc.down_begin_.end() - 1);
+  for (std::size_t k = 0; k < m; ++k) sc.down_[sc.scratch_[candidates_[k].second]++] = k;
 
   const std::size_t nb = bodies_.size();
-  body_begin_.assign(nb + 1, 0);
+  sc.body_begin_.assign(nb + 1, 0);
   for (std::size_t b = 0; b < nb; ++b) {
     std::size_t count = 0;
     for (int s = body_first_sphere_[b]; s < body_first_sphere_[b + 1]; ++s)
-      count += (cand_begin_[s + 1] - cand_begin_[s]) + (down_begin_[s + 1] - down_begin_[s]);
-    body_begin_[b + 1] = body_begin_[b] + count;
+      count +=
+          (sc.cand_begin_[s + 1] - sc.cand_begin_[s]) + (sc.down_begin_[s + 1] - sc.down_begin_[s]);
+    sc.body_begin_[b + 1] = sc.body_begin_[b] + count;
   }
-  body_items_.resize(body_begin_[nb]);
+  sc.body_items_.resize(sc.body_begin_[nb]);
   parallel_items(nb, [&](std::size_t b) {
-    std::size_t out = body_begin_[b];
+    std::size_t out = sc.body_begin_[b];
     for (int s = body_first_sphere_[b]; s < body_first_sphere_[b + 1]; ++s) {
-      for (std::size_t d = down_begin_[s]; d < down_begin_[s + 1]; ++d)
-        body_items_[out++] = 2 * static_cast<std::uint64_t>(down_[d]) + 1;  // holds j: +f
-      for (std::size_t k = cand_begin_[s]; k < cand_begin_[s + 1]; ++k)
-        body_items_[out++] = 2 * static_cast<std::uint64_t>(k);  // holds i: −f
+      for (std::size_t d = sc.down_begin_[s]; d < sc.down_begin_[s + 1]; ++d)
+        sc.body_items_[out++] = 2 * static_cast<std::uint64_t>(sc.down_[d]) + 1;  // holds j: +f
+      for (std::size_t k = sc.cand_begin_[s]; k < sc.cand_begin_[s + 1]; ++k)
+        sc.body_items_[out++] = 2 * static_cast<std::uint64_t>(k);  // holds i: −f
     }
     // One sphere: (i', s) with i' < s precede (s, j), already in order. A clump: sort.
     if (body_first_sphere_[b + 1] - body_first_sphere_[b] > 1)
-      std::sort(body_items_.begin() + static_cast<std::ptrdiff_t>(body_begin_[b]),
-                body_items_.begin() + static_cast<std::ptrdiff_t>(body_begin_[b + 1]));
+      std::sort(sc.body_items_.begin() + static_cast<std::ptrdiff_t>(sc.body_begin_[b]),
+                sc.body_items_.begin() + static_cast<std::ptrdiff_t>(sc.body_begin_[b + 1]));
   });
-  slot_out_.assign(m, SlotOut{Vec3::Zero(), Vec3::Zero()});
-  slot_force_.resize(m);
-  slot_geometry_.resize(m);
-  slot_active_.assign(m, 0);
-  slot_damping_.resize(m);
-  damping_valid_ = false;
+  sc.slot_out_.assign(m, SlotOut{Vec3::Zero(), Vec3::Zero()});
+  sc.slot_force_.resize(m);
+  sc.slot_geometry_.resize(m);
+  sc.slot_active_.assign(m, 0);
+  sc.slot_damping_.resize(m);
+  sc.damping_valid_ = false;
 }
 
 // The dashpot of every candidate pair from the bodies' current (packed) masses.
 void World::update_damping() {
+  StepCache& sc = cache_.get();
   const ContactParams& p = options_.contact;
   parallel_items(candidates_.size(), [&](std::size_t k) {
-    const double ma = kinematics_[sphere_body_[candidates_[k].first]].mass;
-    const double mb = kinematics_[sphere_body_[candidates_[k].second]].mass;
-    slot_damping_[k] = normal_dashpot(ma * mb / (ma + mb), p);
+    const double ma = sc.kinematics_[sphere_body_[candidates_[k].first]].mass;
+    const double mb = sc.kinematics_[sphere_body_[candidates_[k].second]].mass;
+    sc.slot_damping_[k] = normal_dashpot(ma * mb / (ma + mb), p);
   });
-  damping_valid_ = true;
+  sc.damping_valid_ = true;
 }
 
 // bodies_ -> packed state, at the start of step(count): the caller may have edited anything.
 void World::load_bodies() {
+  StepCache& sc = cache_.get();
   const std::size_t nb = bodies_.size();
-  kinematics_.resize(nb);
-  body_wrench_.resize(nb);
-  rotation_.resize(nb);
-  body_touched_.assign(nb, 0);
+  sc.kinematics_.resize(nb);
+  sc.body_wrench_.resize(nb);
+  sc.rotation_.resize(nb);
+  sc.body_touched_.assign(nb, 0);
   parallel_items(nb, [&](std::size_t k) {
     const Body& b = bodies_[k];
-    kinematics_[k] = Kinematics{b.position, b.velocity, b.angular_velocity, b.mass};
-    body_wrench_[k] = Wrench{b.force, b.torque};
+    sc.kinematics_[k] = Kinematics{b.position, b.velocity, b.angular_velocity, b.mass};
+    sc.body_wrench_[k] = Wrench{b.force, b.torque};
     Spin spin = Spin::general;
     if (b.rotation_locked)
       spin = Spin::locked;
     else if (b.moments.x() == b.moments.y() && b.moments.y() == b.moments.z())
       spin = b.spheres.size() == 1 && b.spheres[0].center.isZero(0.0) ? Spin::plain_sphere
                                                                       : Spin::isotropic;
-    rotation_[k] = Rotation{b.orientation, b.moments, spin};
+    sc.rotation_[k] = Rotation{b.orientation, b.moments, spin};
   });
-  damping_valid_ = false;  // masses may have changed
+  sc.damping_valid_ = false;  // masses may have changed
 }
 
 // Packed state -> bodies_, at the end of step(count).
 void World::store_bodies() {
+  StepCache& sc = cache_.get();
   parallel_items(bodies_.size(), [&](std::size_t k) {
     Body& b = bodies_[k];
-    b.position = kinematics_[k].position;
-    b.velocity = kinematics_[k].velocity;
-    b.angular_velocity = kinematics_[k].angular_velocity;
-    b.orientation = rotation_[k].orientation;
-    b.force = body_wrench_[k].force;
-    b.torque = body_wrench_[k].torque;
+    b.position = sc.kinematics_[k].position;
+    b.velocity = sc.kinematics_[k].velocity;
+    b.angular_velocity = sc.kinematics_[k].angular_velocity;
+    b.orientation = sc.rotation_[k].orientation;
+    b.force = sc.body_wrench_[k].force;
+    b.torque = sc.body_wrench_[k].torque;
   });
 }
 
 void World::import_pairs() {
+  StepCache& sc = cache_.get();
   const int n = sphere_count();
   parallel_items(contacts_.size(), [&](std::size_t c) {
     const PairContact& pc = contacts_[c];
     if (pc.i < 0 || pc.i >= n) return;
-    const auto first = candidates_.begin() + static_cast<std::ptrdiff_t>(cand_begin_[pc.i]);
-    const auto last = candidates_.begin() + static_cast<std::ptrdiff_t>(cand_begin_[pc.i + 1]);
+    const auto first = candidates_.begin() + static_cast<std::ptrdiff_t>(sc.cand_begin_[pc.i]);
+    const auto last = candidates_.begin() + static_cast<std::ptrdiff_t>(sc.cand_begin_[pc.i + 1]);
     const auto it = std::lower_bound(first, last, std::make_pair(pc.i, pc.j));
     if (it == last || it->second != pc.j) return;  // no longer a candidate: history dropped
     const auto k = static_cast<std::size_t>(it - candidates_.begin());
-    slot_force_[k] = SlotForce{pc.state.shear, pc.state.normal_force};
-    slot_geometry_[k] = SlotGeometry{pc.state.normal, pc.state.point, pc.state.overlap};
-    slot_active_[k] = 1;
+    sc.slot_force_[k] = SlotForce{pc.state.shear, pc.state.normal_force};
+    sc.slot_geometry_[k] = SlotGeometry{pc.state.normal, pc.state.point, pc.state.overlap};
+    sc.slot_active_[k] = 1;
     // The wrenches are written by the next contact pass (every active slot is refreshed there).
   });
 }
 
 void World::export_pairs() {
+  StepCache& sc = cache_.get();
   contacts_.clear();
   for (std::size_t k = 0; k < candidates_.size(); ++k) {
-    if (!slot_active_[k]) continue;
+    if (!sc.slot_active_[k]) continue;
     PairContact& c = contacts_.emplace_back();
     c.i = candidates_[k].first;
     c.j = candidates_[k].second;
-    const SlotGeometry& g = slot_geometry_[k];
+    const SlotGeometry& g = sc.slot_geometry_[k];
     c.state.normal = g.normal;
     c.state.point = g.point;
     c.state.overlap = g.overlap;
-    c.state.normal_force = slot_force_[k].normal_force;
-    c.state.shear = slot_force_[k].shear;
+    c.state.normal_force = sc.slot_force_[k].normal_force;
+    c.state.shear = sc.slot_force_[k].shear;
   }
 }
 
@@ -296,10 +416,11 @@ void World::export_pairs() {
 // A sphere moves at most skin/2 before the next build and a wall at most skin/2 before
 // walls_moved() asks for new candidates, so every touching pair is a candidate.
 bool World::walls_moved() const {
-  if (walls_.size() != walls_at_build_.size()) return true;
+  StepCache& sc = cache_.get();
+  if (walls_.size() != sc.walls_at_build_.size()) return true;
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     const Wall& a = walls_[w];
-    const Wall& b = walls_at_build_[w];
+    const Wall& b = sc.walls_at_build_[w];
     if (a.kind != b.kind || a.radius != b.radius || a.normal != b.normal) return true;
     if (a.kind == Wall::Kind::cylinder) {
       if (a.point.x() != b.point.x() || a.point.y() != b.point.y()) return true;
@@ -311,9 +432,10 @@ bool World::walls_moved() const {
 }
 
 void World::build_wall_candidates() {
+  StepCache& sc = cache_.get();
   const std::size_t n = sphere_body_.size();
   const std::size_t nw = walls_.size();
-  walls_at_build_ = walls_;
+  sc.walls_at_build_ = walls_;
   const double skin = options_.skin;
   auto candidate = [&](std::size_t s, std::size_t w) {
     const Wall& wall = walls_[w];
@@ -325,53 +447,56 @@ void World::build_wall_candidates() {
                ? true  // centre on the axis (no normal): keep it
                : hit.overlap > -(skin + slack);
   };
-  scratch_.assign(n + 1, 0);
+  sc.scratch_.assign(n + 1, 0);
   parallel_items(n, [&](std::size_t s) {
     std::size_t count = 0;
     for (std::size_t w = 0; w < nw; ++w) count += candidate(s, w) ? 1 : 0;
-    scratch_[s + 1] = count;
+    sc.scratch_[s + 1] = count;
   });
-  for (std::size_t s = 0; s < n; ++s) scratch_[s + 1] += scratch_[s];
-  wall_cand_.resize(scratch_[n]);
+  for (std::size_t s = 0; s < n; ++s) sc.scratch_[s + 1] += sc.scratch_[s];
+  sc.wall_cand_.resize(sc.scratch_[n]);
   parallel_items(n, [&](std::size_t s) {
-    std::size_t k = scratch_[s];
+    std::size_t k = sc.scratch_[s];
     for (std::size_t w = 0; w < nw; ++w)
-      if (candidate(s, w)) wall_cand_[k++] = {static_cast<int>(s), static_cast<int>(w)};
+      if (candidate(s, w)) sc.wall_cand_[k++] = {static_cast<int>(s), static_cast<int>(w)};
   });
   const std::size_t nb = bodies_.size();
-  body_wall_begin_.resize(nb + 1);
-  for (std::size_t b = 0; b <= nb; ++b) body_wall_begin_[b] = scratch_[body_first_sphere_[b]];
-  wall_slot_state_.resize(wall_cand_.size());
-  wall_slot_active_.assign(wall_cand_.size(), 0);
+  sc.body_wall_begin_.resize(nb + 1);
+  for (std::size_t b = 0; b <= nb; ++b) sc.body_wall_begin_[b] = sc.scratch_[body_first_sphere_[b]];
+  sc.wall_slot_state_.resize(sc.wall_cand_.size());
+  sc.wall_slot_active_.assign(sc.wall_cand_.size(), 0);
 }
 
 void World::import_walls() {
+  StepCache& sc = cache_.get();
   parallel_items(wall_contacts_.size(), [&](std::size_t c) {
     const WallContact& wc = wall_contacts_[c];
-    const auto it =
-        std::lower_bound(wall_cand_.begin(), wall_cand_.end(), std::make_pair(wc.sphere, wc.wall));
-    if (it == wall_cand_.end() || *it != std::make_pair(wc.sphere, wc.wall)) return;
-    const auto k = static_cast<std::size_t>(it - wall_cand_.begin());
-    wall_slot_state_[k] = wc.state;
-    wall_slot_active_[k] = 1;
+    const auto it = std::lower_bound(sc.wall_cand_.begin(), sc.wall_cand_.end(),
+                                     std::make_pair(wc.sphere, wc.wall));
+    if (it == sc.wall_cand_.end() || *it != std::make_pair(wc.sphere, wc.wall)) return;
+    const auto k = static_cast<std::size_t>(it - sc.wall_cand_.begin());
+    sc.wall_slot_state_[k] = wc.state;
+    sc.wall_slot_active_[k] = 1;
   });
 }
 
 void World::export_walls() {
+  StepCache& sc = cache_.get();
   wall_contacts_.clear();
-  for (std::size_t k = 0; k < wall_cand_.size(); ++k) {
-    if (!wall_slot_active_[k]) continue;
+  for (std::size_t k = 0; k < sc.wall_cand_.size(); ++k) {
+    if (!sc.wall_slot_active_[k]) continue;
     WallContact& c = wall_contacts_.emplace_back();
-    c.sphere = wall_cand_[k].first;
-    c.wall = wall_cand_[k].second;
-    c.state = wall_slot_state_[k];
+    c.sphere = sc.wall_cand_[k].first;
+    c.wall = sc.wall_cand_[k].second;
+    c.state = sc.wall_slot_state_[k];
   }
 }
 
 void World::compute_forces() {
+  StepCache& sc = cache_.get();
   const double dt = options_.timestep;
   const ContactParams& p = options_.contact;
-  if (!damping_valid_) update_damping();
+  if (!sc.damping_valid_) update_damping();
 
   // Pair contacts, one slot per candidate: a touching pair keeps its shear history when it
   // touched at the last step too, else it starts from a fresh state. Each touching pair writes
@@ -384,13 +509,13 @@ void World::compute_forces() {
     if (k + kAhead < ncand) {
       const int ahead = candidates_[k + kAhead].second;
       __builtin_prefetch(&sphere_world_[ahead]);
-      __builtin_prefetch(&kinematics_[sphere_body_[ahead]]);
+      __builtin_prefetch(&sc.kinematics_[sphere_body_[ahead]]);
     }
     const auto [i, j] = candidates_[k];
     auto release = [&] {
-      if (!slot_active_[k]) return;
-      slot_active_[k] = 0;
-      slot_out_[k] = SlotOut{Vec3::Zero(), Vec3::Zero()};
+      if (!sc.slot_active_[k]) return;
+      sc.slot_active_[k] = 0;
+      sc.slot_out_[k] = SlotOut{Vec3::Zero(), Vec3::Zero()};
     };
     const Vec3 d = sphere_world_[j] - sphere_world_[i];
     const double touch = sphere_radius_[i] + sphere_radius_[j];
@@ -399,38 +524,38 @@ void World::compute_forces() {
     const double dist = std::sqrt(d2);                        // = d.norm()
     const double delta = touch - dist;
     if (!(delta > 0.0)) return release();
-    SlotForce& state = slot_force_[k];
-    if (!slot_active_[k]) state = SlotForce{Vec3::Zero(), 0.0};
-    slot_active_[k] = 1;
-    const Kinematics& a = kinematics_[sphere_body_[i]];
-    const Kinematics& b = kinematics_[sphere_body_[j]];
+    SlotForce& state = sc.slot_force_[k];
+    if (!sc.slot_active_[k]) state = SlotForce{Vec3::Zero(), 0.0};
+    sc.slot_active_[k] = 1;
+    const Kinematics& a = sc.kinematics_[sphere_body_[i]];
+    const Kinematics& b = sc.kinematics_[sphere_body_[j]];
     const Vec3 n = dist > 0.0 ? Vec3(d / dist) : Vec3(Vec3::UnitZ());
     const Vec3 point = sphere_world_[i] + (sphere_radius_[i] - 0.5 * delta) * n;
     const Vec3 va = point_velocity(a.velocity, a.angular_velocity, point, a.position);
     const Vec3 vb = point_velocity(b.velocity, b.angular_velocity, point, b.position);
-    update_contact_force(state.shear, state.normal_force, n, delta, vb - va, slot_damping_[k], p,
+    update_contact_force(state.shear, state.normal_force, n, delta, vb - va, sc.slot_damping_[k], p,
                          dt);
-    if (record_geometry_) slot_geometry_[k] = SlotGeometry{n, point, delta};
+    if (sc.record_geometry_) sc.slot_geometry_[k] = SlotGeometry{n, point, delta};
     const Vec3 f = state.normal_force * n + state.shear;  // ContactState::force()
     // Body of j receives +f, body of i −f (sum_wrench forms the torques).
-    slot_out_[k] = SlotOut{f, point};
+    sc.slot_out_[k] = SlotOut{f, point};
     // Several threads may mark the same body: relaxed atomic stores of the same value.
-    __atomic_store_n(&body_touched_[sphere_body_[i]], std::uint8_t{1}, __ATOMIC_RELAXED);
-    __atomic_store_n(&body_touched_[sphere_body_[j]], std::uint8_t{1}, __ATOMIC_RELAXED);
+    __atomic_store_n(&sc.body_touched_[sphere_body_[i]], std::uint8_t{1}, __ATOMIC_RELAXED);
+    __atomic_store_n(&sc.body_touched_[sphere_body_[j]], std::uint8_t{1}, __ATOMIC_RELAXED);
   });
 
   // Wall contacts, one slot per wall candidate, likewise.
-  parallel_items(wall_cand_.size(), [&](std::size_t k) {
-    const auto [s, w] = wall_cand_[k];
+  parallel_items(sc.wall_cand_.size(), [&](std::size_t k) {
+    const auto [s, w] = sc.wall_cand_[k];
     const WallHit hit = wall_hit(walls_[w], sphere_world_[s], sphere_radius_[s]);
     if (!hit.touching) {
-      wall_slot_active_[k] = 0;
+      sc.wall_slot_active_[k] = 0;
       return;
     }
-    ContactState& state = wall_slot_state_[k];
-    if (!wall_slot_active_[k]) state = ContactState();
-    wall_slot_active_[k] = 1;
-    const Kinematics& b = kinematics_[sphere_body_[s]];
+    ContactState& state = sc.wall_slot_state_[k];
+    if (!sc.wall_slot_active_[k]) state = ContactState();
+    sc.wall_slot_active_[k] = 1;
+    const Kinematics& b = sc.kinematics_[sphere_body_[s]];
     const Vec3 vb = b.velocity + b.angular_velocity.cross(hit.point - b.position);
     const Vec3 vw = walls_[w].kind == Wall::Kind::plane ? walls_[w].velocity : Vec3::Zero();
     update_contact(state, hit.normal, hit.overlap, hit.point, vb - vw, b.mass, p, dt);
@@ -440,24 +565,24 @@ void World::compute_forces() {
 }
 
 // Net wrench on body k: gravity, then its pair contacts in (i, j) order, then its wall contacts
-// in (sphere, wall) order — a fixed order, whatever the thread count (see body_touched_).
-inline World::Wrench World::sum_wrench(std::size_t k) const {
-  const Kinematics& b = kinematics_[k];
-  Vec3 force = b.mass * options_.gravity;
+// in (sphere, wall) order — a fixed order, whatever the thread count (see sc.body_touched_).
+static inline Wrench sum_wrench(const StepCache& sc, const Vec3& gravity, std::size_t k) {
+  const Kinematics& b = sc.kinematics_[k];
+  Vec3 force = b.mass * gravity;
   Vec3 torque = Vec3::Zero();
-  if (body_touched_[k]) {
-    for (std::size_t e = body_begin_[k]; e < body_begin_[k + 1]; ++e) {
-      const std::uint64_t item = body_items_[e];
-      const SlotOut& out = slot_out_[item >> 1];
+  if (sc.body_touched_[k]) {
+    for (std::size_t e = sc.body_begin_[k]; e < sc.body_begin_[k + 1]; ++e) {
+      const std::uint64_t item = sc.body_items_[e];
+      const SlotOut& out = sc.slot_out_[item >> 1];
       // ±1 times a value is its exact negation or itself, as the unary minus (branch free).
       const double sign = item & 1 ? 1.0 : -1.0;
       force += sign * out.force;
       torque += sign * moment(out.point, b.position, out.force);
     }
   }
-  for (std::size_t c = body_wall_begin_[k]; c < body_wall_begin_[k + 1]; ++c) {
-    if (!wall_slot_active_[c]) continue;
-    const ContactState& s = wall_slot_state_[c];
+  for (std::size_t c = sc.body_wall_begin_[k]; c < sc.body_wall_begin_[k + 1]; ++c) {
+    if (!sc.wall_slot_active_[c]) continue;
+    const ContactState& s = sc.wall_slot_state_[c];
     const Vec3 f = s.force();
     force += f;
     torque += (s.point - b.position).cross(f);
@@ -466,6 +591,7 @@ inline World::Wrench World::sum_wrench(std::size_t k) const {
 }
 
 void World::integrate() {
+  StepCache& sc = cache_.get();
   const double dt = options_.timestep;
   const double alpha = options_.contact.local_damping;
   const bool have_reference = !dirty_ && sphere_at_filter_.size() == sphere_world_.size();
@@ -510,11 +636,11 @@ void World::integrate() {
   // One pass per body: sum its wrench, advance it, then refresh its spheres' world positions
   // and the Verlet-skin check, so a step makes one pass over the bodies and their spheres.
   parallel_items(bodies_.size(), [&](std::size_t k) {
-    const Wrench wrench = sum_wrench(k);
-    body_touched_[k] = 0;  // for the next step's contact pass
-    body_wrench_[k] = wrench;
-    Kinematics& b = kinematics_[k];
-    Rotation& r = rotation_[k];
+    const Wrench wrench = sum_wrench(sc, options_.gravity, k);
+    sc.body_touched_[k] = 0;  // for the next step's contact pass
+    sc.body_wrench_[k] = wrench;
+    Kinematics& b = sc.kinematics_[k];
+    Rotation& r = sc.rotation_[k];
     bool far = false;
     const int first = body_first_sphere_[k], last = body_first_sphere_[k + 1];
     if (r.spin == Spin::plain_sphere) {
@@ -538,62 +664,115 @@ void World::integrate() {
     }
     if (far) moved.store(true, std::memory_order_relaxed);
   });
-  positions_fresh_ = true;
-  moved_ = !have_reference || moved.load();
+  sc.positions_fresh_ = true;
+  sc.moved_ = !have_reference || moved.load();
   for (Wall& w : walls_)
     if (w.kind == Wall::Kind::plane) w.point += w.velocity * dt;
 }
 
 void World::step(int count) {
+  StepCache& sc = cache_.get();
   // Bodies may have been edited since the last call: refresh everything derived from them once.
   load_bodies();
-  positions_fresh_ = false;
+  sc.positions_fresh_ = false;
   for (int s = 0; s < count; ++s) {
-    bool walls_stale = !walls_valid_;
-    const bool moved = positions_fresh_ ? moved_ : update_positions_and_check();
+    bool walls_stale = !sc.walls_valid_;
+    const bool moved = sc.positions_fresh_ ? sc.moved_ : update_positions_and_check();
     if (moved || !near_valid_) {
       // New candidates: the history travels through contacts_ (and wall_contacts_ after a build).
-      if (pairs_valid_) export_pairs();
-      pairs_valid_ = false;
+      if (sc.pairs_valid_) export_pairs();
+      sc.pairs_valid_ = false;
       if (moved && refresh_neighbours()) {
-        if (walls_valid_) export_walls();
-        walls_valid_ = false;
+        if (sc.walls_valid_) export_walls();
+        sc.walls_valid_ = false;
         walls_stale = true;
       }
       filter_candidates();
     }
-    if (!pairs_valid_) {
+    if (!sc.pairs_valid_) {
       derive_pair_index();
       import_pairs();
-      pairs_valid_ = true;
+      sc.pairs_valid_ = true;
     }
     if (walls_stale || walls_moved()) {
-      if (walls_valid_) export_walls();
+      if (sc.walls_valid_) export_walls();
       build_wall_candidates();
       import_walls();
-      walls_valid_ = true;
+      sc.walls_valid_ = true;
     }
     // Contacts report their geometry as of the last step; earlier steps need not write it.
-    record_geometry_ = s + 1 == count;
+    sc.record_geometry_ = s + 1 == count;
     compute_forces();
     integrate();
     time_ += options_.timestep;
     ++steps_;
   }
   store_bodies();
-  if (pairs_valid_) export_pairs();
-  if (walls_valid_) export_walls();
-  if (!positions_fresh_) update_sphere_positions();  // integrate() already set them otherwise
+  if (sc.pairs_valid_) export_pairs();
+  if (sc.walls_valid_) export_walls();
+  if (!sc.positions_fresh_) update_sphere_positions();  // integrate() already set them otherwise
+}
+
+World::ListState World::list_state() const {
+  ListState s;
+  s.steps = steps_;
+  s.time = time_;
+  s.builds = builds_;
+  s.filters = filters_;
+  s.stale = dirty_;
+  s.build_positions = sphere_at_build_;
+  s.skin_pairs = neighbours_;
+  s.filter_positions = sphere_at_filter_;
+  s.near_limit = near_limit_;
+  return s;
+}
+
+void World::restore(ListState lists, std::vector<PairContact> contacts,
+                    std::vector<WallContact> wall_contacts) {
+  const int n = sphere_count();
+  const int nw = static_cast<int>(walls_.size());
+  auto positions = [&](const std::vector<Vec3>& x, const char* what) {
+    if (!x.empty() && x.size() != static_cast<std::size_t>(n))
+      throw InvalidInput(std::string("DEM world: ") + what + " positions for " +
+                         std::to_string(x.size()) + " spheres, the world has " + std::to_string(n));
+  };
+  positions(lists.build_positions, "neighbour-list");
+  positions(lists.filter_positions, "near-list");
+  auto pair_ok = [&](int i, int j) { return i >= 0 && j > i && j < n; };
+  for (const auto& [i, j] : lists.skin_pairs)
+    if (!pair_ok(i, j)) throw InvalidInput("DEM world: neighbour pair outside the world");
+  for (const PairContact& c : contacts)
+    if (!pair_ok(c.i, c.j)) throw InvalidInput("DEM world: contact between unknown spheres");
+  for (const WallContact& c : wall_contacts)
+    if (c.sphere < 0 || c.sphere >= n || c.wall < 0 || c.wall >= nw)
+      throw InvalidInput("DEM world: wall contact of an unknown sphere or wall");
+  if (!(lists.near_limit >= 0.0)) throw InvalidInput("DEM world: negative near-list limit");
+  steps_ = lists.steps;
+  time_ = lists.time;
+  builds_ = lists.builds;
+  filters_ = lists.filters;
+  dirty_ = lists.stale;
+  sphere_at_build_ = std::move(lists.build_positions);
+  neighbours_ = std::move(lists.skin_pairs);
+  sphere_at_filter_ = std::move(lists.filter_positions);
+  near_limit_ = lists.near_limit;
+  near_valid_ = false;  // filtered from the restored lists at the next step
+  contacts_ = std::move(contacts);
+  wall_contacts_ = std::move(wall_contacts);
+  StepCache& sc = cache_.get();
+  sc.pairs_valid_ = sc.walls_valid_ = false;
+  update_sphere_positions();
 }
 
 void World::rescale_friction(double new_friction) {
+  StepCache& sc = cache_.get();
   if (!(new_friction >= 0.0) || !std::isfinite(new_friction))
     throw InvalidInput("DEM world: friction must be non-negative, got " +
                        std::to_string(new_friction));
   options_.contact.friction = new_friction;
   for (PairContact& c : contacts_) dem::rescale_friction(c.state, new_friction);
   for (WallContact& c : wall_contacts_) dem::rescale_friction(c.state, new_friction);
-  pairs_valid_ = walls_valid_ = false;  // the slots take the new states from the lists
+  sc.pairs_valid_ = sc.walls_valid_ = false;  // the slots take the new states from the lists
 }
 
 double kinetic_energy(const World& world) {

@@ -8,9 +8,31 @@
 #include "dem/wall.h"
 
 #include <cstdint>
+#include <memory>
+#include <utility>
 #include <vector>
 
 namespace clumpkit::dem {
+
+namespace detail {
+struct StepCache;
+/// Owns a World's step caches (defined in dem/world.cpp, so the header shows none of them):
+/// copied with the world; a moved-from world gets empty caches, which the next step rebuilds
+/// from the persistent state (as after loading a checkpoint).
+class StepCacheHolder {
+ public:
+  StepCacheHolder();
+  ~StepCacheHolder();
+  StepCacheHolder(const StepCacheHolder& other);
+  StepCacheHolder& operator=(const StepCacheHolder& other);
+  StepCacheHolder(StepCacheHolder&& other) noexcept;
+  StepCacheHolder& operator=(StepCacheHolder&& other) noexcept;
+  StepCache& get() const;
+
+ private:
+  mutable std::unique_ptr<StepCache> cache_;
+};
+}  // namespace detail
 
 /// World settings (SI).
 struct WorldOptions {
@@ -92,9 +114,27 @@ class World {
   /// Number of near-list filters so far, builds included (for tests of near_skin_fraction).
   std::int64_t near_filters() const { return filters_; }
 
- private:
-  friend struct CheckpointAccess;  // dem/checkpoint.cpp saves and restores the private state
+  /// What the next steps depend on besides options, bodies, walls and contact lists: the clock
+  /// and the two-level Verlet list. Checkpoints save it, so a resumed run takes the same steps.
+  struct ListState {
+    std::int64_t steps = 0;
+    double time = 0.0;
+    std::int64_t builds = 0, filters = 0;
+    bool stale = true;                            ///< no skin list yet: the next step builds one
+    std::vector<Vec3> build_positions;            ///< sphere positions at the last grid search
+    std::vector<std::pair<int, int>> skin_pairs;  ///< the skin list, sorted (i, j)
+    std::vector<Vec3> filter_positions;           ///< sphere positions at the last near filter
+    double near_limit = 0.0;                      ///< squared move allowed before the next filter
+  };
+  ListState list_state() const;
+  /// Restores a state saved with list_state() and the contact lists, into a world holding the
+  /// same options, bodies and walls; the near list is filtered again at the next step. Throws
+  /// InvalidInput for position lists of the wrong size or pairs and contacts naming spheres or
+  /// walls the world does not have.
+  void restore(ListState lists, std::vector<PairContact> contacts,
+               std::vector<WallContact> wall_contacts);
 
+ private:
   void update_sphere_positions();
   bool refresh_neighbours();
   void build_neighbours();
@@ -139,83 +179,12 @@ class World {
   std::int64_t steps_ = 0;
   std::int64_t builds_ = 0;
 
-  // Derived state of the fast path (never saved; see world.cpp).
-  std::vector<int> body_first_sphere_;     // per body, then the sphere count
-  NeighbourGrid grid_;                     // scratch of build_neighbours
-  std::vector<std::size_t> cand_begin_;    // first candidate (i, ·) per sphere i
-  std::vector<std::size_t> down_begin_;    // per sphere j: range in down_
-  std::vector<std::size_t> down_;          // candidates (·, j) grouped by j, in order
-  std::vector<std::size_t> body_begin_;    // per body: range in body_items_
-  std::vector<std::uint64_t> body_items_;  // 2·candidate + (1 when the body holds j)
-  // During step(count) the bodies' state lives in these packed arrays (loaded from bodies_ when
-  // the call begins, stored back when it ends), so the per-step passes stream small records
-  // instead of whole Body objects with their sphere vectors.
-  struct Kinematics {  // the translational and spin state of a body: what the contact kernels read
-    Vec3 position, velocity, angular_velocity;
-    double mass;
-  };
-  std::vector<Kinematics> kinematics_;  // per body
-  struct Wrench {                       // a force and a torque
-    Vec3 force, torque;
-  };
-  std::vector<Wrench> body_wrench_;  // per body: gravity + contacts of the last step
-  enum class Spin : std::uint8_t {
-    plain_sphere,  // isotropic, one sphere on the origin: orientation not integrated
-    isotropic,     // Ixx = Iyy = Izz: ω = L/I directly
-    general,       // midpoint quaternion integration
-    locked         // rotation_locked: translation only
-  };
-  struct Rotation {  // what the integrator reads of a body's rotation
-    Eigen::Quaterniond orientation;
-    Vec3 moments;
-    Spin spin;
-  };
-  std::vector<Rotation> rotation_;  // per body
-  Wrench sum_wrench(std::size_t body) const;
+  // Derived state of the fast path (never saved): the step caches of dem/world.cpp.
+  std::vector<int> body_first_sphere_;  // per body, then the sphere count
+  detail::StepCacheHolder cache_;
   void load_bodies();
   void store_bodies();
   void update_damping();
-  // Per candidate: the force on the body of j and its point of application, written by the
-  // contact kernel in candidate order (zero while not touching); each body gathers its items
-  // (body_items_) and forms ±force and the torque about its own centroid.
-  struct SlotOut {
-    Vec3 force, point;
-  };
-  std::vector<SlotOut> slot_out_;
-  // Per body: one of its pairs touched in this step's contact pass (else its items are all zero
-  // and the sum skips them: the sums start from gravity and +0 and never reach −0, so adding ±0
-  // would change no bit). A per-body test, predictable both in free fall and in a packing.
-  std::vector<std::uint8_t> body_touched_;
-  // Per candidate: the normal dashpot 2·β·sqrt(m_eff·kn) (update_contact's formula), computed
-  // when the candidates or the masses change instead of at every contact and step.
-  std::vector<double> slot_damping_;
-  bool damping_valid_ = false;
-  // Per candidate, the contact state in two parts: what the contact law carries from step to
-  // step (read and written every step), and the geometry (normal, point, overlap), which only
-  // the contact lists report, so it is written on the last step of step(count) alone.
-  struct SlotForce {
-    Vec3 shear;
-    double normal_force;
-  };
-  struct SlotGeometry {
-    Vec3 normal, point;
-    double overlap;
-  };
-  std::vector<SlotForce> slot_force_;
-  std::vector<SlotGeometry> slot_geometry_;
-  bool record_geometry_ = true;                 // this step's contact pass writes slot_geometry_
-  std::vector<std::uint8_t> slot_active_;       // per candidate: touching at the last step
-  std::vector<std::pair<int, int>> wall_cand_;  // sorted (sphere, wall)
-  std::vector<ContactState> wall_slot_state_;   // per wall candidate
-  std::vector<std::uint8_t> wall_slot_active_;  // per wall candidate
-  std::vector<std::size_t> body_wall_begin_;    // per body: range in wall_cand_
-  std::vector<Wall> walls_at_build_;            // walls when wall_cand_ was built
-  std::vector<std::size_t> scratch_;            // counts / offsets
-  std::vector<std::uint8_t> filter_keep_;       // scratch of filter_candidates
-  bool positions_fresh_ = false;  // sphere_world_ and moved_ set by integrate this call
-  bool moved_ = true;             // a sphere moved more than sqrt(near_limit_) since the filter
-  bool pairs_valid_ = false;      // slots mirror contacts_ for the current candidates_
-  bool walls_valid_ = false;      // wall slots mirror wall_contacts_ for the current wall_cand_
 };
 
 /// Total kinetic energy Σ ½·m·|v|² + ½·ω·L (J) (velocities at the half step).
