@@ -1,5 +1,7 @@
 #include "dem/deposition.h"
 
+#include "dem/timestep.h"
+
 #include "geom/errors.h"
 
 #include <algorithm>

@@ -131,12 +131,11 @@ double density_scaling(const SpecimenSpec& s) {
 World scaled_world(const std::vector<Body>& bodies, const std::vector<Placement>& placed,
                    const SpecimenSpec& spec, double friction, double lambda) {
   World world = make_deposition_world(bodies, placed, deposition_spec(spec, friction));
-  double dt = INFINITY;
   for (Body& b : world.bodies()) {
     b.mass *= lambda;
     b.moments *= lambda;
-    dt = std::min(dt, body_critical_timestep(b, spec.contact.kn, spec.contact.ks));
   }
+  const double dt = critical_timestep(world);
   if (std::isfinite(dt)) world.options().timestep = spec.timestep_safety * dt;
   return world;
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace clumpkit::dem {
@@ -30,6 +31,13 @@ double body_critical_timestep(const Body& body, double kn, double ks) {
     }
     dt = std::min(dt, critical_timestep(body.moments[a], k * arm * arm));
   }
+  return dt;
+}
+
+double critical_timestep(const World& world) {
+  const ContactParams& p = world.options().contact;
+  double dt = std::numeric_limits<double>::infinity();
+  for (const Body& b : world.bodies()) dt = std::min(dt, body_critical_timestep(b, p.kn, p.ks));
   return dt;
 }
 

@@ -794,17 +794,4 @@ double mean_unbalanced_force_ratio(const World& world) {
          (contact / static_cast<double>(n));
 }
 
-double critical_timestep(const World& world) {
-  const ContactParams& p = world.options().contact;
-  double dt = std::numeric_limits<double>::infinity();
-  for (const Body& b : world.bodies()) {
-    dt = std::min(dt, critical_timestep(b.mass, p.kn));
-    if (!b.rotation_locked) {
-      const double r = b.bounding_radius();
-      dt = std::min(dt, critical_timestep(b.moments.minCoeff(), std::max(p.kn, p.ks) * r * r));
-    }
-  }
-  return dt;
-}
-
 }  // namespace clumpkit::dem

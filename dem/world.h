@@ -195,9 +195,4 @@ double kinetic_energy(const World& world);
 /// acts; +∞ when bodies feel a net force but no contact exists (free fall).
 double mean_unbalanced_force_ratio(const World& world);
 
-/// Critical time step of the world (s): the minimum over bodies of sqrt(m / kn) and, for
-/// rotating bodies, sqrt(I_min / (max(kn, ks)·R²)) with R the bounding radius (the rotational
-/// analogue of dem::critical_timestep). Multiply by a safety factor (e.g. 0.1–0.2) for use.
-double critical_timestep(const World& world);
-
 }  // namespace clumpkit::dem

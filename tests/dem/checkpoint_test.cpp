@@ -2,6 +2,7 @@
 // rules.
 #include "dem/checkpoint.h"
 #include "dem/run.h"
+#include "dem/timestep.h"
 #include "dem/world.h"
 #include "geom/errors.h"
 #include "geom/random.h"

@@ -2,6 +2,7 @@
 #include "dem/deposition.h"
 #include "dem/run.h"
 #include "dem/specimen_particles.h"
+#include "dem/timestep.h"
 #include "geom/errors.h"
 #include "geom/random.h"
 

@@ -1,4 +1,5 @@
 // Physics tests of the lean DEM engine against analytic answers.
+#include "dem/timestep.h"
 #include "dem/world.h"
 #include "geom/errors.h"
 #include "geom/random.h"
