@@ -1,5 +1,5 @@
 // `clumpkit library --recipe R.toml --out DIR`: shapes + sphere fill + fidelity per particle.
-#include "io/library.h"
+#include "io/pipeline/library.h"
 #include "io/cli/common.h"
 #include "io/recipe.h"
 

@@ -1,7 +1,7 @@
 // `clumpkit shapes --recipe R.toml --out DIR`: a shape library from a recipe.
+#include "io/pipeline/shapes.h"
 #include "io/cli/common.h"
 #include "io/recipe.h"
-#include "io/shape_batch.h"
 
 #include <nlohmann/json.hpp>
 

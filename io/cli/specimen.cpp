@@ -1,24 +1,16 @@
 // `clumpkit specimen --recipe R.toml --out DIR`: a DEM specimen at a target relative density.
-#include "geom/errors.h"
-#include "io/atomic_file.h"
+#include "io/pipeline/specimen.h"
 #include "io/cli/common.h"
-#include "io/library.h"
-#include "io/recipe.h"
-#include "io/shape_batch.h"
-#include "io/specimen_io.h"
 #include "io/specimen_recipe.h"
 
 #include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 
 namespace clumpkit::cli {
-
-namespace fs = std::filesystem;
 
 void register_specimen(CLI::App& app) {
   struct Opts {
@@ -54,68 +46,17 @@ void register_specimen(CLI::App& app) {
     const auto t0 = std::chrono::steady_clock::now();
     set_threads(o->threads);
     const SpecimenRecipe recipe = read_specimen_recipe(o->recipe);
-    const fs::path out = o->out;
-    check_output_directory(o->out);
-    const fs::path staging = o->out + ".partial";
-    if (!o->resume) fs::remove_all(staging);
-    fs::create_directories(staging);
-
     ProgressBar bar("specimen", o->quiet);
-    // The rock library: given, or built (resumable) into the output.
-    std::string library = recipe.library;
-    if (library.empty() && !recipe.library_recipe.empty()) {
-      const fs::path lib = staging / "library";
-      if (!(o->resume && fs::exists(lib / "library.json"))) {
-        bar.set_label("specimen: rock library");
-        run_library(read_shape_recipe(recipe.library_recipe), lib.string(), {},
-                    [&](std::size_t d, std::size_t t) { bar.update(d, t); });
-      }
-      library = lib.string();
-    }
-    std::vector<dem::RockTemplate> templates;
-    if (!library.empty()) templates = read_rock_templates(library);
-    const dem::SpecimenSpec spec = specimen_spec(recipe, std::move(templates));
-
-    dem::SpecimenControl control;
-    control.checkpoint_dir = (staging / "checkpoints").string();
-    control.resume = o->resume;
-    control.checkpoint_every_seconds = o->checkpoint_seconds;
-    control.progress = [&](const std::string& stage, double fraction) {
-      bar.set_label("specimen: " + stage);
-      bar.update(static_cast<std::size_t>(1000 * fraction), 1000);
-    };
-    const dem::SpecimenResult result = dem::build_specimen(spec, control);
+    const SpecimenJobResult job = run_specimen(
+        recipe, o->out, {o->resume, o->checkpoint_seconds},
+        [&](const std::string& stage, double fraction) {
+          bar.set_label("specimen: " + stage);
+          bar.update(static_cast<std::size_t>(1000 * fraction), 1000);
+        },
+        t0);
     bar.finish();
-
-    write_specimen_csv((staging / "specimen.csv").string(), result);
-    write_specimen_vtp((staging / "specimen.vtp").string(), result);
-    write_calibration_csv((staging / "calibration.csv").string(), result);
-    write_calibration_plot((staging / "calibration.png").string(), result,
-                           recipe.target_relative_density);
-    std::vector<double> heights;
-    const int slices = 2 * recipe.layers + 1;
-    for (int k = 1; k <= slices; ++k) heights.push_back(result.height * k / (slices + 1));
-    write_slices((staging / "slices").string(), result, spec.radius, heights);
-    nlohmann::ordered_json report = specimen_report(recipe, result);
-    report["library"] = library.rfind(staging.string(), 0) == 0
-                            ? (out / fs::path(library).filename()).string()
-                            : library;
-    report["seconds"]["total"] =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    write_file_atomically((staging / "report.json").string(),
-                          [&](std::ostream& s) { s << report.dump(2) << "\n"; });
-    nlohmann::ordered_json manifest;
-    manifest["tool"] = "clumpkit";
-    manifest["format_version"] = kManifestFormat;
-    manifest["version"] = CLUMPKIT_VERSION;
-    manifest["command"] = "specimen";
-    manifest["recipe_path"] = recipe.path;
-    manifest["recipe"] = recipe.text;
-    manifest["seed"] = recipe.seed;
-    write_file_atomically((staging / "manifest.json").string(),
-                          [&](std::ostream& s) { s << manifest.dump(2) << "\n"; });
-    fs::remove_all(staging / "checkpoints");
-    publish_directory(staging.string(), o->out);
+    const dem::SpecimenResult& result = job.specimen;
+    const nlohmann::ordered_json& report = job.report;
 
     if (o->json) {
       std::cout << report.dump(2) << "\n";

@@ -1,8 +1,8 @@
 // Clump libraries: shapes + sphere fill + fidelity for every particle of a recipe, resumable.
 #pragma once
 
+#include "io/pipeline/shapes.h"
 #include "io/recipe.h"
-#include "io/shape_batch.h"
 
 #include <string>
 

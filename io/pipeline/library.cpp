@@ -1,4 +1,4 @@
-#include "io/library.h"
+#include "io/pipeline/library.h"
 
 #include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"

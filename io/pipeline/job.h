@@ -1,10 +1,12 @@
-// Batch generation of a shape library from a recipe: meshes, descriptor table and manifest.
+// What every pipeline job shares: progress, the output-directory rule, the manifest schema and
+// the parallel per-particle runner.
 #pragma once
 
 #include "io/recipe.h"
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -14,20 +16,6 @@ namespace clumpkit {
 /// Progress callback: (items done, items total). May be called from worker threads, never
 /// concurrently.
 using Progress = std::function<void(std::size_t, std::size_t)>;
-
-struct ShapeBatchResult {
-  std::size_t particles = 0;
-  std::string out_dir;
-};
-
-/// Generates every particle of the recipe in parallel (TBB) and writes
-///   DIR/meshes/NNNNN.stl, DIR/shapes.csv, DIR/manifest.json.
-/// Particle i uses the random stream (recipe.seed, i), so outputs are byte-identical for any
-/// thread count. Everything is written into DIR.partial first and renamed at the end, so a failed
-/// run leaves no partial DIR. An existing DIR is replaced only if it is empty or holds a
-/// manifest.json (a previous clumpkit output); otherwise InvalidInput.
-ShapeBatchResult run_shape_batch(const ShapeRecipe& recipe, const std::string& out_dir,
-                                 const Progress& progress = {});
 
 /// Runs work(i) for every particle i with todo[i] (all if todo is empty) in parallel (TBB).
 /// Stops at the first failure and rethrows it as InvalidInput "RECIPE: fraction 'NAME' particle
@@ -43,8 +31,13 @@ std::vector<int> particle_fractions(const ShapeRecipe& recipe);
 /// version, command, recipe_path, recipe (its text), seed, then the command's own fields).
 inline constexpr int kManifestFormat = 1;
 
-/// The manifest fields every output shares: tool, format_version, version, command, recipe path
-/// and text, seed, particle count.
+/// The manifest fields every output shares: tool, format_version, version, command, recipe_path,
+/// recipe (the text), seed.
+nlohmann::ordered_json manifest_head(const std::string& command, const std::string& recipe_path,
+                                     const std::string& recipe_text, std::uint64_t seed);
+
+/// The manifest fields every output of a shape recipe shares: tool, format_version, version,
+/// command, recipe path and text, seed, particle count.
 nlohmann::ordered_json manifest_head(const std::string& command, const ShapeRecipe& recipe);
 
 /// Throws InvalidInput unless `dir` may be replaced by an output: it does not exist, is empty

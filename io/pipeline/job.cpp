@@ -1,0 +1,99 @@
+#include "io/pipeline/job.h"
+
+#include "geom/errors.h"
+#include "io/report.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+#include <exception>
+#include <filesystem>
+#include <mutex>
+
+namespace fs = std::filesystem;
+
+namespace clumpkit {
+
+void check_output_directory(const std::string& dir) {
+  if (fs::exists(dir) && !fs::exists(fs::path(dir) / "manifest.json") && !fs::is_empty(dir))
+    throw InvalidInput(dir +
+                       ": output directory exists and is not a clumpkit output; "
+                       "remove it or choose another --out");
+}
+
+void publish_directory(const std::string& staging, const std::string& dir) {
+  std::error_code ec;
+  if (fs::exists(dir)) {
+    check_output_directory(dir);
+    fs::remove_all(dir, ec);
+    if (ec) throw IoError(dir + ": cannot replace output directory: " + ec.message());
+  }
+  fs::rename(staging, dir, ec);
+  if (ec) throw IoError(dir + ": cannot move finished output into place: " + ec.message());
+}
+
+std::vector<int> particle_fractions(const ShapeRecipe& recipe) {
+  std::vector<int> f;
+  for (std::size_t k = 0; k < recipe.fractions.size(); ++k)
+    f.insert(f.end(), static_cast<std::size_t>(recipe.fractions[k].count), static_cast<int>(k));
+  return f;
+}
+
+nlohmann::ordered_json manifest_head(const std::string& command, const std::string& recipe_path,
+                                     const std::string& recipe_text, std::uint64_t seed) {
+  nlohmann::ordered_json m;
+  m["tool"] = "clumpkit";
+  m["format_version"] = kManifestFormat;
+  m["version"] = CLUMPKIT_VERSION;
+  m["command"] = command;
+  m["recipe_path"] = recipe_path;
+  m["recipe"] = recipe_text;
+  m["seed"] = seed;
+  return m;
+}
+
+nlohmann::ordered_json manifest_head(const std::string& command, const ShapeRecipe& recipe) {
+  nlohmann::ordered_json m = manifest_head(command, recipe.path, recipe.text, recipe.seed);
+  m["particles"] = particle_fractions(recipe).size();
+  return m;
+}
+
+void for_each_particle(const ShapeRecipe& recipe, const std::vector<int>& fraction_of,
+                       const std::vector<char>& todo, std::size_t already,
+                       const std::function<void(std::size_t)>& work, const Progress& progress) {
+  const std::size_t total = fraction_of.size();
+  std::atomic<std::size_t> done{already};
+  std::exception_ptr error;
+  std::atomic<bool> failed{false};
+  std::mutex progress_mutex;
+  if (progress && already > 0) progress(already, total);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, total, 1),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                        if ((!todo.empty() && !todo[i]) || failed) continue;
+                        try {
+                          work(i);
+                        } catch (const std::exception& e) {
+                          if (!failed.exchange(true)) {
+                            try {
+                              throw InvalidInput(recipe.path + ": fraction '" +
+                                                 recipe.fractions[fraction_of[i]].name +
+                                                 "' particle " + id_name(i) + ": " + e.what());
+                            } catch (...) {
+                              error = std::current_exception();
+                            }
+                          }
+                          return;
+                        }
+                        const std::size_t n = ++done;
+                        if (progress && progress_mutex.try_lock()) {
+                          progress(n, total);
+                          progress_mutex.unlock();
+                        }
+                      }
+                    });
+  if (error) std::rethrow_exception(error);
+}
+
+}  // namespace clumpkit

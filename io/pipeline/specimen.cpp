@@ -1,0 +1,78 @@
+#include "io/pipeline/specimen.h"
+
+#include "io/atomic_file.h"
+#include "io/pipeline/job.h"
+#include "io/pipeline/library.h"
+#include "io/recipe.h"
+#include "io/specimen_io.h"
+
+#include <filesystem>
+#include <vector>
+
+namespace clumpkit {
+
+namespace fs = std::filesystem;
+
+SpecimenJobResult run_specimen(const SpecimenRecipe& recipe, const std::string& out_dir,
+                               const SpecimenJobOptions& options, const StageProgress& progress,
+                               std::chrono::steady_clock::time_point started) {
+  const fs::path out = out_dir;
+  check_output_directory(out_dir);
+  const fs::path staging = out_dir + ".partial";
+  if (!options.resume) fs::remove_all(staging);
+  fs::create_directories(staging);
+
+  // The rock library: given, or built (resumable) into the output.
+  std::string library = recipe.library;
+  if (library.empty() && !recipe.library_recipe.empty()) {
+    const fs::path lib = staging / "library";
+    if (!(options.resume && fs::exists(lib / "library.json")))
+      run_library(read_shape_recipe(recipe.library_recipe), lib.string(), {},
+                  [&](std::size_t done, std::size_t total) {
+                    if (progress)
+                      progress("rock library",
+                               total ? static_cast<double>(done) / static_cast<double>(total) : 1);
+                  });
+    library = lib.string();
+  }
+  std::vector<dem::RockTemplate> templates;
+  if (!library.empty()) templates = read_rock_templates(library);
+  const dem::SpecimenSpec spec = specimen_spec(recipe, std::move(templates));
+
+  dem::SpecimenControl control;
+  control.checkpoint_dir = (staging / "checkpoints").string();
+  control.resume = options.resume;
+  control.checkpoint_every_seconds = options.checkpoint_seconds;
+  control.progress = progress;
+  SpecimenJobResult job;
+  job.specimen = dem::build_specimen(spec, control);
+  const dem::SpecimenResult& result = job.specimen;
+
+  write_specimen_csv((staging / "specimen.csv").string(), result);
+  write_specimen_vtp((staging / "specimen.vtp").string(), result);
+  write_calibration_csv((staging / "calibration.csv").string(), result);
+  write_calibration_plot((staging / "calibration.png").string(), result,
+                         recipe.target_relative_density);
+  std::vector<double> heights;
+  const int slices = 2 * recipe.layers + 1;
+  for (int k = 1; k <= slices; ++k) heights.push_back(result.height * k / (slices + 1));
+  write_slices((staging / "slices").string(), result, spec.radius, heights);
+  nlohmann::ordered_json report = specimen_report(recipe, result);
+  report["library"] = library.rfind(staging.string(), 0) == 0
+                          ? (out / fs::path(library).filename()).string()
+                          : library;
+  report["seconds"]["total"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  write_file_atomically((staging / "report.json").string(),
+                        [&](std::ostream& s) { s << report.dump(2) << "\n"; });
+  nlohmann::ordered_json manifest =
+      manifest_head("specimen", recipe.path, recipe.text, recipe.seed);
+  write_file_atomically((staging / "manifest.json").string(),
+                        [&](std::ostream& s) { s << manifest.dump(2) << "\n"; });
+  fs::remove_all(staging / "checkpoints");
+  publish_directory(staging.string(), out_dir);
+  job.report = std::move(report);
+  return job;
+}
+
+}  // namespace clumpkit
