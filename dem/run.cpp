@@ -30,7 +30,7 @@ RunOutcome run_until(World& world, const RunLimits& limits,
     throw InvalidInput("run_until: thresholds and checkpoint period must be non-negative");
 
   using Clock = std::chrono::steady_clock;
-  const bool checkpoints = limits.checkpoint_every_seconds > 0 && !limits.checkpoint_path.empty();
+  const bool checkpoints = limits.checkpoint_every_seconds > 0 && limits.checkpoint;
   auto last_checkpoint = Clock::now();
 
   RunOutcome outcome;
@@ -64,7 +64,7 @@ RunOutcome run_until(World& world, const RunLimits& limits,
       const auto now = Clock::now();
       if (std::chrono::duration<double>(now - last_checkpoint).count() >=
           limits.checkpoint_every_seconds) {
-        save_checkpoint(limits.checkpoint_path, world, limits.checkpoint_info);
+        limits.checkpoint(world);
         last_checkpoint = Clock::now();
       }
     }

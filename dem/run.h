@@ -1,7 +1,6 @@
 // Running a DEM world until a stop rule holds, with wall-clock-periodic checkpoints.
 #pragma once
 
-#include "dem/checkpoint.h"
 #include "dem/world.h"
 
 #include <functional>
@@ -16,10 +15,9 @@ struct RunLimits {
   double unbalanced_ratio_below = 0;    ///< stop once mean_unbalanced_force_ratio < this
   double weight_ratio_below = 0;        ///< stop once unbalanced_to_weight_ratio < this
   double checkpoint_every_seconds = 0;  ///< wall-clock period of checkpoints (s); 0 = none
-  std::string checkpoint_path;          ///< where checkpoints go; empty = none
-  int check_every = 100;                ///< steps between rule checks (> 0)
-  /// Stage and random state stored in every periodic checkpoint.
-  CheckpointInfo checkpoint_info;
+  /// Saves a checkpoint of the world (e.g. StageStore::checkpoint); empty = none.
+  std::function<void(const World&)> checkpoint;
+  int check_every = 100;  ///< steps between rule checks (> 0)
 };
 
 /// Σ|F_net| / Σ m·|g| over the bodies (from the last step): 1 in free fall, 0 in static
@@ -40,8 +38,8 @@ struct RunOutcome {
 /// order; the first one met stops the run: kinetic energy below its threshold, mean
 /// unbalanced-force ratio below its threshold, unbalanced-to-weight ratio below its threshold,
 /// step cap reached. Rules are only tested after at least one step (max_steps = 0 returns at
-/// once, "step_cap"). When checkpoint_every_seconds > 0 and checkpoint_path is set, a checkpoint
-/// (save_checkpoint with checkpoint_info) is written after the first chunk that ends at least
+/// once, "step_cap"). When checkpoint_every_seconds > 0 and `checkpoint` is set, it is called
+/// after the first chunk that ends at least
 /// that many wall-clock seconds after the start or the previous checkpoint and at which no rule
 /// held; saving only reads the world, so the result does not depend on when checkpoints happen,
 /// and a run resumed from one (which steps on before testing again) follows the uninterrupted

@@ -1,6 +1,5 @@
 #include "dem/specimen.h"
 
-#include "dem/checkpoint.h"
 #include "dem/deposition.h"
 #include "dem/placement.h"
 #include "dem/run.h"
@@ -17,15 +16,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <sstream>
 
 namespace clumpkit::dem {
-
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -48,31 +44,10 @@ std::string hex(double v) {
   return buf;
 }
 
-/// Small key = value files of finished stages; doubles in hexadecimal so they round-trip.
-using Record = std::map<std::string, std::string>;
-
-void write_record(const fs::path& path, const Record& r) {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp);
-    for (const auto& [k, v] : r) out << k << " " << v << "\n";
-    if (!out) throw IoError("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, path);
-}
-
-Record read_record(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) throw IoError("cannot read " + path.string());
-  Record r;
-  std::string k, v;
-  while (in >> k >> v) r[k] = v;
-  return r;
-}
-
-double number(const Record& r, const std::string& key, const fs::path& path) {
+/// A number of a stage record (written with hex(), read back exactly).
+double number(const StageRecord& r, const std::string& key, const std::string& stage) {
   auto it = r.find(key);
-  if (it == r.end()) throw InvalidInput(path.string() + ": missing " + key);
+  if (it == r.end()) throw InvalidInput("specimen stage " + stage + ": record misses " + key);
   return std::strtod(it->second.c_str(), nullptr);
 }
 
@@ -165,21 +140,25 @@ double from_bits(std::uint64_t u) {
 /// against the same reference as the uninterrupted one. `resumed` is the info of the checkpoint
 /// the world came from, or null for a fresh stage.
 RunOutcome settle(World& world, const SpecimenSpec& spec, long stage_start,
-                  const std::string& stage, const fs::path& checkpoint,
-                  const SpecimenControl& control, const std::function<void(double)>& progress,
+                  const std::string& stage, StageStore& store, const SpecimenControl& control,
+                  const std::function<void(double)>& progress,
                   const CheckpointInfo* resumed = nullptr) {
-  RunLimits limits;
-  limits.weight_ratio_below = spec.equilibrium_ratio;
-  if (!checkpoint.empty()) {
-    limits.checkpoint_path = checkpoint.string();
-    limits.checkpoint_every_seconds = control.checkpoint_every_seconds;
-    limits.checkpoint_info.stage = stage;
-    limits.checkpoint_info.random_state[0] = static_cast<std::uint64_t>(stage_start);
-  }
   const long window = spec.settle_window > 0 ? spec.settle_window : spec.max_steps;
   const double tolerance = spec.height_tolerance * smallest_size(spec);
   const std::vector<double> volumes = body_volumes(world);
   double reference = resumed ? from_bits(resumed->random_state[1]) : NAN;
+  RunLimits limits;
+  limits.weight_ratio_below = spec.equilibrium_ratio;
+  if (store.keeps_checkpoints()) {
+    limits.checkpoint_every_seconds = control.checkpoint_every_seconds;
+    limits.checkpoint = [&](const World& w) {
+      CheckpointInfo info;
+      info.stage = stage;
+      info.random_state[0] = static_cast<std::uint64_t>(stage_start);
+      info.random_state[1] = bits(reference);
+      store.checkpoint(stage, w, info);
+    };
+  }
   RunOutcome out;
   for (;;) {
     const long done = static_cast<long>(world.steps()) - stage_start;
@@ -201,7 +180,6 @@ RunOutcome settle(World& world, const SpecimenSpec& spec, long stage_start,
       return out;
     }
     limits.max_steps = std::min(window - done % window, spec.max_steps - done);
-    limits.checkpoint_info.random_state[1] = bits(reference);
     out = run_until(world, limits, [&](long, long) {
       if (progress)
         progress(static_cast<double>(world.steps() - stage_start) /
@@ -214,29 +192,20 @@ RunOutcome settle(World& world, const SpecimenSpec& spec, long stage_start,
   }
 }
 
-/// A settling stage of the layer or the specimen, with its checkpoint files in `dir`:
-/// NAME.done + NAME.world once finished (the world is loaded as it was saved), NAME.ckpt while
-/// it runs (a resumed run continues from it), else `start()` makes the initial world. After
-/// settling, `finish` (if any) edits the world before it is saved.
-World settled_stage(const std::string& name, const fs::path& dir, const SpecimenSpec& spec,
+/// A settling stage of the layer or the specimen: the world it ended with when the store has it
+/// finished, else settled from the store's running checkpoint or from `start()`; after settling,
+/// `finish` (if any) edits the world before the store keeps it.
+World settled_stage(const std::string& name, StageStore& store, const SpecimenSpec& spec,
                     const SpecimenControl& control, const std::function<World()>& start,
                     const std::function<void(double)>& progress,
                     const std::function<void(World&)>& finish = {}) {
-  const bool checkpoints = !dir.empty();
-  const fs::path done = checkpoints ? dir / (name + ".done") : fs::path();
-  const fs::path saved = checkpoints ? dir / (name + ".world") : fs::path();
-  if (checkpoints && control.resume && fs::exists(done)) return load_checkpoint(saved.string());
-  const fs::path ckpt = checkpoints ? dir / (name + ".ckpt") : fs::path();
+  if (store.finished(name)) return store.finished_world(name);
   CheckpointInfo info;
-  const bool resumed = checkpoints && control.resume && fs::exists(ckpt);
-  World world = resumed ? load_checkpoint(ckpt.string(), &info) : start();
-  settle(world, spec, 0, name, ckpt, control, progress, resumed ? &info : nullptr);
+  std::optional<World> resumed = store.running(name, info);
+  World world = resumed ? std::move(*resumed) : start();
+  settle(world, spec, 0, name, store, control, progress, resumed ? &info : nullptr);
   if (finish) finish(world);
-  if (checkpoints) {
-    save_checkpoint(saved.string(), world);
-    write_record(done, {{"steps", std::to_string(world.steps())}});
-    fs::remove(ckpt);
-  }
+  store.finish(name, {{"steps", std::to_string(world.steps())}}, &world);
   return world;
 }
 
@@ -346,25 +315,9 @@ std::string spec_fingerprint(const SpecimenSpec& spec) {
 SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& control) {
   check_spec(spec);
   SpecimenResult result;
-  const bool checkpoints = !control.checkpoint_dir.empty();
-  const fs::path dir = control.checkpoint_dir;
-  if (checkpoints) {
-    const std::string print = spec_fingerprint(spec);
-    const fs::path fp = dir / "spec.fingerprint";
-    if (control.resume && fs::exists(fp)) {
-      std::ifstream in(fp);
-      std::string old;
-      in >> old;
-      if (old != print)
-        throw InvalidInput(dir.string() +
-                           ": checkpoints are from another recipe or library (fingerprint " + old +
-                           ", this run " + print + "); remove them or drop --resume");
-    } else {
-      fs::remove_all(dir);
-    }
-    fs::create_directories(dir);
-    std::ofstream(fp) << print << "\n";
-  }
+  StageStore in_memory;
+  StageStore& store = control.store ? *control.store : in_memory;
+  store.open(spec_fingerprint(spec));
   auto report = [&](const std::string& stage, double fraction) {
     if (control.progress) control.progress(stage, std::clamp(fraction, 0.0, 1.0));
   };
@@ -399,18 +352,17 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
         [&](const tbb::blocked_range<std::size_t>& range) {
           for (std::size_t k = range.begin(); k != range.end(); ++k) {
             const std::string name = "calibration-" + std::to_string(k);
-            const fs::path done = checkpoints ? dir / (name + ".done") : fs::path();
-            if (checkpoints && control.resume && fs::exists(done)) {
-              const Record r = read_record(done);
-              cal[k] = {number(r, "friction", done), number(r, "porosity", done), 0.0,
-                        static_cast<long>(number(r, "steps", done)), r.at("stopped_by")};
+            if (const std::optional<StageRecord> r = store.finished(name)) {
+              const auto stopped = r->find("stopped_by");
+              cal[k] = {number(*r, "friction", name), number(*r, "porosity", name), 0.0,
+                        static_cast<long>(number(*r, "steps", name)),
+                        stopped == r->end() ? std::string() : stopped->second};
               cal[k].void_ratio = cal[k].porosity / (1.0 - cal[k].porosity);
               continue;
             }
-            const fs::path ckpt = checkpoints ? dir / (name + ".ckpt") : fs::path();
             CheckpointInfo info;
-            const bool resumed = checkpoints && control.resume && fs::exists(ckpt);
-            World world = resumed ? load_checkpoint(ckpt.string(), &info)
+            std::optional<World> resumed = store.running(name, info);
+            World world = resumed ? std::move(*resumed)
                                   : scaled_world(sample.bodies, placed, spec, frictions[k], lambda);
             const auto show = [&](double f) {
               std::lock_guard<std::mutex> lock(progress_mutex);
@@ -420,7 +372,7 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
               report("calibration", 0.5 * sum / static_cast<double>(fraction.size()));
             };
             const RunOutcome out =
-                settle(world, spec, 0, name, ckpt, control, show, resumed ? &info : nullptr);
+                settle(world, spec, 0, name, store, control, show, resumed ? &info : nullptr);
             const std::vector<double> volumes = body_volumes(world);
             const CylinderRegion region =
                 central_region(spec.radius, margin, column_height(world, volumes));
@@ -430,13 +382,12 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
             p.void_ratio = p.porosity / (1.0 - p.porosity);
             p.steps = out.steps;
             p.stopped_by = out.stopped_by;
-            if (checkpoints) {
-              write_record(done, {{"friction", hex(p.friction)},
-                                  {"porosity", hex(p.porosity)},
-                                  {"steps", std::to_string(p.steps)},
-                                  {"stopped_by", p.stopped_by}});
-              fs::remove(ckpt);
-            }
+            store.finish(name,
+                         {{"friction", hex(p.friction)},
+                          {"porosity", hex(p.porosity)},
+                          {"steps", std::to_string(p.steps)},
+                          {"stopped_by", p.stopped_by}},
+                         nullptr);
           }
         });
   }
@@ -479,7 +430,7 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
     t0 = Clock::now();
     // μ back to the material friction for stage 3 once compacted, shear history rescaled.
     const World layer_world = settled_stage(
-        "layer" + tag, checkpoints ? dir : fs::path(), spec, control,
+        "layer" + tag, store, spec, control,
         [&] {
           if (layer_placed.empty()) {
             Rng place_rng = Rng::stream(spec.seed, layer_placement);
@@ -503,7 +454,7 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
     // shifted up by the layer's top, so nothing overlaps, then settled to equilibrium.
     t0 = Clock::now();
     world = settled_stage(
-        "specimen" + tag, checkpoints ? dir : fs::path(), spec, control,
+        "specimen" + tag, store, spec, control,
         [&] {
           World stacked(layer_world.options());
           for (int copy = 0; copy < spec.layers; ++copy)

@@ -4,6 +4,7 @@
 
 #include "dem/region_volume.h"
 #include "dem/specimen_particles.h"
+#include "dem/stage_store.h"
 #include "dem/world.h"
 
 #include <cstdint>
@@ -96,14 +97,13 @@ struct SpecimenResult {
   std::vector<SpecimenRound> rounds;                    ///< every build, the last one is the result
 };
 
-/// Progress and checkpointing of build_specimen.
+/// Progress and stage storage of build_specimen.
 struct SpecimenControl {
-  /// Directory for checkpoints (created); empty = none. A finished stage leaves
-  /// STAGE.done (its results), a running one STAGE.ckpt (its world, every
-  /// checkpoint_every_seconds of wall clock).
-  std::string checkpoint_dir;
-  bool resume = false;  ///< continue from checkpoint_dir instead of starting afresh
-  double checkpoint_every_seconds = 60;
+  /// Where finished stages and running checkpoints are kept (and taken from when resuming);
+  /// null = nowhere (in memory only). Stages may run in parallel: calibration runs call the
+  /// store from several threads, each for its own stage.
+  StageStore* store = nullptr;
+  double checkpoint_every_seconds = 60;  ///< wall-clock period of a running stage's checkpoints
   /// Called with the stage name and the fraction of the whole job done (0..1).
   std::function<void(const std::string&, double)> progress;
 };
@@ -142,8 +142,8 @@ std::string spec_fingerprint(const SpecimenSpec& spec);
 ///  4. measurement: porosity of the central region (exact sphere–region volumes), Dr, height,
 ///     per-layer and per-band porosity, coordination number.
 /// Random streams derive from spec.seed only, and the DEM is deterministic, so the result is
-/// bit-identical for any thread count and after a resume. Throws InvalidInput for a bad spec or
-/// a checkpoint directory from another spec.
+/// bit-identical for any thread count and after a resume from the store. Throws InvalidInput for
+/// a bad spec; the store's open() throws for stored stages of another spec.
 SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& control = {});
 
 }  // namespace clumpkit::dem

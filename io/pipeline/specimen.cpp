@@ -3,6 +3,7 @@
 #include "io/atomic_file.h"
 #include "io/pipeline/job.h"
 #include "io/pipeline/library.h"
+#include "io/pipeline/stage_files.h"
 #include "io/recipe.h"
 #include "io/specimen_io.h"
 
@@ -39,9 +40,9 @@ SpecimenJobResult run_specimen(const SpecimenRecipe& recipe, const std::string& 
   if (!library.empty()) templates = read_rock_templates(library);
   const dem::SpecimenSpec spec = specimen_spec(recipe, std::move(templates));
 
+  StageFiles stages((staging / "checkpoints").string(), options.resume);
   dem::SpecimenControl control;
-  control.checkpoint_dir = (staging / "checkpoints").string();
-  control.resume = options.resume;
+  control.store = &stages;
   control.checkpoint_every_seconds = options.checkpoint_seconds;
   control.progress = progress;
   SpecimenJobResult job;

@@ -20,10 +20,10 @@
 //   starts from a 100,000-step settle: use --full (or --settle 100000) for the ratio.
 //   FILE: output of run.sh (SUMMARY lines), for the ratio column. Env CLUMPKIT_DEM_BENCH_FULL=1
 //   is --full.
-#include "dem/checkpoint.h"
 #include "dem/state_hash.h"
 #include "dem/world.h"
 #include "geom/random.h"
+#include "io/checkpoint.h"
 
 #include <tbb/global_control.h>
 #include <Eigen/Eigenvalues>

@@ -1,20 +1,13 @@
 // Binary checkpoints of a DEM World that continue bit-identically after loading.
 #pragma once
 
+#include "dem/stage_store.h"
 #include "dem/world.h"
 
-#include <array>
 #include <cstdint>
 #include <string>
 
-namespace clumpkit::dem {
-
-/// Caller data stored next to the world: the specimen stage the run was in and the state of
-/// the random generator (e.g. xoshiro256** words) for the stages still to come.
-struct CheckpointInfo {
-  std::string stage;
-  std::array<std::uint64_t, 4> random_state{};
-};
+namespace clumpkit {
 
 /// Current checkpoint format version (bumped on any layout change).
 inline constexpr std::uint32_t kCheckpointVersion = 3;
@@ -27,14 +20,15 @@ inline constexpr std::uint32_t kCheckpointVersion = 3;
 /// with their current point), pair and wall contacts with their full state (shear history
 /// included), the neighbour lists (build positions and pairs, filter positions and limit) and a
 /// trailing FNV-1a 64 checksum.
-/// Written to PATH.tmp, then renamed over `path`, so a reader never sees a partial file.
+/// Written atomically (write_file_atomically), so a reader never sees a partial file.
 /// Throws IoError when the file cannot be written.
-void save_checkpoint(const std::string& path, const World& world, const CheckpointInfo& info = {});
+void save_checkpoint(const std::string& path, const dem::World& world,
+                     const dem::CheckpointInfo& info = {});
 
 /// Reads a checkpoint written by save_checkpoint into a new world whose later steps are
 /// bit-identical to those of the saved one; fills `info` when given. Throws IoError when the
 /// file cannot be opened, and InvalidInput naming the file for a wrong magic or version, a
 /// truncated or over-long file, a checksum mismatch or inconsistent content.
-World load_checkpoint(const std::string& path, CheckpointInfo* info = nullptr);
+dem::World load_checkpoint(const std::string& path, dem::CheckpointInfo* info = nullptr);
 
-}  // namespace clumpkit::dem
+}  // namespace clumpkit

@@ -1,6 +1,6 @@
 // Checkpoint round trips continue bit-identically; corrupt files are rejected; run_until stop
 // rules.
-#include "dem/checkpoint.h"
+#include "io/checkpoint.h"
 #include "dem/run.h"
 #include "dem/timestep.h"
 #include "dem/world.h"
@@ -281,9 +281,12 @@ TEST(DemRun, PeriodicCheckpointsDoNotChangeTheResultAndResumeIdentically) {
   const std::string path = temp_path("periodic.ckpt");
   World checked = make_deposition(60);
   RunLimits with_checkpoints = limits;
-  with_checkpoints.checkpoint_path = path;
+  with_checkpoints.checkpoint = [&](const World& w) {
+    CheckpointInfo stage;
+    stage.stage = "deposition";
+    save_checkpoint(path, w, stage);
+  };
   with_checkpoints.checkpoint_every_seconds = 1e-9;  // after every chunk
-  with_checkpoints.checkpoint_info.stage = "deposition";
   struct Killed {};
   EXPECT_THROW(run_until(checked, with_checkpoints,
                          [](long done, long) {

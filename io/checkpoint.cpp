@@ -1,7 +1,8 @@
-#include "dem/checkpoint.h"
+#include "io/checkpoint.h"
 
 #include "geom/errors.h"
 #include "geom/hash.h"
+#include "io/atomic_file.h"
 
 #include <cmath>
 #include <cstring>
@@ -11,7 +12,9 @@
 #include <system_error>
 #include <utility>
 
-namespace clumpkit::dem {
+namespace clumpkit {
+
+using namespace dem;
 
 namespace {
 
@@ -328,26 +331,9 @@ void save_checkpoint(const std::string& path, const World& world, const Checkpoi
   WorldCodec::write(w, world);
   w.u64(fnv1a(w.bytes.data(), w.bytes.size()));
 
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw IoError("checkpoint " + path + ": cannot open " + tmp + " for writing");
+  write_file_atomically(path, [&](std::ostream& out) {
     out.write(w.bytes.data(), static_cast<std::streamsize>(w.bytes.size()));
-    out.flush();
-    if (!out) {
-      out.close();
-      std::error_code ignored;
-      std::filesystem::remove(tmp, ignored);
-      throw IoError("checkpoint " + path + ": cannot write " + tmp);
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-    throw IoError("checkpoint " + path + ": cannot rename " + tmp + ": " + ec.message());
-  }
+  });
 }
 
 World load_checkpoint(const std::string& path, CheckpointInfo* info) {
@@ -384,4 +370,4 @@ World load_checkpoint(const std::string& path, CheckpointInfo* info) {
   return world;
 }
 
-}  // namespace clumpkit::dem
+}  // namespace clumpkit
