@@ -75,7 +75,7 @@ Body make_clump_body(const ClumpTemplate& clump_template, double density, const 
   body.scale = scale;
   body.spheres.reserve(clump_template.spheres.size());
   for (const Sphere& s : clump_template.spheres)
-    body.spheres.push_back(scale == 1.0 ? s : Sphere{s.center * scale, s.radius * scale});
+    body.spheres.push_back(Sphere{s.center * scale, s.radius * scale});
   // V·s·s·s in this order: the layer's drawn volume sums (and so its particle counts) are the
   // ones computed before bodies carried their template.
   body.volume = clump_template.mass.volume * scale * scale * scale;

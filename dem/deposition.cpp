@@ -1,7 +1,6 @@
 #include "dem/deposition.h"
 
 #include "dem/timestep.h"
-
 #include "geom/errors.h"
 
 #include <algorithm>

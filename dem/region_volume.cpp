@@ -2,15 +2,12 @@
 
 #include "geom/errors.h"
 #include "geom/volume/slicing.h"
-#include "geom/volume/union_of_balls.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
-#include <map>
 #include <string>
 
 namespace clumpkit::dem {
