@@ -64,6 +64,16 @@ std::vector<double> body_volumes(const World& world) {
   return out;
 }
 
+double column_height(const World& world) {
+  const std::vector<double> volumes = body_volumes(world);
+  double v = 0.0, vz = 0.0;
+  for (std::size_t k = 0; k < volumes.size(); ++k) {
+    v += volumes[k];
+    vz += volumes[k] * world.bodies()[k].position.z();
+  }
+  return v > 0 ? 2.0 * vz / v : 0.0;
+}
+
 double body_region_volume(const Body& body, double body_volume, const CylinderRegion& region) {
   std::vector<Sphere> world_spheres;
   double z0 = INFINITY, z1 = -INFINITY, rho_min = INFINITY, rho_max = 0.0;

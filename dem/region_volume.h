@@ -1,5 +1,6 @@
 // Solid volume and porosity of a DEM assembly inside a vertical cylindrical region, from exact
-// sphere-region volumes (clump overlaps counted once), and the coordination number.
+// sphere-region volumes (clump overlaps counted once), the column height and the coordination
+// number.
 #pragma once
 
 #include "dem/world.h"
@@ -19,6 +20,10 @@ struct CylinderRegion {
 /// template, or 4/3·π·r³ for a soil sphere). Throws InvalidInput for a body without a positive
 /// volume.
 std::vector<double> body_volumes(const World& world);
+
+/// Height of a uniform column with the same volume-weighted mean height as the bodies:
+/// H = 2·z̄ (a level top surface at H puts the mean at H/2); 0 without bodies.
+double column_height(const World& world);
 
 /// Volume of (union of the body's spheres) ∩ region. A body wholly inside counts its exact
 /// volume, one wholly outside nothing; a body cut by the region's boundary is integrated over z

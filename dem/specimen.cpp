@@ -6,6 +6,7 @@
 #include "dem/timestep.h"
 #include "geom/errors.h"
 #include "geom/hash.h"
+#include "geom/progress.h"
 #include "geom/random.h"
 
 #include <tbb/blocked_range.h>
@@ -57,17 +58,6 @@ double top_height(const World& world) {
     for (const Sphere& s : b.spheres)
       top = std::max(top, (b.orientation * s.center + b.position).z() + s.radius);
   return top;
-}
-
-/// Height of a uniform column with the same volume-weighted mean height as the bodies: H = 2·z̄
-/// (a level top surface at H puts the mean at H/2).
-double column_height(const World& world, const std::vector<double>& volumes) {
-  double v = 0.0, vz = 0.0;
-  for (std::size_t k = 0; k < volumes.size(); ++k) {
-    v += volumes[k];
-    vz += volumes[k] * world.bodies()[k].position.z();
-  }
-  return v > 0 ? 2.0 * vz / v : 0.0;
 }
 
 /// Central region of a settled pack: margin from the wall, the floor and the top.
@@ -134,62 +124,40 @@ double from_bits(std::uint64_t u) {
 }
 
 /// Settles `world` from its current step to equilibrium (SpecimenSpec::equilibrium_ratio or the
-/// settled-height rule), counting the cap from `stage_start` (the step the stage began), with
-/// periodic checkpoints carrying `stage`, `stage_start` (random_state[0]) and the column height
-/// of the last window boundary (random_state[1]), so a resumed run tests the height rule
-/// against the same reference as the uninterrupted one. `resumed` is the info of the checkpoint
-/// the world came from, or null for a fresh stage.
-RunOutcome settle(World& world, const SpecimenSpec& spec, long stage_start,
-                  const std::string& stage, StageStore& store, const SpecimenControl& control,
-                  const std::function<void(double)>& progress,
+/// settled-height rule of run_until) or the step cap, with periodic checkpoints of `stage`
+/// carrying the run's state (the height reference, random_state[1]), so a resumed run tests its
+/// rules as the uninterrupted one. `resumed` is the info of the checkpoint the world came from,
+/// or null for a fresh stage. `report(fraction of the stage)` answers whether to stop; then the
+/// checkpoint is saved and Interrupted thrown.
+RunOutcome settle(World& world, const SpecimenSpec& spec, const std::string& stage,
+                  StageStore& store, const SpecimenControl& control,
+                  const std::function<bool(double)>& report,
                   const CheckpointInfo* resumed = nullptr) {
-  const long window = spec.settle_window > 0 ? spec.settle_window : spec.max_steps;
-  const double tolerance = spec.height_tolerance * smallest_size(spec);
-  const std::vector<double> volumes = body_volumes(world);
-  double reference = resumed ? from_bits(resumed->random_state[1]) : NAN;
   RunLimits limits;
+  limits.max_steps = std::max(0L, spec.max_steps - static_cast<long>(world.steps()));
   limits.weight_ratio_below = spec.equilibrium_ratio;
+  limits.height_window = spec.settle_window;
+  limits.height_tolerance = spec.height_tolerance * smallest_size(spec);
+  if (resumed) limits.state.height_reference = from_bits(resumed->random_state[1]);
   if (store.keeps_checkpoints()) {
     limits.checkpoint_every_seconds = control.checkpoint_every_seconds;
-    limits.checkpoint = [&](const World& w) {
+    limits.checkpoint = [&](const World& w, const RunState& state) {
       CheckpointInfo info;
       info.stage = stage;
-      info.random_state[0] = static_cast<std::uint64_t>(stage_start);
-      info.random_state[1] = bits(reference);
+      info.random_state[1] = bits(state.height_reference);
       store.checkpoint(stage, w, info);
     };
   }
-  RunOutcome out;
-  for (;;) {
-    const long done = static_cast<long>(world.steps()) - stage_start;
-    if (done % window == 0) {
-      // A window boundary (also where a resumed run may start): the height rule, then the new
-      // reference.
-      const double h = column_height(world, volumes);
-      if (spec.settle_window > 0 && done > 0 && std::isfinite(reference) &&
-          std::abs(h - reference) < tolerance && unbalanced_to_weight_ratio(world) < 1.0) {
-        out.steps = done;
-        out.stopped_by = "settled_height";
-        return out;
-      }
-      reference = h;
-    }
-    if (done >= spec.max_steps) {
-      out.steps = done;
-      out.stopped_by = "step_cap";
-      return out;
-    }
-    limits.max_steps = std::min(window - done % window, spec.max_steps - done);
-    out = run_until(world, limits, [&](long, long) {
-      if (progress)
-        progress(static_cast<double>(world.steps() - stage_start) /
-                 static_cast<double>(spec.max_steps));
-    });
-    if (out.stopped_by != "step_cap") {
-      out.steps = static_cast<long>(world.steps()) - stage_start;
-      return out;
-    }
-  }
+  RunOutcome out = run_until(world, limits, [&](std::string_view, double) {
+    return report &&
+           report(static_cast<double>(world.steps()) / static_cast<double>(spec.max_steps));
+  });
+  out.steps = static_cast<long>(world.steps());
+  if (out.stopped_by == "interrupted")
+    throw Interrupted("specimen: stopped on request in stage " + stage + " at step " +
+                      std::to_string(out.steps) +
+                      (store.keeps_checkpoints() ? " (checkpoint kept)" : ""));
+  return out;
 }
 
 /// A settling stage of the layer or the specimen: the world it ended with when the store has it
@@ -197,13 +165,13 @@ RunOutcome settle(World& world, const SpecimenSpec& spec, long stage_start,
 /// `finish` (if any) edits the world before the store keeps it.
 World settled_stage(const std::string& name, StageStore& store, const SpecimenSpec& spec,
                     const SpecimenControl& control, const std::function<World()>& start,
-                    const std::function<void(double)>& progress,
+                    const std::function<bool(double)>& report,
                     const std::function<void(World&)>& finish = {}) {
   if (store.finished(name)) return store.finished_world(name);
   CheckpointInfo info;
   std::optional<World> resumed = store.running(name, info);
   World world = resumed ? std::move(*resumed) : start();
-  settle(world, spec, 0, name, store, control, progress, resumed ? &info : nullptr);
+  settle(world, spec, name, store, control, report, resumed ? &info : nullptr);
   if (finish) finish(world);
   store.finish(name, {{"steps", std::to_string(world.steps())}}, &world);
   return world;
@@ -312,86 +280,176 @@ std::string spec_fingerprint(const SpecimenSpec& spec) {
   return h.hex();
 }
 
+World stack_layers(const World& layer, int layers, double layer_height) {
+  World stacked(layer.options());
+  for (int copy = 0; copy < layers; ++copy)
+    for (const Body& b : layer.bodies()) {
+      Body c = b;
+      c.position.z() += copy * layer_height;
+      c.velocity.setZero();
+      c.angular_velocity.setZero();
+      stacked.add_body(std::move(c));
+    }
+  for (const Wall& w : layer.walls()) stacked.add_wall(w);
+  return stacked;
+}
+
+namespace {
+
+/// What every stage of one build shares.
+struct Build {
+  const SpecimenSpec& spec;
+  const SpecimenControl& control;
+  StageStore& store;
+  double lambda;  ///< density scaling of the preparation
+  double margin;  ///< of the measurement regions (m)
+  /// Tells the interrupter the stage and the fraction of the whole job (clamped to 0..1).
+  bool report(const std::string& stage, double fraction) const {
+    return interrupted(control.interrupter, stage, std::clamp(fraction, 0.0, 1.0));
+  }
+};
+
+/// Stage 1: n(μ) by depositing the same placed sample at each calibration friction (in
+/// parallel, one stage per friction), porosity of the central region; sorted by friction.
+std::vector<CalibrationPoint> calibrate(const Build& build, double layer_volume) {
+  const SpecimenSpec& spec = build.spec;
+  std::vector<double> frictions = spec.calibration_frictions;
+  std::sort(frictions.begin(), frictions.end());
+  frictions.erase(std::unique(frictions.begin(), frictions.end()), frictions.end());
+  if (frictions.size() < 2) throw InvalidInput("specimen: need two distinct calibration frictions");
+  std::vector<CalibrationPoint> cal(frictions.size());
+  Rng particle_rng = Rng::stream(spec.seed, calibration_particles);
+  const LayerParticles sample =
+      layer_particles(spec.classes, spec.templates, (1.0 - spec.porosity_guess) * layer_volume,
+                      spec.soil_density, spec.rock_density, particle_rng);
+  Rng place_rng = Rng::stream(spec.seed, calibration_placement);
+  const std::vector<Placement> placed =
+      place_in_cylinder(placement_items(sample.bodies), spec.radius, place_rng);
+  std::vector<double> fraction(frictions.size(), 0.0);
+  std::mutex report_mutex;
+  bool stop = false;  // sticky: once asked, every parallel run stops at its next check
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, frictions.size(), 1),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t k = range.begin(); k != range.end(); ++k) {
+          const std::string name = "calibration-" + std::to_string(k);
+          StageStore& store = build.store;
+          if (const std::optional<StageRecord> r = store.finished(name)) {
+            const auto stopped = r->find("stopped_by");
+            cal[k] = {number(*r, "friction", name), number(*r, "porosity", name), 0.0,
+                      static_cast<long>(number(*r, "steps", name)),
+                      stopped == r->end() ? std::string() : stopped->second};
+            cal[k].void_ratio = cal[k].porosity / (1.0 - cal[k].porosity);
+            continue;
+          }
+          CheckpointInfo info;
+          std::optional<World> resumed = store.running(name, info);
+          World world = resumed
+                            ? std::move(*resumed)
+                            : scaled_world(sample.bodies, placed, spec, frictions[k], build.lambda);
+          const auto report = [&](double f) {
+            std::lock_guard<std::mutex> lock(report_mutex);
+            fraction[k] = f;
+            double sum = 0;
+            for (double v : fraction) sum += v;
+            stop = build.report("calibration", 0.5 * sum / static_cast<double>(fraction.size())) ||
+                   stop;
+            return stop;
+          };
+          const RunOutcome out =
+              settle(world, spec, name, store, build.control, report, resumed ? &info : nullptr);
+          CalibrationPoint& p = cal[k];
+          p.friction = frictions[k];
+          p.porosity =
+              region_porosity(world, body_volumes(world),
+                              central_region(spec.radius, build.margin, column_height(world)));
+          p.void_ratio = p.porosity / (1.0 - p.porosity);
+          p.steps = out.steps;
+          p.stopped_by = out.stopped_by;
+          store.finish(name,
+                       {{"friction", hex(p.friction)},
+                        {"porosity", hex(p.porosity)},
+                        {"steps", std::to_string(p.steps)},
+                        {"stopped_by", p.stopped_by}},
+                       nullptr);
+        }
+      });
+  return cal;
+}
+
+/// Stage 4: porosity of the central region of the settled specimen, its relative density from
+/// the calibration's extremes, the column height (into `result`).
+void measure(const World& world, const Build& build, SpecimenResult& result) {
+  result.height = column_height(world);
+  result.region = central_region(build.spec.radius, build.margin, result.height);
+  result.porosity = region_porosity(world, body_volumes(world), result.region);
+  result.relative_density =
+      relative_density(result.porosity, result.porosity_max, result.porosity_min);
+}
+
+/// The per-layer and per-band porosities and the coordination number of the finished specimen.
+void measure_profiles(const World& world, int layers, SpecimenResult& result) {
+  const std::vector<double> volumes = body_volumes(world);
+  const double layer_span = result.height / layers;
+  for (int k = 0; k < layers; ++k) {
+    CylinderRegion r = result.region;
+    r.z_lo = std::max(result.region.z_lo, k * layer_span);
+    r.z_hi = std::min(result.region.z_hi, (k + 1) * layer_span);
+    result.layer_porosity.push_back(r.z_hi > r.z_lo ? region_porosity(world, volumes, r)
+                                                    : std::nan(""));
+  }
+  const int bands = 2 * layers;
+  const double band = (result.region.z_hi - result.region.z_lo) / bands;
+  for (int k = 0; k < bands; ++k) {
+    CylinderRegion r = result.region;
+    r.z_lo = result.region.z_lo + k * band;
+    r.z_hi = k + 1 == bands ? result.region.z_hi : r.z_lo + band;
+    result.band_porosity.push_back(region_porosity(world, volumes, r));
+  }
+  result.coordination = coordination_number(world, result.region);
+}
+
+/// The next compaction friction after a build that missed the target: between the two closest
+/// builds that bracket the target porosity, linearly (regula falsi on the measured n(μ) of the
+/// stacked specimen); without a bracket, the calibration curve at the porosity shifted by the
+/// last miss (accumulated in `porosity_for_friction`).
+double next_compaction_friction(const SpecimenResult& result, double& porosity_for_friction) {
+  const SpecimenRound* below = nullptr;  // densest-side build closest to the target
+  const SpecimenRound* above = nullptr;
+  for (const SpecimenRound& x : result.rounds) {
+    if (x.porosity <= result.target_porosity && (!below || x.porosity > below->porosity))
+      below = &x;
+    if (x.porosity > result.target_porosity && (!above || x.porosity < above->porosity)) above = &x;
+  }
+  if (below && above && above->porosity > below->porosity)
+    return below->friction + (result.target_porosity - below->porosity) /
+                                 (above->porosity - below->porosity) *
+                                 (above->friction - below->friction);
+  porosity_for_friction += result.target_porosity - result.porosity;
+  return interpolate_friction(result.calibration,
+                              porosity_for_friction / (1.0 - porosity_for_friction));
+}
+
+}  // namespace
+
 SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& control) {
   check_spec(spec);
   SpecimenResult result;
   StageStore in_memory;
   StageStore& store = control.store ? *control.store : in_memory;
   store.open(spec_fingerprint(spec));
-  auto report = [&](const std::string& stage, double fraction) {
-    if (control.progress) control.progress(stage, std::clamp(fraction, 0.0, 1.0));
-  };
 
   const double layer_volume = M_PI * spec.radius * spec.radius * spec.height / spec.layers;
   double margin = spec.margin;
   if (margin <= 0)
     for (const ParticleClass& c : spec.classes) margin = std::max(margin, c.max_size);
-
-  const double lambda = density_scaling(spec);
-  result.density_scaling = lambda;
+  result.density_scaling = density_scaling(spec);
+  const Build build{spec, control, store, result.density_scaling, margin};
 
   // Stage 1: calibration n(μ).
   auto t0 = Clock::now();
-  std::vector<double> frictions = spec.calibration_frictions;
-  std::sort(frictions.begin(), frictions.end());
-  frictions.erase(std::unique(frictions.begin(), frictions.end()), frictions.end());
-  if (frictions.size() < 2) throw InvalidInput("specimen: need two distinct calibration frictions");
-  std::vector<CalibrationPoint> cal(frictions.size());
-  {
-    Rng particle_rng = Rng::stream(spec.seed, calibration_particles);
-    const LayerParticles sample =
-        layer_particles(spec.classes, spec.templates, (1.0 - spec.porosity_guess) * layer_volume,
-                        spec.soil_density, spec.rock_density, particle_rng);
-    Rng place_rng = Rng::stream(spec.seed, calibration_placement);
-    const std::vector<Placement> placed =
-        place_in_cylinder(placement_items(sample.bodies), spec.radius, place_rng);
-    std::vector<double> fraction(frictions.size(), 0.0);
-    std::mutex progress_mutex;
-    tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(0, frictions.size(), 1),
-        [&](const tbb::blocked_range<std::size_t>& range) {
-          for (std::size_t k = range.begin(); k != range.end(); ++k) {
-            const std::string name = "calibration-" + std::to_string(k);
-            if (const std::optional<StageRecord> r = store.finished(name)) {
-              const auto stopped = r->find("stopped_by");
-              cal[k] = {number(*r, "friction", name), number(*r, "porosity", name), 0.0,
-                        static_cast<long>(number(*r, "steps", name)),
-                        stopped == r->end() ? std::string() : stopped->second};
-              cal[k].void_ratio = cal[k].porosity / (1.0 - cal[k].porosity);
-              continue;
-            }
-            CheckpointInfo info;
-            std::optional<World> resumed = store.running(name, info);
-            World world = resumed ? std::move(*resumed)
-                                  : scaled_world(sample.bodies, placed, spec, frictions[k], lambda);
-            const auto show = [&](double f) {
-              std::lock_guard<std::mutex> lock(progress_mutex);
-              fraction[k] = f;
-              double sum = 0;
-              for (double v : fraction) sum += v;
-              report("calibration", 0.5 * sum / static_cast<double>(fraction.size()));
-            };
-            const RunOutcome out =
-                settle(world, spec, 0, name, store, control, show, resumed ? &info : nullptr);
-            const std::vector<double> volumes = body_volumes(world);
-            const CylinderRegion region =
-                central_region(spec.radius, margin, column_height(world, volumes));
-            CalibrationPoint& p = cal[k];
-            p.friction = frictions[k];
-            p.porosity = region_porosity(world, volumes, region);
-            p.void_ratio = p.porosity / (1.0 - p.porosity);
-            p.steps = out.steps;
-            p.stopped_by = out.stopped_by;
-            store.finish(name,
-                         {{"friction", hex(p.friction)},
-                          {"porosity", hex(p.porosity)},
-                          {"steps", std::to_string(p.steps)},
-                          {"stopped_by", p.stopped_by}},
-                         nullptr);
-          }
-        });
-  }
-  result.calibration = cal;
+  result.calibration = calibrate(build, layer_volume);
+  const std::vector<CalibrationPoint>& cal = result.calibration;
   result.porosity_min = cal.front().porosity;  // μ = smallest (0): densest
   result.porosity_max = cal.back().porosity;   // μ = largest: loosest
   const double e_max = result.porosity_max / (1.0 - result.porosity_max);
@@ -426,9 +484,9 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
     const double friction = next_friction;
     result.rounds.push_back({friction, 0.0, 0.0});
 
-    // Stage 2: one layer at the target porosity, compacted at μ*.
+    // Stage 2: one layer at the target porosity, compacted at μ*, then μ back to the material
+    // friction for stage 3 (shear history rescaled).
     t0 = Clock::now();
-    // μ back to the material friction for stage 3 once compacted, shear history rescaled.
     const World layer_world = settled_stage(
         "layer" + tag, store, spec, control,
         [&] {
@@ -436,16 +494,13 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
             Rng place_rng = Rng::stream(spec.seed, layer_placement);
             layer_placed = place_in_cylinder(placement_items(layer.bodies), spec.radius, place_rng);
           }
-          return scaled_world(layer.bodies, layer_placed, spec, friction, lambda);
+          return scaled_world(layer.bodies, layer_placed, spec, friction, build.lambda);
         },
-        [&](double f) { report("layer compaction", base + 0.4 * round_share * f); },
+        [&](double f) { return build.report("layer compaction", base + 0.4 * round_share * f); },
         [&](World& w) { w.rescale_friction(spec.contact.friction); });
-    {
-      const std::vector<double> volumes = body_volumes(layer_world);
-      result.layer_porosity_compacted =
-          region_porosity(layer_world, volumes,
-                          central_region(spec.radius, margin, column_height(layer_world, volumes)));
-    }
+    result.layer_porosity_compacted =
+        region_porosity(layer_world, body_volumes(layer_world),
+                        central_region(spec.radius, margin, column_height(layer_world)));
     result.layer_height = top_height(layer_world);
     result.steps.emplace_back("layer" + tag, static_cast<long>(layer_world.steps()));
     result.seconds.emplace_back("layer" + tag, since(t0));
@@ -455,29 +510,14 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
     t0 = Clock::now();
     world = settled_stage(
         "specimen" + tag, store, spec, control,
-        [&] {
-          World stacked(layer_world.options());
-          for (int copy = 0; copy < spec.layers; ++copy)
-            for (const Body& b : layer_world.bodies()) {
-              Body c = b;
-              c.position.z() += copy * result.layer_height;
-              c.velocity.setZero();
-              c.angular_velocity.setZero();
-              stacked.add_body(std::move(c));
-            }
-          for (const Wall& w : layer_world.walls()) stacked.add_wall(w);
-          return stacked;
-        },
-        [&](double f) { report("layered specimen", base + round_share * (0.4 + 0.6 * f)); });
+        [&] { return stack_layers(layer_world, spec.layers, result.layer_height); },
+        [&](double f) {
+          return build.report("layered specimen", base + round_share * (0.4 + 0.6 * f));
+        });
     result.steps.emplace_back("specimen" + tag, static_cast<long>(world.steps()));
 
     // Stage 4: measurement (masses do not enter it).
-    const std::vector<double> volumes = body_volumes(world);
-    result.height = column_height(world, volumes);
-    result.region = central_region(spec.radius, margin, result.height);
-    result.porosity = region_porosity(world, volumes, result.region);
-    result.relative_density =
-        relative_density(result.porosity, result.porosity_max, result.porosity_min);
+    measure(world, build, result);
     result.friction_compaction = friction;
     result.rounds.back().porosity = result.porosity;
     result.rounds.back().relative_density = result.relative_density;
@@ -486,56 +526,20 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
             spec.relative_density_tolerance ||
         round >= spec.correction_rounds)
       break;
-    // Next μ*: between the two closest builds that bracket the target, linearly (regula
-    // falsi on the measured n(μ) of the stacked specimen); without a bracket, the calibration
-    // curve at the porosity shifted by the last miss.
-    const SpecimenRound* below = nullptr;  // densest-side build closest to the target
-    const SpecimenRound* above = nullptr;
-    for (const SpecimenRound& x : result.rounds) {
-      if (x.porosity <= result.target_porosity && (!below || x.porosity > below->porosity))
-        below = &x;
-      if (x.porosity > result.target_porosity && (!above || x.porosity < above->porosity))
-        above = &x;
-    }
-    if (below && above && above->porosity > below->porosity) {
-      next_friction = below->friction + (result.target_porosity - below->porosity) /
-                                            (above->porosity - below->porosity) *
-                                            (above->friction - below->friction);
-    } else {
-      porosity_for_friction += result.target_porosity - result.porosity;
-      next_friction =
-          interpolate_friction(cal, porosity_for_friction / (1.0 - porosity_for_friction));
-    }
+    next_friction = next_compaction_friction(result, porosity_for_friction);
   }
 
   // True masses in the finished specimen.
   for (Body& b : world.bodies()) {
-    b.mass /= lambda;
-    b.moments /= lambda;
+    b.mass /= build.lambda;
+    b.moments /= build.lambda;
   }
 
   t0 = Clock::now();
-  report("measurement", 0.95);
-  const std::vector<double> volumes = body_volumes(world);
-  const double layer_span = result.height / spec.layers;
-  for (int k = 0; k < spec.layers; ++k) {
-    CylinderRegion r = result.region;
-    r.z_lo = std::max(result.region.z_lo, k * layer_span);
-    r.z_hi = std::min(result.region.z_hi, (k + 1) * layer_span);
-    result.layer_porosity.push_back(r.z_hi > r.z_lo ? region_porosity(world, volumes, r)
-                                                    : std::nan(""));
-  }
-  const int bands = 2 * spec.layers;
-  const double band = (result.region.z_hi - result.region.z_lo) / bands;
-  for (int k = 0; k < bands; ++k) {
-    CylinderRegion r = result.region;
-    r.z_lo = result.region.z_lo + k * band;
-    r.z_hi = k + 1 == bands ? result.region.z_hi : r.z_lo + band;
-    result.band_porosity.push_back(region_porosity(world, volumes, r));
-  }
-  result.coordination = coordination_number(world, result.region);
+  build.report("measurement", 0.95);
+  measure_profiles(world, spec.layers, result);
   result.seconds.emplace_back("measurement", since(t0));
-  report("done", 1.0);
+  build.report("done", 1.0);
   return result;
 }
 

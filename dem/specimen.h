@@ -6,6 +6,7 @@
 #include "dem/specimen_particles.h"
 #include "dem/stage_store.h"
 #include "dem/world.h"
+#include "geom/progress.h"
 
 #include <cstdint>
 #include <functional>
@@ -97,15 +98,17 @@ struct SpecimenResult {
   std::vector<SpecimenRound> rounds;                    ///< every build, the last one is the result
 };
 
-/// Progress and stage storage of build_specimen.
+/// Progress, interruption and stage storage of build_specimen.
 struct SpecimenControl {
   /// Where finished stages and running checkpoints are kept (and taken from when resuming);
   /// null = nowhere (in memory only). Stages may run in parallel: calibration runs call the
   /// store from several threads, each for its own stage.
   StageStore* store = nullptr;
   double checkpoint_every_seconds = 60;  ///< wall-clock period of a running stage's checkpoints
-  /// Called with the stage name and the fraction of the whole job done (0..1).
-  std::function<void(const std::string&, double)> progress;
+  /// Told the stage ("calibration", "layer compaction", "layered specimen", "measurement") and
+  /// the fraction of the whole job done (0..1); when it asks to stop, the running stages save a
+  /// checkpoint and build_specimen throws Interrupted.
+  Interrupter interrupter;
 };
 
 /// Relative density Dr = (e_max − e)/(e_max − e_min) from porosities (e = n/(1 − n)).
@@ -126,6 +129,10 @@ std::string canonical_text(const SpecimenSpec& spec);
 /// The resume fingerprint: FNV-1a 64 (16 hex digits) of the program version and
 /// canonical_text(spec), so checkpoints are reused only by the same program on the same spec.
 std::string spec_fingerprint(const SpecimenSpec& spec);
+
+/// Stage 3 of build_specimen: `layers` copies of the layer's bodies (and its walls), copy k
+/// shifted up by k·layer_height and at rest; the copies keep kind, template, scale and mass.
+World stack_layers(const World& layer, int layers, double layer_height);
 
 /// Runs the stages:
 ///  1. calibration: the particles of one layer at spec.porosity_guess, placed loose and

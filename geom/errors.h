@@ -1,4 +1,5 @@
-// Exception types shared by every clumpkit library: bad input, file trouble, numerical failure.
+// Exception types shared by every clumpkit library: bad input, file trouble, interruption,
+// numerical failure.
 #pragma once
 
 #include <stdexcept>
@@ -14,6 +15,12 @@ struct InvalidInput : std::invalid_argument {
 
 /// A file could not be opened, read or written. The CLI maps it to exit code 2.
 struct IoError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Long work stopped because its Interrupter (geom/progress.h) asked it to (exit code 130, as
+/// for SIGINT). The message says what was kept for a resumed run.
+struct Interrupted : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 

@@ -213,8 +213,9 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
       f.fail("rock", "give exactly one of library (a directory from `clumpkit library`) or recipe");
     if (!r.library.empty()) {
       const fs::path lib = base / r.library;
-      if (!fs::exists(lib / "library.json"))
-        f.fail("rock.library", "no clump library (library.json) at " + lib.string());
+      // manifest.json; library.json in libraries written by earlier builds of clumpkit 0.1.
+      if (!fs::exists(lib / "manifest.json") && !fs::exists(lib / "library.json"))
+        f.fail("rock.library", "no clump library (manifest.json) at " + lib.string());
       r.library = lib.string();
     } else {
       const fs::path rec = base / r.library_recipe;

@@ -2,8 +2,11 @@
 
 #include <tbb/global_control.h>
 
+#include <time.h>
 #include <unistd.h>
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <memory>
 
@@ -15,6 +18,23 @@ double now() {
   return duration<double>(steady_clock::now().time_since_epoch()).count();
 }
 std::unique_ptr<tbb::global_control> g_threads;
+
+std::atomic<bool> g_stop_requested{false};
+std::atomic<long> g_first_signal_second{0};
+
+// Lock-free atomics and clock_gettime are async-signal-safe.
+extern "C" void on_stop_signal(int signal) {
+  timespec now{};
+  clock_gettime(CLOCK_MONOTONIC, &now);
+  if (!g_stop_requested.exchange(true)) {
+    g_first_signal_second = now.tv_sec;
+  } else if (now.tv_sec > g_first_signal_second + 1) {
+    // Asked again, seconds later: end at once. (Not at the second signal itself: `timeout` and
+    // some launchers send it to the process and to its group, i.e. twice.)
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+  }
+}
 }  // namespace
 
 void set_threads(int threads) {
@@ -47,6 +67,16 @@ void ProgressBar::update(std::size_t done, std::size_t total) {
 void ProgressBar::finish() {
   if (drawn_) std::fprintf(stderr, "\n");
   drawn_ = false;
+}
+
+Interrupter signal_interrupter(ProgressBar& bar, const std::string& command) {
+  std::signal(SIGINT, on_stop_signal);
+  std::signal(SIGTERM, on_stop_signal);
+  return [&bar, command](std::string_view stage, double fraction) {
+    bar.set_label(command + ": " + std::string(stage));
+    bar.update(fraction);
+    return g_stop_requested.load();
+  };
 }
 
 void note(const std::string& message) {

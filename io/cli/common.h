@@ -1,5 +1,7 @@
-// Shared pieces of the clumpkit subcommands: registration, error exit codes, progress bar.
+// Shared pieces of the clumpkit subcommands: registration, threads, progress bar, interruption.
 #pragma once
+
+#include "geom/progress.h"
 
 #include <CLI/CLI.hpp>
 
@@ -26,8 +28,11 @@ class ProgressBar {
   ProgressBar(std::string label, bool quiet);
   ~ProgressBar();
   void update(std::size_t done, std::size_t total);
+  /// The bar at `fraction` (0..1) of the work.
+  void update(double fraction) { update(static_cast<std::size_t>(1000 * fraction), 1000); }
   /// Changes the label (e.g. the current stage) from the next update on.
   void set_label(std::string label) {
+    if (label == label_) return;
     label_ = std::move(label);
     last_permille_ = -1;
   }
@@ -40,6 +45,12 @@ class ProgressBar {
   int last_permille_ = -1;
   bool drawn_ = false;
 };
+
+/// The interrupter of a long command (geom/progress.h): shows the stage and fraction on `bar`
+/// (label "COMMAND: stage") and asks the work to stop once SIGINT or SIGTERM has arrived. The
+/// handlers are installed on the first call; a signal more than a second after the first ends
+/// the process at once. main() maps the resulting Interrupted to exit code 130.
+Interrupter signal_interrupter(ProgressBar& bar, const std::string& command);
 
 /// Writes one note line "clumpkit: note: ..." to stderr.
 void note(const std::string& message);

@@ -23,7 +23,9 @@ void register_library(CLI::App& app) {
       "library",
       "Clump library from a recipe (TOML, lengths in m; [fill] table for the sphere fill): "
       "DIR/particles/NNNNN.stl (mesh), NNNNN.csv (clump x,y,z,r), NNNNN.json (record), "
-      "DIR/library.csv and DIR/library.json. A killed run restarted with the same command resumes; "
+      "DIR/library.csv, DIR/recipe.toml and DIR/manifest.json, written in DIR.partial and renamed "
+      "at "
+      "the end. A killed or interrupted (Ctrl-C) run restarted with the same command resumes; "
       "same seed, same bytes, for any --threads.");
   c->add_option("--recipe", o->recipe, "Recipe file (see assets/recipes/)")->required();
   c->add_option("--out", o->out, "Output directory")->required();
@@ -39,8 +41,7 @@ void register_library(CLI::App& app) {
     ProgressBar bar("library", o->quiet);
     LibraryOptions lo;
     lo.png = o->png;
-    const auto r =
-        run_library(recipe, o->out, lo, [&](std::size_t d, std::size_t t) { bar.update(d, t); });
+    const auto r = run_library(recipe, o->out, lo, signal_interrupter(bar, "library"));
     bar.finish();
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -54,8 +55,7 @@ void register_library(CLI::App& app) {
     } else {
       std::printf(
           "wrote %zu particles to %s (%zu kept from an earlier run) in %.1f s: particles/, "
-          "library.csv, "
-          "library.json\n",
+          "library.csv, manifest.json\n",
           r.particles, r.out_dir.c_str(), r.resumed, seconds);
     }
   });

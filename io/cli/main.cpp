@@ -1,4 +1,5 @@
-// clumpkit command line: parses arguments and maps errors to exit codes (2 bad input, 1 failure).
+// clumpkit command line: parses arguments and maps errors to exit codes (2 bad input, 1 failure,
+// 130 stopped on request).
 #include "geom/errors.h"
 #include "io/cli/common.h"
 
@@ -38,6 +39,9 @@ int main(int argc, char** argv) {
   } catch (const clumpkit::IoError& e) {
     std::fprintf(stderr, "clumpkit: error: %s\n", e.what());
     return 2;
+  } catch (const clumpkit::Interrupted& e) {
+    std::fprintf(stderr, "clumpkit: stopped: %s\n", e.what());
+    return 130;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "clumpkit: error: internal failure: %s\n", e.what());
     return 1;

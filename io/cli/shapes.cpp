@@ -33,8 +33,7 @@ void register_shapes(CLI::App& app) {
     set_threads(o->threads);
     const ShapeRecipe recipe = read_shape_recipe(o->recipe);
     ProgressBar bar("shapes", o->quiet);
-    const auto r =
-        run_shape_batch(recipe, o->out, [&](std::size_t d, std::size_t t) { bar.update(d, t); });
+    const auto r = run_shape_batch(recipe, o->out, signal_interrupter(bar, "shapes"));
     bar.finish();
     if (o->json) {
       std::cout << nlohmann::json{{"particles", r.particles}, {"out", r.out_dir}}.dump(2) << "\n";

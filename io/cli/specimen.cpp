@@ -30,7 +30,8 @@ void register_specimen(CLI::App& app) {
       "porosity_min, friction_compaction, height, bodies, spheres, layer_porosity, steps, "
       "seconds, ...), calibration.csv and calibration.png (n against mu), slices/*.png (rock "
       "red, soil blue) and manifest.json. Work goes to DIR.partial (checkpoints every "
-      "--checkpoint-seconds); a killed run continues with --resume to the same bytes. Same seed, "
+      "--checkpoint-seconds, and on Ctrl-C); a killed or interrupted run continues with --resume "
+      "to the same bytes. Same seed, "
       "same bytes, for any --threads.");
   c->add_option("--recipe", o->recipe, "Specimen recipe file (see assets/recipes/)")->required();
   c->add_option("--out", o->out, "Output directory")->required();
@@ -47,13 +48,8 @@ void register_specimen(CLI::App& app) {
     set_threads(o->threads);
     const SpecimenRecipe recipe = read_specimen_recipe(o->recipe);
     ProgressBar bar("specimen", o->quiet);
-    const SpecimenJobResult job = run_specimen(
-        recipe, o->out, {o->resume, o->checkpoint_seconds},
-        [&](const std::string& stage, double fraction) {
-          bar.set_label("specimen: " + stage);
-          bar.update(static_cast<std::size_t>(1000 * fraction), 1000);
-        },
-        t0);
+    const SpecimenJobResult job = run_specimen(recipe, o->out, {o->resume, o->checkpoint_seconds},
+                                               signal_interrupter(bar, "specimen"), t0);
     bar.finish();
     const dem::SpecimenResult& result = job.specimen;
     const nlohmann::ordered_json& report = job.report;

@@ -16,6 +16,8 @@ namespace fs = std::filesystem;
 namespace clumpkit {
 
 void check_output_directory(const std::string& dir) {
+  if (fs::exists(dir) && !fs::is_directory(dir))
+    throw InvalidInput(dir + ": --out exists and is not a directory");
   if (fs::exists(dir) && !fs::exists(fs::path(dir) / "manifest.json") && !fs::is_empty(dir))
     throw InvalidInput(dir +
                        ": output directory exists and is not a clumpkit output; "
@@ -61,17 +63,21 @@ nlohmann::ordered_json manifest_head(const std::string& command, const ShapeReci
 
 void for_each_particle(const ShapeRecipe& recipe, const std::vector<int>& fraction_of,
                        const std::vector<char>& todo, std::size_t already,
-                       const std::function<void(std::size_t)>& work, const Progress& progress) {
+                       const std::function<void(std::size_t)>& work, std::string_view stage,
+                       const Interrupter& interrupter) {
   const std::size_t total = fraction_of.size();
   std::atomic<std::size_t> done{already};
   std::exception_ptr error;
-  std::atomic<bool> failed{false};
-  std::mutex progress_mutex;
-  if (progress && already > 0) progress(already, total);
+  std::atomic<bool> failed{false}, stop{false};
+  std::mutex report_mutex;
+  const auto fraction = [total](std::size_t n) {
+    return total ? static_cast<double>(n) / static_cast<double>(total) : 1.0;
+  };
+  if (already > 0 && interrupted(interrupter, stage, fraction(already))) stop = true;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, total, 1),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                        if ((!todo.empty() && !todo[i]) || failed) continue;
+                        if ((!todo.empty() && !todo[i]) || failed || stop) continue;
                         try {
                           work(i);
                         } catch (const std::exception& e) {
@@ -87,13 +93,17 @@ void for_each_particle(const ShapeRecipe& recipe, const std::vector<int>& fracti
                           return;
                         }
                         const std::size_t n = ++done;
-                        if (progress && progress_mutex.try_lock()) {
-                          progress(n, total);
-                          progress_mutex.unlock();
+                        // Not concurrently: a thread that finds the interrupter busy goes on.
+                        if (interrupter && report_mutex.try_lock()) {
+                          if (interrupter(stage, fraction(n))) stop = true;
+                          report_mutex.unlock();
                         }
                       }
                     });
   if (error) std::rethrow_exception(error);
+  if (stop)
+    throw Interrupted(recipe.path + ": " + std::string(stage) + " stopped on request after " +
+                      std::to_string(done.load()) + " of " + std::to_string(total) + " particles");
 }
 
 }  // namespace clumpkit

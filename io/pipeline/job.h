@@ -1,7 +1,8 @@
-// What every pipeline job shares: progress, the output-directory rule, the manifest schema and
-// the parallel per-particle runner.
+// What every pipeline job shares: the output-directory rule, the manifest schema and the
+// parallel per-particle runner (progress and interruption through geom/progress.h).
 #pragma once
 
+#include "geom/progress.h"
 #include "io/recipe.h"
 
 #include <nlohmann/json.hpp>
@@ -9,25 +10,25 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace clumpkit {
 
-/// Progress callback: (items done, items total). May be called from worker threads, never
-/// concurrently.
-using Progress = std::function<void(std::size_t, std::size_t)>;
-
 /// Runs work(i) for every particle i with todo[i] (all if todo is empty) in parallel (TBB).
 /// Stops at the first failure and rethrows it as InvalidInput "RECIPE: fraction 'NAME' particle
-/// NNNNN: why" (fraction_of[i] names the fraction). progress(done, total) starts from `already`.
+/// NNNNN: why" (fraction_of[i] names the fraction). After each particle the interrupter is told
+/// (`stage`, particles done / total, counting `already` done ones); when it asks to stop, no
+/// new particle starts and Interrupted is thrown once the running ones are done.
 void for_each_particle(const ShapeRecipe& recipe, const std::vector<int>& fraction_of,
                        const std::vector<char>& todo, std::size_t already,
-                       const std::function<void(std::size_t)>& work, const Progress& progress);
+                       const std::function<void(std::size_t)>& work, std::string_view stage,
+                       const Interrupter& interrupter);
 
 /// Fraction index of every particle of the recipe, in id order.
 std::vector<int> particle_fractions(const ShapeRecipe& recipe);
 
-/// Format version of every manifest.json / library.json (one schema: tool, format_version,
+/// Format version of every manifest.json (one schema: tool, format_version,
 /// version, command, recipe_path, recipe (its text), seed, then the command's own fields).
 inline constexpr int kManifestFormat = 1;
 
@@ -40,11 +41,14 @@ nlohmann::ordered_json manifest_head(const std::string& command, const std::stri
 /// command, recipe path and text, seed, particle count.
 nlohmann::ordered_json manifest_head(const std::string& command, const ShapeRecipe& recipe);
 
-/// Throws InvalidInput unless `dir` may be replaced by an output: it does not exist, is empty
-/// or holds a manifest.json (a previous clumpkit output). Long jobs call it before they start.
+/// The one output-directory rule of every job: work is written beside DIR, in DIR.partial, and
+/// renamed to DIR at the end, so a failed or killed run never leaves a partial DIR; an existing
+/// DIR is replaced only when it is empty or holds a manifest.json (a clumpkit output). This
+/// throws InvalidInput unless `dir` may be replaced (also when it is a file); jobs call it
+/// before they start.
 void check_output_directory(const std::string& dir);
 
-/// Replaces `dir` by `staging` (see run_shape_batch for the safety rule).
+/// Replaces `dir` by `staging` (check_output_directory's rule is checked again).
 void publish_directory(const std::string& staging, const std::string& dir);
 
 }  // namespace clumpkit

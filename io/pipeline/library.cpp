@@ -114,24 +114,18 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
 }  // namespace
 
 LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
-                          const LibraryOptions& options, const Progress& progress) {
-  const fs::path out(out_dir), parts = out / "particles";
+                          const LibraryOptions& options, const Interrupter& interrupter) {
+  // The output-directory rule of every job (job.h): work in DIR.partial, rename at the end. A
+  // DIR.partial of the same recipe is a killed run's work and is resumed; one of another
+  // recipe is stale and starts afresh.
+  check_output_directory(out_dir);
+  const fs::path out = out_dir + ".partial", parts = out / "particles";
   const fs::path stamp = out / "recipe.toml";
-  if (fs::exists(out) && !fs::is_directory(out))
-    throw InvalidInput(out_dir + ": --out exists and is not a directory");
-  if (fs::exists(out) && !fs::is_empty(out)) {
-    if (!fs::exists(stamp))
-      throw InvalidInput(out_dir +
-                         ": output directory exists and is not a clumpkit library; remove it or "
-                         "choose another --out");
-    if (slurp(stamp) != recipe.text)
-      throw InvalidInput(
-          out_dir +
-          ": holds a library made from a different recipe; remove it or choose another --out");
-  }
   std::error_code ec;
+  if (fs::exists(out) && !(fs::exists(stamp) && slurp(stamp) == recipe.text))
+    fs::remove_all(out, ec);
   fs::create_directories(parts, ec);
-  if (ec) throw IoError(out_dir + ": cannot create directory: " + ec.message());
+  if (ec) throw IoError(out.string() + ": cannot create directory: " + ec.message());
   write_file_atomically(stamp.string(), [&](std::ostream& o) { o << recipe.text; });
 
   const std::vector<int> fraction_of = particle_fractions(recipe);
@@ -152,10 +146,17 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
     }
   }
 
-  for_each_particle(
-      recipe, fraction_of, todo, result.resumed,
-      [&](std::size_t i) { records[i] = make_particle(recipe, i, fraction_of[i], parts, options); },
-      progress);
+  try {
+    for_each_particle(
+        recipe, fraction_of, todo, result.resumed,
+        [&](std::size_t i) {
+          records[i] = make_particle(recipe, i, fraction_of[i], parts, options);
+        },
+        "library", interrupter);
+  } catch (const Interrupted& e) {
+    throw Interrupted(std::string(e.what()) + "; the finished ones are kept in " + out.string() +
+                      " for a rerun");
+  }
 
   // Parameter columns: union over particles, first-appearance order.
   std::vector<std::string> params;
@@ -214,8 +215,9 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
     fr.push_back({{"name", f.name}, {"method", f.method}, {"count", f.count}, {"first_id", first}});
     first += f.count;
   }
-  write_file_atomically((out / "library.json").string(),
+  write_file_atomically((out / "manifest.json").string(),
                         [&](std::ostream& o) { o << m.dump(2) << "\n"; });
+  publish_directory(out.string(), out_dir);
   return result;
 }
 

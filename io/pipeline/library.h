@@ -19,13 +19,15 @@ struct LibraryResult {
 };
 
 /// Builds DIR/particles/NNNNN.{stl,csv,json[,png]}, then DIR/library.csv (parameters,
-/// descriptors and fidelity per particle) and DIR/library.json (manifest). Particle i uses the
-/// random stream (seed, i) and is written atomically, its .json last, so a killed run restarted
-/// with the same recipe skips finished particles and ends byte-identical to an uninterrupted run,
-/// for any thread count. DIR/recipe.toml records the recipe; a DIR made from another recipe is
-/// refused (InvalidInput). Fill settings come from the recipe's [fill] table (defaults
-/// otherwise).
+/// descriptors and fidelity per particle), DIR/recipe.toml (the recipe) and DIR/manifest.json.
+/// Work goes to DIR.partial, renamed to DIR at the end (the rule of job.h: an existing DIR is
+/// replaced only when it is a clumpkit output). Particle i uses the random stream (seed, i) and
+/// is written atomically, its .json last, so a run killed or interrupted (Interrupted, told to
+/// the interrupter as stage "library") and restarted with the same recipe keeps the finished
+/// particles of DIR.partial and ends byte-identical to an uninterrupted run, for any thread
+/// count; a DIR.partial of another recipe is discarded. Fill settings come from the recipe's
+/// [fill] table (defaults otherwise).
 LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
-                          const LibraryOptions& options, const Progress& progress = {});
+                          const LibraryOptions& options, const Interrupter& interrupter = {});
 
 }  // namespace clumpkit

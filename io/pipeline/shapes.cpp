@@ -29,14 +29,8 @@ struct Item {
 }  // namespace
 
 ShapeBatchResult run_shape_batch(const ShapeRecipe& recipe, const std::string& out_dir,
-                                 const Progress& progress) {
-  if (fs::exists(out_dir) && !fs::is_directory(out_dir))
-    throw InvalidInput(out_dir + ": --out exists and is not a directory");
-  if (fs::exists(out_dir) && !fs::is_empty(out_dir) &&
-      !fs::exists(fs::path(out_dir) / "manifest.json"))
-    throw InvalidInput(out_dir +
-                       ": output directory exists and is not a clumpkit output; "
-                       "remove it or choose another --out");
+                                 const Interrupter& interrupter) {
+  check_output_directory(out_dir);
   std::vector<Item> items;
   for (std::size_t f = 0; f < recipe.fractions.size(); ++f)
     for (int k = 0; k < recipe.fractions[f].count; ++k)
@@ -51,7 +45,7 @@ ShapeBatchResult run_shape_batch(const ShapeRecipe& recipe, const std::string& o
         items[i].shape = generate_shape(recipe.fractions[items[i].fraction], rng);
         items[i].desc = describe(items[i].shape.mesh);
       },
-      progress);
+      "shapes", interrupter);
 
   const std::string staging = out_dir + ".partial";
   std::error_code ec;

@@ -19,9 +19,11 @@ struct ShapeBatchResult {
 ///   DIR/meshes/NNNNN.stl, DIR/shapes.csv, DIR/manifest.json.
 /// Particle i uses the random stream (recipe.seed, i), so outputs are byte-identical for any
 /// thread count. Everything is written into DIR.partial first and renamed at the end, so a failed
-/// run leaves no partial DIR. An existing DIR is replaced only if it is empty or holds a
-/// manifest.json (a previous clumpkit output); otherwise InvalidInput.
+/// run leaves no partial DIR (the rule of job.h: an existing DIR is replaced only if it is empty
+/// or holds a manifest.json, a previous clumpkit output; otherwise InvalidInput). The
+/// interrupter is told ("shapes", fraction of particles generated); asked to stop, the job
+/// throws Interrupted and writes nothing.
 ShapeBatchResult run_shape_batch(const ShapeRecipe& recipe, const std::string& out_dir,
-                                 const Progress& progress = {});
+                                 const Interrupter& interrupter = {});
 
 }  // namespace clumpkit

@@ -1,5 +1,6 @@
 #include "io/pipeline/specimen.h"
 
+#include "geom/errors.h"
 #include "io/atomic_file.h"
 #include "io/pipeline/job.h"
 #include "io/pipeline/library.h"
@@ -14,26 +15,20 @@ namespace clumpkit {
 
 namespace fs = std::filesystem;
 
-SpecimenJobResult run_specimen(const SpecimenRecipe& recipe, const std::string& out_dir,
-                               const SpecimenJobOptions& options, const StageProgress& progress,
-                               std::chrono::steady_clock::time_point started) {
-  const fs::path out = out_dir;
-  check_output_directory(out_dir);
-  const fs::path staging = out_dir + ".partial";
-  if (!options.resume) fs::remove_all(staging);
-  fs::create_directories(staging);
+namespace {
 
+/// The job inside DIR.partial (`staging`), published to `out_dir` at the end.
+SpecimenJobResult build_into(const SpecimenRecipe& recipe, const std::string& out_dir,
+                             const fs::path& staging, const SpecimenJobOptions& options,
+                             const Interrupter& interrupter,
+                             std::chrono::steady_clock::time_point started) {
+  const fs::path out = out_dir;
   // The rock library: given, or built (resumable) into the output.
   std::string library = recipe.library;
   if (library.empty() && !recipe.library_recipe.empty()) {
     const fs::path lib = staging / "library";
-    if (!(options.resume && fs::exists(lib / "library.json")))
-      run_library(read_shape_recipe(recipe.library_recipe), lib.string(), {},
-                  [&](std::size_t done, std::size_t total) {
-                    if (progress)
-                      progress("rock library",
-                               total ? static_cast<double>(done) / static_cast<double>(total) : 1);
-                  });
+    if (!(options.resume && fs::exists(lib / "manifest.json")))
+      run_library(read_shape_recipe(recipe.library_recipe), lib.string(), {}, interrupter);
     library = lib.string();
   }
   std::vector<dem::RockTemplate> templates;
@@ -44,7 +39,7 @@ SpecimenJobResult run_specimen(const SpecimenRecipe& recipe, const std::string& 
   dem::SpecimenControl control;
   control.store = &stages;
   control.checkpoint_every_seconds = options.checkpoint_seconds;
-  control.progress = progress;
+  control.interrupter = interrupter;
   SpecimenJobResult job;
   job.specimen = dem::build_specimen(spec, control);
   const dem::SpecimenResult& result = job.specimen;
@@ -74,6 +69,24 @@ SpecimenJobResult run_specimen(const SpecimenRecipe& recipe, const std::string& 
   publish_directory(staging.string(), out_dir);
   job.report = std::move(report);
   return job;
+}
+
+}  // namespace
+
+SpecimenJobResult run_specimen(const SpecimenRecipe& recipe, const std::string& out_dir,
+                               const SpecimenJobOptions& options, const Interrupter& interrupter,
+                               std::chrono::steady_clock::time_point started) {
+  check_output_directory(out_dir);
+  const fs::path staging = out_dir + ".partial";
+  if (!options.resume) fs::remove_all(staging);
+  fs::create_directories(staging);
+
+  try {
+    return build_into(recipe, out_dir, staging, options, interrupter, started);
+  } catch (const Interrupted& e) {
+    throw Interrupted(std::string(e.what()) + "; " + staging.string() +
+                      " is kept: continue with --resume");
+  }
 }
 
 }  // namespace clumpkit

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "dem/specimen.h"
+#include "geom/progress.h"
 #include "io/specimen_recipe.h"
 
 #include <nlohmann/json.hpp>
@@ -23,20 +24,19 @@ struct SpecimenJobResult {
   nlohmann::ordered_json report;  ///< report.json as written
 };
 
-/// Progress of the job: the current stage ("rock library", "calibration", …) and the fraction of
-/// it (library) or of the whole build (specimen stages) done.
-using StageProgress = std::function<void(const std::string& stage, double fraction)>;
-
 /// Builds the specimen of `recipe` into `out`: the rock library (recipe.library, or built from
 /// recipe.library_recipe into DIR.partial/library, resumable), the spec (specimen_spec), the
 /// build (checkpoints in DIR.partial/checkpoints), then specimen.csv, specimen.vtp,
 /// calibration.csv/.png, slices/, report.json and manifest.json; DIR.partial is renamed to DIR
 /// at the end (check_output_directory decides whether an existing DIR may be replaced).
-/// Without options.resume an old DIR.partial is removed first. `started` is when the job began
+/// Without options.resume an old DIR.partial is removed first. The interrupter is told the stage
+/// ("library", then the stages of dem::build_specimen) and the fraction of it (library) or of
+/// the whole build done; asked to stop, the job keeps DIR.partial with its checkpoints (so
+/// --resume goes on from there) and throws Interrupted. `started` is when the job began
 /// (report.json's total seconds count from it).
 SpecimenJobResult run_specimen(
     const SpecimenRecipe& recipe, const std::string& out, const SpecimenJobOptions& options,
-    const StageProgress& progress = {},
+    const Interrupter& interrupter = {},
     std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now());
 
 }  // namespace clumpkit

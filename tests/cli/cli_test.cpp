@@ -3,6 +3,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <sys/wait.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -394,18 +396,56 @@ TEST(Cli, LibraryDeterministicAndResumable) {
   ASSERT_EQ(r.rc, 0) << r.err;
   expect_same_tree(d / "t1", d / "k");
 
-  // Simulated crash after half the particles: records removed, tables gone.
+  EXPECT_FALSE(fs::exists(d / "k.partial"));
+
+  // Stopped by SIGINT (Ctrl-C) a moment after the start (the whole run takes ~0.3 s on one
+  // thread): exit 130 with one line saying so and the finished particles kept in i.partial,
+  // then resumed. (A signal before the handler is installed kills at once, also status 130.)
+  const std::string stop = "timeout --preserve-status -s INT 0.12 " + std::string(CLUMPKIT_BINARY) +
+                           " " + base + (d / "i").string() + " --threads 1 >/dev/null 2>" +
+                           (d / "i.err").string();
+  const int status = std::system(stop.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  if (WEXITSTATUS(status) == 130) {
+    EXPECT_FALSE(fs::exists(d / "i"));
+    if (fs::exists(d / "i.partial")) {
+      EXPECT_NE(slurp(d / "i.err").find("clumpkit: stopped: "), std::string::npos)
+          << slurp(d / "i.err");
+      EXPECT_NE(slurp(d / "i.err").find("library stopped on request after"), std::string::npos);
+    }
+  } else {
+    EXPECT_EQ(WEXITSTATUS(status), 0) << slurp(d / "i.err");
+  }
+  r = clumpkit(base + (d / "i").string() + " --threads 2 --json", d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  expect_same_tree(d / "t1", d / "i");
+
+  // Simulated crash after half the particles: the work directory t3.partial holds every other
+  // particle record and no tables.
+  fs::copy(d / "t2", d / "t3.partial", fs::copy_options::recursive);
   for (int i = 0; i < 12; i += 2) {
     char name[32];
     std::snprintf(name, sizeof name, "%05d.json", i);
-    ASSERT_TRUE(fs::remove(d / "t2" / "particles" / name));
+    ASSERT_TRUE(fs::remove(d / "t3.partial" / "particles" / name));
   }
-  fs::remove(d / "t2" / "library.csv");
-  fs::remove(d / "t2" / "library.json");
-  r = clumpkit(base + (d / "t2").string() + " --threads 2 --json", d);
+  fs::remove(d / "t3.partial" / "library.csv");
+  fs::remove(d / "t3.partial" / "manifest.json");
+  r = clumpkit(base + (d / "t3").string() + " --threads 2 --json", d);
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["resumed"], 6);
-  expect_same_tree(d / "t1", d / "t2");
+  expect_same_tree(d / "t1", d / "t3");
+  EXPECT_FALSE(fs::exists(d / "t3.partial"));
+
+  // A work directory of another recipe is stale: discarded, nothing of it is kept.
+  fs::copy(d / "t2", d / "t4.partial", fs::copy_options::recursive);
+  {
+    std::ofstream stale(d / "t4.partial" / "recipe.toml");
+    stale << "seed = 1\n";
+  }
+  r = clumpkit(base + (d / "t4").string() + " --threads 2 --json", d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["resumed"], 0);
+  expect_same_tree(d / "t1", d / "t4");
 }
 
 TEST(Cli, LibraryBadInput) {
@@ -417,13 +457,15 @@ TEST(Cli, LibraryBadInput) {
       clumpkit("library --recipe " + (d / "bad.toml").string() + " --out " + (d / "o").string(), d);
   expect_one_line_error(r, "fill.spheres");
   EXPECT_FALSE(fs::exists(d / "o"));
-  // A directory made from another recipe is refused.
+  // A directory that is not a clumpkit output is refused and left alone.
   write(d / "r.toml", kLibraryRecipe);
   fs::create_directories(d / "x");
-  write(d / "x" / "recipe.toml", "seed = 1\n");
+  write(d / "x" / "notes.txt", "mine\n");
   expect_one_line_error(
       clumpkit("library --recipe " + (d / "r.toml").string() + " --out " + (d / "x").string(), d),
-      "different recipe");
+      "not a clumpkit output");
+  EXPECT_TRUE(fs::exists(d / "x" / "notes.txt"));
+  EXPECT_FALSE(fs::exists(d / "x.partial"));
 }
 
 // `clumpkit volume`, every method on oracle C2, and bad or degenerate input.
@@ -563,6 +605,23 @@ TEST(Cli, SpecimenSameForAnyThreadCountAndAfterAKill) {
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_EQ(slurp(d / "t1" / "specimen.csv"), slurp(d / "k" / "specimen.csv"));
   EXPECT_EQ(slurp(d / "t1" / "calibration.csv"), slurp(d / "k" / "calibration.csv"));
+
+  // Ctrl-C (SIGINT) part-way: the running stages save a checkpoint, exit 130 with one line
+  // naming what is kept, then --resume: same bytes.
+  const std::string stop = "timeout --preserve-status -s INT 2 " + std::string(CLUMPKIT_BINARY) +
+                           " " + base + (d / "i").string() + " --threads 2 >/dev/null 2>" +
+                           (d / "i.err").string();
+  const int status = std::system(stop.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130) << slurp(d / "i.err");
+  const std::string said = slurp(d / "i.err");
+  EXPECT_NE(said.find("clumpkit: stopped: "), std::string::npos) << said;
+  EXPECT_NE(said.find("continue with --resume"), std::string::npos) << said;
+  EXPECT_EQ(std::count(said.begin(), said.end(), '\n'), 1) << said;
+  EXPECT_FALSE(fs::exists(d / "i"));
+  r = clumpkit(base + (d / "i").string() + " --threads 2 --resume", d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_EQ(slurp(d / "t1" / "specimen.csv"), slurp(d / "i" / "specimen.csv"));
 
   // The report: bodies and spheres match specimen.csv, porosities in range, Dr consistent.
   const std::string csv = slurp(d / "t2" / "specimen.csv");

@@ -1,6 +1,7 @@
 // Checkpoint round trips continue bit-identically; corrupt files are rejected; run_until stop
 // rules.
 #include "io/checkpoint.h"
+#include "dem/region_volume.h"
 #include "dem/run.h"
 #include "dem/timestep.h"
 #include "dem/world.h"
@@ -14,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <string>
 
 namespace clumpkit::dem {
@@ -227,10 +229,13 @@ TEST(DemRun, StopsAtStepCapInAlignedChunks) {
   std::vector<long> reports;
   RunLimits limits;
   limits.max_steps = 250;
-  const RunOutcome out = run_until(world, limits, [&](long done, long total) {
-    EXPECT_EQ(total, 250);
-    reports.push_back(done);
-  });
+  // The interrupter hears ("run", steps done / max_steps) after each chunk.
+  const auto record = [&](std::string_view stage, double fraction) {
+    EXPECT_EQ(stage, "run");
+    reports.push_back(std::lround(fraction * static_cast<double>(limits.max_steps)));
+    return false;
+  };
+  const RunOutcome out = run_until(world, limits, record);
   EXPECT_EQ(out.steps, 250);
   EXPECT_EQ(out.stopped_by, "step_cap");
   EXPECT_EQ(world.steps(), 250);
@@ -238,11 +243,21 @@ TEST(DemRun, StopsAtStepCapInAlignedChunks) {
   // A later call checks on absolute multiples of check_every.
   reports.clear();
   limits.max_steps = 120;
-  EXPECT_EQ(run_until(world, limits, [&](long done, long) { reports.push_back(done); }).steps, 120);
+  EXPECT_EQ(run_until(world, limits, record).steps, 120);
   EXPECT_EQ(reports, (std::vector<long>{50, 120}));
+  // Height windows add check points at their multiples.
+  reports.clear();
+  limits.height_window = 30;
+  limits.max_steps = 70;
+  EXPECT_EQ(run_until(world, limits, record).steps, 70);
+  EXPECT_EQ(reports, (std::vector<long>{20, 30, 50, 70}));  // steps 390, 400, 420, 440
+  limits.height_window = 0;
   limits.max_steps = 0;
   EXPECT_EQ(run_until(world, limits).stopped_by, "step_cap");
   limits.check_every = 0;
+  EXPECT_THROW(run_until(world, limits), InvalidInput);
+  limits.check_every = 100;
+  limits.height_window = -1;
   EXPECT_THROW(run_until(world, limits), InvalidInput);
 }
 
@@ -281,7 +296,7 @@ TEST(DemRun, PeriodicCheckpointsDoNotChangeTheResultAndResumeIdentically) {
   const std::string path = temp_path("periodic.ckpt");
   World checked = make_deposition(60);
   RunLimits with_checkpoints = limits;
-  with_checkpoints.checkpoint = [&](const World& w) {
+  with_checkpoints.checkpoint = [&](const World& w, const RunState&) {
     CheckpointInfo stage;
     stage.stage = "deposition";
     save_checkpoint(path, w, stage);
@@ -289,21 +304,92 @@ TEST(DemRun, PeriodicCheckpointsDoNotChangeTheResultAndResumeIdentically) {
   with_checkpoints.checkpoint_every_seconds = 1e-9;  // after every chunk
   struct Killed {};
   EXPECT_THROW(run_until(checked, with_checkpoints,
-                         [](long done, long) {
-                           if (done == 1300) throw Killed{};
+                         [&](std::string_view, double) -> bool {
+                           if (checked.steps() == 1300) throw Killed{};
+                           return false;
                          }),
                Killed);
   CheckpointInfo info;
   World resumed = load_checkpoint(path, &info);
   EXPECT_EQ(info.stage, "deposition");
-  // The kill came from the progress call at step 1300, which precedes that chunk's
-  // checkpoint (rules and progress first, then the checkpoint): the last one is at 1200.
+  // The kill came from the interrupter at step 1300, which precedes that chunk's checkpoint
+  // (rules and interrupter first, then the checkpoint): the last one is at 1200.
   EXPECT_EQ(resumed.steps(), 1200);
   RunLimits rest = with_checkpoints;
   rest.max_steps = kSteps - resumed.steps();
   EXPECT_EQ(run_until(resumed, rest).steps, kSteps - 1200);
   expect_identical(plain, resumed);
   std::filesystem::remove(path);
+}
+
+// An interrupter that asks to stop ends the run with a checkpoint of that very step, and the
+// run resumed from it ends where the uninterrupted one does.
+TEST(DemRun, InterruptedRunCheckpointsAndResumesIdentically) {
+  constexpr long kSteps = 1500;
+  World plain = make_deposition(40);
+  RunLimits limits;
+  limits.max_steps = kSteps;
+  run_until(plain, limits);
+
+  World stopped = make_deposition(40);
+  std::optional<World> saved;
+  RunLimits with_checkpoint = limits;
+  with_checkpoint.checkpoint = [&](const World& w, const RunState&) { saved = w; };
+  const RunOutcome out = run_until(stopped, with_checkpoint, [&](std::string_view, double f) {
+    return f >= 0.4;  // at step 600
+  });
+  EXPECT_EQ(out.stopped_by, "interrupted");
+  EXPECT_EQ(out.steps, 600);
+  ASSERT_TRUE(saved.has_value());
+  EXPECT_EQ(saved->steps(), 600u);
+  RunLimits rest = limits;
+  rest.max_steps = kSteps - out.steps;
+  EXPECT_EQ(run_until(*saved, rest).stopped_by, "step_cap");
+  expect_identical(plain, *saved);
+}
+
+// The settled-height rule stops a settling pack at a window boundary once its column height
+// holds still, and a run resumed from a checkpoint with the saved reference stops at the same
+// step as the uninterrupted one.
+TEST(DemRun, SettledHeightRuleStopsAtAWindowBoundaryAndResumesWithItsReference) {
+  World settling = make_deposition(40, /*platen=*/false);
+  settling.options().contact.local_damping = 0.7;
+  RunLimits limits;
+  limits.max_steps = 200000;
+  limits.height_window = 500;
+  limits.height_tolerance = 1e-5;  // m; the spheres are ~1e-2 m
+  std::vector<std::pair<World, RunState>> checkpoints;
+  limits.checkpoint_every_seconds = 1e-9;
+  limits.checkpoint = [&](const World& w, const RunState& st) {
+    if (w.steps() % 700 == 0) checkpoints.emplace_back(w, st);
+  };
+  const World start = settling;
+  const RunOutcome out = run_until(settling, limits);
+  EXPECT_EQ(out.stopped_by, "settled_height");
+  EXPECT_EQ(out.steps % 500, 0);
+  EXPECT_LT(out.steps, limits.max_steps);
+  EXPECT_LT(unbalanced_to_weight_ratio(settling), 1.0);
+  EXPECT_LT(std::abs(column_height(settling) - out.state.height_reference), 1e-5);
+  ASSERT_GE(checkpoints.size(), 2u);
+
+  // Resumed from a checkpoint in the middle of a window, with its state.
+  auto& [world, state] = checkpoints[checkpoints.size() / 2];
+  ASSERT_NE(world.steps() % 500, 0u);
+  RunLimits rest = limits;
+  rest.checkpoint = {};
+  rest.max_steps = limits.max_steps - static_cast<long>(world.steps());
+  rest.state = state;
+  const RunOutcome resumed = run_until(world, rest);
+  EXPECT_EQ(resumed.stopped_by, "settled_height");
+  EXPECT_EQ(world.steps(), settling.steps());
+  expect_identical(settling, world);
+
+  // The checkpoints did not change the run: without them it stops at the same step.
+  World again = start;
+  RunLimits plain = limits;
+  plain.checkpoint = {};
+  EXPECT_EQ(run_until(again, plain).steps, out.steps);
+  expect_identical(settling, again);
 }
 
 }  // namespace
