@@ -5,6 +5,7 @@
 #include "dem/run.h"
 #include "dem/timestep.h"
 #include "geom/errors.h"
+#include "geom/format.h"
 #include "geom/hash.h"
 #include "geom/progress.h"
 #include "geom/random.h"
@@ -17,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -39,13 +41,7 @@ double since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-std::string hex(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%a", v);
-  return buf;
-}
-
-/// A number of a stage record (written with hex(), read back exactly).
+/// A number of a stage record (written with format_number(), read back exactly).
 double number(const StageRecord& r, const std::string& key, const std::string& stage) {
   auto it = r.find(key);
   if (it == r.end()) throw InvalidInput("specimen stage " + stage + ": record misses " + key);
@@ -229,46 +225,49 @@ static_assert(sizeof(ParticleClass) == 3 * sizeof(double) + sizeof(double),
 std::string canonical_text(const SpecimenSpec& s) {
   std::ostringstream t;
   auto line = [&](const char* key, const std::string& value) { t << key << " " << value << "\n"; };
-  auto vec = [&](const Vec3& v) { return hex(v.x()) + " " + hex(v.y()) + " " + hex(v.z()); };
-  line("radius", hex(s.radius));
-  line("height", hex(s.height));
+  auto vec = [&](const Vec3& v) {
+    return format_number(v.x()) + " " + format_number(v.y()) + " " + format_number(v.z());
+  };
+  line("radius", format_number(s.radius));
+  line("height", format_number(s.height));
   line("layers", std::to_string(s.layers));
-  line("soil_density", hex(s.soil_density));
-  line("rock_density", hex(s.rock_density));
-  line("contact.kn", hex(s.contact.kn));
-  line("contact.ks", hex(s.contact.ks));
-  line("contact.friction", hex(s.contact.friction));
-  line("contact.damping_ratio", hex(s.contact.damping_ratio));
-  line("contact.local_damping", hex(s.contact.local_damping));
-  line("target_relative_density", hex(s.target_relative_density));
-  for (double f : s.calibration_frictions) line("calibration_friction", hex(f));
+  line("soil_density", format_number(s.soil_density));
+  line("rock_density", format_number(s.rock_density));
+  line("contact.kn", format_number(s.contact.kn));
+  line("contact.ks", format_number(s.contact.ks));
+  line("contact.friction", format_number(s.contact.friction));
+  line("contact.damping_ratio", format_number(s.contact.damping_ratio));
+  line("contact.local_damping", format_number(s.contact.local_damping));
+  line("target_relative_density", format_number(s.target_relative_density));
+  for (double f : s.calibration_frictions) line("calibration_friction", format_number(f));
   line("seed", std::to_string(s.seed));
-  line("porosity_guess", hex(s.porosity_guess));
-  line("timestep_safety", hex(s.timestep_safety));
-  line("equilibrium_ratio", hex(s.equilibrium_ratio));
+  line("porosity_guess", format_number(s.porosity_guess));
+  line("timestep_safety", format_number(s.timestep_safety));
+  line("equilibrium_ratio", format_number(s.equilibrium_ratio));
   line("settle_window", std::to_string(s.settle_window));
-  line("height_tolerance", hex(s.height_tolerance));
+  line("height_tolerance", format_number(s.height_tolerance));
   line("max_steps", std::to_string(s.max_steps));
   line("correction_rounds", std::to_string(s.correction_rounds));
-  line("relative_density_tolerance", hex(s.relative_density_tolerance));
-  line("density_scaling", hex(s.density_scaling));
-  line("margin", hex(s.margin));
+  line("relative_density_tolerance", format_number(s.relative_density_tolerance));
+  line("density_scaling", format_number(s.density_scaling));
+  line("margin", format_number(s.margin));
   for (const ParticleClass& c : s.classes)
-    line("class", hex(c.min_size) + " " + hex(c.max_size) + " " + hex(c.mass_percent) + " " +
-                      (c.rock ? "rock" : "soil"));
+    line("class", format_number(c.min_size) + " " + format_number(c.max_size) + " " +
+                      format_number(c.mass_percent) + " " + (c.rock ? "rock" : "soil"));
   for (const RockTemplate& tp : s.templates) {
     const ClumpTemplate& c = tp.clump;
-    line("template", hex(tp.sieve_size) + " " + std::to_string(c.spheres.size()));
-    line("template.volume", hex(c.mass.volume));
+    line("template", format_number(tp.sieve_size) + " " + std::to_string(c.spheres.size()));
+    line("template.volume", format_number(c.mass.volume));
     line("template.centroid", vec(c.mass.centroid));
     line("template.inertia", vec(c.mass.inertia.row(0).transpose()) + " " +
                                  vec(c.mass.inertia.row(1).transpose()) + " " +
                                  vec(c.mass.inertia.row(2).transpose()));
     line("template.moments", vec(c.principal_moments));
     line("template.pose",
-         hex(c.orientation.w()) + " " + vec(c.orientation.vec()) + " " + vec(c.position));
-    line("template.density_factor", hex(c.density_factor));
-    for (const Sphere& sp : c.spheres) line("sphere", vec(sp.center) + " " + hex(sp.radius));
+         format_number(c.orientation.w()) + " " + vec(c.orientation.vec()) + " " + vec(c.position));
+    line("template.density_factor", format_number(c.density_factor));
+    for (const Sphere& sp : c.spheres)
+      line("sphere", vec(sp.center) + " " + format_number(sp.radius));
   }
   return t.str();
 }
@@ -326,54 +325,70 @@ std::vector<CalibrationPoint> calibrate(const Build& build, double layer_volume)
   const std::vector<Placement> placed =
       place_in_cylinder(placement_items(sample.bodies), spec.radius, place_rng);
   std::vector<double> fraction(frictions.size(), 0.0);
-  std::mutex report_mutex;
-  bool stop = false;  // sticky: once asked, every parallel run stops at its next check
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, frictions.size(), 1),
-      [&](const tbb::blocked_range<std::size_t>& range) {
-        for (std::size_t k = range.begin(); k != range.end(); ++k) {
-          const std::string name = "calibration-" + std::to_string(k);
-          StageStore& store = build.store;
-          if (const std::optional<StageRecord> r = store.finished(name)) {
-            const auto stopped = r->find("stopped_by");
-            cal[k] = {number(*r, "friction", name), number(*r, "porosity", name), 0.0,
-                      static_cast<long>(number(*r, "steps", name)),
-                      stopped == r->end() ? std::string() : stopped->second};
-            cal[k].void_ratio = cal[k].porosity / (1.0 - cal[k].porosity);
-            continue;
-          }
-          CheckpointInfo info;
-          std::optional<World> resumed = store.running(name, info);
-          World world = resumed
-                            ? std::move(*resumed)
-                            : scaled_world(sample.bodies, placed, spec, frictions[k], build.lambda);
-          const auto report = [&](double f) {
-            std::lock_guard<std::mutex> lock(report_mutex);
-            fraction[k] = f;
-            double sum = 0;
-            for (double v : fraction) sum += v;
-            stop = build.report("calibration", 0.5 * sum / static_cast<double>(fraction.size())) ||
-                   stop;
-            return stop;
-          };
-          const RunOutcome out =
-              settle(world, spec, name, store, build.control, report, resumed ? &info : nullptr);
-          CalibrationPoint& p = cal[k];
-          p.friction = frictions[k];
-          p.porosity =
-              region_porosity(world, body_volumes(world),
-                              central_region(spec.radius, build.margin, column_height(world)));
-          p.void_ratio = p.porosity / (1.0 - p.porosity);
-          p.steps = out.steps;
-          p.stopped_by = out.stopped_by;
-          store.finish(name,
-                       {{"friction", hex(p.friction)},
-                        {"porosity", hex(p.porosity)},
-                        {"steps", std::to_string(p.steps)},
-                        {"stopped_by", p.stopped_by}},
-                       nullptr);
-        }
-      });
+  std::mutex mutex;   // guards fraction, stop and error
+  bool stop = false;  // sticky: once asked (or a run failed), every run stops at its next check
+  std::exception_ptr error;  // the first failure (or interruption) of a run
+  const auto run_one = [&](std::size_t k) {
+    const std::string name = "calibration-" + std::to_string(k);
+    StageStore& store = build.store;
+    if (const std::optional<StageRecord> r = store.finished(name)) {
+      const auto stopped = r->find("stopped_by");
+      cal[k] = {number(*r, "friction", name), number(*r, "porosity", name), 0.0,
+                static_cast<long>(number(*r, "steps", name)),
+                stopped == r->end() ? std::string() : stopped->second};
+      cal[k].void_ratio = cal[k].porosity / (1.0 - cal[k].porosity);
+      return;
+    }
+    CheckpointInfo info;
+    std::optional<World> resumed = store.running(name, info);
+    World world = resumed ? std::move(*resumed)
+                          : scaled_world(sample.bodies, placed, spec, frictions[k], build.lambda);
+    const auto report = [&](double f) {
+      std::lock_guard<std::mutex> lock(mutex);
+      fraction[k] = f;
+      double sum = 0;
+      for (double v : fraction) sum += v;
+      stop = build.report("calibration", 0.5 * sum / static_cast<double>(fraction.size())) || stop;
+      return stop;
+    };
+    const RunOutcome out =
+        settle(world, spec, name, store, build.control, report, resumed ? &info : nullptr);
+    CalibrationPoint& p = cal[k];
+    p.friction = frictions[k];
+    p.porosity = region_porosity(world, body_volumes(world),
+                                 central_region(spec.radius, build.margin, column_height(world)));
+    p.void_ratio = p.porosity / (1.0 - p.porosity);
+    p.steps = out.steps;
+    p.stopped_by = out.stopped_by;
+    store.finish(name,
+                 {{"friction", format_number(p.friction)},
+                  {"porosity", format_number(p.porosity)},
+                  {"steps", std::to_string(p.steps)},
+                  {"stopped_by", p.stopped_by}},
+                 nullptr);
+  };
+  // No exception may leave this loop while other runs step: TBB would cancel the task group,
+  // and with it the parallel loops inside their World::step, which would then silently skip
+  // work (and a checkpoint would save the damage). A failing or interrupted run records its
+  // exception and makes the others stop at their next check (each saving a checkpoint first);
+  // the first exception is rethrown once all have returned.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, frictions.size(), 1),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t k = range.begin(); k != range.end(); ++k) {
+                        {
+                          std::lock_guard<std::mutex> lock(mutex);
+                          if (stop) return;  // asked to stop: start no further run
+                        }
+                        try {
+                          run_one(k);
+                        } catch (...) {
+                          std::lock_guard<std::mutex> lock(mutex);
+                          if (!error) error = std::current_exception();
+                          stop = true;
+                        }
+                      }
+                    });
+  if (error) std::rethrow_exception(error);
   return cal;
 }
 

@@ -1,6 +1,7 @@
 #include "io/mesh_io.h"
 
 #include "geom/errors.h"
+#include "geom/format.h"
 #include "geom/mesh/cgal_mesh.h"
 #include "io/atomic_file.h"
 
@@ -36,12 +37,6 @@ std::string at_line(const std::string& path, int line) {
 
 std::string plural(size_t n, const std::string& noun) {
   return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
-}
-
-std::string fmt(double v, const char* spec = "%.17g") {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, spec, v);
-  return buf;
 }
 
 // Echoes a file token in a message: printable ASCII only (messages end up in terminals and JSON
@@ -447,7 +442,7 @@ Mesh read_ply(const std::string& path, const std::string& data) {
           const double idx = body.read(prop.type, e, i);
           if (!indices) continue;
           if (!(idx >= 0 && idx < nv))
-            bad(path, "face " + std::to_string(i) + ": vertex index " + fmt(idx, "%.0f") +
+            bad(path, "face " + std::to_string(i) + ": vertex index " + format_fixed(idx, 0) +
                           " out of range (" + std::to_string(nv) + " vertices)");
           face.push_back(static_cast<int>(idx));
         }
@@ -485,7 +480,7 @@ void write_stl_binary(std::ostream& os, const Mesh& mesh) {
 void write_stl_ascii(std::ostream& os, const Mesh& mesh) {
   // %.9g round-trips float32, the precision of STL, as in the binary variant.
   auto xyz = [](const Vec3& v) {
-    return fmt(v.x(), "%.9g") + " " + fmt(v.y(), "%.9g") + " " + fmt(v.z(), "%.9g");
+    return format_number(v.x(), 9) + " " + format_number(v.y(), 9) + " " + format_number(v.z(), 9);
   };
   os << "solid clumpkit\n";
   for (const auto& t : mesh.triangles) {
@@ -503,7 +498,8 @@ void write_obj(std::ostream& os, const Mesh& mesh) {
   // 17 significant digits make the decimal round trip of a double exact.
   os << "# written by clumpkit\n";
   for (const auto& v : mesh.vertices)
-    os << "v " << fmt(v.x()) << " " << fmt(v.y()) << " " << fmt(v.z()) << "\n";
+    os << "v " << format_number(v.x()) << " " << format_number(v.y()) << " " << format_number(v.z())
+       << "\n";
   for (const auto& t : mesh.triangles)
     os << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
 }
@@ -553,7 +549,8 @@ Mesh read_mesh(const std::string& path, MeshReadReport* report) {
     const Vec3& p = mesh.vertices[i];
     if (!p.allFinite())
       bad(path, "vertex " + std::to_string(i) + " (counting from 0) has a non-finite coordinate (" +
-                    fmt(p.x()) + ", " + fmt(p.y()) + ", " + fmt(p.z()) + ")");
+                    format_number(p.x()) + ", " + format_number(p.y()) + ", " +
+                    format_number(p.z()) + ")");
   }
   if (mesh.triangles.empty()) bad(path, "mesh has no triangles");
   const MeshCheck check = check_mesh(mesh);
@@ -578,8 +575,8 @@ Mesh read_mesh(const std::string& path, MeshReadReport* report) {
   const auto bb = bounding_box(mesh);
   const double volume = signed_volume(mesh);
   if (!(volume > 1e-12 * std::pow((bb[1] - bb[0]).norm(), 3)))
-    bad(path,
-        "mesh encloses no volume: signed volume " + fmt(volume, "%.6g") + " after orientation");
+    bad(path, "mesh encloses no volume: signed volume " + format_number(volume, 6) +
+                  " after orientation");
   if (report) report->reoriented = reoriented;
   return mesh;
 }

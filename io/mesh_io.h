@@ -50,9 +50,9 @@ Mesh read_mesh(const std::string& path, MeshReadReport* report = nullptr);
 void write_mesh(const std::string& path, const Mesh& mesh);
 
 /// Writes STL (binary, float32 coordinates), ASCII STL (%.9g, enough to round-trip float32),
-/// OBJ (%.17g) or PLY (binary little endian, float64), so OBJ and PLY round trips are exact.
-/// Writes to a temporary file in the same directory and renames it, so no partial file is ever
-/// left; throws IoError naming the path on failure.
+/// OBJ (format_number: shortest exact decimal) or PLY (binary little endian, float64), so OBJ and
+/// PLY round trips are exact. Writes to a temporary file in the same directory and renames it, so
+/// no partial file is ever left; throws IoError naming the path on failure.
 void write_mesh(const std::string& path, const Mesh& mesh, MeshFormat format);
 
 }  // namespace clumpkit

@@ -67,15 +67,6 @@ std::vector<double> descriptor_csv_values(const Descriptors& d) {
           d.roundness.view[2]};
 }
 
-std::string format_number(double v) {
-  char buf[32];
-  for (int p = 15; p <= 17; ++p) {
-    std::snprintf(buf, sizeof buf, "%.*g", p, v);
-    if (std::strtod(buf, nullptr) == v) break;
-  }
-  return buf;
-}
-
 std::string csv_escape(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
   std::string q = "\"";

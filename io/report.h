@@ -2,6 +2,7 @@
 #pragma once
 
 #include "geom/descriptors/descriptors.h"
+#include "geom/format.h"  // format_number, for every user of these renderings
 
 #include <nlohmann/json.hpp>
 
@@ -18,10 +19,6 @@ nlohmann::json to_json(const Descriptors& d);
 /// CSV column names for descriptors, in the order of descriptor_csv_values.
 const std::vector<std::string>& descriptor_csv_columns();
 std::vector<double> descriptor_csv_values(const Descriptors& d);
-
-/// Shortest decimal text that reads back to the same double ("%.17g" trimmed), so CSV and JSON
-/// outputs are exact and byte-identical across runs.
-std::string format_number(double v);
 
 /// CSV cell: quoted (with doubled quotes) when it holds a comma, quote or newline.
 std::string csv_escape(const std::string& s);

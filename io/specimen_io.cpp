@@ -2,6 +2,7 @@
 
 #include "dem/deposition.h"
 #include "geom/errors.h"
+#include "geom/format.h"
 #include "io/atomic_file.h"
 #include "io/clump_io.h"
 #include "io/png.h"
@@ -27,12 +28,6 @@ std::vector<std::string> split(const std::string& line) {
   std::string cell;
   while (std::getline(ss, cell, ',')) out.push_back(cell);
   return out;
-}
-
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
 }
 
 }  // namespace
@@ -124,20 +119,22 @@ void write_specimen_csv(const std::string& path, const dem::SpecimenResult& resu
     o << "body,kind,template,x,y,z,qw,qx,qy,qz,mass,volume,scale,I1,I2,I3\n";
     for (std::size_t k = 0; k < bodies.size(); ++k) {
       const dem::Body& b = bodies[k];
-      o << k << "," << dem::kind_name(b.kind) << "," << b.template_id << "," << num(b.position.x())
-        << "," << num(b.position.y()) << "," << num(b.position.z()) << "," << num(b.orientation.w())
-        << "," << num(b.orientation.x()) << "," << num(b.orientation.y()) << ","
-        << num(b.orientation.z()) << "," << num(b.mass) << "," << num(b.volume) << ","
-        << num(b.scale) << "," << num(b.moments.x()) << "," << num(b.moments.y()) << ","
-        << num(b.moments.z()) << "\n";
+      o << k << "," << dem::kind_name(b.kind) << "," << b.template_id << ","
+        << format_number(b.position.x()) << "," << format_number(b.position.y()) << ","
+        << format_number(b.position.z()) << "," << format_number(b.orientation.w()) << ","
+        << format_number(b.orientation.x()) << "," << format_number(b.orientation.y()) << ","
+        << format_number(b.orientation.z()) << "," << format_number(b.mass) << ","
+        << format_number(b.volume) << "," << format_number(b.scale) << ","
+        << format_number(b.moments.x()) << "," << format_number(b.moments.y()) << ","
+        << format_number(b.moments.z()) << "\n";
     }
     o << "# spheres\nsphere,body,x,y,z,r\n";
     std::size_t n = 0;
     for (std::size_t k = 0; k < bodies.size(); ++k)
       for (const Sphere& s : bodies[k].spheres) {
         const Vec3 c = bodies[k].orientation * s.center + bodies[k].position;
-        o << n++ << "," << k << "," << num(c.x()) << "," << num(c.y()) << "," << num(c.z()) << ","
-          << num(s.radius) << "\n";
+        o << n++ << "," << k << "," << format_number(c.x()) << "," << format_number(c.y()) << ","
+          << format_number(c.z()) << "," << format_number(s.radius) << "\n";
       }
   });
 }
@@ -154,12 +151,13 @@ void write_specimen_vtp(const std::string& path, const dem::SpecimenResult& resu
     for (const dem::Body& b : bodies)
       for (const Sphere& s : b.spheres) {
         const Vec3 c = b.orientation * s.center + b.position;
-        o << num(c.x()) << " " << num(c.y()) << " " << num(c.z()) << "\n";
+        o << format_number(c.x()) << " " << format_number(c.y()) << " " << format_number(c.z())
+          << "\n";
       }
     o << "</DataArray>\n</Points>\n<PointData Scalars=\"radius\">\n"
       << "<DataArray type=\"Float64\" Name=\"radius\" format=\"ascii\">\n";
     for (const dem::Body& b : bodies)
-      for (const Sphere& s : b.spheres) o << num(s.radius) << "\n";
+      for (const Sphere& s : b.spheres) o << format_number(s.radius) << "\n";
     o << "</DataArray>\n<DataArray type=\"Int32\" Name=\"body\" format=\"ascii\">\n";
     for (std::size_t k = 0; k < bodies.size(); ++k)
       for (std::size_t s = 0; s < bodies[k].spheres.size(); ++s) o << k << "\n";
@@ -180,9 +178,11 @@ void write_calibration_csv(const std::string& path, const dem::SpecimenResult& r
   write_file_atomically(path, [&](std::ostream& o) {
     o << "friction,porosity,void_ratio,relative_density,steps,stopped_by\n";
     for (const dem::CalibrationPoint& p : result.calibration)
-      o << num(p.friction) << "," << num(p.porosity) << "," << num(p.void_ratio) << ","
-        << num(dem::relative_density(p.porosity, result.porosity_max, result.porosity_min)) << ","
-        << p.steps << "," << p.stopped_by << "\n";
+      o << format_number(p.friction) << "," << format_number(p.porosity) << ","
+        << format_number(p.void_ratio) << ","
+        << format_number(
+               dem::relative_density(p.porosity, result.porosity_max, result.porosity_min))
+        << "," << p.steps << "," << p.stopped_by << "\n";
   });
 }
 
@@ -210,12 +210,11 @@ void write_calibration_plot(const std::string& path, const dem::SpecimenResult& 
   const cv::Scalar black(0, 0, 0), grey(160, 160, 160), blue(200, 80, 20), red(30, 30, 210);
   cv::rectangle(img, cv::Point(left, top), cv::Point(w - right, h - bottom), black, 1);
   for (int k = 0; k <= 4; ++k) {
-    char buf[32];
     const double mu = fmax * k / 4.0, n = nlo + (nhi - nlo) * k / 4.0;
-    std::snprintf(buf, sizeof buf, "%.2f", mu);
-    cv::putText(img, buf, px(mu, nlo) + cv::Point(-14, 18), cv::FONT_HERSHEY_SIMPLEX, 0.4, black);
-    std::snprintf(buf, sizeof buf, "%.3f", n);
-    cv::putText(img, buf, cv::Point(8, px(0, n).y + 4), cv::FONT_HERSHEY_SIMPLEX, 0.4, black);
+    cv::putText(img, format_fixed(mu, 2), px(mu, nlo) + cv::Point(-14, 18),
+                cv::FONT_HERSHEY_SIMPLEX, 0.4, black);
+    cv::putText(img, format_fixed(n, 3), cv::Point(8, px(0, n).y + 4), cv::FONT_HERSHEY_SIMPLEX,
+                0.4, black);
   }
   cv::putText(img, "friction coefficient during compaction", cv::Point(left + 120, h - 12),
               cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
@@ -223,9 +222,9 @@ void write_calibration_plot(const std::string& path, const dem::SpecimenResult& 
               cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
   cv::line(img, px(0, result.target_porosity), px(fmax, result.target_porosity), grey, 1,
            cv::LINE_AA);
-  char label[96];
-  std::snprintf(label, sizeof label, "target Dr %.2f: n = %.4f, mu* = %.3f",
-                target_relative_density, result.target_porosity, result.friction_compaction);
+  const std::string label = "target Dr " + format_fixed(target_relative_density, 2) +
+                            ": n = " + format_fixed(result.target_porosity, 4) +
+                            ", mu* = " + format_fixed(result.friction_compaction, 3);
   cv::putText(img, label, px(0, result.target_porosity) + cv::Point(8, -6),
               cv::FONT_HERSHEY_SIMPLEX, 0.4, grey);
   for (std::size_t k = 0; k + 1 < result.calibration.size(); ++k)
