@@ -1,5 +1,6 @@
 // Integration of dem::World: the packed body state, each body's wrench summed in a fixed order,
-// and the leapfrog step with quaternion rotation.
+// and the step of every body (dem/integrator.h) with its spheres' positions and the skin check.
+#include "dem/integrator.h"
 #include "dem/parallel.h"
 #include "dem/world.h"
 #include "dem/world_step_cache.h"
@@ -12,15 +13,6 @@ namespace clumpkit::dem {
 using namespace detail;
 
 namespace {
-
-// Rotation by the rotation vector phi (angle |phi| about phi/|phi|) as a unit quaternion.
-Eigen::Quaterniond rotation_quaternion(const Vec3& phi) {
-  const double angle = phi.norm();
-  if (angle == 0.0) return Eigen::Quaterniond::Identity();
-  const double h = 0.5 * angle;
-  const Vec3 axis = phi * (std::sin(h) / angle);
-  return Eigen::Quaterniond(std::cos(h), axis.x(), axis.y(), axis.z());
-}
 
 inline Vec3 moment(const Vec3& p, const Vec3& x, const Vec3& f) {
   const double rx = p.x() - x.x(), ry = p.y() - x.y(), rz = p.z() - x.z();
@@ -99,41 +91,21 @@ void World::integrate() {
   const bool have_reference = !dirty_ && sphere_at_filter_.size() == sphere_world_.size();
   const double limit = near_limit_;
   std::atomic<bool> moved{false};
-  // What every body shares: the leapfrog translation, the damped torque and, for an isotropic
-  // body (a sphere), ω = L/I whatever the orientation (the midpoint passes below would all
-  // return the same ω; evaluated directly, equal up to rounding).
+  // What every body shares: the leapfrog translation and the damped torque (dem/integrator.h
+  // holds the integration itself).
   auto translate = [&](Kinematics& b, const Wrench& wrench) {
     const Vec3 f = alpha == 0.0 ? wrench.force : local_damping(wrench.force, b.velocity, alpha);
-    b.velocity += f * (dt / b.mass);
-    b.position += b.velocity * dt;
+    leapfrog_translate(b.position, b.velocity, f, b.mass, dt);
   };
   auto damped_torque = [&](const Kinematics& b, const Wrench& wrench) {
     return alpha == 0.0 ? wrench.torque : local_damping(wrench.torque, b.angular_velocity, alpha);
-  };
-  auto spin_isotropic = [&](Kinematics& b, const Vec3& t, const Rotation& r) {
-    const double inertia = r.moments.x();
-    b.angular_velocity = (inertia * b.angular_velocity + t * dt) / inertia;
   };
   // Every body but a plain sphere (kept out of line so the loop below stays small).
   auto advance = [&](Kinematics & b, const Wrench& wrench, Rotation& r) __attribute__((noinline)) {
     translate(b, wrench);
     if (r.spin == Spin::locked) return;
-    const Vec3 t = damped_torque(b, wrench);
-    const Eigen::Quaterniond q0 = r.orientation;
-    if (r.spin == Spin::isotropic) {
-      spin_isotropic(b, t, r);
-      r.orientation = (rotation_quaternion(dt * b.angular_velocity) * q0).normalized();
-      return;
-    }
-    const Vec3 momentum = angular_momentum(r.moments, q0, b.angular_velocity) + t * dt;
-    // Explicit midpoint for dq/dt = ½ ω ⊗ q with ω = ω(q, L) and L constant over the step.
-    Vec3 omega = angular_velocity_for(r.moments, momentum, q0);
-    for (int pass = 0; pass < 3; ++pass) {
-      const Eigen::Quaterniond half = (rotation_quaternion(0.5 * dt * omega) * q0).normalized();
-      omega = angular_velocity_for(r.moments, momentum, half);
-    }
-    r.orientation = (rotation_quaternion(dt * omega) * q0).normalized();
-    b.angular_velocity = angular_velocity_for(r.moments, momentum, r.orientation);
+    rotate_rigid_body(r.orientation, b.angular_velocity, r.moments, damped_torque(b, wrench), dt,
+                      r.spin == Spin::isotropic);
   };
   // One pass per body: sum its wrench, advance it, then refresh its spheres' world positions
   // and the Verlet-skin check, so a step makes one pass over the bodies and their spheres.
@@ -149,7 +121,7 @@ void World::integrate() {
       // A plain sphere centred on its body origin looks the same in every orientation, so its
       // orientation is not integrated (as LAMMPS nve/sphere): no sine, cosine or normalisation.
       translate(b, wrench);
-      spin_isotropic(b, damped_torque(b, wrench), r);
+      spin_isotropic(b.angular_velocity, damped_torque(b, wrench), r.moments.x(), dt);
       const Vec3 x = b.position + Vec3::Zero();  // the general formula's bits for a centred sphere
       sphere_world_[first] = x;
       far = have_reference && (x - sphere_at_filter_[first]).squaredNorm() > limit;
