@@ -119,7 +119,7 @@ void write_specimen_csv(const std::string& path, const dem::SpecimenResult& resu
     o << "body,kind,template,x,y,z,qw,qx,qy,qz,mass,volume,scale,I1,I2,I3\n";
     for (std::size_t k = 0; k < bodies.size(); ++k) {
       const dem::Body& b = bodies[k];
-      o << k << "," << dem::kind_name(b.kind) << "," << b.template_id << ","
+      o << k + 1 << "," << dem::kind_name(b.kind) << "," << b.template_id << ","
         << format_number(b.position.x()) << "," << format_number(b.position.y()) << ","
         << format_number(b.position.z()) << "," << format_number(b.orientation.w()) << ","
         << format_number(b.orientation.x()) << "," << format_number(b.orientation.y()) << ","
@@ -133,10 +133,112 @@ void write_specimen_csv(const std::string& path, const dem::SpecimenResult& resu
     for (std::size_t k = 0; k < bodies.size(); ++k)
       for (const Sphere& s : bodies[k].spheres) {
         const Vec3 c = bodies[k].orientation * s.center + bodies[k].position;
-        o << n++ << "," << k << "," << format_number(c.x()) << "," << format_number(c.y()) << ","
-          << format_number(c.z()) << "," << format_number(s.radius) << "\n";
+        o << ++n << "," << k + 1 << "," << format_number(c.x()) << "," << format_number(c.y())
+          << "," << format_number(c.z()) << "," << format_number(s.radius) << "\n";
       }
   });
+}
+
+namespace {
+
+/// Cells of one CSV line (no quoting: specimen.csv has none).
+std::vector<std::string> split_cells(const std::string& line) {
+  std::vector<std::string> cells;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = line.find(',', start);
+    cells.push_back(line.substr(start, comma - start));
+    if (comma == std::string::npos) return cells;
+    start = comma + 1;
+  }
+}
+
+}  // namespace
+
+std::vector<SpecimenBody> read_specimen_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw IoError(path + ": cannot open specimen file");
+  std::vector<SpecimenBody> bodies;
+  std::string line;
+  long line_no = 0;
+  auto bad = [&](const std::string& why) {
+    throw InvalidInput(path + ":" + std::to_string(line_no) + ": " + why);
+  };
+  auto number = [&](const std::string& cell, const char* field) {
+    char* end = nullptr;
+    const double v = std::strtod(cell.c_str(), &end);
+    if (cell.empty() || *end != '\0' || !std::isfinite(v))
+      bad("field " + std::string(field) + ": not a finite number: '" + cell + "'");
+    return v;
+  };
+  auto integer = [&](const std::string& cell, const char* field) {
+    const double v = number(cell, field);
+    if (v != std::floor(v)) bad("field " + std::string(field) + ": not an integer: '" + cell + "'");
+    return static_cast<long>(v);
+  };
+  const std::string format_line =
+      "# clumpkit specimen format " + std::to_string(kSpecimenCsvFormat);
+  enum class Section { head, bodies, spheres } section = Section::head;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line_no == 1 && line.rfind(format_line + ",", 0) != 0)
+      bad("not a clumpkit specimen.csv of format " + std::to_string(kSpecimenCsvFormat) +
+          " (first line '" + line.substr(0, 40) + "')");
+    if (line.empty()) continue;
+    if (line == "# bodies") {
+      section = Section::bodies;
+      continue;
+    }
+    if (line == "# spheres") {
+      section = Section::spheres;
+      continue;
+    }
+    if (line[0] == '#' || line.rfind("body,", 0) == 0 || line.rfind("sphere,", 0) == 0) continue;
+    const std::vector<std::string> c = split_cells(line);
+    if (section == Section::bodies) {
+      if (c.size() != 16) bad("a body row has 16 fields, found " + std::to_string(c.size()));
+      SpecimenBody b;
+      b.id = integer(c[0], "body");
+      if (b.id != static_cast<long>(bodies.size()) + 1)
+        bad("field body: expected id " + std::to_string(bodies.size() + 1) + ", found " + c[0]);
+      if (c[1] == "rock")
+        b.kind = dem::BodyKind::rock;
+      else if (c[1] == "soil")
+        b.kind = dem::BodyKind::soil;
+      else
+        bad("field kind: expected rock or soil, found '" + c[1] + "'");
+      b.template_id = static_cast<int>(integer(c[2], "template"));
+      b.position = Vec3(number(c[3], "x"), number(c[4], "y"), number(c[5], "z"));
+      b.orientation = Eigen::Quaterniond(number(c[6], "qw"), number(c[7], "qx"), number(c[8], "qy"),
+                                         number(c[9], "qz"));
+      if (std::abs(b.orientation.norm() - 1.0) > 1e-9)
+        bad("fields qw..qz: not a unit quaternion (norm " +
+            format_number(b.orientation.norm(), 12) + ")");
+      b.mass = number(c[10], "mass");
+      b.volume = number(c[11], "volume");
+      b.scale = number(c[12], "scale");
+      b.moments = Vec3(number(c[13], "I1"), number(c[14], "I2"), number(c[15], "I3"));
+      if (!(b.mass > 0) || !(b.volume > 0) || !(b.scale > 0) || !(b.moments.minCoeff() > 0))
+        bad("fields mass, volume, scale, I1..I3 must be positive");
+      bodies.push_back(std::move(b));
+    } else if (section == Section::spheres) {
+      if (c.size() != 6) bad("a sphere row has 6 fields, found " + std::to_string(c.size()));
+      const long body = integer(c[1], "body");
+      if (body < 1 || body > static_cast<long>(bodies.size())) bad("field body: no body " + c[1]);
+      const Sphere sphere{Vec3(number(c[2], "x"), number(c[3], "y"), number(c[4], "z")),
+                          number(c[5], "r")};
+      if (!(sphere.radius > 0)) bad("field r: radius must be positive, found " + c[5]);
+      bodies[static_cast<std::size_t>(body - 1)].spheres.push_back(sphere);
+    } else {
+      bad("a data row before the '# bodies' section");
+    }
+  }
+  if (line_no == 0) throw InvalidInput(path + ": empty specimen file");
+  for (const SpecimenBody& b : bodies)
+    if (b.spheres.empty())
+      throw InvalidInput(path + ": body " + std::to_string(b.id) + " has no spheres");
+  return bodies;
 }
 
 void write_specimen_vtp(const std::string& path, const dem::SpecimenResult& result) {
@@ -160,7 +262,7 @@ void write_specimen_vtp(const std::string& path, const dem::SpecimenResult& resu
       for (const Sphere& s : b.spheres) o << format_number(s.radius) << "\n";
     o << "</DataArray>\n<DataArray type=\"Int32\" Name=\"body\" format=\"ascii\">\n";
     for (std::size_t k = 0; k < bodies.size(); ++k)
-      for (std::size_t s = 0; s < bodies[k].spheres.size(); ++s) o << k << "\n";
+      for (std::size_t s = 0; s < bodies[k].spheres.size(); ++s) o << k + 1 << "\n";
     o << "</DataArray>\n<DataArray type=\"Int32\" Name=\"kind\" format=\"ascii\">\n";
     for (const dem::Body& b : bodies)
       for (std::size_t s = 0; s < b.spheres.size(); ++s)
@@ -297,6 +399,13 @@ nlohmann::ordered_json specimen_report(const SpecimenRecipe& recipe, const dem::
   j["porosity_min"] = r.porosity_min;
   j["friction_compaction"] = r.friction_compaction;
   j["friction"] = recipe.friction;
+  j["container"] = {{"diameter", recipe.container_diameter}, {"height", recipe.container_height}};
+  j["density"] = {{"rock", recipe.rock_density}, {"soil", recipe.soil_density}};
+  j["contact"] = {{"kn", recipe.kn},
+                  {"ks", recipe.ks},
+                  {"friction", recipe.friction},
+                  {"damping_ratio", recipe.damping_ratio},
+                  {"local_damping", recipe.local_damping}};
   j["height"] = r.height;
   j["layer_height"] = r.layer_height;
   j["layer_porosity_compacted"] = r.layer_porosity_compacted;

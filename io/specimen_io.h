@@ -26,17 +26,38 @@ dem::SpecimenSpec specimen_spec(const SpecimenRecipe& recipe,
                                 std::vector<dem::RockTemplate> templates);
 
 /// Format version of specimen.csv, in its first line ("# clumpkit specimen format N"). 2: the
-/// body rows gained scale, I1, I2, I3.
-inline constexpr int kSpecimenCsvFormat = 2;
+/// body rows gained scale, I1, I2, I3. 3: bodies and spheres are numbered from 1 (0 means "no
+/// molecule" in LAMMPS and is no PFC id), so engine exports keep the ids.
+inline constexpr int kSpecimenCsvFormat = 3;
 
 /// specimen.csv: "# bodies" section (body, kind, template, x, y, z, qw, qx, qy, qz, mass,
 /// volume, scale, I1, I2, I3: principal moments in kg m² about the body axes, the template's
 /// principal frame, which the quaternion rotates into the world) then "# spheres" section
-/// (sphere, body, x, y, z, r), world frame, SI, round-trip precision.
+/// (sphere, body, x, y, z, r), world frame, SI, round-trip precision. Bodies and spheres are
+/// numbered from 1 in file order; template is the library particle id (-1 for soil).
 void write_specimen_csv(const std::string& path, const dem::SpecimenResult& result);
 
-/// specimen.vtp: VTK XML PolyData, one point per sphere with point data radius, body and kind
-/// (0 soil, 1 rock); in ParaView use a Glyph filter (sphere, scale by radius, factor 2).
+/// One body of a specimen.csv, as read back: its row and its spheres (world frame).
+struct SpecimenBody {
+  long id = 0;  ///< from 1
+  dem::BodyKind kind = dem::BodyKind::soil;
+  int template_id = -1;
+  Vec3 position = Vec3::Zero();                                     ///< centroid (m)
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< body → world
+  double mass = 0, volume = 0, scale = 1;
+  Vec3 moments = Vec3::Zero();  ///< principal moments about the body axes (kg m²)
+  std::vector<Sphere> spheres;  ///< world frame (m)
+};
+
+/// Reads a specimen.csv of format 3. Throws IoError for a missing file and InvalidInput naming
+/// the file, line and field for anything malformed (wrong format line, bad or non-finite
+/// number, non-positive mass, volume or radius, a sphere of an unknown body, a body without
+/// spheres).
+std::vector<SpecimenBody> read_specimen_csv(const std::string& path);
+
+/// specimen.vtp: VTK XML PolyData, one point per sphere with point data radius, body (the id of
+/// specimen.csv, from 1) and kind (0 soil, 1 rock); in ParaView use a Glyph filter (sphere, scale
+/// by radius, factor 2).
 void write_specimen_vtp(const std::string& path, const dem::SpecimenResult& result);
 
 /// calibration.csv: friction, porosity, void_ratio, relative_density, steps, stopped_by.
@@ -52,7 +73,8 @@ std::vector<std::string> write_slices(const std::string& dir, const dem::Specime
                                       double radius, const std::vector<double>& heights,
                                       int pixels = 600);
 
-/// report.json content (see `clumpkit specimen --help`).
+/// report.json content (see `clumpkit specimen --help`), with the container, densities and
+/// contact law the exports put into the engines' decks.
 nlohmann::ordered_json specimen_report(const SpecimenRecipe& recipe,
                                        const dem::SpecimenResult& result);
 

@@ -1,17 +1,27 @@
 // End-to-end tests of the clumpkit binary: outputs, determinism, exit codes and error lines.
+#include "io/specimen_io.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
+using clumpkit::read_specimen_csv;
+using clumpkit::SpecimenBody;
+using clumpkit::Sphere;
+using clumpkit::Vec3;
+namespace dem = clumpkit::dem;
 
 namespace {
 
@@ -41,7 +51,7 @@ void write(const fs::path& p, const std::string& text) {
   o << text;
 }
 
-Result clumpkit(const std::string& args, const fs::path& dir) {
+Result run_cli(const std::string& args, const fs::path& dir) {
   const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
   const std::string cmd =
       std::string(CLUMPKIT_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
@@ -90,7 +100,7 @@ E = 0.6667
 
 TEST(Cli, HelpStatesUnitsAndDefaults) {
   const fs::path d = scratch();
-  const Result r = clumpkit("shape block --help", d);
+  const Result r = run_cli("shape block --help", d);
   EXPECT_EQ(r.rc, 0);
   EXPECT_NE(r.out.find("--nd"), std::string::npos);
   EXPECT_NE(r.out.find("=2"), std::string::npos) << r.out;  // default shown
@@ -100,11 +110,11 @@ TEST(Cli, HelpStatesUnitsAndDefaults) {
 TEST(Cli, ShapeBlockThenDescribe) {
   const fs::path d = scratch();
   Result r =
-      clumpkit("shape block --L 75.1 --W 58.0 --H 49.8 --nd 2 --sl 0.8 --su 1.2 --seed 7 -o " +
-                   (d / "block.stl").string(),
-               d);
+      run_cli("shape block --L 75.1 --W 58.0 --H 49.8 --nd 2 --sl 0.8 --su 1.2 --seed 7 -o " +
+                  (d / "block.stl").string(),
+              d);
   ASSERT_EQ(r.rc, 0) << r.err;
-  r = clumpkit("describe --json " + (d / "block.stl").string(), d);
+  r = run_cli("describe --json " + (d / "block.stl").string(), d);
   ASSERT_EQ(r.rc, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   for (const char* k :
@@ -131,19 +141,19 @@ TEST(Cli, EveryShapeKindWritesAValidMesh) {
       "shape ellipsoid --axes 2,1,1 -o " + (d / "e.ply").string(),
       "shape box --size 2,1,1 -o " + (d / "b.stl").string()};
   for (const auto& c : cmds) {
-    const Result r = clumpkit(c, d);
+    const Result r = run_cli(c, d);
     EXPECT_EQ(r.rc, 0) << c << "\n" << r.err;
   }
-  Result r = clumpkit("describe --json " + (d / "b.stl").string(), d);
+  Result r = run_cli("describe --json " + (d / "b.stl").string(), d);
   ASSERT_EQ(r.rc, 0) << r.err;
   auto j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["volume"].get<double>(), 2.0, 1e-6);
   EXPECT_NEAR(j["weighted_roundness"].get<double>(), 1.400563499209, 0.005 * 1.400563499209);
-  r = clumpkit("describe --json " + (d / "grain.stl").string(), d);
+  r = run_cli("describe --json " + (d / "grain.stl").string(), d);
   j = nlohmann::json::parse(r.out);
   EXPECT_GE(j["weighted_roundness"].get<double>(), 1.2 - 1e-6);  // STL stores float32
   EXPECT_LE(j["weighted_roundness"].get<double>(), 1.4 + 1e-6);
-  r = clumpkit("describe --json " + (d / "rock.obj").string(), d);
+  r = run_cli("describe --json " + (d / "rock.obj").string(), d);
   j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["equivalent_diameter"].get<double>(), 27.5, 1e-9);
   EXPECT_NEAR(j["E"].get<double>(), 0.667, 0.01);
@@ -153,13 +163,13 @@ TEST(Cli, EveryShapeKindWritesAValidMesh) {
 TEST(Cli, ShapesIsByteIdenticalForAnyThreadCount) {
   const fs::path d = scratch();
   write(d / "r.toml", kSmallRecipe);
-  Result r1 = clumpkit("shapes --recipe " + (d / "r.toml").string() + " --out " +
-                           (d / "t1").string() + " --threads 1",
-                       d);
+  Result r1 = run_cli("shapes --recipe " + (d / "r.toml").string() + " --out " +
+                          (d / "t1").string() + " --threads 1",
+                      d);
   ASSERT_EQ(r1.rc, 0) << r1.err;
-  Result r2 = clumpkit("shapes --recipe " + (d / "r.toml").string() + " --out " +
-                           (d / "t2").string() + " --threads 2",
-                       d);
+  Result r2 = run_cli("shapes --recipe " + (d / "r.toml").string() + " --out " +
+                          (d / "t2").string() + " --threads 2",
+                      d);
   ASSERT_EQ(r2.rc, 0) << r2.err;
   int files = 0;
   for (const auto& e : fs::recursive_directory_iterator(d / "t1")) {
@@ -182,7 +192,7 @@ TEST(Cli, ShapesIsByteIdenticalForAnyThreadCount) {
   other.replace(0, 8, "seed = 6");
   write(d / "r6.toml", other);
   ASSERT_EQ(
-      clumpkit("shapes --recipe " + (d / "r6.toml").string() + " --out " + (d / "t6").string(), d)
+      run_cli("shapes --recipe " + (d / "r6.toml").string() + " --out " + (d / "t6").string(), d)
           .rc,
       0);
   EXPECT_NE(slurp(d / "t1" / "shapes.csv"), slurp(d / "t6" / "shapes.csv"));
@@ -192,22 +202,22 @@ TEST(Cli, ShapesIsByteIdenticalForAnyThreadCount) {
 TEST(Cli, EmptyMeshFile) {
   const fs::path d = scratch();
   write(d / "empty.stl", "");
-  expect_one_line_error(clumpkit("describe " + (d / "empty.stl").string(), d), "empty.stl");
+  expect_one_line_error(run_cli("describe " + (d / "empty.stl").string(), d), "empty.stl");
 }
 
 TEST(Cli, TruncatedBinaryStl) {
   const fs::path d = scratch();
-  ASSERT_EQ(clumpkit("shape box --size 1,1,1 -o " + (d / "b.stl").string(), d).rc, 0);
+  ASSERT_EQ(run_cli("shape box --size 1,1,1 -o " + (d / "b.stl").string(), d).rc, 0);
   std::string bytes = slurp(d / "b.stl");
   write(d / "cut.stl", bytes.substr(0, bytes.size() - 20));
-  expect_one_line_error(clumpkit("describe " + (d / "cut.stl").string(), d), "cut.stl");
+  expect_one_line_error(run_cli("describe " + (d / "cut.stl").string(), d), "cut.stl");
 }
 
 TEST(Cli, MissingFile) {
   const fs::path d = scratch();
-  expect_one_line_error(clumpkit("describe " + (d / "nope.stl").string(), d), "nope.stl");
+  expect_one_line_error(run_cli("describe " + (d / "nope.stl").string(), d), "nope.stl");
   expect_one_line_error(
-      clumpkit("shapes --recipe " + (d / "nope.toml").string() + " --out " + (d / "o").string(), d),
+      run_cli("shapes --recipe " + (d / "nope.toml").string() + " --out " + (d / "o").string(), d),
       "nope.toml");
   EXPECT_FALSE(fs::exists(d / "o"));
 }
@@ -215,7 +225,7 @@ TEST(Cli, MissingFile) {
 TEST(Cli, OpenMesh) {
   const fs::path d = scratch();
   write(d / "open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");
-  expect_one_line_error(clumpkit("describe " + (d / "open.obj").string(), d), "open.obj");
+  expect_one_line_error(run_cli("describe " + (d / "open.obj").string(), d), "open.obj");
 }
 
 TEST(Cli, NanInRecipe) {
@@ -223,7 +233,7 @@ TEST(Cli, NanInRecipe) {
   write(d / "nan.toml",
         "[[fraction]]\nmethod = \"block\"\ncount = 2\nW = 0.03\nL = 0.05\nH = 0.02\nsl = nan\n");
   const Result r =
-      clumpkit("shapes --recipe " + (d / "nan.toml").string() + " --out " + (d / "o").string(), d);
+      run_cli("shapes --recipe " + (d / "nan.toml").string() + " --out " + (d / "o").string(), d);
   expect_one_line_error(r, "nan.toml");
   EXPECT_NE(r.err.find("fraction[0].sl"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("nan"), std::string::npos) << r.err;
@@ -237,14 +247,14 @@ TEST(Cli, SlGreaterThanSu) {
         "[[fraction]]\nmethod = \"block\"\ncount = 2\nW = 0.03\nL = 0.05\nH = 0.02\nsl = 1.3\nsu = "
         "1.1\n");
   const Result r =
-      clumpkit("shapes --recipe " + (d / "slsu.toml").string() + " --out " + (d / "o").string(), d);
+      run_cli("shapes --recipe " + (d / "slsu.toml").string() + " --out " + (d / "o").string(), d);
   expect_one_line_error(r, "slsu.toml");
   EXPECT_NE(r.err.find("fraction[0].sl"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("1.3"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(d / "o"));
   // Same rule on the single-shape command.
   const Result s =
-      clumpkit("shape block --L 1 --W 1 --H 1 --sl 1.3 --su 1.1 -o " + (d / "x.stl").string(), d);
+      run_cli("shape block --L 1 --W 1 --H 1 --sl 1.3 --su 1.1 -o " + (d / "x.stl").string(), d);
   expect_one_line_error(s, "sl");
   EXPECT_FALSE(fs::exists(d / "x.stl"));
 }
@@ -254,25 +264,24 @@ TEST(Cli, UnknownRecipeKey) {
   write(d / "key.toml",
         "[[fraction]]\nmethod = \"block\"\ncount = 2\nW = 0.03\nL = 0.05\nH = 0.02\nsigma = 3\n");
   const Result r =
-      clumpkit("shapes --recipe " + (d / "key.toml").string() + " --out " + (d / "o").string(), d);
+      run_cli("shapes --recipe " + (d / "key.toml").string() + " --out " + (d / "o").string(), d);
   expect_one_line_error(r, "key.toml");
   EXPECT_NE(r.err.find("fraction[0].sigma"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(d / "o"));
   write(d / "top.toml",
         "sead = 3\n[[fraction]]\nmethod = \"block\"\ncount = 2\nW = 0.03\nL = 0.05\nH = 0.02\n");
   expect_one_line_error(
-      clumpkit("shapes --recipe " + (d / "top.toml").string() + " --out " + (d / "o").string(), d),
+      run_cli("shapes --recipe " + (d / "top.toml").string() + " --out " + (d / "o").string(), d),
       "sead");
 }
 
 TEST(Cli, BadCommandLineValues) {
   const fs::path d = scratch();
-  expect_one_line_error(clumpkit("shape box --size 1,-1,1 -o " + (d / "b.stl").string(), d), "-1");
+  expect_one_line_error(run_cli("shape box --size 1,-1,1 -o " + (d / "b.stl").string(), d), "-1");
   expect_one_line_error(
-      clumpkit("shape hull --diameter 1 --roundness 1.4 -o " + (d / "h.stl").string(), d),
+      run_cli("shape hull --diameter 1 --roundness 1.4 -o " + (d / "h.stl").string(), d),
       "--roundness");
-  expect_one_line_error(clumpkit("shape box --size 1,1,1 -o " + (d / "b.xyz").string(), d),
-                        "b.xyz");
+  expect_one_line_error(run_cli("shape box --size 1,1,1 -o " + (d / "b.xyz").string(), d), "b.xyz");
   EXPECT_FALSE(fs::exists(d / "b.stl"));
   EXPECT_FALSE(fs::exists(d / "h.stl"));
 }
@@ -285,11 +294,11 @@ TEST(Cli, BundledRecipesParse) {
         slurp(fs::path(CLUMPKIT_SOURCE_DIR) / "assets" / "recipes" / (std::string(name) + ".toml"));
     ASSERT_FALSE(text.empty()) << name;
   }
-  const Result r = clumpkit(
-      "shapes --quiet --recipe " +
-          (fs::path(CLUMPKIT_SOURCE_DIR) / "assets/recipes/rockfill-shapes.toml").string() +
-          " --out " + (d / "rf").string(),
-      d);
+  const Result r =
+      run_cli("shapes --quiet --recipe " +
+                  (fs::path(CLUMPKIT_SOURCE_DIR) / "assets/recipes/rockfill-shapes.toml").string() +
+                  " --out " + (d / "rf").string(),
+              d);
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_TRUE(fs::exists(d / "rf" / "meshes" / "00059.stl"));
 }
@@ -298,10 +307,9 @@ TEST(Cli, BundledRecipesParse) {
 TEST(Cli, FillWritesClumpAndReport) {
   const fs::path d = scratch();
   ASSERT_EQ(
-      clumpkit("shape block --L 75.1 --W 58.0 --H 49.8 --seed 1 -o " + (d / "b.stl").string(), d)
-          .rc,
+      run_cli("shape block --L 75.1 --W 58.0 --H 49.8 --seed 1 -o " + (d / "b.stl").string(), d).rc,
       0);
-  const Result r = clumpkit(
+  const Result r = run_cli(
       "fill " + (d / "b.stl").string() + " -o " + (d / "c.csv").string() + " --spheres 47 --json",
       d);
   ASSERT_EQ(r.rc, 0) << r.err;
@@ -320,18 +328,18 @@ TEST(Cli, FillWritesClumpAndReport) {
 
 TEST(Cli, FillBadInput) {
   const fs::path d = scratch();
-  ASSERT_EQ(clumpkit("shape box --size 1,1,1 -o " + (d / "b.stl").string(), d).rc, 0);
+  ASSERT_EQ(run_cli("shape box --size 1,1,1 -o " + (d / "b.stl").string(), d).rc, 0);
   const std::string out = " -o " + (d / "c.csv").string();
-  expect_one_line_error(clumpkit("fill " + (d / "b.stl").string() + out + " --spheres 0", d),
+  expect_one_line_error(run_cli("fill " + (d / "b.stl").string() + out + " --spheres 0", d),
                         "--spheres");
-  expect_one_line_error(clumpkit("fill " + (d / "b.stl").string() + out + " --min-radius -1", d),
+  expect_one_line_error(run_cli("fill " + (d / "b.stl").string() + out + " --min-radius -1", d),
                         "--min-radius");
-  expect_one_line_error(clumpkit("fill " + (d / "b.stl").string() + out + " --min-radius 5", d),
+  expect_one_line_error(run_cli("fill " + (d / "b.stl").string() + out + " --min-radius 5", d),
                         "min-radius");
   write(d / "open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");
-  expect_one_line_error(clumpkit("fill " + (d / "open.obj").string() + out, d), "open.obj");
+  expect_one_line_error(run_cli("fill " + (d / "open.obj").string() + out, d), "open.obj");
   write(d / "empty.stl", "");
-  expect_one_line_error(clumpkit("fill " + (d / "empty.stl").string() + out, d), "empty.stl");
+  expect_one_line_error(run_cli("fill " + (d / "empty.stl").string() + out, d), "empty.stl");
   EXPECT_FALSE(fs::exists(d / "c.csv"));
 }
 
@@ -378,9 +386,9 @@ TEST(Cli, LibraryDeterministicAndResumable) {
   const fs::path d = scratch();
   write(d / "r.toml", kLibraryRecipe);
   const std::string base = "library --quiet --recipe " + (d / "r.toml").string() + " --out ";
-  Result r = clumpkit(base + (d / "t1").string() + " --threads 1", d);
+  Result r = run_cli(base + (d / "t1").string() + " --threads 1", d);
   ASSERT_EQ(r.rc, 0) << r.err;
-  r = clumpkit(base + (d / "t2").string() + " --threads 2", d);
+  r = run_cli(base + (d / "t2").string() + " --threads 2", d);
   ASSERT_EQ(r.rc, 0) << r.err;
   expect_same_tree(d / "t1", d / "t2");
   EXPECT_TRUE(fs::exists(d / "t1" / "particles" / "00011.csv"));
@@ -392,7 +400,7 @@ TEST(Cli, LibraryDeterministicAndResumable) {
   const std::string kill = "timeout -s KILL 0.6 " + std::string(CLUMPKIT_BINARY) + " " + base +
                            (d / "k").string() + " --threads 2 >/dev/null 2>&1";
   (void)std::system(kill.c_str());
-  r = clumpkit(base + (d / "k").string() + " --threads 2 --json", d);
+  r = run_cli(base + (d / "k").string() + " --threads 2 --json", d);
   ASSERT_EQ(r.rc, 0) << r.err;
   expect_same_tree(d / "t1", d / "k");
 
@@ -416,7 +424,7 @@ TEST(Cli, LibraryDeterministicAndResumable) {
   } else {
     EXPECT_EQ(WEXITSTATUS(status), 0) << slurp(d / "i.err");
   }
-  r = clumpkit(base + (d / "i").string() + " --threads 2 --json", d);
+  r = run_cli(base + (d / "i").string() + " --threads 2 --json", d);
   ASSERT_EQ(r.rc, 0) << r.err;
   expect_same_tree(d / "t1", d / "i");
 
@@ -430,7 +438,7 @@ TEST(Cli, LibraryDeterministicAndResumable) {
   }
   fs::remove(d / "t3.partial" / "library.csv");
   fs::remove(d / "t3.partial" / "manifest.json");
-  r = clumpkit(base + (d / "t3").string() + " --threads 2 --json", d);
+  r = run_cli(base + (d / "t3").string() + " --threads 2 --json", d);
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["resumed"], 6);
   expect_same_tree(d / "t1", d / "t3");
@@ -442,7 +450,7 @@ TEST(Cli, LibraryDeterministicAndResumable) {
     std::ofstream stale(d / "t4.partial" / "recipe.toml");
     stale << "seed = 1\n";
   }
-  r = clumpkit(base + (d / "t4").string() + " --threads 2 --json", d);
+  r = run_cli(base + (d / "t4").string() + " --threads 2 --json", d);
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["resumed"], 0);
   expect_same_tree(d / "t1", d / "t4");
@@ -454,7 +462,7 @@ TEST(Cli, LibraryBadInput) {
   bad.replace(bad.find("spheres = 20"), 12, "spheres = 0");
   write(d / "bad.toml", bad);
   const Result r =
-      clumpkit("library --recipe " + (d / "bad.toml").string() + " --out " + (d / "o").string(), d);
+      run_cli("library --recipe " + (d / "bad.toml").string() + " --out " + (d / "o").string(), d);
   expect_one_line_error(r, "fill.spheres");
   EXPECT_FALSE(fs::exists(d / "o"));
   // A directory that is not a clumpkit output is refused and left alone.
@@ -462,7 +470,7 @@ TEST(Cli, LibraryBadInput) {
   fs::create_directories(d / "x");
   write(d / "x" / "notes.txt", "mine\n");
   expect_one_line_error(
-      clumpkit("library --recipe " + (d / "r.toml").string() + " --out " + (d / "x").string(), d),
+      run_cli("library --recipe " + (d / "r.toml").string() + " --out " + (d / "x").string(), d),
       "not a clumpkit output");
   EXPECT_TRUE(fs::exists(d / "x" / "notes.txt"));
   EXPECT_FALSE(fs::exists(d / "x.partial"));
@@ -472,7 +480,7 @@ TEST(Cli, LibraryBadInput) {
 TEST(Cli, VolumeAllMethodsOnOracleC2) {
   const fs::path d = scratch();
   write(d / "c2.csv", "# two unit balls 1 apart\nx,y,z,r\n0,0,0,1\n0,0,1,1\n");
-  const Result r = clumpkit("volume " + (d / "c2.csv").string() + " --method all --json", d);
+  const Result r = run_cli("volume " + (d / "c2.csv").string() + " --method all --json", d);
   ASSERT_EQ(r.rc, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   const double v = 9 * M_PI / 4;
@@ -494,14 +502,14 @@ TEST(Cli, VolumeAllMethodsOnOracleC2) {
 TEST(Cli, VolumeBadAndDegenerateInput) {
   const fs::path d = scratch();
   write(d / "zero.csv", "x,y,z,r\n0,0,0,1\n1,0,0,0\n");
-  expect_one_line_error(clumpkit("volume " + (d / "zero.csv").string(), d), "field r");
+  expect_one_line_error(run_cli("volume " + (d / "zero.csv").string(), d), "field r");
   write(d / "neg.csv", "x,y,z,r\n0,0,0,-1\n");
-  expect_one_line_error(clumpkit("volume " + (d / "neg.csv").string(), d), "-1");
+  expect_one_line_error(run_cli("volume " + (d / "neg.csv").string(), d), "-1");
   write(d / "nan.csv", "x,y,z,r\n0,nan,0,1\n");
-  expect_one_line_error(clumpkit("volume " + (d / "nan.csv").string(), d), "field y");
+  expect_one_line_error(run_cli("volume " + (d / "nan.csv").string(), d), "field y");
   write(d / "empty.csv", "");
-  expect_one_line_error(clumpkit("volume " + (d / "empty.csv").string(), d), "empty.csv");
-  expect_one_line_error(clumpkit("volume " + (d / "empty.csv").string() + " --method magic", d),
+  expect_one_line_error(run_cli("volume " + (d / "empty.csv").string(), d), "empty.csv");
+  expect_one_line_error(run_cli("volume " + (d / "empty.csv").string() + " --method magic", d),
                         "--method");
   // 1e6 identical spheres: the answer of one sphere, no crash.
   {
@@ -509,7 +517,7 @@ TEST(Cli, VolumeBadAndDegenerateInput) {
     o << "x,y,z,r\n";
     for (int i = 0; i < 1000000; ++i) o << "1,2,3,1\n";
   }
-  const Result r = clumpkit("volume " + (d / "same.csv").string() + " --json", d);
+  const Result r = run_cli("volume " + (d / "same.csv").string() + " --json", d);
   ASSERT_EQ(r.rc, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["exact"]["volume"].get<double>(), 4 * M_PI / 3, 1e-12);
@@ -519,9 +527,9 @@ TEST(Cli, VolumeBadAndDegenerateInput) {
 TEST(Cli, FillAllowOpenSaysItVoted) {
   const fs::path d = scratch();
   write(d / "open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");
-  const Result r = clumpkit("fill " + (d / "open.obj").string() + " -o " + (d / "c.csv").string() +
-                                " --spheres 5 --allow-open --json",
-                            d);
+  const Result r = run_cli("fill " + (d / "open.obj").string() + " -o " + (d / "c.csv").string() +
+                               " --spheres 5 --allow-open --json",
+                           d);
   ASSERT_EQ(r.rc, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NE(j["inside_outside"].get<std::string>().find("ray-parity"), std::string::npos);
@@ -584,9 +592,9 @@ TEST(Cli, SpecimenSameForAnyThreadCountAndAfterAKill) {
   const fs::path d = scratch();
   const std::string base = "specimen --quiet --checkpoint-seconds 0.5 --recipe " +
                            tiny_specimen_recipe(d).string() + " --out ";
-  Result r = clumpkit(base + (d / "t1").string() + " --threads 1", d);
+  Result r = run_cli(base + (d / "t1").string() + " --threads 1", d);
   ASSERT_EQ(r.rc, 0) << r.err;
-  r = clumpkit(base + (d / "t2").string() + " --threads 2 --json", d);
+  r = run_cli(base + (d / "t2").string() + " --threads 2 --json", d);
   ASSERT_EQ(r.rc, 0) << r.err;
   const auto report = nlohmann::json::parse(r.out);
   for (const char* f : {"specimen.csv", "calibration.csv", "specimen.vtp"})
@@ -601,7 +609,7 @@ TEST(Cli, SpecimenSameForAnyThreadCountAndAfterAKill) {
   (void)std::system(kill.c_str());
   EXPECT_FALSE(fs::exists(d / "k"));
   ASSERT_TRUE(fs::exists(d / "k.partial"));
-  r = clumpkit(base + (d / "k").string() + " --threads 2 --resume", d);
+  r = run_cli(base + (d / "k").string() + " --threads 2 --resume", d);
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_EQ(slurp(d / "t1" / "specimen.csv"), slurp(d / "k" / "specimen.csv"));
   EXPECT_EQ(slurp(d / "t1" / "calibration.csv"), slurp(d / "k" / "calibration.csv"));
@@ -619,7 +627,7 @@ TEST(Cli, SpecimenSameForAnyThreadCountAndAfterAKill) {
   EXPECT_NE(said.find("continue with --resume"), std::string::npos) << said;
   EXPECT_EQ(std::count(said.begin(), said.end(), '\n'), 1) << said;
   EXPECT_FALSE(fs::exists(d / "i"));
-  r = clumpkit(base + (d / "i").string() + " --threads 2 --resume", d);
+  r = run_cli(base + (d / "i").string() + " --threads 2 --resume", d);
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_EQ(slurp(d / "t1" / "specimen.csv"), slurp(d / "i" / "specimen.csv"));
 
@@ -659,7 +667,7 @@ TEST(Cli, SpecimenBadRecipesFailBeforeSimulation) {
     std::string text = good;
     text.replace(text.find(from), from.size(), to);
     write(d / "bad.toml", text);
-    return clumpkit(
+    return run_cli(
         "specimen --recipe " + (d / "bad.toml").string() + " --out " + (d / "o").string(), d);
   };
   expect_one_line_error(run("target_relative_density = 0.5", "target_relative_density = 1.5"),
@@ -675,9 +683,9 @@ TEST(Cli, SpecimenBadRecipesFailBeforeSimulation) {
 
 TEST(Cli, QuickSpecimenReachesItsTargetRelativeDensity) {
   const fs::path d = scratch();
-  const Result r = clumpkit("specimen --quiet --json --recipe " + std::string(CLUMPKIT_SOURCE_DIR) +
-                                "/assets/recipes/quick-specimen.toml --out " + (d / "q").string(),
-                            d);
+  const Result r = run_cli("specimen --quiet --json --recipe " + std::string(CLUMPKIT_SOURCE_DIR) +
+                               "/assets/recipes/quick-specimen.toml --out " + (d / "q").string(),
+                           d);
   ASSERT_EQ(r.rc, 0) << r.err;
   const auto report = nlohmann::json::parse(r.out);
   std::printf("quick specimen: porosity %.4f, Dr %.3f, mu* %.3f, %.0f s\n",
@@ -690,4 +698,171 @@ TEST(Cli, QuickSpecimenReachesItsTargetRelativeDensity) {
   EXPECT_LE(hi - lo, 0.02);
   // About the container height (0.2 m): the layer volumes follow the target porosity.
   EXPECT_NEAR(report["height"].get<double>(), 0.2, 0.03);
+}
+
+// `clumpkit export lammps` run in the real LAMMPS (Debian `lammps`, installed by scripts/deps) on
+// the tiny specimen, whose rock clumps (8-sphere fills of rock blocks) have three distinct
+// principal moments and arbitrary orientations, so every frame conversion is exercised.
+namespace {
+
+/// Rows of a LAMMPS dump (custom or local) after its ITEM: ATOMS / ITEM: ENTRIES line.
+std::vector<std::vector<double>> dump_rows(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::vector<std::vector<double>> rows;
+  bool data = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("ITEM: ATOMS", 0) == 0 || line.rfind("ITEM: ENTRIES", 0) == 0) {
+      data = true;
+      continue;
+    }
+    if (!data) continue;
+    std::istringstream s(line);
+    std::vector<double> row;
+    double v;
+    while (s >> v) row.push_back(v);
+    rows.push_back(row);
+  }
+  std::sort(rows.begin(), rows.end());  // by id (atoms) or by the owning atom id (bodies)
+  return rows;
+}
+
+bool have_program(const std::string& name) {
+  return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+/// Largest relative difference of mass and sorted principal moments between the LAMMPS body
+/// dump (id mol mass x y z Ix Iy Iz) and the specimen; counts the bodies compared.
+double worst_mass_property_error(const std::vector<std::vector<double>>& dump,
+                                 const std::vector<SpecimenBody>& bodies, std::size_t& compared) {
+  double worst = 0;
+  compared = 0;
+  for (const auto& row : dump) {
+    const SpecimenBody& b = bodies.at(static_cast<std::size_t>(row.at(1)) - 1);
+    EXPECT_EQ(b.kind, dem::BodyKind::rock);
+    std::vector<double> ours = {b.moments.x(), b.moments.y(), b.moments.z()};
+    std::vector<double> theirs = {row.at(6), row.at(7), row.at(8)};
+    std::sort(ours.begin(), ours.end());
+    std::sort(theirs.begin(), theirs.end());
+    worst = std::max(worst, std::abs(row.at(2) / b.mass - 1));
+    for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(theirs[k] / ours[k] - 1));
+    ++compared;
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST(CliExport, LammpsTakesOurExactMassPropertiesOnAnyRankCount) {
+  if (!have_program("lmp")) GTEST_SKIP() << "LAMMPS (lmp) not installed: run scripts/deps";
+  const fs::path d = scratch();
+  Result r = run_cli("specimen --quiet --recipe " + tiny_specimen_recipe(d).string() + " --out " +
+                         (d / "spec").string(),
+                     d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  r = run_cli(
+      "export lammps " + (d / "spec").string() + " --out " + (d / "lmp").string() + " --json", d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const std::vector<SpecimenBody> bodies =
+      read_specimen_csv((d / "spec" / "specimen.csv").string());
+  EXPECT_EQ(j["format"], "lammps");
+  EXPECT_EQ(j["bodies"].get<std::size_t>(), bodies.size());
+  EXPECT_EQ(j["run"], "lmp -in in.clumpkit");
+  for (const auto& f : j["files"]) EXPECT_TRUE(fs::exists(f.get<std::string>())) << f;
+  std::size_t rocks = 0, spheres = 0;
+  double r_min = INFINITY;
+  for (const SpecimenBody& b : bodies) {
+    rocks += b.kind == dem::BodyKind::rock;
+    spheres += b.spheres.size();
+    for (const Sphere& s : b.spheres) r_min = std::min(r_min, s.radius);
+    if (b.kind == dem::BodyKind::rock) {
+      ASSERT_GT(b.moments.maxCoeff() / b.moments.minCoeff(), 1.05) << "need anisotropic clumps";
+      ASSERT_LT(std::abs(b.orientation.w()), 0.9999) << "need rotated clumps";
+    }
+  }
+  ASSERT_GT(rocks, 20u);
+  EXPECT_EQ(j["spheres"].get<std::size_t>(), spheres);
+
+  // Each run in its own copy of the export.
+  auto run = [&](const std::string& name, const std::string& command) {
+    fs::copy(d / "lmp", d / name, fs::copy_options::recursive);
+    const std::string cmd =
+        "cd " + (d / name).string() + " && " + command + " -log none >out.txt 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << slurp(d / name / "out.txt");
+    return d / name;
+  };
+  const fs::path one = run("np1", "lmp -in in.clumpkit");
+  for (const char* step : {"0", "1000"}) {
+    std::size_t compared = 0;
+    const double worst = worst_mass_property_error(
+        dump_rows(one / ("bodies." + std::string(step) + ".txt")), bodies, compared);
+    EXPECT_EQ(compared, rocks) << "step " << step;
+    EXPECT_LT(worst, 1e-9) << "step " << step;
+  }
+  // Sphere centres at step 0 are the specimen's (atoms numbered as specimen.csv's spheres).
+  const auto atoms0 = dump_rows(one / "atoms.0.txt");
+  ASSERT_EQ(atoms0.size(), spheres);
+  double worst_position = 0;
+  std::size_t k = 0;
+  for (const SpecimenBody& b : bodies)
+    for (const Sphere& s : b.spheres) {
+      const auto& row = atoms0[k++];
+      EXPECT_EQ(static_cast<std::size_t>(row[0]), k);
+      EXPECT_EQ(static_cast<long>(row[1]), b.kind == dem::BodyKind::rock ? b.id : 0);
+      worst_position = std::max(worst_position, (Vec3(row[2], row[3], row[4]) - s.center).norm());
+      EXPECT_NEAR(row[5], s.radius, 1e-15);
+    }
+  EXPECT_LT(worst_position, 1e-9);
+
+  // Without our infile LAMMPS sums the overlapping spheres: a principal moment off by > 5 %.
+  const fs::path own = run("own", "lmp -var exact 0 -var nsteps 10 -in in.clumpkit");
+  std::size_t compared = 0;
+  EXPECT_GT(worst_mass_property_error(dump_rows(own / "bodies.0.txt"), bodies, compared), 0.05);
+
+  // Two MPI ranks: the same bodies, and the same sphere positions after 1,000 steps.
+  if (!have_program("mpirun")) GTEST_SKIP() << "mpirun not installed: run scripts/deps";
+  const fs::path two =
+      run("np2", "mpirun --allow-run-as-root --oversubscribe -np 2 lmp -in in.clumpkit");
+  EXPECT_LT(worst_mass_property_error(dump_rows(two / "bodies.1000.txt"), bodies, compared), 1e-9);
+  EXPECT_EQ(compared, rocks);
+  const auto a1 = dump_rows(one / "atoms.1000.txt"), a2 = dump_rows(two / "atoms.1000.txt");
+  ASSERT_EQ(a1.size(), a2.size());
+  double worst_split = 0;
+  for (std::size_t i = 0; i < a1.size(); ++i)
+    worst_split =
+        std::max(worst_split,
+                 (Vec3(a1[i][2], a1[i][3], a1[i][4]) - Vec3(a2[i][2], a2[i][3], a2[i][4])).norm());
+  EXPECT_LT(worst_split, 1e-6 * r_min);
+}
+
+TEST(CliExport, BadInputFailsWithOneLineAndWritesNothing) {
+  const fs::path d = scratch();
+  fs::create_directories(d / "empty");
+  write(d / "empty" / "notes.txt", "x\n");
+  expect_one_line_error(
+      run_cli("export lammpz " + (d / "empty").string() + " --out " + (d / "o").string(), d),
+      "unknown format 'lammpz'");
+  expect_one_line_error(
+      run_cli("export lammps " + (d / "empty").string() + " --out " + (d / "o").string(), d),
+      "neither a specimen nor a library");
+  expect_one_line_error(
+      run_cli("export lammps " + (d / "missing").string() + " --out " + (d / "o").string(), d),
+      "not a directory");
+  // A specimen.csv with NaN: the file, line and field are named.
+  fs::create_directories(d / "spec");
+  write(d / "spec" / "report.json",
+        R"({"container": {"diameter": 0.06, "height": 0.1}, "density": {"rock": 2870, "soil": 2700},
+            "contact": {"kn": 1e6, "ks": 1e6, "friction": 0.8, "damping_ratio": 0.5, "local_damping": 0.1}})");
+  write(d / "spec" / "manifest.json", R"({"recipe_path": "x.toml", "recipe": "", "seed": 1})");
+  write(d / "spec" / "specimen.csv",
+        "# clumpkit specimen format 3, SI units\n# bodies\n"
+        "body,kind,template,x,y,z,qw,qx,qy,qz,mass,volume,scale,I1,I2,I3\n"
+        "1,soil,-1,0,0,nan,1,0,0,0,1e-3,3.7e-7,1,1e-9,1e-9,1e-9\n# spheres\n"
+        "sphere,body,x,y,z,r\n1,1,0,0,0.005,0.0045\n");
+  expect_one_line_error(
+      run_cli("export lammps " + (d / "spec").string() + " --out " + (d / "o").string(), d),
+      "specimen.csv:4: field z: not a finite number");
+  EXPECT_FALSE(fs::exists(d / "o"));
+  EXPECT_FALSE(fs::exists(d / "o.partial"));
 }

@@ -1,0 +1,189 @@
+#include "io/export/lammps.h"
+
+#include "geom/errors.h"
+#include "geom/format.h"
+#include "io/atomic_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <vector>
+
+namespace clumpkit {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string num(double v) {
+  return format_number(v);
+}
+
+/// Sizes the deck needs: smallest and largest sphere radius, largest body extent from its
+/// centroid, top of the specimen, smallest and median body mass.
+struct Extents {
+  double r_min = INFINITY, r_max = 0, reach = 0, top = 0, m_min = INFINITY, m_median = 0;
+};
+
+Extents extents(const std::vector<SpecimenBody>& bodies) {
+  Extents e;
+  std::vector<double> masses;
+  for (const SpecimenBody& b : bodies) {
+    masses.push_back(b.mass);
+    e.m_min = std::min(e.m_min, b.mass);
+    for (const Sphere& s : b.spheres) {
+      e.r_min = std::min(e.r_min, s.radius);
+      e.r_max = std::max(e.r_max, s.radius);
+      e.reach = std::max(e.reach, (s.center - b.position).norm() + s.radius);
+      e.top = std::max(e.top, s.center.z() + s.radius);
+    }
+  }
+  std::nth_element(masses.begin(), masses.begin() + masses.size() / 2, masses.end());
+  e.m_median = masses[masses.size() / 2];
+  return e;
+}
+
+}  // namespace
+
+std::string lammps_run_command(int ranks) {
+  return ranks <= 1
+             ? "lmp -in in.clumpkit"
+             : "mpirun --allow-run-as-root -np " + std::to_string(ranks) + " lmp -in in.clumpkit";
+}
+
+std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bodies,
+                                             const EngineSettings& settings,
+                                             const std::string& dir) {
+  if (bodies.empty()) throw InvalidInput("LAMMPS export: the specimen has no bodies");
+  const Extents e = extents(bodies);
+  const fs::path d(dir);
+  std::vector<std::string> files;
+  std::size_t atoms = 0, rocks = 0, soils = 0;
+  for (const SpecimenBody& b : bodies) {
+    atoms += b.spheres.size();
+    (b.kind == dem::BodyKind::rock ? rocks : soils) += 1;
+  }
+
+  // The box holds the container with a margin of one sphere diameter and room above the top.
+  const double pad = 2 * e.r_max;
+  const double half = settings.container_radius + pad;
+  const double z_hi = std::max(settings.container_height, e.top) + pad;
+  const std::string data = (d / "data.specimen").string();
+  write_file_atomically(data, [&](std::ostream& o) {
+    o << "clumpkit specimen: atom_style hybrid sphere molecular, SI units\n\n"
+      << atoms << " atoms\n2 atom types\n\n"
+      << num(-half) << " " << num(half) << " xlo xhi\n"
+      << num(-half) << " " << num(half) << " ylo yhi\n"
+      << num(-pad) << " " << num(z_hi) << " zlo zhi\n\nAtoms # hybrid\n\n";
+    std::size_t id = 0;
+    for (const SpecimenBody& b : bodies) {
+      const bool rock = b.kind == dem::BodyKind::rock;
+      double spheres_volume = 0;
+      for (const Sphere& s : b.spheres) spheres_volume += 4.0 / 3.0 * M_PI * std::pow(s.radius, 3);
+      // Rock: Σ m_i = M (per-atom quantities only; the rigid fix takes M from the infile).
+      const double density = b.mass / spheres_volume;
+      for (const Sphere& s : b.spheres)
+        o << ++id << " " << (rock ? 1 : 2) << " " << num(s.center.x()) << " " << num(s.center.y())
+          << " " << num(s.center.z()) << " " << num(2 * s.radius) << " " << num(density) << " "
+          << (rock ? b.id : 0) << "\n";
+    }
+  });
+  files.push_back(data);
+
+  const std::string infile = (d / "bodies.infile").string();
+  write_file_atomically(infile, [&](std::ostream& o) {
+    o << "# clumpkit exact rigid-body properties for fix rigid/small ... infile (SI): id mass\n"
+         "# xcm ycm zcm ixx iyy izz ixy ixz iyz (box frame, R diag(I1,I2,I3) R^T) vxcm vycm vzcm\n"
+         "# lx ly lz ixcm iycm izcm\n"
+      << rocks << "\n";
+    for (const SpecimenBody& b : bodies) {
+      if (b.kind != dem::BodyKind::rock) continue;
+      const Eigen::Matrix3d R = b.orientation.toRotationMatrix();
+      const Eigen::Matrix3d I = R * b.moments.asDiagonal() * R.transpose();
+      o << b.id << " " << num(b.mass) << " " << num(b.position.x()) << " " << num(b.position.y())
+        << " " << num(b.position.z()) << " " << num(I(0, 0)) << " " << num(I(1, 1)) << " "
+        << num(I(2, 2)) << " " << num(I(0, 1)) << " " << num(I(0, 2)) << " " << num(I(1, 2))
+        << " 0 0 0 0 0 0 0 0 0\n";
+    }
+  });
+  files.push_back(infile);
+
+  const std::string map = (d / "bodies_map.csv").string();
+  write_file_atomically(map, [&](std::ostream& o) {
+    o << "# specimen.csv body id -> LAMMPS id: molecule id (rock, fix rigid/small) or atom id "
+         "(soil)\nbody,lammps_kind,lammps_id\n";
+    std::size_t atom = 0;
+    for (const SpecimenBody& b : bodies) {
+      const bool rock = b.kind == dem::BodyKind::rock;
+      o << b.id << "," << (rock ? "molecule" : "atom") << ","
+        << (rock ? b.id : static_cast<long>(atom + 1)) << "\n";
+      atom += b.spheres.size();
+    }
+  });
+  files.push_back(map);
+
+  // Contact law: kn, kt = ks, μ; the dashpot c = 2β·sqrt(m_eff·kn) becomes LAMMPS's
+  // γn = c/m_eff at the median body's m_eff = m/2 (LAMMPS scales the dashpot with each pair's
+  // m_eff, clumpkit with sqrt(m_eff)); no tangential dashpot (γt = 0), no local damping.
+  const dem::ContactParams& c = settings.contact;
+  const double m_eff = 0.5 * e.m_median;
+  const double gamma_n = 2.0 * c.damping_ratio * std::sqrt(c.kn / m_eff);
+  const double dt = 0.2 * std::sqrt(e.m_min / c.kn);  // 1/10 of the sphere's 2·sqrt(m/k)
+  const double skin = 0.5 * e.r_min;
+  const double cutoff = 2 * e.reach + 2 * e.r_max + 2 * skin;
+  const std::string contact_args =
+      num(c.kn) + " " + num(c.ks) + " " + num(gamma_n) + " 0 " + num(c.friction) + " 1";
+  const std::string deck = (d / "in.clumpkit").string();
+  write_file_atomically(deck, [&](std::ostream& o) {
+    o << "# clumpkit export for LAMMPS (syntax of LAMMPS 29 Sep 2021, Debian 12 `lammps`): the\n"
+         "# specimen with clumpkit's exact clump mass properties forced on fix rigid/small,\n"
+         "# settled under gravity in its container. Runs on any number of ranks:\n"
+         "#   lmp -in in.clumpkit     or     mpirun -np N lmp -in in.clumpkit\n"
+         "# -var nsteps N (default 1000), -var exact 0: LAMMPS's own mass properties instead.\n"
+         "# Dumps bodies.STEP.txt (id mol mass x y z inertiax inertiay inertiaz, as LAMMPS sees\n"
+         "# them) and atoms.STEP.txt (id mol x y z radius) at step 0 and at the end.\n"
+      << "variable    nsteps index 1000\n"
+      << "variable    exact  index 1\n"
+      << "variable    dt     index " << num(dt) << "\n"
+      << "units       si\n"
+         "atom_style  hybrid sphere molecular\n"
+         "atom_modify map array\n"
+         "boundary    f f f\n"
+         "newton      off\n"
+      << "comm_modify vel yes cutoff " << num(cutoff) << "\n"
+      << "read_data   data.specimen\n"
+         "group       rock type 1\n"
+         "group       soil type 2\n"
+      << "neighbor    " << num(skin) << " bin\n"
+      << "neigh_modify delay 0 every 1 check yes exclude molecule/intra rock\n"
+      << "pair_style  gran/hooke/history " << contact_args << "\n"
+      << "pair_coeff  * *\n"
+         "timestep    ${dt}\n"
+         "# Gravity on the soil atoms; the rigid fix applies M*g at each body's centroid (the\n"
+         "# overlapping spheres' atom masses do not sum to the body's mass distribution).\n"
+         "fix         grav soil gravity 9.81 vector 0 0 -1\n";
+    if (rocks > 0)
+      o << "if \"${exact} == 1\" then \"fix rig rock rigid/small molecule infile bodies.infile "
+           "gravity grav\" else \"fix rig rock rigid/small molecule gravity grav\"\n";
+    if (soils > 0) o << "fix         nve soil nve/sphere\n";
+    o << "fix         floor all wall/gran hooke/history " << contact_args << " zplane 0.0 NULL\n"
+      << "fix         cyl all wall/gran hooke/history " << contact_args << " zcylinder "
+      << num(settings.container_radius) << "\n";
+    if (rocks > 0)
+      o << "compute     rl rock rigid/local rig id mol mass x y z inertiax inertiay inertiaz\n"
+           "dump        bodies rock local ${nsteps} bodies.*.txt c_rl[1] c_rl[2] c_rl[3] "
+           "c_rl[4] c_rl[5] c_rl[6] c_rl[7] c_rl[8] c_rl[9]\n"
+           "dump_modify bodies format float %.17g\n";
+    o << "dump        atoms all custom ${nsteps} atoms.*.txt id mol x y z radius\n"
+         "dump_modify atoms sort id format float %.17g\n"
+         "compute     kea all ke\n"
+         "thermo_style custom step atoms c_kea cpu\n"
+         "thermo_modify lost ignore norm no\n"
+         "thermo      100\n"
+         "run         ${nsteps}\n";
+  });
+  files.push_back(deck);
+  return files;
+}
+
+}  // namespace clumpkit

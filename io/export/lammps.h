@@ -1,0 +1,36 @@
+// LAMMPS export of a specimen: data file, exact rigid-body table (fix rigid/small infile) and a
+// runnable deck (settle under gravity in the recipe's container; any number of MPI ranks).
+#pragma once
+
+#include "io/export/engine_settings.h"
+#include "io/specimen_io.h"
+
+#include <string>
+#include <vector>
+
+namespace clumpkit {
+
+/// Writes into `dir` (which must exist):
+///  - data.specimen: atom_style hybrid sphere molecular, one atom per sphere (id = the sphere id
+///    of specimen.csv), type 1 rock / 2 soil, mol = the body id for rock spheres and 0 for soil;
+///    a rock sphere's density is M/Σ(4/3·π·r³) of its body, so Σ m_i = M (only for per-atom
+///    quantities; the rigid fix takes M from bodies.infile);
+///  - bodies.infile: per rock body (id = body id) M, centroid and the inertia tensor in the box
+///    frame, R·diag(I1, I2, I3)·Rᵀ with R from the body's quaternion (LAMMPS's infile frame);
+///  - bodies_map.csv: body id → LAMMPS id (molecule id for rock, atom id for soil);
+///  - in.clumpkit: the deck. Rock bodies integrate by fix rigid/small with the infile (and
+///    gravity through it, M·g at the centroid), soil by nve/sphere, Hookean contacts with
+///    history (gran/hooke/history), floor and cylinder walls (wall/gran). `-var nsteps N`
+///    (default 1000) and `-var exact 0` (LAMMPS's own mass properties, to compare) change it. It
+///    dumps every body's mass and principal moments as LAMMPS sees them (bodies.0.txt,
+///    bodies.N.txt: id mol mass x y z inertiax inertiay inertiaz) and every atom (atoms.0.txt,
+///    atoms.N.txt: id mol x y z radius), sorted by id.
+/// Returns the paths written.
+std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bodies,
+                                             const EngineSettings& settings,
+                                             const std::string& dir);
+
+/// The command line that runs the deck in `dir` on `ranks` MPI ranks (1: plain lmp).
+std::string lammps_run_command(int ranks);
+
+}  // namespace clumpkit

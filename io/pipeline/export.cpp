@@ -1,0 +1,92 @@
+#include "io/pipeline/export.h"
+
+#include "geom/errors.h"
+#include "io/atomic_file.h"
+#include "io/export/lammps.h"
+#include "io/pipeline/job.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+namespace clumpkit {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::json read_json(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) throw IoError(path.string() + ": cannot open");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InvalidInput(path.string() + ": not valid JSON (" + e.what() + ")");
+  }
+}
+
+}  // namespace
+
+ExportResult run_export(const std::string& format, const std::string& source,
+                        const std::string& out_dir) {
+  const std::vector<std::string> formats = {"lammps", "liggghts", "yade", "pfc", "vtk"};
+  if (std::find(formats.begin(), formats.end(), format) == formats.end())
+    throw InvalidInput("export: unknown format '" + format +
+                       "' (one of lammps, liggghts, yade, pfc, vtk)");
+  if (format != "lammps")
+    throw InvalidInput("export: format '" + format +
+                       "' is not available in this build yet (available: lammps)");
+  const fs::path src(source);
+  if (!fs::is_directory(src))
+    throw InvalidInput(source + ": not a directory (export reads a `clumpkit specimen` output)");
+  if (!fs::exists(src / "specimen.csv")) {
+    if (fs::exists(src / "library.csv"))
+      throw InvalidInput(source +
+                         ": a clump library; exporting libraries is not available in this build "
+                         "yet (export a specimen directory)");
+    throw InvalidInput(source + ": neither a specimen nor a library directory (no specimen.csv)");
+  }
+  const nlohmann::json report = read_json(src / "report.json");
+  const nlohmann::json manifest = read_json(src / "manifest.json");
+  const EngineSettings settings =
+      engine_settings_from_report(report, (src / "report.json").string());
+  const std::vector<SpecimenBody> bodies = read_specimen_csv((src / "specimen.csv").string());
+
+  check_output_directory(out_dir);
+  const fs::path staging = out_dir + ".partial";
+  std::error_code ec;
+  fs::remove_all(staging, ec);
+  fs::create_directories(staging, ec);
+  if (ec) throw IoError(staging.string() + ": cannot create directory: " + ec.message());
+  ExportResult result;
+  result.format = format;
+  result.bodies = bodies.size();
+  for (const SpecimenBody& b : bodies) result.spheres += b.spheres.size();
+  try {
+    const std::vector<std::string> written =
+        write_lammps_export(bodies, settings, staging.string());
+    result.run = lammps_run_command(1);
+    nlohmann::ordered_json m =
+        manifest_head("export", manifest.value("recipe_path", std::string()),
+                      manifest.value("recipe", std::string()), manifest.value("seed", 0ULL));
+    m["format"] = format;
+    m["source"] = fs::absolute(src).lexically_normal().string();
+    m["bodies"] = result.bodies;
+    m["spheres"] = result.spheres;
+    m["run"] = result.run;
+    write_file_atomically((staging / "manifest.json").string(),
+                          [&](std::ostream& o) { o << m.dump(2) << "\n"; });
+    publish_directory(staging.string(), out_dir);
+    for (const std::string& f : written)
+      result.files.push_back((fs::path(out_dir) / fs::path(f).filename()).string());
+    result.files.push_back((fs::path(out_dir) / "manifest.json").string());
+  } catch (...) {
+    fs::remove_all(staging, ec);
+    throw;
+  }
+  return result;
+}
+
+}  // namespace clumpkit
