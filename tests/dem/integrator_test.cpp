@@ -50,8 +50,8 @@ TEST(Integrator, IsotropicBodyUnderConstantTorque) {
   EXPECT_LT(q2.angularDistance(q), 1e-10);
 }
 
-// Torque-free asymmetric top: angular momentum conserved up to accumulated rounding, kinetic energy to the
-// midpoint's second order, and rotation about the largest-moment axis stays there (stable).
+// Torque-free asymmetric top: angular momentum conserved up to accumulated rounding, kinetic energy
+// to the midpoint's second order, and rotation about the largest-moment axis stays there (stable).
 TEST(Integrator, TorqueFreeAsymmetricTopConservesMomentumAndEnergy) {
   const Vec3 moments(1.0, 2.0, 3.0);
   Eigen::Quaterniond q(Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()));
