@@ -1,0 +1,186 @@
+// `clumpkit export`: LAMMPS runs of the exported deck and the bad-input contract.
+#include "cli_helpers.h"
+#include "io/specimen_io.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace fs = std::filesystem;
+using namespace cli_test;
+using clumpkit::read_specimen_csv;
+using clumpkit::SpecimenBody;
+using clumpkit::Sphere;
+using clumpkit::Vec3;
+namespace dem = clumpkit::dem;
+
+// `clumpkit export lammps` run in the real LAMMPS (Debian `lammps`, installed by scripts/deps) on
+// the tiny specimen, whose rock clumps (8-sphere fills of rock blocks) have three distinct
+// principal moments and arbitrary orientations, so every frame conversion is exercised.
+namespace {
+
+/// Rows of a LAMMPS dump (custom or local) after its ITEM: ATOMS / ITEM: ENTRIES line.
+std::vector<std::vector<double>> dump_rows(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::vector<std::vector<double>> rows;
+  bool data = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("ITEM: ATOMS", 0) == 0 || line.rfind("ITEM: ENTRIES", 0) == 0) {
+      data = true;
+      continue;
+    }
+    if (!data) continue;
+    std::istringstream s(line);
+    std::vector<double> row;
+    double v;
+    while (s >> v) row.push_back(v);
+    rows.push_back(row);
+  }
+  std::sort(rows.begin(), rows.end());  // by id (atoms) or by the owning atom id (bodies)
+  return rows;
+}
+
+bool have_program(const std::string& name) {
+  return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+/// Largest relative difference of mass and sorted principal moments between the LAMMPS body
+/// dump (id mol mass x y z Ix Iy Iz) and the specimen; counts the bodies compared.
+double worst_mass_property_error(const std::vector<std::vector<double>>& dump,
+                                 const std::vector<SpecimenBody>& bodies, std::size_t& compared) {
+  double worst = 0;
+  compared = 0;
+  for (const auto& row : dump) {
+    const SpecimenBody& b = bodies.at(static_cast<std::size_t>(row.at(1)) - 1);
+    EXPECT_EQ(b.kind, dem::BodyKind::rock);
+    std::vector<double> ours = {b.moments.x(), b.moments.y(), b.moments.z()};
+    std::vector<double> theirs = {row.at(6), row.at(7), row.at(8)};
+    std::sort(ours.begin(), ours.end());
+    std::sort(theirs.begin(), theirs.end());
+    worst = std::max(worst, std::abs(row.at(2) / b.mass - 1));
+    for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(theirs[k] / ours[k] - 1));
+    ++compared;
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST(CliExport, LammpsTakesOurExactMassPropertiesOnAnyRankCount) {
+  if (!have_program("lmp")) GTEST_SKIP() << "LAMMPS (lmp) not installed: run scripts/deps";
+  const fs::path d = scratch();
+  Result r = run_cli("specimen --quiet --recipe " + tiny_specimen_recipe(d).string() + " --out " +
+                         (d / "spec").string(),
+                     d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  r = run_cli(
+      "export lammps " + (d / "spec").string() + " --out " + (d / "lmp").string() + " --json", d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const std::vector<SpecimenBody> bodies =
+      read_specimen_csv((d / "spec" / "specimen.csv").string());
+  EXPECT_EQ(j["format"], "lammps");
+  EXPECT_EQ(j["bodies"].get<std::size_t>(), bodies.size());
+  EXPECT_EQ(j["run"], "lmp -in in.clumpkit");
+  for (const auto& f : j["files"]) EXPECT_TRUE(fs::exists(f.get<std::string>())) << f;
+  std::size_t rocks = 0, spheres = 0;
+  double r_min = INFINITY;
+  for (const SpecimenBody& b : bodies) {
+    rocks += b.kind == dem::BodyKind::rock;
+    spheres += b.spheres.size();
+    for (const Sphere& s : b.spheres) r_min = std::min(r_min, s.radius);
+    if (b.kind == dem::BodyKind::rock) {
+      ASSERT_GT(b.moments.maxCoeff() / b.moments.minCoeff(), 1.05) << "need anisotropic clumps";
+      ASSERT_LT(std::abs(b.orientation.w()), 0.9999) << "need rotated clumps";
+    }
+  }
+  ASSERT_GT(rocks, 20u);
+  EXPECT_EQ(j["spheres"].get<std::size_t>(), spheres);
+
+  // Each run in its own copy of the export.
+  auto run = [&](const std::string& name, const std::string& command) {
+    fs::copy(d / "lmp", d / name, fs::copy_options::recursive);
+    const std::string cmd =
+        "cd " + (d / name).string() + " && " + command + " -log none >out.txt 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << slurp(d / name / "out.txt");
+    return d / name;
+  };
+  const fs::path one = run("np1", "lmp -in in.clumpkit");
+  for (const char* step : {"0", "1000"}) {
+    std::size_t compared = 0;
+    const double worst = worst_mass_property_error(
+        dump_rows(one / ("bodies." + std::string(step) + ".txt")), bodies, compared);
+    EXPECT_EQ(compared, rocks) << "step " << step;
+    EXPECT_LT(worst, 1e-9) << "step " << step;
+  }
+  // Sphere centres at step 0 are the specimen's (atoms numbered as specimen.csv's spheres).
+  const auto atoms0 = dump_rows(one / "atoms.0.txt");
+  ASSERT_EQ(atoms0.size(), spheres);
+  double worst_position = 0;
+  std::size_t k = 0;
+  for (const SpecimenBody& b : bodies)
+    for (const Sphere& s : b.spheres) {
+      const auto& row = atoms0[k++];
+      EXPECT_EQ(static_cast<std::size_t>(row[0]), k);
+      EXPECT_EQ(static_cast<long>(row[1]), b.kind == dem::BodyKind::rock ? b.id : 0);
+      worst_position = std::max(worst_position, (Vec3(row[2], row[3], row[4]) - s.center).norm());
+      EXPECT_NEAR(row[5], s.radius, 1e-15);
+    }
+  EXPECT_LT(worst_position, 1e-9);
+
+  // Without our infile LAMMPS sums the overlapping spheres: a principal moment off by > 5 %.
+  const fs::path own = run("own", "lmp -var exact 0 -var nsteps 10 -in in.clumpkit");
+  std::size_t compared = 0;
+  EXPECT_GT(worst_mass_property_error(dump_rows(own / "bodies.0.txt"), bodies, compared), 0.05);
+
+  // Two MPI ranks: the same bodies, and the same sphere positions after 1,000 steps.
+  if (!have_program("mpirun")) GTEST_SKIP() << "mpirun not installed: run scripts/deps";
+  const fs::path two =
+      run("np2", "mpirun --allow-run-as-root --oversubscribe -np 2 lmp -in in.clumpkit");
+  EXPECT_LT(worst_mass_property_error(dump_rows(two / "bodies.1000.txt"), bodies, compared), 1e-9);
+  EXPECT_EQ(compared, rocks);
+  const auto a1 = dump_rows(one / "atoms.1000.txt"), a2 = dump_rows(two / "atoms.1000.txt");
+  ASSERT_EQ(a1.size(), a2.size());
+  double worst_split = 0;
+  for (std::size_t i = 0; i < a1.size(); ++i)
+    worst_split =
+        std::max(worst_split,
+                 (Vec3(a1[i][2], a1[i][3], a1[i][4]) - Vec3(a2[i][2], a2[i][3], a2[i][4])).norm());
+  EXPECT_LT(worst_split, 1e-6 * r_min);
+}
+
+TEST(CliExport, BadInputFailsWithOneLineAndWritesNothing) {
+  const fs::path d = scratch();
+  fs::create_directories(d / "empty");
+  write(d / "empty" / "notes.txt", "x\n");
+  expect_one_line_error(
+      run_cli("export lammpz " + (d / "empty").string() + " --out " + (d / "o").string(), d),
+      "unknown format 'lammpz'");
+  expect_one_line_error(
+      run_cli("export lammps " + (d / "empty").string() + " --out " + (d / "o").string(), d),
+      "neither a specimen nor a library");
+  expect_one_line_error(
+      run_cli("export lammps " + (d / "missing").string() + " --out " + (d / "o").string(), d),
+      "not a directory");
+  // A specimen.csv with NaN: the file, line and field are named.
+  fs::create_directories(d / "spec");
+  write(d / "spec" / "report.json",
+        R"({"container": {"diameter": 0.06, "height": 0.1}, "density": {"rock": 2870, "soil": 2700},
+            "contact": {"kn": 1e6, "ks": 1e6, "friction": 0.8, "damping_ratio": 0.5, "local_damping": 0.1}})");
+  write(d / "spec" / "manifest.json", R"({"recipe_path": "x.toml", "recipe": "", "seed": 1})");
+  write(d / "spec" / "specimen.csv",
+        "# clumpkit specimen format 3, SI units\n# bodies\n"
+        "body,kind,template,x,y,z,qw,qx,qy,qz,mass,volume,scale,I1,I2,I3\n"
+        "1,soil,-1,0,0,nan,1,0,0,0,1e-3,3.7e-7,1,1e-9,1e-9,1e-9\n# spheres\n"
+        "sphere,body,x,y,z,r\n1,1,0,0,0.005,0.0045\n");
+  expect_one_line_error(
+      run_cli("export lammps " + (d / "spec").string() + " --out " + (d / "o").string(), d),
+      "specimen.csv:4: field z: not a finite number");
+  EXPECT_FALSE(fs::exists(d / "o"));
+  EXPECT_FALSE(fs::exists(d / "o.partial"));
+}
