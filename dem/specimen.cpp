@@ -78,11 +78,16 @@ DepositionSpec deposition_spec(const SpecimenSpec& s, double friction) {
   return d;
 }
 
+double smallest_size(const SpecimenSpec& s) {
+  double d = INFINITY;
+  for (const ParticleClass& c : s.classes) d = std::min(d, c.min_size);
+  return d;
+}
+
 /// The density scaling λ of the preparation (SpecimenSpec::density_scaling).
 double density_scaling(const SpecimenSpec& s) {
   if (s.density_scaling > 0) return s.density_scaling;
-  double d_min = INFINITY;
-  for (const ParticleClass& c : s.classes) d_min = std::min(d_min, c.min_size);
+  const double d_min = smallest_size(s);
   const double stress =
       std::max(s.rock_density, s.soil_density) * (1.0 - s.porosity_guess) * 9.81 * s.height;
   return std::clamp(0.005 * s.contact.kn / (stress * d_min), 1.0, 1000.0);
@@ -99,12 +104,6 @@ World scaled_world(const std::vector<Body>& bodies, const std::vector<Placement>
   const double dt = critical_timestep(world);
   if (std::isfinite(dt)) world.options().timestep = spec.timestep_safety * dt;
   return world;
-}
-
-double smallest_size(const SpecimenSpec& s) {
-  double d = INFINITY;
-  for (const ParticleClass& c : s.classes) d = std::min(d, c.min_size);
-  return d;
 }
 
 std::uint64_t bits(double v) {

@@ -139,22 +139,6 @@ void write_specimen_csv(const std::string& path, const dem::SpecimenResult& resu
   });
 }
 
-namespace {
-
-/// Cells of one CSV line (no quoting: specimen.csv has none).
-std::vector<std::string> split_cells(const std::string& line) {
-  std::vector<std::string> cells;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = line.find(',', start);
-    cells.push_back(line.substr(start, comma - start));
-    if (comma == std::string::npos) return cells;
-    start = comma + 1;
-  }
-}
-
-}  // namespace
-
 std::vector<SpecimenBody> read_specimen_csv(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw IoError(path + ": cannot open specimen file");
@@ -195,7 +179,7 @@ std::vector<SpecimenBody> read_specimen_csv(const std::string& path) {
       continue;
     }
     if (line[0] == '#' || line.rfind("body,", 0) == 0 || line.rfind("sphere,", 0) == 0) continue;
-    const std::vector<std::string> c = split_cells(line);
+    const std::vector<std::string> c = split(line);
     if (section == Section::bodies) {
       if (c.size() != 16) bad("a body row has 16 fields, found " + std::to_string(c.size()));
       SpecimenBody b;

@@ -15,10 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string num(double v) {
-  return format_number(v);
-}
-
 /// Sizes the deck needs: smallest and largest sphere radius, largest body extent from its
 /// centroid, top of the specimen, smallest and median body mass.
 struct Extents {
@@ -72,9 +68,9 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
   write_file_atomically(data, [&](std::ostream& o) {
     o << "clumpkit specimen: atom_style hybrid sphere molecular, SI units\n\n"
       << atoms << " atoms\n2 atom types\n\n"
-      << num(-half) << " " << num(half) << " xlo xhi\n"
-      << num(-half) << " " << num(half) << " ylo yhi\n"
-      << num(-pad) << " " << num(z_hi) << " zlo zhi\n\nAtoms # hybrid\n\n";
+      << format_number(-half) << " " << format_number(half) << " xlo xhi\n"
+      << format_number(-half) << " " << format_number(half) << " ylo yhi\n"
+      << format_number(-pad) << " " << format_number(z_hi) << " zlo zhi\n\nAtoms # hybrid\n\n";
     std::size_t id = 0;
     for (const SpecimenBody& b : bodies) {
       const bool rock = b.kind == dem::BodyKind::rock;
@@ -83,8 +79,9 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
       // Rock: Σ m_i = M (per-atom quantities only; the rigid fix takes M from the infile).
       const double density = b.mass / spheres_volume;
       for (const Sphere& s : b.spheres)
-        o << ++id << " " << (rock ? 1 : 2) << " " << num(s.center.x()) << " " << num(s.center.y())
-          << " " << num(s.center.z()) << " " << num(2 * s.radius) << " " << num(density) << " "
+        o << ++id << " " << (rock ? 1 : 2) << " " << format_number(s.center.x()) << " "
+          << format_number(s.center.y()) << " " << format_number(s.center.z()) << " "
+          << format_number(2 * s.radius) << " " << format_number(density) << " "
           << (rock ? b.id : 0) << "\n";
     }
   });
@@ -100,10 +97,11 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
       if (b.kind != dem::BodyKind::rock) continue;
       const Eigen::Matrix3d R = b.orientation.toRotationMatrix();
       const Eigen::Matrix3d I = R * b.moments.asDiagonal() * R.transpose();
-      o << b.id << " " << num(b.mass) << " " << num(b.position.x()) << " " << num(b.position.y())
-        << " " << num(b.position.z()) << " " << num(I(0, 0)) << " " << num(I(1, 1)) << " "
-        << num(I(2, 2)) << " " << num(I(0, 1)) << " " << num(I(0, 2)) << " " << num(I(1, 2))
-        << " 0 0 0 0 0 0 0 0 0\n";
+      o << b.id << " " << format_number(b.mass) << " " << format_number(b.position.x()) << " "
+        << format_number(b.position.y()) << " " << format_number(b.position.z()) << " "
+        << format_number(I(0, 0)) << " " << format_number(I(1, 1)) << " " << format_number(I(2, 2))
+        << " " << format_number(I(0, 1)) << " " << format_number(I(0, 2)) << " "
+        << format_number(I(1, 2)) << " 0 0 0 0 0 0 0 0 0\n";
     }
   });
   files.push_back(infile);
@@ -131,8 +129,9 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
   const double dt = 0.2 * std::sqrt(e.m_min / c.kn);  // 1/10 of the sphere's 2·sqrt(m/k)
   const double skin = 0.5 * e.r_min;
   const double cutoff = 2 * e.reach + 2 * e.r_max + 2 * skin;
-  const std::string contact_args =
-      num(c.kn) + " " + num(c.ks) + " " + num(gamma_n) + " 0 " + num(c.friction) + " 1";
+  const std::string contact_args = format_number(c.kn) + " " + format_number(c.ks) + " " +
+                                   format_number(gamma_n) + " 0 " + format_number(c.friction) +
+                                   " 1";
   const std::string deck = (d / "in.clumpkit").string();
   write_file_atomically(deck, [&](std::ostream& o) {
     o << "# clumpkit export for LAMMPS (syntax of LAMMPS 29 Sep 2021, Debian 12 `lammps`): the\n"
@@ -144,17 +143,17 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
          "# them) and atoms.STEP.txt (id mol x y z radius) at step 0 and at the end.\n"
       << "variable    nsteps index 1000\n"
       << "variable    exact  index 1\n"
-      << "variable    dt     index " << num(dt) << "\n"
+      << "variable    dt     index " << format_number(dt) << "\n"
       << "units       si\n"
          "atom_style  hybrid sphere molecular\n"
          "atom_modify map array\n"
          "boundary    f f f\n"
          "newton      off\n"
-      << "comm_modify vel yes cutoff " << num(cutoff) << "\n"
+      << "comm_modify vel yes cutoff " << format_number(cutoff) << "\n"
       << "read_data   data.specimen\n"
          "group       rock type 1\n"
          "group       soil type 2\n"
-      << "neighbor    " << num(skin) << " bin\n"
+      << "neighbor    " << format_number(skin) << " bin\n"
       << "neigh_modify delay 0 every 1 check yes exclude molecule/intra rock\n"
       << "pair_style  gran/hooke/history " << contact_args << "\n"
       << "pair_coeff  * *\n"
@@ -168,7 +167,7 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
     if (soils > 0) o << "fix         nve soil nve/sphere\n";
     o << "fix         floor all wall/gran hooke/history " << contact_args << " zplane 0.0 NULL\n"
       << "fix         cyl all wall/gran hooke/history " << contact_args << " zcylinder "
-      << num(settings.container_radius) << "\n";
+      << format_number(settings.container_radius) << "\n";
     if (rocks > 0)
       o << "compute     rl rock rigid/local rig id mol mass x y z inertiax inertiay inertiaz\n"
            "dump        bodies rock local ${nsteps} bodies.*.txt c_rl[1] c_rl[2] c_rl[3] "

@@ -2,6 +2,7 @@
 
 #include "geom/errors.h"
 #include "geom/mesh/mesh.h"
+#include "geom/shapes/primitives.h"
 
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
@@ -57,41 +58,9 @@ Mesh tetrahedron_mesh() {
   return m;
 }
 
-// Unit icosphere: icosahedron subdivided `level` times, vertices pushed to the sphere.
+// Unit icosphere (the library's make_icosphere, outward oriented).
 Mesh icosphere_mesh(int level) {
-  Mesh m;
-  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  const double raw[12][3] = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
-                             {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
-                             {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  for (const auto& r : raw) m.vertices.push_back(Vec3(r[0], r[1], r[2]).normalized());
-  m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                 {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                 {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                 {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-  for (int l = 0; l < level; ++l) {
-    std::map<std::pair<int, int>, int> mid;
-    auto midpoint = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      const auto it = mid.find(key);
-      if (it != mid.end()) return it->second;
-      m.vertices.push_back((m.vertices[a] + m.vertices[b]).normalized());
-      const int id = static_cast<int>(m.vertices.size()) - 1;
-      mid.emplace(key, id);
-      return id;
-    };
-    std::vector<std::array<int, 3>> next;
-    for (const auto& f : m.triangles) {
-      const int a = midpoint(f[0], f[1]), b = midpoint(f[1], f[2]), c = midpoint(f[2], f[0]);
-      next.push_back({f[0], a, c});
-      next.push_back({f[1], b, a});
-      next.push_back({f[2], c, b});
-      next.push_back({a, b, c});
-    }
-    m.triangles.swap(next);
-  }
-  orient_about(m, Vec3::Zero());
-  return m;
+  return make_icosphere(level);
 }
 
 // Prism over a counter-clockwise polygon that is star-shaped from its first vertex, z in [0, h].
