@@ -109,17 +109,39 @@ dem::SpecimenSpec specimen_spec(const SpecimenRecipe& r, std::vector<dem::RockTe
   return s;
 }
 
-void write_specimen_csv(const std::string& path, const dem::SpecimenResult& result) {
+std::vector<SpecimenBody> specimen_bodies(const dem::SpecimenResult& result) {
+  std::vector<SpecimenBody> out;
+  const auto& bodies = result.world.bodies();
+  out.reserve(bodies.size());
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    const dem::Body& b = bodies[k];
+    SpecimenBody s;
+    s.id = static_cast<long>(k + 1);
+    s.kind = b.kind;
+    s.template_id = b.template_id;
+    s.position = b.position;
+    s.orientation = b.orientation;
+    s.mass = b.mass;
+    s.volume = b.volume;
+    s.scale = b.scale;
+    s.moments = b.moments;
+    s.spheres.reserve(b.spheres.size());
+    for (const Sphere& sp : b.spheres)
+      s.spheres.push_back({b.orientation * sp.center + b.position, sp.radius});
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+void write_specimen_csv(const std::string& path, const std::vector<SpecimenBody>& bodies) {
   write_file_atomically(path, [&](std::ostream& o) {
-    const auto& bodies = result.world.bodies();
     o << "# clumpkit specimen format " << kSpecimenCsvFormat
       << ", SI units, world frame (x_world = q x_body + position). Bodies, then their spheres.\n"
          "# I1,I2,I3: principal moments (kg m2) about the body frame axes (the template's "
          "principal frame); scale: template length scale (1 for soil)\n# bodies\n";
     o << "body,kind,template,x,y,z,qw,qx,qy,qz,mass,volume,scale,I1,I2,I3\n";
-    for (std::size_t k = 0; k < bodies.size(); ++k) {
-      const dem::Body& b = bodies[k];
-      o << k + 1 << "," << dem::kind_name(b.kind) << "," << b.template_id << ","
+    for (const SpecimenBody& b : bodies) {
+      o << b.id << "," << dem::kind_name(b.kind) << "," << b.template_id << ","
         << format_number(b.position.x()) << "," << format_number(b.position.y()) << ","
         << format_number(b.position.z()) << "," << format_number(b.orientation.w()) << ","
         << format_number(b.orientation.x()) << "," << format_number(b.orientation.y()) << ","
@@ -130,12 +152,11 @@ void write_specimen_csv(const std::string& path, const dem::SpecimenResult& resu
     }
     o << "# spheres\nsphere,body,x,y,z,r\n";
     std::size_t n = 0;
-    for (std::size_t k = 0; k < bodies.size(); ++k)
-      for (const Sphere& s : bodies[k].spheres) {
-        const Vec3 c = bodies[k].orientation * s.center + bodies[k].position;
-        o << ++n << "," << k + 1 << "," << format_number(c.x()) << "," << format_number(c.y())
-          << "," << format_number(c.z()) << "," << format_number(s.radius) << "\n";
-      }
+    for (const SpecimenBody& b : bodies)
+      for (const Sphere& s : b.spheres)
+        o << ++n << "," << b.id << "," << format_number(s.center.x()) << ","
+          << format_number(s.center.y()) << "," << format_number(s.center.z()) << ","
+          << format_number(s.radius) << "\n";
   });
 }
 
@@ -225,30 +246,27 @@ std::vector<SpecimenBody> read_specimen_csv(const std::string& path) {
   return bodies;
 }
 
-void write_specimen_vtp(const std::string& path, const dem::SpecimenResult& result) {
+void write_specimen_vtp(const std::string& path, const std::vector<SpecimenBody>& bodies) {
   write_file_atomically(path, [&](std::ostream& o) {
-    const auto& bodies = result.world.bodies();
     std::size_t n = 0;
-    for (const dem::Body& b : bodies) n += b.spheres.size();
+    for (const SpecimenBody& b : bodies) n += b.spheres.size();
     o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
          "byte_order=\"LittleEndian\">\n<PolyData>\n<Piece NumberOfPoints=\""
       << n << "\" NumberOfVerts=\"" << n << "\">\n<Points>\n"
       << "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (const dem::Body& b : bodies)
-      for (const Sphere& s : b.spheres) {
-        const Vec3 c = b.orientation * s.center + b.position;
-        o << format_number(c.x()) << " " << format_number(c.y()) << " " << format_number(c.z())
-          << "\n";
-      }
+    for (const SpecimenBody& b : bodies)
+      for (const Sphere& s : b.spheres)
+        o << format_number(s.center.x()) << " " << format_number(s.center.y()) << " "
+          << format_number(s.center.z()) << "\n";
     o << "</DataArray>\n</Points>\n<PointData Scalars=\"radius\">\n"
       << "<DataArray type=\"Float64\" Name=\"radius\" format=\"ascii\">\n";
-    for (const dem::Body& b : bodies)
+    for (const SpecimenBody& b : bodies)
       for (const Sphere& s : b.spheres) o << format_number(s.radius) << "\n";
     o << "</DataArray>\n<DataArray type=\"Int32\" Name=\"body\" format=\"ascii\">\n";
-    for (std::size_t k = 0; k < bodies.size(); ++k)
-      for (std::size_t s = 0; s < bodies[k].spheres.size(); ++s) o << k + 1 << "\n";
+    for (const SpecimenBody& b : bodies)
+      for (std::size_t s = 0; s < b.spheres.size(); ++s) o << b.id << "\n";
     o << "</DataArray>\n<DataArray type=\"Int32\" Name=\"kind\" format=\"ascii\">\n";
-    for (const dem::Body& b : bodies)
+    for (const SpecimenBody& b : bodies)
       for (std::size_t s = 0; s < b.spheres.size(); ++s)
         o << (b.kind == dem::BodyKind::rock ? 1 : 0) << "\n";
     o << "</DataArray>\n</PointData>\n<Verts>\n"

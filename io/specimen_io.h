@@ -30,13 +30,6 @@ dem::SpecimenSpec specimen_spec(const SpecimenRecipe& recipe,
 /// molecule" in LAMMPS and is no PFC id), so engine exports keep the ids.
 inline constexpr int kSpecimenCsvFormat = 3;
 
-/// specimen.csv: "# bodies" section (body, kind, template, x, y, z, qw, qx, qy, qz, mass,
-/// volume, scale, I1, I2, I3: principal moments in kg m² about the body axes, the template's
-/// principal frame, which the quaternion rotates into the world) then "# spheres" section
-/// (sphere, body, x, y, z, r), world frame, SI, round-trip precision. Bodies and spheres are
-/// numbered from 1 in file order; template is the library particle id (-1 for soil).
-void write_specimen_csv(const std::string& path, const dem::SpecimenResult& result);
-
 /// One body of a specimen.csv, as read back: its row and its spheres (world frame).
 struct SpecimenBody {
   long id = 0;  ///< from 1
@@ -49,6 +42,17 @@ struct SpecimenBody {
   std::vector<Sphere> spheres;  ///< world frame (m)
 };
 
+/// The bodies of a built specimen as specimen.csv holds them (ids from 1, spheres in the world
+/// frame).
+std::vector<SpecimenBody> specimen_bodies(const dem::SpecimenResult& result);
+
+/// specimen.csv: "# bodies" section (body, kind, template, x, y, z, qw, qx, qy, qz, mass,
+/// volume, scale, I1, I2, I3: principal moments in kg m² about the body axes, the template's
+/// principal frame, which the quaternion rotates into the world) then "# spheres" section
+/// (sphere, body, x, y, z, r), world frame, SI, round-trip precision. Bodies and spheres are
+/// numbered from 1 in file order; template is the library particle id (-1 for soil).
+void write_specimen_csv(const std::string& path, const std::vector<SpecimenBody>& bodies);
+
 /// Reads a specimen.csv of format 3. Throws IoError for a missing file and InvalidInput naming
 /// the file, line and field for anything malformed (wrong format line, bad or non-finite
 /// number, non-positive mass, volume or radius, a sphere of an unknown body, a body without
@@ -58,7 +62,7 @@ std::vector<SpecimenBody> read_specimen_csv(const std::string& path);
 /// specimen.vtp: VTK XML PolyData, one point per sphere with point data radius, body (the id of
 /// specimen.csv, from 1) and kind (0 soil, 1 rock); in ParaView use a Glyph filter (sphere, scale
 /// by radius, factor 2).
-void write_specimen_vtp(const std::string& path, const dem::SpecimenResult& result);
+void write_specimen_vtp(const std::string& path, const std::vector<SpecimenBody>& bodies);
 
 /// calibration.csv: friction, porosity, void_ratio, relative_density, steps, stopped_by.
 void write_calibration_csv(const std::string& path, const dem::SpecimenResult& result);

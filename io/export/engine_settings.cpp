@@ -2,6 +2,8 @@
 
 #include "geom/errors.h"
 
+#include <algorithm>
+
 namespace clumpkit {
 
 EngineSettings engine_settings_from_report(const nlohmann::json& report, const std::string& path) {
@@ -23,6 +25,36 @@ EngineSettings engine_settings_from_report(const nlohmann::json& report, const s
   s.contact.damping_ratio = field("contact", "damping_ratio");
   s.contact.local_damping = field("contact", "local_damping");
   return s;
+}
+
+SpecimenExtents specimen_extents(const std::vector<SpecimenBody>& bodies) {
+  SpecimenExtents e;
+  std::vector<double> masses;
+  for (const SpecimenBody& b : bodies) {
+    masses.push_back(b.mass);
+    e.m_min = std::min(e.m_min, b.mass);
+    for (const Sphere& s : b.spheres) {
+      e.r_min = std::min(e.r_min, s.radius);
+      e.r_max = std::max(e.r_max, s.radius);
+      e.reach = std::max(e.reach, (s.center - b.position).norm() + s.radius);
+      e.bottom = std::min(e.bottom, s.center.z() - s.radius);
+      e.top = std::max(e.top, s.center.z() + s.radius);
+    }
+  }
+  if (!masses.empty()) {
+    std::nth_element(masses.begin(), masses.begin() + masses.size() / 2, masses.end());
+    e.m_median = masses[masses.size() / 2];
+  }
+  return e;
+}
+
+std::vector<Sphere> body_frame_spheres(const SpecimenBody& body) {
+  std::vector<Sphere> out;
+  out.reserve(body.spheres.size());
+  const Eigen::Quaterniond inverse = body.orientation.conjugate();
+  for (const Sphere& s : body.spheres)
+    out.push_back({inverse * (s.center - body.position), s.radius});
+  return out;
 }
 
 }  // namespace clumpkit

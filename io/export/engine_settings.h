@@ -1,11 +1,15 @@
-// What an engine deck needs besides the bodies: container, densities and contact law (SI).
+// What every engine export shares: the container, densities and contact law of a deck (SI), the
+// specimen's sizes, and bodies in their own frame.
 #pragma once
 
 #include "dem/contact.h"
+#include "io/specimen_io.h"
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 namespace clumpkit {
 
@@ -18,5 +22,16 @@ struct EngineSettings {
 /// The settings recorded in a specimen's report.json ("container", "density", "contact").
 /// Throws InvalidInput naming `path` and the missing field for a report without them.
 EngineSettings engine_settings_from_report(const nlohmann::json& report, const std::string& path);
+
+/// Sizes a deck needs: smallest and largest sphere radius, largest body extent from its centroid,
+/// lowest and highest sphere surface, smallest and median body mass.
+struct SpecimenExtents {
+  double r_min = INFINITY, r_max = 0, reach = 0, bottom = INFINITY, top = -INFINITY;
+  double m_min = INFINITY, m_median = 0;
+};
+SpecimenExtents specimen_extents(const std::vector<SpecimenBody>& bodies);
+
+/// A body's spheres in its own (principal) frame: q⁻¹(c − x).
+std::vector<Sphere> body_frame_spheres(const SpecimenBody& body);
 
 }  // namespace clumpkit

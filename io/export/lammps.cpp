@@ -13,34 +13,6 @@ namespace clumpkit {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-/// Sizes the deck needs: smallest and largest sphere radius, largest body extent from its
-/// centroid, top of the specimen, smallest and median body mass.
-struct Extents {
-  double r_min = INFINITY, r_max = 0, reach = 0, top = 0, m_min = INFINITY, m_median = 0;
-};
-
-Extents extents(const std::vector<SpecimenBody>& bodies) {
-  Extents e;
-  std::vector<double> masses;
-  for (const SpecimenBody& b : bodies) {
-    masses.push_back(b.mass);
-    e.m_min = std::min(e.m_min, b.mass);
-    for (const Sphere& s : b.spheres) {
-      e.r_min = std::min(e.r_min, s.radius);
-      e.r_max = std::max(e.r_max, s.radius);
-      e.reach = std::max(e.reach, (s.center - b.position).norm() + s.radius);
-      e.top = std::max(e.top, s.center.z() + s.radius);
-    }
-  }
-  std::nth_element(masses.begin(), masses.begin() + masses.size() / 2, masses.end());
-  e.m_median = masses[masses.size() / 2];
-  return e;
-}
-
-}  // namespace
-
 std::string lammps_run_command(int ranks) {
   return ranks <= 1
              ? "lmp -in in.clumpkit"
@@ -51,7 +23,7 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
                                              const EngineSettings& settings,
                                              const std::string& dir) {
   if (bodies.empty()) throw InvalidInput("LAMMPS export: the specimen has no bodies");
-  const Extents e = extents(bodies);
+  const SpecimenExtents e = specimen_extents(bodies);
   const fs::path d(dir);
   std::vector<std::string> files;
   std::size_t atoms = 0, rocks = 0, soils = 0;

@@ -3,6 +3,9 @@
 #include "geom/errors.h"
 #include "io/atomic_file.h"
 #include "io/export/lammps.h"
+#include "io/export/pfc.h"
+#include "io/export/vtk.h"
+#include "io/export/yade.h"
 #include "io/pipeline/job.h"
 
 #include <nlohmann/json.hpp>
@@ -35,9 +38,9 @@ ExportResult run_export(const std::string& format, const std::string& source,
   if (std::find(formats.begin(), formats.end(), format) == formats.end())
     throw InvalidInput("export: unknown format '" + format +
                        "' (one of lammps, liggghts, yade, pfc, vtk)");
-  if (format != "lammps")
+  if (format == "liggghts")
     throw InvalidInput("export: format '" + format +
-                       "' is not available in this build yet (available: lammps)");
+                       "' is not available in this build yet (available: lammps, yade, pfc, vtk)");
   const fs::path src(source);
   if (!fs::is_directory(src))
     throw InvalidInput(source + ": not a directory (export reads a `clumpkit specimen` output)");
@@ -65,9 +68,20 @@ ExportResult run_export(const std::string& format, const std::string& source,
   result.bodies = bodies.size();
   for (const SpecimenBody& b : bodies) result.spheres += b.spheres.size();
   try {
-    const std::vector<std::string> written =
-        write_lammps_export(bodies, settings, staging.string());
-    result.run = lammps_run_command(1);
+    std::vector<std::string> written;
+    if (format == "lammps") {
+      written = write_lammps_export(bodies, settings, staging.string());
+      result.run = lammps_run_command(1);
+    } else if (format == "yade") {
+      written = write_yade_export(bodies, settings, staging.string());
+      result.run = yade_run_command();
+    } else if (format == "pfc") {
+      written = write_pfc_export(bodies, settings, staging.string());
+      result.run = pfc_run_command();
+    } else {
+      written = write_vtk_export(bodies, staging.string());
+      result.run = vtk_run_command();
+    }
     nlohmann::ordered_json m =
         manifest_head("export", manifest.value("recipe_path", std::string()),
                       manifest.value("recipe", std::string()), manifest.value("seed", 0ULL));

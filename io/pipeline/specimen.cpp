@@ -44,8 +44,9 @@ SpecimenJobResult build_into(const SpecimenRecipe& recipe, const std::string& ou
   job.specimen = dem::build_specimen(spec, control);
   const dem::SpecimenResult& result = job.specimen;
 
-  write_specimen_csv((staging / "specimen.csv").string(), result);
-  write_specimen_vtp((staging / "specimen.vtp").string(), result);
+  const std::vector<SpecimenBody> bodies = specimen_bodies(result);
+  write_specimen_csv((staging / "specimen.csv").string(), bodies);
+  write_specimen_vtp((staging / "specimen.vtp").string(), bodies);
   write_calibration_csv((staging / "calibration.csv").string(), result);
   write_calibration_plot((staging / "calibration.png").string(), result,
                          recipe.target_relative_density);

@@ -55,6 +55,11 @@ inline Result run_cli(const std::string& args, const fs::path& dir) {
   return r;
 }
 
+// Whether a program is on the PATH (the DEM engines the export tests run).
+inline bool have_program(const std::string& name) {
+  return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0;
+}
+
 // The error contract: exit code 2 and exactly one line "clumpkit: error: ..." containing `needle`.
 inline void expect_one_line_error(const Result& r, const std::string& needle) {
   EXPECT_EQ(r.rc, 2) << r.err;

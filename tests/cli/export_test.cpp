@@ -45,10 +45,6 @@ std::vector<std::vector<double>> dump_rows(const fs::path& path) {
   return rows;
 }
 
-bool have_program(const std::string& name) {
-  return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0;
-}
-
 /// Largest relative difference of mass and sorted principal moments between the LAMMPS body
 /// dump (id mol mass x y z Ix Iy Iz) and the specimen; counts the bodies compared.
 double worst_mass_property_error(const std::vector<std::vector<double>>& dump,
