@@ -21,11 +21,14 @@ void register_export(CLI::App& app) {
       "A specimen directory (from `clumpkit specimen`) into a DEM engine, with clumpkit's exact "
       "mass properties forced on the engine. lammps: data.specimen, bodies.infile (fix "
       "rigid/small infile), bodies_map.csv and in.clumpkit (gravity settle in the container; "
-      "runs unchanged with mpirun -np N). yade: sphere files, specimen_bodies.txt, "
+      "runs unchanged with mpirun -np N). liggghts: templates.liggghts (use_density: exact mass "
+      "and "
+      "inertia), one insertion per body, soil.liggghts, bodies_map.csv and in.clumpkit. yade: "
+      "sphere files, specimen_bodies.txt, "
       "bodies_map.csv and run_clumpkit.py (yade -n -x). pfc: clumpkit.p3dat (PFC 7 syntax, "
       "templates of unit density) and bodies_map.csv. vtk: specimen.vtp and glyph_clumpkit.py. "
       "Written in DIR.partial, renamed at the end.");
-  c->add_option("FORMAT", o->format, "lammps, yade, pfc or vtk (liggghts: not yet)")->required();
+  c->add_option("FORMAT", o->format, "lammps, liggghts, yade, pfc or vtk")->required();
   c->add_option("SRC", o->source, "Specimen directory")->required();
   c->add_option("--out", o->out, "Output directory")->required();
   c->add_flag("--json", o->json, "Print format, bodies, spheres, files and run as JSON");

@@ -80,14 +80,14 @@ std::vector<std::string> write_liggghts_export(const std::vector<SpecimenBody>& 
       written = k;
       o << "fix pt" << k << " all particletemplate/multisphere " << primes.next()
         << " atom_type 1 density constant " << format_number(b.mass / b.volume) << " nspheres "
-        << b.spheres.size() << " ntry 1000000 spheres &\n";
+        << b.spheres.size() << " ntry 100000 spheres &\n";
       for (const Sphere& s : body_frame_spheres(b))
         o << "    " << xyz(s.center) << " " << format_number(s.radius) << " &\n";
-      o << "    type 1 mass " << format_number(b.mass) << " inertia_tensor "
+      o << "    type " << k << " mass " << format_number(b.mass) << " inertia_tensor "
         << format_number(b.moments.x()) << " 0 0 " << format_number(b.moments.y()) << " 0 "
         << format_number(b.moments.z()) << " use_density\n"
-        << "fix pdd" << k << " all particledistribution/discrete " << primes.next() << " 1 pt"
-        << k << " 1.0\n";
+        << "fix pdd" << k << " all particledistribution/discrete " << primes.next() << " 1 pt" << k
+        << " 1.0\n";
     }
   });
   file("specimen_bodies.liggghts", [&](std::ostream& o) {
@@ -95,12 +95,12 @@ std::vector<std::string> write_liggghts_export(const std::vector<SpecimenBody>& 
          "# with its quaternion (w x y z: template frame to world).\n";
     for (const SpecimenBody& b : bodies) {
       if (b.kind != dem::BodyKind::rock) continue;
-      const double eps = 1e-9;
+      // A point region: insert/pack draws the position inside it (1e-9 of the smallest radius).
+      const double eps = 1e-9 * e.r_min;
       o << "region cb" << b.id << " block " << format_number(b.position.x() - eps) << " "
-        << format_number(b.position.x() + eps) << " " << format_number(b.position.y() - eps)
-        << " " << format_number(b.position.y() + eps) << " "
-        << format_number(b.position.z() - eps) << " " << format_number(b.position.z() + eps)
-        << " units box volume_limit 1e-40\n"
+        << format_number(b.position.x() + eps) << " " << format_number(b.position.y() - eps) << " "
+        << format_number(b.position.y() + eps) << " " << format_number(b.position.z() - eps) << " "
+        << format_number(b.position.z() + eps) << " units box volume_limit 1e-300\n"
         << "fix ins" << b.id << " rock insert/pack seed " << primes.next()
         << " distributiontemplate pdd" << template_of.at({b.template_id, b.scale})
         << " insert_every once overlapcheck no all_in no orientation constant "
@@ -166,8 +166,8 @@ std::vector<std::string> write_liggghts_export(const std::vector<SpecimenBody>& 
       << "fix m2 all property/global kt peratomtypepair 2 " << pairs(c.ks) << "\n"
       << "fix m3 all property/global gamman peratomtypepair 2 " << pairs(gamma_n) << "\n"
       << "fix m4 all property/global gammat peratomtypepair 2 " << pairs(0) << "\n"
-      << "fix m5 all property/global coefficientFriction peratomtypepair 2 "
-      << pairs(c.friction) << "\n"
+      << "fix m5 all property/global coefficientFriction peratomtypepair 2 " << pairs(c.friction)
+      << "\n"
       << "pair_style gran " << model << "\n"
       << "pair_coeff * *\n"
       << "timestep " << format_number(dt) << "\n"
@@ -182,21 +182,24 @@ std::vector<std::string> write_liggghts_export(const std::vector<SpecimenBody>& 
       o << "include templates.liggghts\n"
            "fix ms all multisphere\n"
            "include specimen_bodies.liggghts\n";
-    o << "fix integr soil nve/sphere\n"
-         "compute ke all ke/multisphere\n"
+    o << "compute ke all ke/multisphere\n"
          "compute rke all erotate/multisphere\n"
          "thermo_style custom step atoms c_ke c_rke\n"
          "thermo_modify lost ignore norm no\n"
          "thermo 100\n"
+         "# Step 1 inserts the bodies (after the position update, so they stand where clumpkit\n"
+         "# put them); the soil is integrated from step 2 on, so after step 1 every sphere is at\n"
+         "# the specimen's position.\n"
          "run 1\n"
          "# the atoms after the insertion step, and at the end (run 0 writes a dump once)\n"
          "dump d1 all custom 1 atoms.1.txt id type x y z radius\n"
-         "dump_modify d1 sort id\n"
+         "dump_modify d1 sort id format \"%d %d %.17g %.17g %.17g %.17g\"\n"
          "run 0\n"
          "undump d1\n"
+         "fix integr soil nve/sphere\n"
          "run ${nsteps}\n"
          "dump d2 all custom 1 atoms.end.txt id type x y z radius\n"
-         "dump_modify d2 sort id\n"
+         "dump_modify d2 sort id format \"%d %d %.17g %.17g %.17g %.17g\"\n"
          "run 0\n";
   });
   return files;

@@ -31,6 +31,8 @@ std::vector<std::string> write_liggghts_export(const std::vector<SpecimenBody>& 
                                                const std::string& dir);
 
 /// The command line that runs the deck in the export directory.
-inline std::string liggghts_run_command() { return "liggghts -in in.clumpkit"; }
+inline std::string liggghts_run_command() {
+  return "liggghts -in in.clumpkit";
+}
 
 }  // namespace clumpkit

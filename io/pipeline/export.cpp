@@ -3,6 +3,7 @@
 #include "geom/errors.h"
 #include "io/atomic_file.h"
 #include "io/export/lammps.h"
+#include "io/export/liggghts.h"
 #include "io/export/pfc.h"
 #include "io/export/vtk.h"
 #include "io/export/yade.h"
@@ -38,9 +39,6 @@ ExportResult run_export(const std::string& format, const std::string& source,
   if (std::find(formats.begin(), formats.end(), format) == formats.end())
     throw InvalidInput("export: unknown format '" + format +
                        "' (one of lammps, liggghts, yade, pfc, vtk)");
-  if (format == "liggghts")
-    throw InvalidInput("export: format '" + format +
-                       "' is not available in this build yet (available: lammps, yade, pfc, vtk)");
   const fs::path src(source);
   if (!fs::is_directory(src))
     throw InvalidInput(source + ": not a directory (export reads a `clumpkit specimen` output)");
@@ -72,6 +70,9 @@ ExportResult run_export(const std::string& format, const std::string& source,
     if (format == "lammps") {
       written = write_lammps_export(bodies, settings, staging.string());
       result.run = lammps_run_command(1);
+    } else if (format == "liggghts") {
+      written = write_liggghts_export(bodies, settings, staging.string());
+      result.run = liggghts_run_command();
     } else if (format == "yade") {
       written = write_yade_export(bodies, settings, staging.string());
       result.run = yade_run_command();

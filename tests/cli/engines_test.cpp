@@ -253,3 +253,168 @@ TEST(CliEngines, PfcDataFileParsesBackToTheSpecimen) {
   EXPECT_LT(worst_rotation, 1e-12);
   EXPECT_LT(worst_pebble, 1e-15);
 }
+
+namespace {
+
+/// The atoms of a LAMMPS/LIGGGHTS custom dump (id type x y z radius), by id.
+std::map<long, std::vector<double>> dump_atoms(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::map<long, std::vector<double>> atoms;
+  bool data = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("ITEM: ATOMS", 0) == 0) {
+      data = true;
+      continue;
+    }
+    if (!data) continue;
+    std::istringstream s(line);
+    std::vector<double> row;
+    double v;
+    while (s >> v) row.push_back(v);
+    atoms[static_cast<long>(row.at(0))] = row;
+  }
+  return atoms;
+}
+
+/// The last thermo row of a LIGGGHTS screen output whose header starts with "Step".
+std::vector<double> last_thermo(const std::string& text) {
+  std::istringstream in(text);
+  std::string line;
+  std::vector<double> last;
+  bool in_table = false;
+  while (std::getline(in, line)) {
+    std::istringstream s(line);
+    std::string first;
+    s >> first;
+    if (first == "Step") {
+      in_table = true;
+      continue;
+    }
+    if (!in_table) continue;
+    std::vector<double> row;
+    try {
+      row.push_back(std::stod(first));
+      double v;
+      while (s >> v) row.push_back(v);
+      last = row;
+    } catch (const std::exception&) {
+      in_table = first != "Loop";  // INFO lines of insertions sit inside the table
+    }
+  }
+  return last;
+}
+
+}  // namespace
+
+// LIGGGHTS: every template as the engine prints it (7 digits) has our mass and principal
+// moments; a body of a template given v and ω has ke/multisphere = ½Mv² and erotate/multisphere
+// = ½ω·Iω; after the insertion step every sphere of the pre-placed specimen is where we put it.
+TEST(CliEngines, LiggghtsTakesOurTemplatesAndPlacesTheSpecimen) {
+  if (!have_program("liggghts")) GTEST_SKIP() << "LIGGGHTS not installed: run scripts/deps";
+  const fs::path d = scratch();
+  const std::vector<SpecimenBody> bodies = tiny_export(d, "liggghts");
+  const fs::path dir = d / "liggghts";
+  ASSERT_EQ(
+      std::system(("cd " + dir.string() + " && liggghts -in in.clumpkit >out.txt 2>&1").c_str()), 0)
+      << slurp(dir / "out.txt");
+
+  // Templates are numbered in the order of the first rock body of each (template, scale).
+  std::vector<const SpecimenBody*> first_of_template;
+  {
+    std::map<std::pair<int, double>, bool> seen;
+    for (const SpecimenBody& b : bodies)
+      if (b.kind == dem::BodyKind::rock && !seen[{b.template_id, b.scale}]) {
+        seen[{b.template_id, b.scale}] = true;
+        first_of_template.push_back(&b);
+      }
+  }
+  std::istringstream log(slurp(dir / "log.liggghts"));
+  std::string line;
+  std::size_t k = 0;
+  double worst = 0;
+  while (std::getline(log, line)) {
+    if (line.find("   mass = ") == 0) {
+      const double mass = std::stod(line.substr(10));
+      worst = std::max(worst, relative(mass, first_of_template.at(k)->mass));
+    } else if (line.find("Principal moments of inertia_:") != std::string::npos) {
+      std::string rest = line.substr(line.find(':') + 1);
+      std::replace(rest.begin(), rest.end(), ',', ' ');
+      std::istringstream s(rest);
+      std::vector<double> theirs(3);
+      for (double& v : theirs) s >> v;
+      const Vec3& m = first_of_template.at(k)->moments;
+      std::vector<double> ours = {m.x(), m.y(), m.z()};
+      std::sort(ours.begin(), ours.end());
+      std::sort(theirs.begin(), theirs.end());
+      for (int i = 0; i < 3; ++i) worst = std::max(worst, relative(theirs[i], ours[i]));
+      ++k;
+    }
+  }
+  EXPECT_EQ(k, first_of_template.size());
+  EXPECT_LT(worst, 5e-7) << "LIGGGHTS prints 7 significant digits";
+
+  // Every sphere after step 1 (soil atoms 1.., then each body's atoms, bodies_map.csv).
+  const auto atoms = dump_atoms(dir / "atoms.1.txt");
+  std::map<long, long> first_atom;
+  {
+    std::ifstream map(dir / "bodies_map.csv");
+    while (std::getline(map, line))
+      if (!line.empty() && std::isdigit(static_cast<unsigned char>(line[0]))) {
+        std::replace(line.begin(), line.end(), ',', ' ');
+        std::istringstream s(line);
+        long body = 0, id = 0, first = 0;
+        std::string kind;
+        s >> body >> kind >> id >> first;
+        first_atom[body] = first;
+      }
+  }
+  double r_min = INFINITY, worst_position = 0;
+  std::size_t spheres = 0;
+  for (const SpecimenBody& b : bodies)
+    for (std::size_t i = 0; i < b.spheres.size(); ++i) {
+      const auto& a = atoms.at(first_atom.at(b.id) + static_cast<long>(i));
+      worst_position =
+          std::max(worst_position, (Vec3(a[2], a[3], a[4]) - b.spheres[i].center).norm());
+      EXPECT_NEAR(a[5], b.spheres[i].radius, 1e-15);
+      r_min = std::min(r_min, b.spheres[i].radius);
+      ++spheres;
+    }
+  EXPECT_EQ(atoms.size(), spheres);
+  EXPECT_LT(worst_position, 1e-6 * r_min);
+
+  // One body of template 1 with v and ω (no gravity, no contacts, a tiny step): the engine's
+  // kinetic energies are ours.
+  const SpecimenBody& b = *first_of_template.front();
+  const Vec3 v(0.3, -0.2, -1.0), w(30, -50, 100);
+  write(
+      dir / "in.check",
+      "atom_style sphere\natom_modify map array\nboundary f f f\nnewton off\n"
+      "communicate single vel yes\nunits si\nregion domain block -1 1 -1 1 -1 1 units box\n"
+      "create_box 2 domain\nneighbor 0.001 bin\n"
+      "fix m1 all property/global kn peratomtypepair 2 1e6 1e6 1e6 1e6\n"
+      "fix m2 all property/global kt peratomtypepair 2 1e6 1e6 1e6 1e6\n"
+      "fix m3 all property/global gamman peratomtypepair 2 0 0 0 0\n"
+      "fix m4 all property/global gammat peratomtypepair 2 0 0 0 0\n"
+      "fix m5 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5\n"
+      "pair_style gran model hooke/stiffness tangential history\npair_coeff * *\n"
+      "timestep 1e-12\ninclude templates.liggghts\nfix ms all multisphere\n"
+      "region p block -1e-12 1e-12 -1e-12 1e-12 -1e-12 1e-12 units box volume_limit 1e-300\n"
+      "fix ins all insert/pack seed 49979687 distributiontemplate pdd1 vel constant 0.3 -0.2 -1.0 "
+      "omega constant 30 -50 100 insert_every once overlapcheck no all_in no orientation "
+      "template region p particles_in_region 1\n"
+      "compute ke all ke/multisphere\ncompute rke all erotate/multisphere\n"
+      "thermo_style custom step atoms c_ke c_rke\nthermo_modify format float %.17g\n"
+      "run 1\n");
+  ASSERT_EQ(
+      std::system(
+          ("cd " + dir.string() + " && liggghts -in in.check -log none >check.txt 2>&1").c_str()),
+      0)
+      << slurp(dir / "check.txt");
+  const std::vector<double> row = last_thermo(slurp(dir / "check.txt"));
+  ASSERT_EQ(row.size(), 4u) << slurp(dir / "check.txt");
+  const double ke = 0.5 * b.mass * v.squaredNorm();
+  const double erotate = 0.5 * w.dot(b.moments.asDiagonal() * w);
+  EXPECT_LT(relative(row[2], ke), 1e-8) << row[2] << " vs " << ke;
+  EXPECT_LT(relative(row[3], erotate), 1e-8) << row[3] << " vs " << erotate;
+}
