@@ -393,9 +393,9 @@ std::vector<CalibrationPoint> calibrate(const Build& build, double layer_volume)
 
 /// Stage 4: porosity of the central region of the settled specimen, its relative density from
 /// the calibration's extremes, the column height (into `result`).
-void measure(const World& world, const Build& build, SpecimenResult& result) {
+void measure(const World& world, double radius, double margin, SpecimenResult& result) {
   result.height = column_height(world);
-  result.region = central_region(build.spec.radius, build.margin, result.height);
+  result.region = central_region(radius, margin, result.height);
   result.porosity = region_porosity(world, body_volumes(world), result.region);
   result.relative_density =
       relative_density(result.porosity, result.porosity_max, result.porosity_min);
@@ -531,7 +531,7 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
     result.steps.emplace_back("specimen" + tag, static_cast<long>(world.steps()));
 
     // Stage 4: measurement (masses do not enter it).
-    measure(world, build, result);
+    measure(world, spec.radius, build.margin, result);
     result.friction_compaction = friction;
     result.rounds.back().porosity = result.porosity;
     result.rounds.back().relative_density = result.relative_density;
@@ -555,6 +555,18 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& c
   result.seconds.emplace_back("measurement", since(t0));
   build.report("done", 1.0);
   return result;
+}
+
+void measure_specimen(const World& world, double radius, double margin, int layers,
+                      SpecimenResult& result) {
+  if (!(margin >= 0) || !(radius > margin))
+    throw InvalidInput("specimen: the measurement margin " + format_number(margin) +
+                       " leaves no region in a container of radius " + format_number(radius));
+  if (layers < 1) throw InvalidInput("specimen: layers must be at least 1");
+  result.layer_porosity.clear();
+  result.band_porosity.clear();
+  measure(world, radius, margin, result);
+  measure_profiles(world, layers, result);
 }
 
 }  // namespace clumpkit::dem

@@ -130,6 +130,14 @@ std::string canonical_text(const SpecimenSpec& spec);
 /// canonical_text(spec), so checkpoints are reused only by the same program on the same spec.
 std::string spec_fingerprint(const SpecimenSpec& spec);
 
+/// Stage 4 of build_specimen on any settled world: the column height, the central region
+/// (`margin` from the wall of a container of `radius`, the floor and the top), its porosity, the
+/// relative density from result.porosity_max and porosity_min (set them first), the per-layer
+/// and per-band porosities and the coordination number (from world.contacts(): step the world
+/// once first). Throws InvalidInput for a margin that leaves no region or layers < 1.
+void measure_specimen(const World& world, double radius, double margin, int layers,
+                      SpecimenResult& result);
+
 /// Stage 3 of build_specimen: `layers` copies of the layer's bodies (and its walls), copy k
 /// shifted up by k·layer_height and at rest; the copies keep kind, template, scale and mass.
 World stack_layers(const World& layer, int layers, double layer_height);

@@ -12,8 +12,9 @@ namespace clumpkit::cli {
 
 void register_export(CLI::App& app) {
   struct Opts {
-    std::string format, source, out;
+    std::string format, source, out, test;
     bool json = false;
+    ExportOptions options;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -31,9 +32,19 @@ void register_export(CLI::App& app) {
   c->add_option("FORMAT", o->format, "lammps, liggghts, yade, pfc or vtk")->required();
   c->add_option("SRC", o->source, "Specimen directory")->required();
   c->add_option("--out", o->out, "Output directory")->required();
+  c->add_option("--test", o->test,
+                "lammps only: an element test after the settle: oedometer (top platen at a "
+                "constant strain rate; strain and vertical stress in oedometer.csv)")
+      ->check(CLI::IsMember({"oedometer"}));
+  c->add_option("--max-strain", o->options.test.max_strain,
+                "Oedometer: the vertical strain the platen stops at")
+      ->capture_default_str();
+  c->add_option("--strain-rate", o->options.test.strain_rate, "Oedometer: strain rate (1/s)")
+      ->capture_default_str();
   c->add_flag("--json", o->json, "Print format, bodies, spheres, files and run as JSON");
   c->callback([o] {
-    const ExportResult r = run_export(o->format, o->source, o->out);
+    o->options.test.oedometer = o->test == "oedometer";
+    const ExportResult r = run_export(o->format, o->source, o->out, o->options);
     if (o->json) {
       std::cout << nlohmann::ordered_json{{"format", r.format},
                                           {"bodies", r.bodies},

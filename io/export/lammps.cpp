@@ -20,8 +20,8 @@ std::string lammps_run_command(int ranks) {
 }
 
 std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bodies,
-                                             const EngineSettings& settings,
-                                             const std::string& dir) {
+                                             const EngineSettings& settings, const std::string& dir,
+                                             const LammpsTest& test) {
   if (bodies.empty()) throw InvalidInput("LAMMPS export: the specimen has no bodies");
   const SpecimenExtents e = specimen_extents(bodies);
   const fs::path d(dir);
@@ -133,10 +133,25 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
          "# Gravity on the soil atoms; the rigid fix applies M*g at each body's centroid (the\n"
          "# overlapping spheres' atom masses do not sum to the body's mass distribution).\n"
          "fix         grav soil gravity 9.81 vector 0 0 -1\n";
+    // clumpkit prepares specimens with masses scaled by λ (report.json density_scaling), so its
+    // contacts carry λ times the overlap of the true weight. The deck damps that stored energy
+    // away while it settles: a zero-temperature Langevin drag on the clumps (time constant 50
+    // steps; no random force at T = 0, so any rank count gives the same run) and a viscous drag
+    // on the soil (damping ratio 0.5 for the lightest body).
+    o << "# clumpkit's specimen carries the contact overlaps of its mass-scaled preparation; the\n"
+         "# deck damps their energy while it settles (-var relax 0: no damping).\n"
+         "variable    relax index 1\n"
+         "variable    rigid_damp string \"\"\n"
+      << "if \"${relax} == 1\" then \"variable rigid_damp string 'langevin 0 0 "
+      << format_number(50 * dt) << " 48271'\"\n";
     if (rocks > 0)
       o << "if \"${exact} == 1\" then \"fix rig rock rigid/small molecule infile bodies.infile "
-           "gravity grav\" else \"fix rig rock rigid/small molecule gravity grav\"\n";
-    if (soils > 0) o << "fix         nve soil nve/sphere\n";
+           "gravity grav ${rigid_damp}\" else \"fix rig rock rigid/small molecule gravity grav "
+           "${rigid_damp}\"\n";
+    if (soils > 0)
+      o << "fix         nve soil nve/sphere\n"
+        << "if \"${relax} == 1\" then \"fix visc soil viscous "
+        << format_number(std::sqrt(c.kn * e.m_min)) << "\"\n";
     o << "fix         floor all wall/gran hooke/history " << contact_args << " zplane 0.0 NULL\n"
       << "fix         cyl all wall/gran hooke/history " << contact_args << " zcylinder "
       << format_number(settings.container_radius) << "\n";
@@ -152,6 +167,41 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
          "thermo_modify lost ignore norm no\n"
          "thermo      100\n"
          "run         ${nsteps}\n";
+    if (test.oedometer)
+      o << "# Oedometer test: a platen starts at the top H0 of the settled specimen (highest\n"
+           "# sphere surface) and moves down at rate*H0 until the strain maxstrain; strain and\n"
+           "# vertical stress (platen force / container area, compression positive) every 100\n"
+           "# steps in oedometer.csv.\n"
+        << "undump      atoms\n"
+        << (soils > 0 ? "if \"${relax} == 1\" then \"unfix visc\"\n" : "")
+        << (rocks > 0 ? "undump      bodies\n" : "") << "variable    maxstrain index "
+        << format_number(test.max_strain) << "\n"
+        << "variable    rate index " << format_number(test.strain_rate) << "\n"
+        << "compute     rad all property/atom radius\n"
+           "variable    ztop atom z+c_rad\n"
+           "compute     top all reduce max v_ztop\n"
+           "thermo_style custom step atoms c_top\n"
+           "thermo_modify lost ignore norm no\n"
+           "run         0\n"
+           "variable    H0 equal $(c_top:%.17g)\n"
+           "variable    s0 equal $(step)\n"
+           "variable    dz equal -${rate}*${H0}*(step-${s0})*dt\n"
+           "region      platen plane 0 0 ${H0} 0 0 -1 side in units box move NULL NULL v_dz\n"
+        << "fix         platen all wall/gran/region hooke/history " << contact_args
+        << " region platen contacts\n"
+        << "compute     pf all reduce sum f_platen[4]\n"
+           "variable    strain equal -v_dz/${H0}\n"
+        << "variable    stress equal -c_pf/(PI*" << format_number(settings.container_radius)
+        << "^2)\n"
+        << "variable    nload equal ceil(${maxstrain}/(${rate}*dt))\n"
+           "fix         curve all print 100 \"$(v_strain:%.17g),$(v_stress:%.17g)\" file "
+           "oedometer.csv screen no title \"strain,stress_pa\"\n"
+           "thermo_style custom step v_strain v_stress cpu\n"
+           "thermo_modify lost ignore norm no\n"
+           "thermo      1000\n"
+           "run         ${nload}\n"
+           "write_dump  all custom atoms.final.txt id mol x y z radius modify sort id format "
+           "float %.17g\n";
   });
   files.push_back(deck);
   return files;

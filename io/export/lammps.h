@@ -10,6 +10,13 @@
 
 namespace clumpkit {
 
+/// An element test the deck runs after the settle.
+struct LammpsTest {
+  bool oedometer = false;    ///< a top platen moving down at a constant strain rate
+  double max_strain = 0.05;  ///< strain of H0 it stops at (seating on the rough top included)
+  double strain_rate = 1.0;  ///< 1/s
+};
+
 /// Writes into `dir` (which must exist):
 ///  - data.specimen: atom_style hybrid sphere molecular, one atom per sphere (id = the sphere id
 ///    of specimen.csv), type 1 rock / 2 soil, mol = the body id for rock spheres and 0 for soil;
@@ -25,10 +32,15 @@ namespace clumpkit {
 ///    dumps every body's mass and principal moments as LAMMPS sees them (bodies.0.txt,
 ///    bodies.N.txt: id mol mass x y z inertiax inertiay inertiaz) and every atom (atoms.0.txt,
 ///    atoms.N.txt: id mol x y z radius), sorted by id.
+///    With `test.oedometer`, after the settle a plane platen (fix wall/gran/region, the same
+///    contact law) starts at the specimen's top H0 (highest sphere surface) and moves down at
+///    strain_rate·H0 until max_strain; every 100 steps the deck appends strain and vertical
+///    stress (the platen's force over the container's area, compression positive) to
+///    oedometer.csv, and it dumps atoms.final.txt at the end.
 /// Returns the paths written.
 std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bodies,
-                                             const EngineSettings& settings,
-                                             const std::string& dir);
+                                             const EngineSettings& settings, const std::string& dir,
+                                             const LammpsTest& test = {});
 
 /// The command line that runs the deck in `dir` on `ranks` MPI ranks (1: plain lmp).
 std::string lammps_run_command(int ranks);

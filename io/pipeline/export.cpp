@@ -1,6 +1,7 @@
 #include "io/pipeline/export.h"
 
 #include "geom/errors.h"
+#include "geom/format.h"
 #include "io/atomic_file.h"
 #include "io/export/lammps.h"
 #include "io/export/liggghts.h"
@@ -12,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -34,11 +36,21 @@ nlohmann::json read_json(const fs::path& path) {
 }  // namespace
 
 ExportResult run_export(const std::string& format, const std::string& source,
-                        const std::string& out_dir) {
+                        const std::string& out_dir, const ExportOptions& options) {
   const std::vector<std::string> formats = {"lammps", "liggghts", "yade", "pfc", "vtk"};
   if (std::find(formats.begin(), formats.end(), format) == formats.end())
     throw InvalidInput("export: unknown format '" + format +
                        "' (one of lammps, liggghts, yade, pfc, vtk)");
+  if (options.test.oedometer && format != "lammps")
+    throw InvalidInput("export: --test oedometer is only available for lammps, not " + format);
+  if (options.test.oedometer && !(options.test.max_strain > 0 && options.test.max_strain < 1 &&
+                                  std::isfinite(options.test.max_strain)))
+    throw InvalidInput("export: --max-strain must be in (0, 1), got " +
+                       format_number(options.test.max_strain));
+  if (options.test.oedometer &&
+      !(options.test.strain_rate > 0 && std::isfinite(options.test.strain_rate)))
+    throw InvalidInput("export: --strain-rate must be positive (1/s), got " +
+                       format_number(options.test.strain_rate));
   const fs::path src(source);
   if (!fs::is_directory(src))
     throw InvalidInput(source + ": not a directory (export reads a `clumpkit specimen` output)");
@@ -68,7 +80,7 @@ ExportResult run_export(const std::string& format, const std::string& source,
   try {
     std::vector<std::string> written;
     if (format == "lammps") {
-      written = write_lammps_export(bodies, settings, staging.string());
+      written = write_lammps_export(bodies, settings, staging.string(), options.test);
       result.run = lammps_run_command(1);
     } else if (format == "liggghts") {
       written = write_liggghts_export(bodies, settings, staging.string());
@@ -91,6 +103,10 @@ ExportResult run_export(const std::string& format, const std::string& source,
     m["bodies"] = result.bodies;
     m["spheres"] = result.spheres;
     m["run"] = result.run;
+    if (options.test.oedometer)
+      m["test"] = {{"kind", "oedometer"},
+                   {"max_strain", options.test.max_strain},
+                   {"strain_rate", options.test.strain_rate}};
     write_file_atomically((staging / "manifest.json").string(),
                           [&](std::ostream& o) { o << m.dump(2) << "\n"; });
     publish_directory(staging.string(), out_dir);

@@ -1,6 +1,8 @@
 // The export job: a specimen directory into an engine's files and runnable deck.
 #pragma once
 
+#include "io/export/lammps.h"
+
 #include <string>
 #include <vector>
 
@@ -13,12 +15,17 @@ struct ExportResult {
   std::string run;                 ///< the command line that runs the deck, from that directory
 };
 
+/// What `clumpkit export` may add to the engine's files.
+struct ExportOptions {
+  LammpsTest test;  ///< lammps only: an element test after the settle
+};
+
 /// Exports the specimen directory `source` (specimen.csv, report.json and manifest.json of
 /// `clumpkit specimen`) in `format` into `out_dir` (written in DIR.partial and renamed at the
 /// end, the rule of job.h), with a manifest.json naming the source. Formats: "lammps"
 /// (io/export/lammps.h). Throws InvalidInput for an unknown format, a format not available
 /// yet, or a source that is not a specimen directory (naming it), before anything is written.
 ExportResult run_export(const std::string& format, const std::string& source,
-                        const std::string& out_dir);
+                        const std::string& out_dir, const ExportOptions& options = {});
 
 }  // namespace clumpkit

@@ -180,3 +180,152 @@ TEST(CliExport, BadInputFailsWithOneLineAndWritesNothing) {
   EXPECT_FALSE(fs::exists(d / "o"));
   EXPECT_FALSE(fs::exists(d / "o.partial"));
 }
+
+namespace {
+
+/// Builds the tiny specimen in `d`/spec and exports it for LAMMPS to `d`/`name` with `extra`
+/// options.
+void tiny_lammps_export(const fs::path& d, const std::string& name, const std::string& extra) {
+  Result r = run_cli("specimen --quiet --recipe " + tiny_specimen_recipe(d).string() + " --out " +
+                         (d / "spec").string(),
+                     d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  r = run_cli(
+      "export lammps " + (d / "spec").string() + " --out " + (d / name).string() + " " + extra, d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+}
+
+/// Runs `command` in a copy `copy` of the export directory `from`.
+fs::path run_copy(const fs::path& from, const fs::path& copy, const std::string& command) {
+  fs::copy(from, copy, fs::copy_options::recursive);
+  const std::string cmd = "cd " + copy.string() + " && " + command + " -log none >out.txt 2>&1";
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << slurp(copy / "out.txt");
+  return copy;
+}
+
+}  // namespace
+
+// The way back: the deck's dump of the undisturbed specimen (step 0) imports to the very
+// porosity and coordination clumpkit measured; after a 1,000-step settle in LAMMPS the relative
+// density is within 0.02 of clumpkit's.
+TEST(CliImport, LammpsRoundTripKeepsTheMeasurements) {
+  if (!have_program("lmp")) GTEST_SKIP() << "LAMMPS (lmp) not installed: run scripts/deps";
+  const fs::path d = scratch();
+  tiny_lammps_export(d, "lmp", "");
+  const fs::path run = run_copy(d / "lmp", d / "run", "lmp -in in.clumpkit");
+  const auto source = nlohmann::json::parse(slurp(d / "spec" / "report.json"));
+
+  fs::create_directories(d / "step0");
+  fs::copy_file(run / "atoms.0.txt", d / "step0" / "atoms.0.txt");
+  Result r = run_cli("import lammps " + (d / "step0").string() + " --specimen " +
+                         (d / "spec").string() + " --out " + (d / "back0").string() + " --json",
+                     d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["bodies"], source["bodies"]);
+  EXPECT_EQ(j["lost_bodies"], 0);
+  EXPECT_LT(j["fit_residual"].get<double>(), 1e-12);
+  EXPECT_NEAR(j["porosity"].get<double>(), source["porosity"].get<double>(), 1e-12);
+  const auto back0 = nlohmann::json::parse(slurp(d / "back0" / "report.json"));
+  EXPECT_EQ(back0["coordination_number"], source["coordination_number"]);
+  // The imported specimen is a specimen: it exports again.
+  r = run_cli("export vtk " + (d / "back0").string() + " --out " + (d / "again").string(), d);
+  EXPECT_EQ(r.rc, 0) << r.err;
+
+  r = run_cli("import lammps " + run.string() + " --specimen " + (d / "spec").string() + " --out " +
+                  (d / "back").string() + " --json",
+              d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  std::cout << "relative density: clumpkit " << source["relative_density"] << ", after LAMMPS "
+            << j["relative_density"] << "\n";
+  EXPECT_NEAR(j["relative_density"].get<double>(), source["relative_density"].get<double>(), 0.02);
+  EXPECT_EQ(j["lost_bodies"], 0);
+  for (const auto& f : j["files"]) EXPECT_TRUE(fs::exists(f.get<std::string>())) << f;
+}
+
+// The oedometer deck: the platen's stress–strain curve is the same on 1 and 2 ranks (first
+// 1,000 loading steps, 1e-6 relative), and import draws it.
+TEST(CliImport, LammpsOedometerSameOnOneAndTwoRanksAndDrawn) {
+  if (!have_program("lmp") || !have_program("mpirun"))
+    GTEST_SKIP() << "LAMMPS or mpirun not installed: run scripts/deps";
+  const fs::path d = scratch();
+  tiny_lammps_export(d, "oed", "--test oedometer --strain-rate 2");
+  // 1,000 loading steps: max strain = rate · dt · 1000.
+  const std::string deck = slurp(d / "oed" / "in.clumpkit");
+  const std::size_t at = deck.find("variable    dt     index ");
+  ASSERT_NE(at, std::string::npos);
+  const double dt = std::stod(deck.substr(at + 25));
+  const std::string vars =
+      " -var nsteps 300 -var maxstrain " + std::to_string(2 * dt * 1000 * (1 + 1e-9));
+  const fs::path one = run_copy(d / "oed", d / "np1", "lmp -in in.clumpkit" + vars);
+  const fs::path two =
+      run_copy(d / "oed", d / "np2",
+               "mpirun --allow-run-as-root --oversubscribe -np 2 lmp -in in.clumpkit" + vars);
+  auto curve = [](const fs::path& p) {
+    std::vector<std::pair<double, double>> rows;
+    std::ifstream in(p);
+    std::string line;
+    while (std::getline(in, line)) {
+      if (line.empty() || !(std::isdigit(static_cast<unsigned char>(line[0])) || line[0] == '-'))
+        continue;
+      const std::size_t comma = line.find(',');
+      rows.emplace_back(std::stod(line.substr(0, comma)), std::stod(line.substr(comma + 1)));
+    }
+    return rows;
+  };
+  const auto c1 = curve(one / "oedometer.csv"), c2 = curve(two / "oedometer.csv");
+  ASSERT_GE(c1.size(), 10u);
+  ASSERT_EQ(c1.size(), c2.size());
+  double scale = 0;
+  for (const auto& [strain, stress] : c1) scale = std::max(scale, std::abs(stress));
+  ASSERT_GT(scale, 0.0) << "the platen never touched the specimen";
+  for (std::size_t k = 0; k < c1.size(); ++k) {
+    EXPECT_NEAR(c1[k].first, c2[k].first, 1e-12) << "row " << k;
+    EXPECT_LE(std::abs(c1[k].second - c2[k].second), 1e-6 * scale) << "row " << k;
+  }
+  EXPECT_NEAR(c1.back().first, 2 * dt * 1000, 2 * dt * 100);
+  const Result r = run_cli("import lammps " + one.string() + " --specimen " +
+                               (d / "spec").string() + " --out " + (d / "back").string(),
+                           d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_GT(fs::file_size(d / "back" / "oedometer.png"), 5000u);
+  EXPECT_EQ(curve(d / "back" / "oedometer.csv"), c1);
+}
+
+TEST(CliImport, BadInputFailsWithOneLineAndWritesNothing) {
+  const fs::path d = scratch();
+  fs::create_directories(d / "empty");
+  const std::string out = " --out " + (d / "o").string();
+  expect_one_line_error(run_cli("import lammps " + (d / "missing").string() + " --specimen " +
+                                    (d / "empty").string() + out,
+                                d),
+                        "not a specimen directory");
+  Result r = run_cli("specimen --quiet --recipe " + tiny_specimen_recipe(d).string() + " --out " +
+                         (d / "spec").string(),
+                     d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const std::string spec = " --specimen " + (d / "spec").string();
+  expect_one_line_error(run_cli("import lammps " + (d / "missing").string() + spec + out, d),
+                        "not a directory");
+  expect_one_line_error(run_cli("import lammps " + (d / "empty").string() + spec + out, d),
+                        "no atoms.STEP.txt dump");
+  expect_one_line_error(run_cli("import yade " + (d / "empty").string() + spec + out, d),
+                        "unknown engine 'yade'");
+  fs::create_directories(d / "other");
+  write(d / "other" / "atoms.0.txt",
+        "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1\nITEM: ATOMS id mol x y z radius\n"
+        "1 0 0 0 0.01 0.5\n");
+  expect_one_line_error(run_cli("import lammps " + (d / "other").string() + spec + out, d),
+                        "does not match sphere 1");
+  write(d / "other" / "atoms.0.txt",
+        "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1\nITEM: ATOMS id mol x y z radius\n"
+        "1 0 0 nan 0.01 0.5\n");
+  expect_one_line_error(run_cli("import lammps " + (d / "other").string() + spec + out, d),
+                        "atoms.0.txt:6: not an atom row");
+  expect_one_line_error(
+      run_cli("export yade " + (d / "spec").string() + out + " --test oedometer", d),
+      "--test oedometer is only available for lammps");
+  EXPECT_FALSE(fs::exists(d / "o"));
+  EXPECT_FALSE(fs::exists(d / "o.partial"));
+}

@@ -1,0 +1,200 @@
+#include "io/pipeline/import.h"
+
+#include "dem/specimen.h"
+#include "geom/errors.h"
+#include "io/atomic_file.h"
+#include "io/export/engine_settings.h"
+#include "io/export/lammps_import.h"
+#include "io/pipeline/job.h"
+#include "io/plot.h"
+#include "io/specimen_io.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace clumpkit {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::json read_json(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) throw IoError(path.string() + ": cannot open");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InvalidInput(path.string() + ": not valid JSON (" + e.what() + ")");
+  }
+}
+
+double field(const nlohmann::json& j, const std::string& path, const char* a,
+             const char* b = nullptr) {
+  const nlohmann::json* v = j.contains(a) ? &j[a] : nullptr;
+  if (v && b) v = v->contains(b) ? &(*v)[b] : nullptr;
+  if (!v || !v->is_number())
+    throw InvalidInput(path + ": field " + std::string(a) + (b ? std::string(".") + b : "") +
+                       " missing (a report of an older clumpkit; build the specimen again)");
+  return v->get<double>();
+}
+
+/// The deck's oedometer.csv (strain,stress_pa) as a curve; throws InvalidInput naming the line.
+PlotCurve read_oedometer(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  PlotCurve c;
+  long line_no = 0;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (line.empty() || line[0] == '#' || line.rfind("strain", 0) == 0) continue;
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream s(line);
+    double strain, stress;
+    if (!(s >> strain >> stress))
+      throw InvalidInput(path.string() + ":" + std::to_string(line_no) +
+                         ": not a 'strain,stress_pa' row");
+    c.x.push_back(strain);
+    c.y.push_back(stress / 1000);
+  }
+  return c;
+}
+
+}  // namespace
+
+ImportResult run_import(const std::string& engine, const std::string& run_dir,
+                        const std::string& specimen_dir, const std::string& out_dir) {
+  if (engine != "lammps")
+    throw InvalidInput("import: unknown engine '" + engine + "' (available: lammps)");
+  const fs::path src(specimen_dir);
+  if (!fs::exists(src / "specimen.csv"))
+    throw InvalidInput(specimen_dir + ": not a specimen directory (no specimen.csv)");
+  const std::string report_path = (src / "report.json").string();
+  const nlohmann::json report = read_json(report_path);
+  const EngineSettings settings = engine_settings_from_report(report, report_path);
+  const std::vector<SpecimenBody> specimen = read_specimen_csv((src / "specimen.csv").string());
+  const std::string dump = final_lammps_dump(run_dir);
+  const std::vector<LammpsAtom> atoms = read_lammps_dump(dump);
+  ImportResult result;
+  result.engine = engine;
+  std::vector<SpecimenBody> bodies =
+      bodies_from_lammps_atoms(specimen, atoms, dump, result.lost, result.fit_residual);
+  if (bodies.empty()) throw InvalidInput(dump + ": the engine lost every body");
+  std::vector<long> source_id;
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    source_id.push_back(bodies[k].id);
+    bodies[k].id = static_cast<long>(k + 1);
+  }
+
+  // Measure as the specimen command does: same container, margin and layers.
+  dem::SpecimenResult measured;
+  for (const SpecimenBody& b : bodies) {
+    dem::Body body;
+    body.spheres = body_frame_spheres(b);
+    body.mass = b.mass;
+    body.moments = b.moments;
+    body.volume = b.volume;
+    body.kind = b.kind;
+    body.template_id = b.template_id;
+    body.scale = b.scale;
+    body.position = b.position;
+    body.orientation = b.orientation;
+    measured.world.add_body(std::move(body));
+  }
+  // One step of negligible length finds the contacts (for the coordination number).
+  measured.world.options().gravity = Vec3::Zero();
+  measured.world.options().timestep = 1e-30;
+  measured.world.step();
+  measured.porosity_max = field(report, report_path, "porosity_max");
+  measured.porosity_min = field(report, report_path, "porosity_min");
+  const double margin =
+      settings.container_radius - field(report, report_path, "measurement_region", "radius");
+  if (!report.contains("layer_porosity") || !report["layer_porosity"].is_array())
+    throw InvalidInput(report_path + ": field layer_porosity missing");
+  const int layers = static_cast<int>(report["layer_porosity"].size());
+  dem::measure_specimen(measured.world, settings.container_radius, margin, layers, measured);
+  result.bodies = bodies.size();
+  result.porosity = measured.porosity;
+  result.relative_density = measured.relative_density;
+  result.source_relative_density = field(report, report_path, "relative_density");
+  result.height = measured.height;
+  const bool oedometer = fs::exists(fs::path(run_dir) / "oedometer.csv");
+  const PlotCurve curve =
+      oedometer ? read_oedometer(fs::path(run_dir) / "oedometer.csv") : PlotCurve{};
+
+  check_output_directory(out_dir);
+  const fs::path staging = out_dir + ".partial";
+  std::error_code ec;
+  fs::remove_all(staging, ec);
+  fs::create_directories(staging, ec);
+  if (ec) throw IoError(staging.string() + ": cannot create directory: " + ec.message());
+  std::vector<std::string> names;
+  try {
+    write_specimen_csv((staging / "specimen.csv").string(), bodies);
+    write_specimen_vtp((staging / "specimen.vtp").string(), bodies);
+    write_file_atomically((staging / "bodies_map.csv").string(), [&](std::ostream& o) {
+      o << "# imported body id -> body id of the source specimen.csv\nbody,source_body\n";
+      for (std::size_t k = 0; k < bodies.size(); ++k) o << k + 1 << "," << source_id[k] << "\n";
+    });
+    names = {"specimen.csv", "specimen.vtp", "bodies_map.csv"};
+    std::vector<double> heights;
+    const int slices = 2 * layers + 1;
+    for (int k = 1; k <= slices; ++k) heights.push_back(measured.height * k / (slices + 1));
+    for (const std::string& f :
+         write_slices((staging / "slices").string(), measured, settings.container_radius, heights))
+      names.push_back("slices/" + f);
+    if (oedometer) {
+      fs::copy_file(fs::path(run_dir) / "oedometer.csv", staging / "oedometer.csv");
+      write_line_plot((staging / "oedometer.png").string(), curve, "vertical strain (-)",
+                      "vertical stress (kPa)",
+                      "oedometer test in " + engine + " (compression positive)");
+      names.push_back("oedometer.csv");
+      names.push_back("oedometer.png");
+    }
+    nlohmann::ordered_json r;
+    r["engine"] = engine;
+    r["run_dir"] = fs::absolute(run_dir).lexically_normal().string();
+    r["dump"] = fs::absolute(dump).lexically_normal().string();
+    r["source"] = fs::absolute(src).lexically_normal().string();
+    r["bodies"] = result.bodies;
+    r["lost_bodies"] = result.lost;
+    r["fit_residual"] = result.fit_residual;
+    r["porosity"] = measured.porosity;
+    r["relative_density"] = measured.relative_density;
+    r["source_relative_density"] = result.source_relative_density;
+    r["source_porosity"] = field(report, report_path, "porosity");
+    r["porosity_max"] = measured.porosity_max;
+    r["porosity_min"] = measured.porosity_min;
+    r["height"] = measured.height;
+    r["layer_porosity"] = measured.layer_porosity;
+    r["band_porosity"] = measured.band_porosity;
+    r["coordination_number"] = measured.coordination;
+    r["measurement_region"] = {{"radius", measured.region.radius},
+                               {"z_lo", measured.region.z_lo},
+                               {"z_hi", measured.region.z_hi}};
+    r["container"] = report["container"];
+    r["density"] = report["density"];
+    r["contact"] = report["contact"];
+    write_file_atomically((staging / "report.json").string(),
+                          [&](std::ostream& o) { o << r.dump(2) << "\n"; });
+    nlohmann::ordered_json m = manifest_head("import", "", "", 0);
+    m["engine"] = engine;
+    m["run_dir"] = r["run_dir"];
+    m["source"] = r["source"];
+    write_file_atomically((staging / "manifest.json").string(),
+                          [&](std::ostream& o) { o << m.dump(2) << "\n"; });
+    names.push_back("report.json");
+    names.push_back("manifest.json");
+    publish_directory(staging.string(), out_dir);
+  } catch (...) {
+    fs::remove_all(staging, ec);
+    throw;
+  }
+  for (const std::string& n : names) result.files.push_back((fs::path(out_dir) / n).string());
+  return result;
+}
+
+}  // namespace clumpkit
