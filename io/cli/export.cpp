@@ -1,5 +1,6 @@
 // `clumpkit export FORMAT SRC --out DIR`: a specimen into a DEM engine's files and deck.
 #include "io/pipeline/export.h"
+#include "geom/errors.h"
 #include "io/cli/common.h"
 
 #include <nlohmann/json.hpp>
@@ -7,12 +8,13 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 
 namespace clumpkit::cli {
 
 void register_export(CLI::App& app) {
   struct Opts {
-    std::string format, source, out, test;
+    std::string format, source, out, test, tile;
     bool json = false;
     ExportOptions options;
   };
@@ -36,14 +38,29 @@ void register_export(CLI::App& app) {
                 "lammps only: an element test after the settle: oedometer (top platen at a "
                 "constant strain rate; strain and vertical stress in oedometer.csv)")
       ->check(CLI::IsMember({"oedometer"}));
-  c->add_option("--max-strain", o->options.test.max_strain,
+  c->add_option("--max-strain", o->options.lammps.max_strain,
                 "Oedometer: the vertical strain the platen stops at")
       ->capture_default_str();
-  c->add_option("--strain-rate", o->options.test.strain_rate, "Oedometer: strain rate (1/s)")
+  c->add_option("--strain-rate", o->options.lammps.strain_rate, "Oedometer: strain rate (1/s)")
       ->capture_default_str();
+  c->add_option("--tile", o->tile,
+                "lammps only: NXxNY copies of the specimen side by side in one box (a scale-out "
+                "run; the box's side planes replace the cylinders), e.g. 6x6");
   c->add_flag("--json", o->json, "Print format, bodies, spheres, files and run as JSON");
   c->callback([o] {
-    o->options.test.oedometer = o->test == "oedometer";
+    o->options.lammps.oedometer = o->test == "oedometer";
+    if (!o->tile.empty()) {
+      const std::size_t x = o->tile.find('x');
+      try {
+        std::size_t used_x = 0, used_y = 0;
+        o->options.lammps.tiles_x = std::stoi(o->tile.substr(0, x), &used_x);
+        o->options.lammps.tiles_y = std::stoi(o->tile.substr(x + 1), &used_y);
+        if (x == std::string::npos || used_x != x || used_y != o->tile.size() - x - 1)
+          throw std::invalid_argument("tile");
+      } catch (const std::exception&) {
+        throw InvalidInput("export: --tile must be NXxNY, e.g. 6x6, got '" + o->tile + "'");
+      }
+    }
     const ExportResult r = run_export(o->format, o->source, o->out, o->options);
     if (o->json) {
       std::cout << nlohmann::ordered_json{{"format", r.format},

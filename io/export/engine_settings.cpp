@@ -48,6 +48,24 @@ SpecimenExtents specimen_extents(const std::vector<SpecimenBody>& bodies) {
   return e;
 }
 
+std::vector<SpecimenBody> tile_bodies(const std::vector<SpecimenBody>& bodies, int nx, int ny,
+                                      double spacing) {
+  std::vector<SpecimenBody> out;
+  out.reserve(bodies.size() * static_cast<std::size_t>(nx * ny));
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const Vec3 shift((i - 0.5 * (nx - 1)) * spacing, (j - 0.5 * (ny - 1)) * spacing, 0);
+      for (const SpecimenBody& b : bodies) {
+        SpecimenBody c = b;
+        c.id = static_cast<long>(out.size() + 1);
+        c.position += shift;
+        for (Sphere& s : c.spheres) s.center += shift;
+        out.push_back(std::move(c));
+      }
+    }
+  return out;
+}
+
 std::vector<Sphere> body_frame_spheres(const SpecimenBody& body) {
   std::vector<Sphere> out;
   out.reserve(body.spheres.size());

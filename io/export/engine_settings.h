@@ -31,6 +31,11 @@ struct SpecimenExtents {
 };
 SpecimenExtents specimen_extents(const std::vector<SpecimenBody>& bodies);
 
+/// nx × ny copies of the bodies side by side (a scale-out specimen): copy (i, j) shifted by
+/// ((i − (nx − 1)/2)·spacing, (j − (ny − 1)/2)·spacing, 0); ids renumbered from 1, copy by copy.
+std::vector<SpecimenBody> tile_bodies(const std::vector<SpecimenBody>& bodies, int nx, int ny,
+                                      double spacing);
+
 /// A body's spheres in its own (principal) frame: q⁻¹(c − x).
 std::vector<Sphere> body_frame_spheres(const SpecimenBody& body);
 

@@ -21,7 +21,7 @@ std::string lammps_run_command(int ranks) {
 
 std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bodies,
                                              const EngineSettings& settings, const std::string& dir,
-                                             const LammpsTest& test) {
+                                             const LammpsDeck& deck) {
   if (bodies.empty()) throw InvalidInput("LAMMPS export: the specimen has no bodies");
   const SpecimenExtents e = specimen_extents(bodies);
   const fs::path d(dir);
@@ -34,14 +34,16 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
 
   // The box holds the container with a margin of one sphere diameter and room above the top.
   const double pad = 2 * e.r_max;
-  const double half = settings.container_radius + pad;
+  const bool tiled = deck.tiles_x * deck.tiles_y > 1;
+  const double half_x = deck.tiles_x * settings.container_radius + pad;
+  const double half_y = deck.tiles_y * settings.container_radius + pad;
   const double z_hi = std::max(settings.container_height, e.top) + pad;
   const std::string data = (d / "data.specimen").string();
   write_file_atomically(data, [&](std::ostream& o) {
     o << "clumpkit specimen: atom_style hybrid sphere molecular, SI units\n\n"
       << atoms << " atoms\n2 atom types\n\n"
-      << format_number(-half) << " " << format_number(half) << " xlo xhi\n"
-      << format_number(-half) << " " << format_number(half) << " ylo yhi\n"
+      << format_number(-half_x) << " " << format_number(half_x) << " xlo xhi\n"
+      << format_number(-half_y) << " " << format_number(half_y) << " ylo yhi\n"
       << format_number(-pad) << " " << format_number(z_hi) << " zlo zhi\n\nAtoms # hybrid\n\n";
     std::size_t id = 0;
     for (const SpecimenBody& b : bodies) {
@@ -104,8 +106,8 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
   const std::string contact_args = format_number(c.kn) + " " + format_number(c.ks) + " " +
                                    format_number(gamma_n) + " 0 " + format_number(c.friction) +
                                    " 1";
-  const std::string deck = (d / "in.clumpkit").string();
-  write_file_atomically(deck, [&](std::ostream& o) {
+  const std::string deck_path = (d / "in.clumpkit").string();
+  write_file_atomically(deck_path, [&](std::ostream& o) {
     o << "# clumpkit export for LAMMPS (syntax of LAMMPS 29 Sep 2021, Debian 12 `lammps`): the\n"
          "# specimen with clumpkit's exact clump mass properties forced on fix rigid/small,\n"
          "# settled under gravity in its container. Runs on any number of ranks:\n"
@@ -152,9 +154,16 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
       o << "fix         nve soil nve/sphere\n"
         << "if \"${relax} == 1\" then \"fix visc soil viscous "
         << format_number(std::sqrt(c.kn * e.m_min)) << "\"\n";
-    o << "fix         floor all wall/gran hooke/history " << contact_args << " zplane 0.0 NULL\n"
-      << "fix         cyl all wall/gran hooke/history " << contact_args << " zcylinder "
-      << format_number(settings.container_radius) << "\n";
+    o << "fix         floor all wall/gran hooke/history " << contact_args << " zplane 0.0 NULL\n";
+    if (tiled)
+      o << "# tiled copies of the specimen: the box's side planes instead of each cylinder\n"
+        << "fix         wallx all wall/gran hooke/history " << contact_args << " xplane "
+        << format_number(-(half_x - pad)) << " " << format_number(half_x - pad) << "\n"
+        << "fix         wally all wall/gran hooke/history " << contact_args << " yplane "
+        << format_number(-(half_y - pad)) << " " << format_number(half_y - pad) << "\n";
+    else
+      o << "fix         cyl all wall/gran hooke/history " << contact_args << " zcylinder "
+        << format_number(settings.container_radius) << "\n";
     if (rocks > 0)
       o << "compute     rl rock rigid/local rig id mol mass x y z inertiax inertiay inertiaz\n"
            "dump        bodies rock local ${nsteps} bodies.*.txt c_rl[1] c_rl[2] c_rl[3] "
@@ -167,7 +176,7 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
          "thermo_modify lost ignore norm no\n"
          "thermo      100\n"
          "run         ${nsteps}\n";
-    if (test.oedometer)
+    if (deck.oedometer)
       o << "# Oedometer test: a platen starts at the top H0 of the settled specimen (highest\n"
            "# sphere surface) and moves down at rate*H0 until the strain maxstrain; strain and\n"
            "# vertical stress (platen force / container area, compression positive) every 100\n"
@@ -175,8 +184,8 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
         << "undump      atoms\n"
         << (soils > 0 ? "if \"${relax} == 1\" then \"unfix visc\"\n" : "")
         << (rocks > 0 ? "undump      bodies\n" : "") << "variable    maxstrain index "
-        << format_number(test.max_strain) << "\n"
-        << "variable    rate index " << format_number(test.strain_rate) << "\n"
+        << format_number(deck.max_strain) << "\n"
+        << "variable    rate index " << format_number(deck.strain_rate) << "\n"
         << "compute     rad all property/atom radius\n"
            "variable    ztop atom z+c_rad\n"
            "compute     top all reduce max v_ztop\n"
@@ -203,7 +212,7 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
            "write_dump  all custom atoms.final.txt id mol x y z radius modify sort id format "
            "float %.17g\n";
   });
-  files.push_back(deck);
+  files.push_back(deck_path);
   return files;
 }
 

@@ -10,11 +10,14 @@
 
 namespace clumpkit {
 
-/// An element test the deck runs after the settle.
-struct LammpsTest {
+/// What the deck adds to the settle: an element test, or tiling for scale-out runs.
+struct LammpsDeck {
   bool oedometer = false;    ///< a top platen moving down at a constant strain rate
   double max_strain = 0.05;  ///< strain of H0 it stops at (seating on the rough top included)
   double strain_rate = 1.0;  ///< 1/s
+  /// Copies of the specimen side by side (tile_bodies); more than one replaces the cylinder
+  /// wall by the side planes of the box around all copies.
+  int tiles_x = 1, tiles_y = 1;
 };
 
 /// Writes into `dir` (which must exist):
@@ -32,7 +35,7 @@ struct LammpsTest {
 ///    dumps every body's mass and principal moments as LAMMPS sees them (bodies.0.txt,
 ///    bodies.N.txt: id mol mass x y z inertiax inertiay inertiaz) and every atom (atoms.0.txt,
 ///    atoms.N.txt: id mol x y z radius), sorted by id.
-///    With `test.oedometer`, after the settle a plane platen (fix wall/gran/region, the same
+///    With `deck.oedometer`, after the settle a plane platen (fix wall/gran/region, the same
 ///    contact law) starts at the specimen's top H0 (highest sphere surface) and moves down at
 ///    strain_rate·H0 until max_strain; every 100 steps the deck appends strain and vertical
 ///    stress (the platen's force over the container's area, compression positive) to
@@ -40,7 +43,7 @@ struct LammpsTest {
 /// Returns the paths written.
 std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bodies,
                                              const EngineSettings& settings, const std::string& dir,
-                                             const LammpsTest& test = {});
+                                             const LammpsDeck& deck = {});
 
 /// The command line that runs the deck in `dir` on `ranks` MPI ranks (1: plain lmp).
 std::string lammps_run_command(int ranks);

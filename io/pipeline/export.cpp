@@ -41,16 +41,29 @@ ExportResult run_export(const std::string& format, const std::string& source,
   if (std::find(formats.begin(), formats.end(), format) == formats.end())
     throw InvalidInput("export: unknown format '" + format +
                        "' (one of lammps, liggghts, yade, pfc, vtk)");
-  if (options.test.oedometer && format != "lammps")
+  if (options.lammps.oedometer && format != "lammps")
     throw InvalidInput("export: --test oedometer is only available for lammps, not " + format);
-  if (options.test.oedometer && !(options.test.max_strain > 0 && options.test.max_strain < 1 &&
-                                  std::isfinite(options.test.max_strain)))
+  if (options.lammps.oedometer &&
+      !(options.lammps.max_strain > 0 && options.lammps.max_strain < 1 &&
+        std::isfinite(options.lammps.max_strain)))
     throw InvalidInput("export: --max-strain must be in (0, 1), got " +
-                       format_number(options.test.max_strain));
-  if (options.test.oedometer &&
-      !(options.test.strain_rate > 0 && std::isfinite(options.test.strain_rate)))
+                       format_number(options.lammps.max_strain));
+  if (options.lammps.oedometer &&
+      !(options.lammps.strain_rate > 0 && std::isfinite(options.lammps.strain_rate)))
     throw InvalidInput("export: --strain-rate must be positive (1/s), got " +
-                       format_number(options.test.strain_rate));
+                       format_number(options.lammps.strain_rate));
+  const int tiles = options.lammps.tiles_x * options.lammps.tiles_y;
+  if (options.lammps.tiles_x < 1 || options.lammps.tiles_y < 1 || options.lammps.tiles_x > 1000 ||
+      options.lammps.tiles_y > 1000)
+    throw InvalidInput("export: --tile must be NXxNY with 1 <= NX, NY <= 1000, got " +
+                       std::to_string(options.lammps.tiles_x) + "x" +
+                       std::to_string(options.lammps.tiles_y));
+  if (tiles > 1 && format != "lammps")
+    throw InvalidInput("export: --tile is only available for lammps, not " + format);
+  if (tiles > 1 && options.lammps.oedometer)
+    throw InvalidInput(
+        "export: --tile and --test oedometer do not go together (one platen, "
+        "one container)");
   const fs::path src(source);
   if (!fs::is_directory(src))
     throw InvalidInput(source + ": not a directory (export reads a `clumpkit specimen` output)");
@@ -65,7 +78,10 @@ ExportResult run_export(const std::string& format, const std::string& source,
   const nlohmann::json manifest = read_json(src / "manifest.json");
   const EngineSettings settings =
       engine_settings_from_report(report, (src / "report.json").string());
-  const std::vector<SpecimenBody> bodies = read_specimen_csv((src / "specimen.csv").string());
+  std::vector<SpecimenBody> bodies = read_specimen_csv((src / "specimen.csv").string());
+  if (tiles > 1)
+    bodies = tile_bodies(bodies, options.lammps.tiles_x, options.lammps.tiles_y,
+                         2 * settings.container_radius);
 
   check_output_directory(out_dir);
   const fs::path staging = out_dir + ".partial";
@@ -80,7 +96,7 @@ ExportResult run_export(const std::string& format, const std::string& source,
   try {
     std::vector<std::string> written;
     if (format == "lammps") {
-      written = write_lammps_export(bodies, settings, staging.string(), options.test);
+      written = write_lammps_export(bodies, settings, staging.string(), options.lammps);
       result.run = lammps_run_command(1);
     } else if (format == "liggghts") {
       written = write_liggghts_export(bodies, settings, staging.string());
@@ -103,10 +119,11 @@ ExportResult run_export(const std::string& format, const std::string& source,
     m["bodies"] = result.bodies;
     m["spheres"] = result.spheres;
     m["run"] = result.run;
-    if (options.test.oedometer)
+    if (tiles > 1) m["tiles"] = {options.lammps.tiles_x, options.lammps.tiles_y};
+    if (options.lammps.oedometer)
       m["test"] = {{"kind", "oedometer"},
-                   {"max_strain", options.test.max_strain},
-                   {"strain_rate", options.test.strain_rate}};
+                   {"max_strain", options.lammps.max_strain},
+                   {"strain_rate", options.lammps.strain_rate}};
     write_file_atomically((staging / "manifest.json").string(),
                           [&](std::ostream& o) { o << m.dump(2) << "\n"; });
     publish_directory(staging.string(), out_dir);

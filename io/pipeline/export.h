@@ -17,7 +17,7 @@ struct ExportResult {
 
 /// What `clumpkit export` may add to the engine's files.
 struct ExportOptions {
-  LammpsTest test;  ///< lammps only: an element test after the settle
+  LammpsDeck lammps;  ///< lammps only: a test after the settle, tiling
 };
 
 /// Exports the specimen directory `source` (specimen.csv, report.json and manifest.json of
