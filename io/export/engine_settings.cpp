@@ -1,6 +1,7 @@
 #include "io/export/engine_settings.h"
 
 #include "geom/errors.h"
+#include "geom/format.h"
 
 #include <algorithm>
 
@@ -64,6 +65,10 @@ std::vector<SpecimenBody> tile_bodies(const std::vector<SpecimenBody>& bodies, i
       }
     }
   return out;
+}
+
+std::string format_xyz(const Vec3& v) {
+  return format_number(v.x()) + " " + format_number(v.y()) + " " + format_number(v.z());
 }
 
 std::vector<Sphere> body_frame_spheres(const SpecimenBody& body) {

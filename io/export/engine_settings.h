@@ -36,6 +36,9 @@ SpecimenExtents specimen_extents(const std::vector<SpecimenBody>& bodies);
 std::vector<SpecimenBody> tile_bodies(const std::vector<SpecimenBody>& bodies, int nx, int ny,
                                       double spacing);
 
+/// "x y z", each the shortest decimal that reads back exactly (geom/format.h).
+std::string format_xyz(const Vec3& v);
+
 /// A body's spheres in its own (principal) frame: q⁻¹(c − x).
 std::vector<Sphere> body_frame_spheres(const SpecimenBody& body);
 

@@ -15,10 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string xyz(const Vec3& v) {
-  return format_number(v.x()) + " " + format_number(v.y()) + " " + format_number(v.z());
-}
-
 /// Distinct primes above 10,000, one per call (LIGGGHTS's seeds must be such primes).
 class Primes {
  public:
@@ -82,7 +78,7 @@ std::vector<std::string> write_liggghts_export(const std::vector<SpecimenBody>& 
         << " atom_type 1 density constant " << format_number(b.mass / b.volume) << " nspheres "
         << b.spheres.size() << " ntry 100000 spheres &\n";
       for (const Sphere& s : body_frame_spheres(b))
-        o << "    " << xyz(s.center) << " " << format_number(s.radius) << " &\n";
+        o << "    " << format_xyz(s.center) << " " << format_number(s.radius) << " &\n";
       o << "    type " << k << " mass " << format_number(b.mass) << " inertia_tensor "
         << format_number(b.moments.x()) << " 0 0 " << format_number(b.moments.y()) << " 0 "
         << format_number(b.moments.z()) << " use_density\n"
@@ -115,7 +111,7 @@ std::vector<std::string> write_liggghts_export(const std::vector<SpecimenBody>& 
     for (const SpecimenBody& b : bodies) {
       if (b.kind != dem::BodyKind::soil) continue;
       const Sphere& s = b.spheres.front();
-      o << "create_atoms 2 single " << xyz(s.center) << " units box\n"
+      o << "create_atoms 2 single " << format_xyz(s.center) << " units box\n"
         << "set atom " << ++atom << " diameter " << format_number(2 * s.radius) << " density "
         << format_number(b.mass / b.volume) << "\n";
     }

@@ -25,14 +25,6 @@ AxisAngle axis_angle(const Eigen::Quaterniond& q) {
   return a;
 }
 
-namespace {
-
-std::string xyz(const Vec3& v) {
-  return format_number(v.x()) + " " + format_number(v.y()) + " " + format_number(v.z());
-}
-
-}  // namespace
-
 std::vector<std::string> write_pfc_export(const std::vector<SpecimenBody>& bodies,
                                           const EngineSettings& settings, const std::string& dir) {
   if (bodies.empty()) throw InvalidInput("PFC export: the specimen has no bodies");
@@ -72,7 +64,7 @@ std::vector<std::string> write_pfc_export(const std::vector<SpecimenBody>& bodie
       const double per_density = b.volume / b.mass;  // 1/ρ
       o << "clump template create name '" << name << "' pebbles " << b.spheres.size() << " &\n";
       for (const Sphere& s : body_frame_spheres(b))
-        o << "    " << format_number(s.radius) << " " << xyz(s.center) << " &\n";
+        o << "    " << format_number(s.radius) << " " << format_xyz(s.center) << " &\n";
       o << "    volume " << format_number(b.volume) << " inertia "
         << format_number(b.moments.x() * per_density) << " "
         << format_number(b.moments.y() * per_density) << " "
@@ -82,11 +74,11 @@ std::vector<std::string> write_pfc_export(const std::vector<SpecimenBody>& bodie
       if (b.kind == dem::BodyKind::rock) {
         const AxisAngle a = axis_angle(b.orientation);
         o << "clump replicate id " << b.id << " name '" << names[{b.template_id, b.scale}]
-          << "' position " << xyz(b.position) << " axis " << xyz(a.axis) << " angle "
+          << "' position " << format_xyz(b.position) << " axis " << format_xyz(a.axis) << " angle "
           << format_number(a.degrees) << " density " << format_number(b.mass / b.volume) << "\n";
       } else {
         const Sphere& s = b.spheres.front();
-        o << "ball create id " << b.id << " position " << xyz(s.center) << " radius "
+        o << "ball create id " << b.id << " position " << format_xyz(s.center) << " radius "
           << format_number(s.radius) << "\n";
       }
     }

@@ -11,14 +11,6 @@ namespace clumpkit {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string xyz(const Vec3& v) {
-  return format_number(v.x()) + " " + format_number(v.y()) + " " + format_number(v.z());
-}
-
-}  // namespace
-
 std::vector<std::string> write_yade_export(const std::vector<SpecimenBody>& bodies,
                                            const EngineSettings& settings, const std::string& dir) {
   if (bodies.empty()) throw InvalidInput("Yade export: the specimen has no bodies");
@@ -43,24 +35,24 @@ std::vector<std::string> write_yade_export(const std::vector<SpecimenBody>& bodi
     for (const SpecimenBody& b : bodies)
       if (b.kind == dem::BodyKind::rock)
         for (const Sphere& s : b.spheres)
-          o << xyz(s.center) << " " << format_number(s.radius) << " " << b.id << "\n";
+          o << format_xyz(s.center) << " " << format_number(s.radius) << " " << b.id << "\n";
   });
   file("soil_spheres.txt", [&](std::ostream& o) {
     o << "# clumpkit soil spheres (m), world frame: x y z r body\n";
     for (const SpecimenBody& b : bodies)
       if (b.kind == dem::BodyKind::soil)
         for (const Sphere& s : b.spheres)
-          o << xyz(s.center) << " " << format_number(s.radius) << " " << b.id << "\n";
+          o << format_xyz(s.center) << " " << format_number(s.radius) << " " << b.id << "\n";
   });
   file("specimen_bodies.txt", [&](std::ostream& o) {
     o << "# clumpkit exact rock bodies (SI): body mass x y z qw qx qy qz I1 I2 I3 (principal\n"
          "# moments about the body axes; the quaternion rotates body axes into the world)\n";
     for (const SpecimenBody& b : bodies)
       if (b.kind == dem::BodyKind::rock)
-        o << b.id << " " << format_number(b.mass) << " " << xyz(b.position) << " "
+        o << b.id << " " << format_number(b.mass) << " " << format_xyz(b.position) << " "
           << format_number(b.orientation.w()) << " " << format_number(b.orientation.x()) << " "
           << format_number(b.orientation.y()) << " " << format_number(b.orientation.z()) << " "
-          << xyz(b.moments) << "\n";
+          << format_xyz(b.moments) << "\n";
   });
   // Yade numbers bodies as they are appended: each clump's members, then the clump; then the
   // soil spheres and walls. The script checks these ids as it builds.

@@ -21,20 +21,6 @@ namespace clumpkit {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-nlohmann::json read_json(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) throw IoError(path.string() + ": cannot open");
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw InvalidInput(path.string() + ": not valid JSON (" + e.what() + ")");
-  }
-}
-
-}  // namespace
-
 ExportResult run_export(const std::string& format, const std::string& source,
                         const std::string& out_dir, const ExportOptions& options) {
   const std::vector<std::string> formats = {"lammps", "liggghts", "yade", "pfc", "vtk"};
@@ -74,8 +60,8 @@ ExportResult run_export(const std::string& format, const std::string& source,
                          "yet (export a specimen directory)");
     throw InvalidInput(source + ": neither a specimen nor a library directory (no specimen.csv)");
   }
-  const nlohmann::json report = read_json(src / "report.json");
-  const nlohmann::json manifest = read_json(src / "manifest.json");
+  const nlohmann::json report = read_json_file((src / "report.json").string());
+  const nlohmann::json manifest = read_json_file((src / "manifest.json").string());
   const EngineSettings settings =
       engine_settings_from_report(report, (src / "report.json").string());
   std::vector<SpecimenBody> bodies = read_specimen_csv((src / "specimen.csv").string());
@@ -83,12 +69,8 @@ ExportResult run_export(const std::string& format, const std::string& source,
     bodies = tile_bodies(bodies, options.lammps.tiles_x, options.lammps.tiles_y,
                          2 * settings.container_radius);
 
-  check_output_directory(out_dir);
-  const fs::path staging = out_dir + ".partial";
+  const fs::path staging = begin_staging(out_dir);
   std::error_code ec;
-  fs::remove_all(staging, ec);
-  fs::create_directories(staging, ec);
-  if (ec) throw IoError(staging.string() + ": cannot create directory: " + ec.message());
   ExportResult result;
   result.format = format;
   result.bodies = bodies.size();

@@ -22,16 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-nlohmann::json read_json(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) throw IoError(path.string() + ": cannot open");
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw InvalidInput(path.string() + ": not valid JSON (" + e.what() + ")");
-  }
-}
-
 double field(const nlohmann::json& j, const std::string& path, const char* a,
              const char* b = nullptr) {
   const nlohmann::json* v = j.contains(a) ? &j[a] : nullptr;
@@ -73,7 +63,7 @@ ImportResult run_import(const std::string& engine, const std::string& run_dir,
   if (!fs::exists(src / "specimen.csv"))
     throw InvalidInput(specimen_dir + ": not a specimen directory (no specimen.csv)");
   const std::string report_path = (src / "report.json").string();
-  const nlohmann::json report = read_json(report_path);
+  const nlohmann::json report = read_json_file(report_path);
   const EngineSettings settings = engine_settings_from_report(report, report_path);
   const std::vector<SpecimenBody> specimen = read_specimen_csv((src / "specimen.csv").string());
   const std::string dump = final_lammps_dump(run_dir);
@@ -125,12 +115,8 @@ ImportResult run_import(const std::string& engine, const std::string& run_dir,
   const PlotCurve curve =
       oedometer ? read_oedometer(fs::path(run_dir) / "oedometer.csv") : PlotCurve{};
 
-  check_output_directory(out_dir);
-  const fs::path staging = out_dir + ".partial";
+  const fs::path staging = begin_staging(out_dir);
   std::error_code ec;
-  fs::remove_all(staging, ec);
-  fs::create_directories(staging, ec);
-  if (ec) throw IoError(staging.string() + ": cannot create directory: " + ec.message());
   std::vector<std::string> names;
   try {
     write_specimen_csv((staging / "specimen.csv").string(), bodies);

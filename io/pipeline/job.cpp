@@ -9,6 +9,7 @@
 #include <atomic>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <mutex>
 
 namespace fs = std::filesystem;
@@ -104,6 +105,26 @@ void for_each_particle(const ShapeRecipe& recipe, const std::vector<int>& fracti
   if (stop)
     throw Interrupted(recipe.path + ": " + std::string(stage) + " stopped on request after " +
                       std::to_string(done.load()) + " of " + std::to_string(total) + " particles");
+}
+
+nlohmann::json read_json_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw IoError(path + ": cannot open");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InvalidInput(path + ": not valid JSON (" + e.what() + ")");
+  }
+}
+
+std::string begin_staging(const std::string& dir) {
+  check_output_directory(dir);
+  const std::filesystem::path staging = dir + ".partial";
+  std::error_code ec;
+  std::filesystem::remove_all(staging, ec);
+  std::filesystem::create_directories(staging, ec);
+  if (ec) throw IoError(staging.string() + ": cannot create directory: " + ec.message());
+  return staging.string();
 }
 
 }  // namespace clumpkit

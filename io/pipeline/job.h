@@ -25,6 +25,10 @@ void for_each_particle(const ShapeRecipe& recipe, const std::vector<int>& fracti
                        const std::function<void(std::size_t)>& work, std::string_view stage,
                        const Interrupter& interrupter);
 
+/// A JSON file of a clumpkit output (report.json, manifest.json). Throws IoError when it cannot
+/// be opened and InvalidInput naming it when it is not JSON.
+nlohmann::json read_json_file(const std::string& path);
+
 /// Fraction index of every particle of the recipe, in id order.
 std::vector<int> particle_fractions(const ShapeRecipe& recipe);
 
@@ -47,6 +51,10 @@ nlohmann::ordered_json manifest_head(const std::string& command, const ShapeReci
 /// throws InvalidInput unless `dir` may be replaced (also when it is a file); jobs call it
 /// before they start.
 void check_output_directory(const std::string& dir);
+
+/// Starts a job that resumes nothing: checks `dir` (check_output_directory), empties and creates
+/// DIR.partial and returns its path. Throws IoError when it cannot be created.
+std::string begin_staging(const std::string& dir);
 
 /// Replaces `dir` by `staging` (check_output_directory's rule is checked again).
 void publish_directory(const std::string& staging, const std::string& dir);

@@ -326,6 +326,13 @@ TEST(CliImport, BadInputFailsWithOneLineAndWritesNothing) {
   expect_one_line_error(
       run_cli("export yade " + (d / "spec").string() + out + " --test oedometer", d),
       "--test oedometer is only available for lammps");
+  expect_one_line_error(
+      run_cli("export lammps " + (d / "spec").string() + out + " --test oedometer --tile 2x2", d),
+      "--tile and --test oedometer do not go together");
+  expect_one_line_error(run_cli("export lammps " + (d / "spec").string() + out + " --tile 2by2", d),
+                        "--tile must be NXxNY, e.g. 6x6, got '2by2'");
+  expect_one_line_error(run_cli("export lammps " + (d / "spec").string() + out + " --tile 0x3", d),
+                        "--tile must be NXxNY with 1 <= NX, NY <= 1000, got 0x3");
   EXPECT_FALSE(fs::exists(d / "o"));
   EXPECT_FALSE(fs::exists(d / "o.partial"));
 }
