@@ -133,6 +133,29 @@ std::vector<SpecimenBody> specimen_bodies(const dem::SpecimenResult& result) {
   return out;
 }
 
+std::vector<Sphere> body_frame_spheres(const SpecimenBody& body) {
+  std::vector<Sphere> out;
+  out.reserve(body.spheres.size());
+  const Eigen::Quaterniond inverse = body.orientation.conjugate();
+  for (const Sphere& s : body.spheres)
+    out.push_back({inverse * (s.center - body.position), s.radius});
+  return out;
+}
+
+dem::Body dem_body(const SpecimenBody& b) {
+  dem::Body body;
+  body.spheres = body_frame_spheres(b);
+  body.mass = b.mass;
+  body.moments = b.moments;
+  body.volume = b.volume;
+  body.kind = b.kind;
+  body.template_id = b.template_id;
+  body.scale = b.scale;
+  body.position = b.position;
+  body.orientation = b.orientation;
+  return body;
+}
+
 void write_specimen_csv(const std::string& path, const std::vector<SpecimenBody>& bodies) {
   write_file_atomically(path, [&](std::ostream& o) {
     o << "# clumpkit specimen format " << kSpecimenCsvFormat

@@ -46,6 +46,12 @@ struct SpecimenBody {
 /// frame).
 std::vector<SpecimenBody> specimen_bodies(const dem::SpecimenResult& result);
 
+/// A body's spheres in its own (principal) frame: q⁻¹(c − x).
+std::vector<Sphere> body_frame_spheres(const SpecimenBody& body);
+
+/// The DEM body of a specimen row (the inverse of specimen_bodies for one body), at rest.
+dem::Body dem_body(const SpecimenBody& body);
+
 /// specimen.csv: "# bodies" section (body, kind, template, x, y, z, qw, qx, qy, qz, mass,
 /// volume, scale, I1, I2, I3: principal moments in kg m² about the body axes, the template's
 /// principal frame, which the quaternion rotates into the world) then "# spheres" section

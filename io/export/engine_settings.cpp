@@ -2,8 +2,10 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "io/atomic_file.h"
 
 #include <algorithm>
+#include <filesystem>
 
 namespace clumpkit {
 
@@ -71,13 +73,11 @@ std::string format_xyz(const Vec3& v) {
   return format_number(v.x()) + " " + format_number(v.y()) + " " + format_number(v.z());
 }
 
-std::vector<Sphere> body_frame_spheres(const SpecimenBody& body) {
-  std::vector<Sphere> out;
-  out.reserve(body.spheres.size());
-  const Eigen::Quaterniond inverse = body.orientation.conjugate();
-  for (const Sphere& s : body.spheres)
-    out.push_back({inverse * (s.center - body.position), s.radius});
-  return out;
+std::string write_export_file(const std::string& dir, const std::string& name,
+                              const std::function<void(std::ostream&)>& fill) {
+  const std::string path = (std::filesystem::path(dir) / name).string();
+  write_file_atomically(path, fill);
+  return path;
 }
 
 }  // namespace clumpkit

@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -39,7 +41,8 @@ std::vector<SpecimenBody> tile_bodies(const std::vector<SpecimenBody>& bodies, i
 /// "x y z", each the shortest decimal that reads back exactly (geom/format.h).
 std::string format_xyz(const Vec3& v);
 
-/// A body's spheres in its own (principal) frame: q⁻¹(c − x).
-std::vector<Sphere> body_frame_spheres(const SpecimenBody& body);
+/// Writes `dir`/`name` atomically with `fill` and returns its path (every engine file).
+std::string write_export_file(const std::string& dir, const std::string& name,
+                              const std::function<void(std::ostream&)>& fill);
 
 }  // namespace clumpkit

@@ -2,16 +2,12 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
-#include "io/atomic_file.h"
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <vector>
 
 namespace clumpkit {
-
-namespace fs = std::filesystem;
 
 std::string lammps_run_command(int ranks) {
   return ranks <= 1
@@ -24,7 +20,6 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
                                              const LammpsDeck& deck) {
   if (bodies.empty()) throw InvalidInput("LAMMPS export: the specimen has no bodies");
   const SpecimenExtents e = specimen_extents(bodies);
-  const fs::path d(dir);
   std::vector<std::string> files;
   std::size_t atoms = 0, rocks = 0, soils = 0;
   for (const SpecimenBody& b : bodies) {
@@ -38,8 +33,7 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
   const double half_x = deck.tiles_x * settings.container_radius + pad;
   const double half_y = deck.tiles_y * settings.container_radius + pad;
   const double z_hi = std::max(settings.container_height, e.top) + pad;
-  const std::string data = (d / "data.specimen").string();
-  write_file_atomically(data, [&](std::ostream& o) {
+  files.push_back(write_export_file(dir, "data.specimen", [&](std::ostream& o) {
     o << "clumpkit specimen: atom_style hybrid sphere molecular, SI units\n\n"
       << atoms << " atoms\n2 atom types\n\n"
       << format_number(-half_x) << " " << format_number(half_x) << " xlo xhi\n"
@@ -58,11 +52,9 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
           << format_number(2 * s.radius) << " " << format_number(density) << " "
           << (rock ? b.id : 0) << "\n";
     }
-  });
-  files.push_back(data);
+  }));
 
-  const std::string infile = (d / "bodies.infile").string();
-  write_file_atomically(infile, [&](std::ostream& o) {
+  files.push_back(write_export_file(dir, "bodies.infile", [&](std::ostream& o) {
     o << "# clumpkit exact rigid-body properties for fix rigid/small ... infile (SI): id mass\n"
          "# xcm ycm zcm ixx iyy izz ixy ixz iyz (box frame, R diag(I1,I2,I3) R^T) vxcm vycm vzcm\n"
          "# lx ly lz ixcm iycm izcm\n"
@@ -77,11 +69,9 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
         << " " << format_number(I(0, 1)) << " " << format_number(I(0, 2)) << " "
         << format_number(I(1, 2)) << " 0 0 0 0 0 0 0 0 0\n";
     }
-  });
-  files.push_back(infile);
+  }));
 
-  const std::string map = (d / "bodies_map.csv").string();
-  write_file_atomically(map, [&](std::ostream& o) {
+  files.push_back(write_export_file(dir, "bodies_map.csv", [&](std::ostream& o) {
     o << "# specimen.csv body id -> LAMMPS id: molecule id (rock, fix rigid/small) or atom id "
          "(soil)\nbody,lammps_kind,lammps_id\n";
     std::size_t atom = 0;
@@ -91,8 +81,7 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
         << (rock ? b.id : static_cast<long>(atom + 1)) << "\n";
       atom += b.spheres.size();
     }
-  });
-  files.push_back(map);
+  }));
 
   // Contact law: kn, kt = ks, μ; the dashpot c = 2β·sqrt(m_eff·kn) becomes LAMMPS's
   // γn = c/m_eff at the median body's m_eff = m/2 (LAMMPS scales the dashpot with each pair's
@@ -106,8 +95,7 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
   const std::string contact_args = format_number(c.kn) + " " + format_number(c.ks) + " " +
                                    format_number(gamma_n) + " 0 " + format_number(c.friction) +
                                    " 1";
-  const std::string deck_path = (d / "in.clumpkit").string();
-  write_file_atomically(deck_path, [&](std::ostream& o) {
+  files.push_back(write_export_file(dir, "in.clumpkit", [&](std::ostream& o) {
     o << "# clumpkit export for LAMMPS (syntax of LAMMPS 29 Sep 2021, Debian 12 `lammps`): the\n"
          "# specimen with clumpkit's exact clump mass properties forced on fix rigid/small,\n"
          "# settled under gravity in its container. Runs on any number of ranks:\n"
@@ -211,8 +199,7 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
            "run         ${nload}\n"
            "write_dump  all custom atoms.final.txt id mol x y z radius modify sort id format "
            "float %.17g\n";
-  });
-  files.push_back(deck_path);
+  }));
   return files;
 }
 

@@ -2,16 +2,13 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
-#include "io/atomic_file.h"
 
 #include <cmath>
-#include <filesystem>
+#include <functional>
 #include <map>
 #include <utility>
 
 namespace clumpkit {
-
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -43,12 +40,9 @@ std::vector<std::string> write_liggghts_export(const std::vector<SpecimenBody>& 
                                                const std::string& dir) {
   if (bodies.empty()) throw InvalidInput("LIGGGHTS export: the specimen has no bodies");
   const SpecimenExtents e = specimen_extents(bodies);
-  const fs::path d(dir);
   std::vector<std::string> files;
-  auto file = [&](const char* name, const auto& body) {
-    const std::string path = (d / name).string();
-    write_file_atomically(path, body);
-    files.push_back(path);
+  auto file = [&](const char* name, const std::function<void(std::ostream&)>& fill) {
+    files.push_back(write_export_file(dir, name, fill));
   };
   Primes primes;
 
@@ -123,7 +117,8 @@ std::vector<std::string> write_liggghts_export(const std::vector<SpecimenBody>& 
     long atom = static_cast<long>(soils), body = 0, soil = 0;
     for (const SpecimenBody& b : bodies)
       if (b.kind == dem::BodyKind::soil) {
-        o << b.id << ",atom," << ++soil << "," << soil << "\n";
+        ++soil;
+        o << b.id << ",atom," << soil << "," << soil << "\n";
       } else {
         o << b.id << ",multisphere," << ++body << "," << atom + 1 << "\n";
         atom += static_cast<long>(b.spheres.size());

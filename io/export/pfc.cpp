@@ -2,17 +2,12 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
-#include "io/atomic_file.h"
 
 #include <cmath>
-#include <cstring>
-#include <filesystem>
 #include <map>
 #include <utility>
 
 namespace clumpkit {
-
-namespace fs = std::filesystem;
 
 AxisAngle axis_angle(const Eigen::Quaterniond& q) {
   Eigen::Quaterniond u = q.normalized();
@@ -29,11 +24,9 @@ std::vector<std::string> write_pfc_export(const std::vector<SpecimenBody>& bodie
                                           const EngineSettings& settings, const std::string& dir) {
   if (bodies.empty()) throw InvalidInput("PFC export: the specimen has no bodies");
   const SpecimenExtents e = specimen_extents(bodies);
-  const fs::path d(dir);
   const dem::ContactParams& c = settings.contact;
   const double dt = 0.2 * std::sqrt(e.m_min / c.kn);
-  const std::string file = (d / "clumpkit.p3dat").string();
-  write_file_atomically(file, [&](std::ostream& o) {
+  const std::string file = write_export_file(dir, "clumpkit.p3dat", [&](std::ostream& o) {
     o << "; clumpkit export for PFC3D, syntax of PFC 7.0 (Itasca documentation); not run by\n"
          "; clumpkit's tests (no PFC licence): check keyword names against your version (PFC 5\n"
          "; differs). Units SI. Clump templates carry clumpkit's exact volume and unit-density\n"
@@ -106,8 +99,7 @@ std::vector<std::string> write_pfc_export(const std::vector<SpecimenBody>& bodie
          "[clumpkit_report]\n"
          "model save 'clumpkit_settled'\n";
   });
-  const std::string map = (d / "bodies_map.csv").string();
-  write_file_atomically(map, [&](std::ostream& o) {
+  const std::string map = write_export_file(dir, "bodies_map.csv", [&](std::ostream& o) {
     o << "# specimen.csv body id -> PFC id: clump id (rock) or ball id (soil), the same number\n"
          "body,pfc_kind,pfc_id\n";
     for (const SpecimenBody& b : bodies)

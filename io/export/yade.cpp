@@ -2,25 +2,19 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
-#include "io/atomic_file.h"
 
 #include <cmath>
-#include <filesystem>
+#include <functional>
 
 namespace clumpkit {
-
-namespace fs = std::filesystem;
 
 std::vector<std::string> write_yade_export(const std::vector<SpecimenBody>& bodies,
                                            const EngineSettings& settings, const std::string& dir) {
   if (bodies.empty()) throw InvalidInput("Yade export: the specimen has no bodies");
   const SpecimenExtents e = specimen_extents(bodies);
-  const fs::path d(dir);
   std::vector<std::string> files;
-  auto file = [&](const char* name, const auto& body) {
-    const std::string path = (d / name).string();
-    write_file_atomically(path, body);
-    files.push_back(path);
+  auto file = [&](const char* name, const std::function<void(std::ostream&)>& fill) {
+    files.push_back(write_export_file(dir, name, fill));
   };
   double radius_sum = 0;
   std::size_t spheres = 0;

@@ -81,19 +81,7 @@ ImportResult run_import(const std::string& engine, const std::string& run_dir,
 
   // Measure as the specimen command does: same container, margin and layers.
   dem::SpecimenResult measured;
-  for (const SpecimenBody& b : bodies) {
-    dem::Body body;
-    body.spheres = body_frame_spheres(b);
-    body.mass = b.mass;
-    body.moments = b.moments;
-    body.volume = b.volume;
-    body.kind = b.kind;
-    body.template_id = b.template_id;
-    body.scale = b.scale;
-    body.position = b.position;
-    body.orientation = b.orientation;
-    measured.world.add_body(std::move(body));
-  }
+  for (const SpecimenBody& b : bodies) measured.world.add_body(dem_body(b));
   // One step of negligible length finds the contacts (for the coordination number).
   measured.world.options().gravity = Vec3::Zero();
   measured.world.options().timestep = 1e-30;

@@ -115,4 +115,34 @@ inline fs::path tiny_specimen_recipe(const fs::path& d) {
   return d / "tiny.toml";
 }
 
+// Builds the tiny specimen into `d`/spec (about 600 bodies, 6 s); fails the test if it cannot.
+inline void build_tiny_specimen(const fs::path& d) {
+  const Result r = run_cli("specimen --quiet --recipe " + tiny_specimen_recipe(d).string() +
+                               " --out " + (d / "spec").string(),
+                           d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+}
+
+/// Rows of a LAMMPS dump (custom or local) after its ITEM: ATOMS / ITEM: ENTRIES line.
+inline std::vector<std::vector<double>> dump_rows(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::vector<std::vector<double>> rows;
+  bool data = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("ITEM: ATOMS", 0) == 0 || line.rfind("ITEM: ENTRIES", 0) == 0) {
+      data = true;
+      continue;
+    }
+    if (!data) continue;
+    std::istringstream s(line);
+    std::vector<double> row;
+    double v;
+    while (s >> v) row.push_back(v);
+    rows.push_back(row);
+  }
+  std::sort(rows.begin(), rows.end());  // by id (atoms) or by the owning atom id (bodies)
+  return rows;
+}
+
 }  // namespace cli_test

@@ -25,13 +25,10 @@ namespace {
 /// Builds the tiny specimen in `d`/spec (rock clumps of 8 spheres with three distinct moments
 /// and arbitrary orientations) and exports it in `format` to `d`/FORMAT; returns its bodies.
 std::vector<SpecimenBody> tiny_export(const fs::path& d, const std::string& format) {
-  Result r = run_cli("specimen --quiet --recipe " + tiny_specimen_recipe(d).string() + " --out " +
-                         (d / "spec").string(),
-                     d);
-  EXPECT_EQ(r.rc, 0) << r.err;
-  r = run_cli("export " + format + " " + (d / "spec").string() + " --out " + (d / format).string() +
-                  " --json",
-              d);
+  build_tiny_specimen(d);
+  const Result r = run_cli("export " + format + " " + (d / "spec").string() + " --out " +
+                               (d / format).string() + " --json",
+                           d);
   EXPECT_EQ(r.rc, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["format"], format);
@@ -256,27 +253,6 @@ TEST(CliEngines, PfcDataFileParsesBackToTheSpecimen) {
 
 namespace {
 
-/// The atoms of a LAMMPS/LIGGGHTS custom dump (id type x y z radius), by id.
-std::map<long, std::vector<double>> dump_atoms(const fs::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::map<long, std::vector<double>> atoms;
-  bool data = false;
-  while (std::getline(in, line)) {
-    if (line.rfind("ITEM: ATOMS", 0) == 0) {
-      data = true;
-      continue;
-    }
-    if (!data) continue;
-    std::istringstream s(line);
-    std::vector<double> row;
-    double v;
-    while (s >> v) row.push_back(v);
-    atoms[static_cast<long>(row.at(0))] = row;
-  }
-  return atoms;
-}
-
 /// The last thermo row of a LIGGGHTS screen output whose header starts with "Step".
 std::vector<double> last_thermo(const std::string& text) {
   std::istringstream in(text);
@@ -355,7 +331,8 @@ TEST(CliEngines, LiggghtsTakesOurTemplatesAndPlacesTheSpecimen) {
   EXPECT_LT(worst, 5e-7) << "LIGGGHTS prints 7 significant digits";
 
   // Every sphere after step 1 (soil atoms 1.., then each body's atoms, bodies_map.csv).
-  const auto atoms = dump_atoms(dir / "atoms.1.txt");
+  std::map<long, std::vector<double>> atoms;
+  for (const auto& row : dump_rows(dir / "atoms.1.txt")) atoms[static_cast<long>(row.at(0))] = row;
   std::map<long, long> first_atom;
   {
     std::ifstream map(dir / "bodies_map.csv");

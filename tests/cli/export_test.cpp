@@ -23,28 +23,6 @@ namespace dem = clumpkit::dem;
 // principal moments and arbitrary orientations, so every frame conversion is exercised.
 namespace {
 
-/// Rows of a LAMMPS dump (custom or local) after its ITEM: ATOMS / ITEM: ENTRIES line.
-std::vector<std::vector<double>> dump_rows(const fs::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::vector<std::vector<double>> rows;
-  bool data = false;
-  while (std::getline(in, line)) {
-    if (line.rfind("ITEM: ATOMS", 0) == 0 || line.rfind("ITEM: ENTRIES", 0) == 0) {
-      data = true;
-      continue;
-    }
-    if (!data) continue;
-    std::istringstream s(line);
-    std::vector<double> row;
-    double v;
-    while (s >> v) row.push_back(v);
-    rows.push_back(row);
-  }
-  std::sort(rows.begin(), rows.end());  // by id (atoms) or by the owning atom id (bodies)
-  return rows;
-}
-
 /// Largest relative difference of mass and sorted principal moments between the LAMMPS body
 /// dump (id mol mass x y z Ix Iy Iz) and the specimen; counts the bodies compared.
 double worst_mass_property_error(const std::vector<std::vector<double>>& dump,
@@ -70,11 +48,8 @@ double worst_mass_property_error(const std::vector<std::vector<double>>& dump,
 TEST(CliExport, LammpsTakesOurExactMassPropertiesOnAnyRankCount) {
   if (!have_program("lmp")) GTEST_SKIP() << "LAMMPS (lmp) not installed: run scripts/deps";
   const fs::path d = scratch();
-  Result r = run_cli("specimen --quiet --recipe " + tiny_specimen_recipe(d).string() + " --out " +
-                         (d / "spec").string(),
-                     d);
-  ASSERT_EQ(r.rc, 0) << r.err;
-  r = run_cli(
+  ASSERT_NO_FATAL_FAILURE(build_tiny_specimen(d));
+  Result r = run_cli(
       "export lammps " + (d / "spec").string() + " --out " + (d / "lmp").string() + " --json", d);
   ASSERT_EQ(r.rc, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -186,11 +161,8 @@ namespace {
 /// Builds the tiny specimen in `d`/spec and exports it for LAMMPS to `d`/`name` with `extra`
 /// options.
 void tiny_lammps_export(const fs::path& d, const std::string& name, const std::string& extra) {
-  Result r = run_cli("specimen --quiet --recipe " + tiny_specimen_recipe(d).string() + " --out " +
-                         (d / "spec").string(),
-                     d);
-  ASSERT_EQ(r.rc, 0) << r.err;
-  r = run_cli(
+  ASSERT_NO_FATAL_FAILURE(build_tiny_specimen(d));
+  Result r = run_cli(
       "export lammps " + (d / "spec").string() + " --out " + (d / name).string() + " " + extra, d);
   ASSERT_EQ(r.rc, 0) << r.err;
 }
@@ -301,10 +273,7 @@ TEST(CliImport, BadInputFailsWithOneLineAndWritesNothing) {
                                     (d / "empty").string() + out,
                                 d),
                         "not a specimen directory");
-  Result r = run_cli("specimen --quiet --recipe " + tiny_specimen_recipe(d).string() + " --out " +
-                         (d / "spec").string(),
-                     d);
-  ASSERT_EQ(r.rc, 0) << r.err;
+  ASSERT_NO_FATAL_FAILURE(build_tiny_specimen(d));
   const std::string spec = " --specimen " + (d / "spec").string();
   expect_one_line_error(run_cli("import lammps " + (d / "missing").string() + spec + out, d),
                         "not a directory");
