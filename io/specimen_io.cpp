@@ -85,6 +85,33 @@ std::vector<dem::RockTemplate> read_rock_templates(const std::string& library_di
   return out;
 }
 
+std::vector<double> read_library_column(const std::string& library_dir, const std::string& name) {
+  const fs::path csv = fs::path(library_dir) / "library.csv";
+  std::ifstream in(csv);
+  if (!in) throw IoError(csv.string() + ": cannot open clump library table");
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> head = split(line);
+  const auto it = std::find(head.begin(), head.end(), name);
+  if (it == head.end())
+    throw InvalidInput(csv.string() + ": column " + name +
+                       " missing (a library of an older clumpkit; build it again)");
+  const std::size_t c = static_cast<std::size_t>(it - head.begin());
+  std::vector<double> out;
+  int row = 1;
+  while (std::getline(in, line)) {
+    ++row;
+    if (line.empty()) continue;
+    const std::vector<std::string> cells = split(line);
+    const double v = c < cells.size() ? std::strtod(cells[c].c_str(), nullptr) : NAN;
+    if (!(v > 0) || !std::isfinite(v))
+      throw InvalidInput(csv.string() + ": line " + std::to_string(row) + ": " + name +
+                         " must be positive, got '" + (c < cells.size() ? cells[c] : "") + "'");
+    out.push_back(v);
+  }
+  return out;
+}
+
 dem::SpecimenSpec specimen_spec(const SpecimenRecipe& r, std::vector<dem::RockTemplate> templates) {
   dem::SpecimenSpec s;
   s.radius = 0.5 * r.container_diameter;

@@ -19,6 +19,11 @@ namespace clumpkit {
 /// the file for a missing or bad file.
 std::vector<dem::RockTemplate> read_rock_templates(const std::string& library_dir);
 
+/// One numeric column of a library's library.csv (e.g. "density_factor", V_mesh/V_clump), in
+/// row order, as read_rock_templates orders the templates. Throws InvalidInput naming the file,
+/// line and value for a missing column or a number that is not finite and positive.
+std::vector<double> read_library_column(const std::string& library_dir, const std::string& name);
+
 /// The build spec of a recipe: gradation classes with the fines (classes finer than fines_below)
 /// moved, by mass, into the class [fines_min, fines_max] (Jin et al. 2017 §4.1); classes at or
 /// above the soil/rock threshold are rock. Contact damping as in deposition_contact().

@@ -1,4 +1,4 @@
-// `clumpkit export FORMAT SRC --out DIR`: a specimen into a DEM engine's files and deck.
+// `clumpkit export FORMAT SRC --out DIR`: a specimen, library or clump into a DEM engine.
 #include "io/pipeline/export.h"
 #include "geom/errors.h"
 #include "io/cli/common.h"
@@ -21,8 +21,12 @@ void register_export(CLI::App& app) {
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
       "export",
-      "A specimen directory (from `clumpkit specimen`) into a DEM engine, with clumpkit's exact "
-      "mass properties forced on the engine. lammps: data.specimen, bodies.infile (fix "
+      "A specimen directory (from `clumpkit specimen`), a clump library (from `clumpkit "
+      "library`: its templates) or one clump CSV into a DEM engine, with clumpkit's exact "
+      "mass properties forced on the engine. A library or clump is laid out one body per "
+      "template on a grid in a container made for it; for lammps it also gets molecule "
+      "templates (clump_NNNNN.mol, molecules.csv) and in.deposit (fix deposit ... mol). "
+      "lammps: data.specimen, bodies.infile (fix "
       "rigid/small infile), bodies_map.csv and in.clumpkit (gravity settle in the container; "
       "runs unchanged with mpirun -np N). liggghts: templates.liggghts (use_density: exact mass "
       "and "
@@ -32,7 +36,7 @@ void register_export(CLI::App& app) {
       "templates of unit density) and bodies_map.csv. vtk: specimen.vtp and glyph_clumpkit.py. "
       "Written in DIR.partial, renamed at the end.");
   c->add_option("FORMAT", o->format, "lammps, liggghts, yade, pfc or vtk")->required();
-  c->add_option("SRC", o->source, "Specimen directory")->required();
+  c->add_option("SRC", o->source, "Specimen directory, library directory or clump CSV")->required();
   c->add_option("--out", o->out, "Output directory")->required();
   c->add_option("--test", o->test,
                 "lammps only: an element test after the settle: oedometer (top platen at a "
@@ -46,6 +50,16 @@ void register_export(CLI::App& app) {
   c->add_option("--tile", o->tile,
                 "lammps only: NXxNY copies of the specimen side by side in one box (a scale-out "
                 "run; the box's side planes replace the cylinders), e.g. 6x6");
+  c->add_option("--density", o->options.source.density,
+                "Library or clump CSV (required there): the particle density in kg/m3; mass "
+                "and inertia are this times the exact union volume and moments of its spheres");
+  c->add_option("--length-unit", o->options.source.length_unit,
+                "Library or clump CSV: what the file's numbers are, m (default) or mm; exports "
+                "are SI");
+  c->add_option("--mass", o->options.source.mass,
+                "Library or clump CSV: clump (default: density x V_clump) or mesh (seed 000 "
+                "§2.2's mass equivalence: density x V_mesh, moments scaled alike; a clump CSV "
+                "needs its mesh STEM.stl beside it)");
   c->add_flag("--json", o->json, "Print format, bodies, spheres, files and run as JSON");
   c->callback([o] {
     o->options.lammps.oedometer = o->test == "oedometer";

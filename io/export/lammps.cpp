@@ -15,6 +15,24 @@ std::string lammps_run_command(int ranks) {
              : "mpirun --allow-run-as-root -np " + std::to_string(ranks) + " lmp -in in.clumpkit";
 }
 
+LammpsContact lammps_contact(const std::vector<SpecimenBody>& bodies,
+                             const EngineSettings& settings) {
+  // Contact law: kn, kt = ks, μ; the dashpot c = 2β·sqrt(m_eff·kn) becomes LAMMPS's
+  // γn = c/m_eff at the median body's m_eff = m/2 (LAMMPS scales the dashpot with each pair's
+  // m_eff, clumpkit with sqrt(m_eff)); no tangential dashpot (γt = 0), no local damping.
+  const SpecimenExtents e = specimen_extents(bodies);
+  const dem::ContactParams& c = settings.contact;
+  const double m_eff = 0.5 * e.m_median;
+  const double gamma_n = 2.0 * c.damping_ratio * std::sqrt(c.kn / m_eff);
+  LammpsContact lc;
+  lc.dt = 0.2 * std::sqrt(e.m_min / c.kn);  // 1/10 of the sphere's 2·sqrt(m/k)
+  lc.skin = 0.5 * e.r_min;
+  lc.cutoff = 2 * e.reach + 2 * e.r_max + 2 * lc.skin;
+  lc.args = format_number(c.kn) + " " + format_number(c.ks) + " " + format_number(gamma_n) + " 0 " +
+            format_number(c.friction) + " 1";
+  return lc;
+}
+
 std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bodies,
                                              const EngineSettings& settings, const std::string& dir,
                                              const LammpsDeck& deck) {
@@ -83,18 +101,10 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
     }
   }));
 
-  // Contact law: kn, kt = ks, μ; the dashpot c = 2β·sqrt(m_eff·kn) becomes LAMMPS's
-  // γn = c/m_eff at the median body's m_eff = m/2 (LAMMPS scales the dashpot with each pair's
-  // m_eff, clumpkit with sqrt(m_eff)); no tangential dashpot (γt = 0), no local damping.
   const dem::ContactParams& c = settings.contact;
-  const double m_eff = 0.5 * e.m_median;
-  const double gamma_n = 2.0 * c.damping_ratio * std::sqrt(c.kn / m_eff);
-  const double dt = 0.2 * std::sqrt(e.m_min / c.kn);  // 1/10 of the sphere's 2·sqrt(m/k)
-  const double skin = 0.5 * e.r_min;
-  const double cutoff = 2 * e.reach + 2 * e.r_max + 2 * skin;
-  const std::string contact_args = format_number(c.kn) + " " + format_number(c.ks) + " " +
-                                   format_number(gamma_n) + " 0 " + format_number(c.friction) +
-                                   " 1";
+  const LammpsContact lc = lammps_contact(bodies, settings);
+  const double dt = lc.dt;
+  const std::string& contact_args = lc.args;
   files.push_back(write_export_file(dir, "in.clumpkit", [&](std::ostream& o) {
     o << "# clumpkit export for LAMMPS (syntax of LAMMPS 29 Sep 2021, Debian 12 `lammps`): the\n"
          "# specimen with clumpkit's exact clump mass properties forced on fix rigid/small,\n"
@@ -111,11 +121,11 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
          "atom_modify map array\n"
          "boundary    f f f\n"
          "newton      off\n"
-      << "comm_modify vel yes cutoff " << format_number(cutoff) << "\n"
+      << "comm_modify vel yes cutoff " << format_number(lc.cutoff) << "\n"
       << "read_data   data.specimen\n"
          "group       rock type 1\n"
          "group       soil type 2\n"
-      << "neighbor    " << format_number(skin) << " bin\n"
+      << "neighbor    " << format_number(lc.skin) << " bin\n"
       << "neigh_modify delay 0 every 1 check yes exclude molecule/intra rock\n"
       << "pair_style  gran/hooke/history " << contact_args << "\n"
       << "pair_coeff  * *\n"

@@ -45,6 +45,16 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
                                              const EngineSettings& settings, const std::string& dir,
                                              const LammpsDeck& deck = {});
 
+/// What every LAMMPS deck of these bodies shares: the pair and wall arguments of the contact law
+/// ("kn kt gamma_n gamma_t mu 1" of gran/hooke/history), the time step, the neighbour skin and
+/// the ghost cutoff of fix rigid/small (the largest body must fit).
+struct LammpsContact {
+  std::string args;
+  double dt = 0, skin = 0, cutoff = 0;
+};
+LammpsContact lammps_contact(const std::vector<SpecimenBody>& bodies,
+                             const EngineSettings& settings);
+
 /// The command line that runs the deck in `dir` on `ranks` MPI ranks (1: plain lmp).
 std::string lammps_run_command(int ranks);
 

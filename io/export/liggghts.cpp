@@ -61,7 +61,8 @@ std::vector<std::string> write_liggghts_export(const std::vector<SpecimenBody>& 
   file("templates.liggghts", [&](std::ostream& o) {
     o << "# clumpkit clump templates (SI): spheres in the principal frame, centroid at the\n"
          "# origin; mass and inertia_tensor (Ixx Ixy Ixz Iyy Iyz Izz) are clumpkit's exact ones,\n"
-         "# taken as given with use_density.\n";
+         "# taken as given with use_density. volume_limit lifts LIGGGHTS's 1e-12 m3 floor on a\n"
+         "# template's volume (sub-millimetre grains).\n";
     int written = 0;
     for (const SpecimenBody& b : bodies) {
       if (b.kind != dem::BodyKind::rock) continue;
@@ -69,8 +70,8 @@ std::vector<std::string> write_liggghts_export(const std::vector<SpecimenBody>& 
       if (k <= written) continue;
       written = k;
       o << "fix pt" << k << " all particletemplate/multisphere " << primes.next()
-        << " atom_type 1 density constant " << format_number(b.mass / b.volume) << " nspheres "
-        << b.spheres.size() << " ntry 100000 spheres &\n";
+        << " atom_type 1 volume_limit 1e-40 density constant " << format_number(b.mass / b.volume)
+        << " nspheres " << b.spheres.size() << " ntry 100000 spheres &\n";
       for (const Sphere& s : body_frame_spheres(b))
         o << "    " << format_xyz(s.center) << " " << format_number(s.radius) << " &\n";
       o << "    type " << k << " mass " << format_number(b.mass) << " inertia_tensor "

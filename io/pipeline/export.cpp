@@ -3,7 +3,9 @@
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "io/atomic_file.h"
+#include "io/export/export_source.h"
 #include "io/export/lammps.h"
+#include "io/export/lammps_molecules.h"
 #include "io/export/liggghts.h"
 #include "io/export/pfc.h"
 #include "io/export/vtk.h"
@@ -50,21 +52,15 @@ ExportResult run_export(const std::string& format, const std::string& source,
     throw InvalidInput(
         "export: --tile and --test oedometer do not go together (one platen, "
         "one container)");
-  const fs::path src(source);
-  if (!fs::is_directory(src))
-    throw InvalidInput(source + ": not a directory (export reads a `clumpkit specimen` output)");
-  if (!fs::exists(src / "specimen.csv")) {
-    if (fs::exists(src / "library.csv"))
-      throw InvalidInput(source +
-                         ": a clump library; exporting libraries is not available in this build "
-                         "yet (export a specimen directory)");
-    throw InvalidInput(source + ": neither a specimen nor a library directory (no specimen.csv)");
-  }
-  const nlohmann::json report = read_json_file((src / "report.json").string());
-  const nlohmann::json manifest = read_json_file((src / "manifest.json").string());
-  const EngineSettings settings =
-      engine_settings_from_report(report, (src / "report.json").string());
-  std::vector<SpecimenBody> bodies = read_specimen_csv((src / "specimen.csv").string());
+  ExportSource src = read_export_source(source, options.source);
+  std::vector<SpecimenBody>& bodies = src.bodies;
+  const EngineSettings& settings = src.settings;
+  if (tiles > 1 && src.templates)
+    throw InvalidInput("export: --tile copies a specimen, and " + source + " is " +
+                       (src.kind == "library" ? "a clump library" : "a clump CSV"));
+  if (options.lammps.oedometer && src.templates)
+    throw InvalidInput("export: --test oedometer tests a specimen, and " + source + " is " +
+                       (src.kind == "library" ? "a clump library" : "a clump CSV"));
   if (tiles > 1)
     bodies = tile_bodies(bodies, options.lammps.tiles_x, options.lammps.tiles_y,
                          2 * settings.container_radius);
@@ -79,6 +75,11 @@ ExportResult run_export(const std::string& format, const std::string& source,
     std::vector<std::string> written;
     if (format == "lammps") {
       written = write_lammps_export(bodies, settings, staging.string(), options.lammps);
+      if (src.templates) {
+        const std::vector<std::string> mol =
+            write_lammps_molecules(bodies, settings, staging.string());
+        written.insert(written.end(), mol.begin(), mol.end());
+      }
       result.run = lammps_run_command(1);
     } else if (format == "liggghts") {
       written = write_liggghts_export(bodies, settings, staging.string());
@@ -93,11 +94,20 @@ ExportResult run_export(const std::string& format, const std::string& source,
       written = write_vtk_export(bodies, staging.string());
       result.run = vtk_run_command();
     }
+    const nlohmann::json& manifest = src.manifest;
     nlohmann::ordered_json m =
-        manifest_head("export", manifest.value("recipe_path", std::string()),
-                      manifest.value("recipe", std::string()), manifest.value("seed", 0ULL));
+        manifest.is_object()
+            ? manifest_head("export", manifest.value("recipe_path", std::string()),
+                            manifest.value("recipe", std::string()), manifest.value("seed", 0ULL))
+            : manifest_head("export", "", "", 0);
     m["format"] = format;
-    m["source"] = fs::absolute(src).lexically_normal().string();
+    m["source"] = fs::absolute(source).lexically_normal().string();
+    m["source_kind"] = src.kind;
+    if (src.templates) {
+      m["density"] = options.source.density;
+      m["length_unit"] = options.source.length_unit.empty() ? "m" : options.source.length_unit;
+      m["mass"] = options.source.mass.empty() ? "clump" : options.source.mass;
+    }
     m["bodies"] = result.bodies;
     m["spheres"] = result.spheres;
     m["run"] = result.run;

@@ -1,6 +1,7 @@
-// The export job: a specimen directory into an engine's files and runnable deck.
+// The export job: a specimen, a clump library or one clump into an engine's files and deck.
 #pragma once
 
+#include "io/export/export_source.h"
 #include "io/export/lammps.h"
 
 #include <string>
@@ -17,14 +18,16 @@ struct ExportResult {
 
 /// What `clumpkit export` may add to the engine's files.
 struct ExportOptions {
-  LammpsDeck lammps;  ///< lammps only: a test after the settle, tiling
+  LammpsDeck lammps;             ///< lammps only: a test after the settle, tiling
+  TemplateSourceOptions source;  ///< a library or clump CSV: density, length unit, mass
 };
 
-/// Exports the specimen directory `source` (specimen.csv, report.json and manifest.json of
-/// `clumpkit specimen`) in `format` into `out_dir` (written in DIR.partial and renamed at the
-/// end, the rule of job.h), with a manifest.json naming the source. Formats: "lammps"
-/// (io/export/lammps.h). Throws InvalidInput for an unknown format, a format not available
-/// yet, or a source that is not a specimen directory (naming it), before anything is written.
+/// Exports `source` (a specimen directory, a library directory or one clump CSV:
+/// read_export_source) in `format` into `out_dir` (written in DIR.partial and renamed at the
+/// end, the rule of job.h), with a manifest.json naming the source. Formats: "lammps",
+/// "liggghts", "yade", "pfc", "vtk" (io/export/*.h); a library or clump CSV also gets LAMMPS
+/// molecule templates (io/export/lammps_molecules.h). Throws InvalidInput for an unknown format,
+/// a bad option or a bad source (naming it), before anything is written.
 ExportResult run_export(const std::string& format, const std::string& source,
                         const std::string& out_dir, const ExportOptions& options = {});
 

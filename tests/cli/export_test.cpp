@@ -137,7 +137,7 @@ TEST(CliExport, BadInputFailsWithOneLineAndWritesNothing) {
       "neither a specimen nor a library");
   expect_one_line_error(
       run_cli("export lammps " + (d / "missing").string() + " --out " + (d / "o").string(), d),
-      "not a directory");
+      "no such file or directory");
   // A specimen.csv with NaN: the file, line and field are named.
   fs::create_directories(d / "spec");
   write(d / "spec" / "report.json",
