@@ -30,15 +30,22 @@ std::vector<std::string> split(const std::string& line) {
   return out;
 }
 
+// Opens a library.csv and returns its header cells; `in` is left at the first row.
+std::vector<std::string> open_library_csv(const fs::path& csv, std::ifstream& in) {
+  in.open(csv);
+  if (!in) throw IoError(csv.string() + ": cannot open clump library table");
+  std::string line;
+  std::getline(in, line);
+  return split(line);
+}
+
 }  // namespace
 
 std::vector<dem::RockTemplate> read_rock_templates(const std::string& library_dir) {
   const fs::path csv = fs::path(library_dir) / "library.csv";
-  std::ifstream in(csv);
-  if (!in) throw IoError(csv.string() + ": cannot open clump library table");
+  std::ifstream in;
+  const std::vector<std::string> head = open_library_csv(csv, in);
   std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> head = split(line);
   auto column = [&](const std::string& name) {
     const auto it = std::find(head.begin(), head.end(), name);
     if (it == head.end())
@@ -87,11 +94,9 @@ std::vector<dem::RockTemplate> read_rock_templates(const std::string& library_di
 
 std::vector<double> read_library_column(const std::string& library_dir, const std::string& name) {
   const fs::path csv = fs::path(library_dir) / "library.csv";
-  std::ifstream in(csv);
-  if (!in) throw IoError(csv.string() + ": cannot open clump library table");
+  std::ifstream in;
+  const std::vector<std::string> head = open_library_csv(csv, in);
   std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> head = split(line);
   const auto it = std::find(head.begin(), head.end(), name);
   if (it == head.end())
     throw InvalidInput(csv.string() + ": column " + name +

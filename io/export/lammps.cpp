@@ -33,6 +33,16 @@ LammpsContact lammps_contact(const std::vector<SpecimenBody>& bodies,
   return lc;
 }
 
+std::string lammps_preamble(const LammpsContact& contact) {
+  return "units       si\n"
+         "atom_style  hybrid sphere molecular\n"
+         "atom_modify map array\n"
+         "boundary    f f f\n"
+         "newton      off\n"
+         "comm_modify vel yes cutoff " +
+         format_number(contact.cutoff) + "\n";
+}
+
 std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bodies,
                                              const EngineSettings& settings, const std::string& dir,
                                              const LammpsDeck& deck) {
@@ -116,12 +126,7 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
       << "variable    nsteps index 1000\n"
       << "variable    exact  index 1\n"
       << "variable    dt     index " << format_number(dt) << "\n"
-      << "units       si\n"
-         "atom_style  hybrid sphere molecular\n"
-         "atom_modify map array\n"
-         "boundary    f f f\n"
-         "newton      off\n"
-      << "comm_modify vel yes cutoff " << format_number(lc.cutoff) << "\n"
+      << lammps_preamble(lc)
       << "read_data   data.specimen\n"
          "group       rock type 1\n"
          "group       soil type 2\n"

@@ -55,6 +55,10 @@ struct LammpsContact {
 LammpsContact lammps_contact(const std::vector<SpecimenBody>& bodies,
                              const EngineSettings& settings);
 
+/// The deck lines both LAMMPS decks open with: SI units, spheres with molecule ids, fixed
+/// boundaries, newton off, ghost velocities and fix rigid/small's ghost cutoff.
+std::string lammps_preamble(const LammpsContact& contact);
+
 /// The command line that runs the deck in `dir` on `ranks` MPI ranks (1: plain lmp).
 std::string lammps_run_command(int ranks);
 

@@ -82,15 +82,9 @@ std::vector<std::string> write_lammps_molecules(const std::vector<SpecimenBody>&
       << "variable    count  index 1\n"
       << "variable    every  index 100\n"
       << "variable    nsteps index 1000\n"
-      << "units       si\n"
-         "atom_style  hybrid sphere molecular\n"
-         "atom_modify map array\n"
-         "boundary    f f f\n"
-         "newton      off\n"
-      << "comm_modify vel yes cutoff " << format_number(lc.cutoff) << "\n"
-      << "region      domain block " << format_number(-R - pad) << " " << format_number(R + pad)
-      << " " << format_number(-R - pad) << " " << format_number(R + pad) << " "
-      << format_number(-pad) << " " << format_number(H + pad) << " units box\n"
+      << lammps_preamble(lc) << "region      domain block " << format_number(-R - pad) << " "
+      << format_number(R + pad) << " " << format_number(-R - pad) << " " << format_number(R + pad)
+      << " " << format_number(-pad) << " " << format_number(H + pad) << " units box\n"
       << "create_box  " << n << " domain\n"
       << "mass        * 1.0\n"
       << "molecule    clumps";

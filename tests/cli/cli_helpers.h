@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace cli_test {
 
@@ -121,6 +122,22 @@ inline void build_tiny_specimen(const fs::path& d) {
                                " --out " + (d / "spec").string(),
                            d);
   ASSERT_EQ(r.rc, 0) << r.err;
+}
+
+/// Whitespace-separated numbers of every line of `path` not starting with '#'.
+inline std::vector<std::vector<double>> number_table(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream s(line);
+    std::vector<double> row;
+    double v;
+    while (s >> v) row.push_back(v);
+    rows.push_back(row);
+  }
+  return rows;
 }
 
 /// Rows of a LAMMPS dump (custom or local) after its ITEM: ATOMS / ITEM: ENTRIES line.

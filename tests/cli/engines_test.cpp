@@ -43,22 +43,6 @@ std::vector<SpecimenBody> tiny_export(const fs::path& d, const std::string& form
   return bodies;
 }
 
-/// Whitespace-separated numbers of every line of `path` not starting with '#'.
-std::vector<std::vector<double>> table(const fs::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream s(line);
-    std::vector<double> row;
-    double v;
-    while (s >> v) row.push_back(v);
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 double relative(double a, double b) {
   return std::abs(a / b - 1);
 }
@@ -115,7 +99,7 @@ TEST(CliEngines, YadeKeepsOurMassAndPrincipalMoments) {
   std::map<long, const SpecimenBody*> by_id;
   for (const SpecimenBody& b : bodies) by_id[b.id] = &b;
   for (const char* step : {"0", "1000"}) {
-    const auto rows = table(dir / ("bodies." + std::string(step) + ".txt"));
+    const auto rows = number_table(dir / ("bodies." + std::string(step) + ".txt"));
     std::size_t rocks = 0;
     double worst = 0;
     for (const auto& row : rows) {
@@ -137,7 +121,7 @@ TEST(CliEngines, YadeKeepsOurMassAndPrincipalMoments) {
   // Yade's clump centroid comes from its grid (DISCRETIZATION 30), not from the exact union:
   // measured at most 1.0e-5 m here, 0.3 % of the smallest rock's equivalent radius.
   double worst_offset = 0, worst_share = 0;
-  for (const auto& row : table(dir / "yade_residuals.txt")) {
+  for (const auto& row : number_table(dir / "yade_residuals.txt")) {
     const SpecimenBody& b = *by_id.at(static_cast<long>(row.at(0)));
     const double equivalent_radius = std::cbrt(3 * b.volume / (4 * M_PI));
     worst_offset = std::max(worst_offset, row.at(2));

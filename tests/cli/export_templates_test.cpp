@@ -50,24 +50,11 @@ std::vector<std::map<std::string, std::string>> csv_rows(const fs::path& path) {
   return rows;
 }
 
-// The body rows of bodies.infile: id mass xcm ycm zcm ixx iyy izz ixy ixz iyz ...
+// The body rows of bodies.infile (id mass xcm ycm zcm ixx iyy izz ixy ixz iyz ...), after its
+// count line.
 std::vector<std::vector<double>> infile_rows(const fs::path& path) {
-  std::istringstream in(slurp(path));
-  std::string line;
-  std::vector<std::vector<double>> rows;
-  bool count_seen = false;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (!count_seen) {
-      count_seen = true;
-      continue;
-    }
-    std::istringstream s(line);
-    std::vector<double> row;
-    double v;
-    while (s >> v) row.push_back(v);
-    rows.push_back(row);
-  }
+  std::vector<std::vector<double>> rows = number_table(path);
+  if (!rows.empty()) rows.erase(rows.begin());
   return rows;
 }
 
