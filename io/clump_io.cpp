@@ -1,6 +1,7 @@
 #include "io/clump_io.h"
 
 #include "geom/errors.h"
+#include "geom/limits.h"
 #include "io/atomic_file.h"
 #include "io/report.h"
 
@@ -75,6 +76,9 @@ Clump read_clump(const std::string& path) {
     if (!(v[3] > 0))
       throw InvalidInput(path + ": line " + std::to_string(lineno) +
                          ": field r: radius must be positive, got " + format_number(v[3]));
+    const std::string at = path + ": line " + std::to_string(lineno) + ": field ";
+    for (int q = 0; q < 3; ++q) check_coordinate(v[q], at + names[q]);
+    check_size(v[3], at + "r");
     c.spheres.push_back(Sphere{Vec3(v[0], v[1], v[2]), v[3]});
   }
   if (!header) throw InvalidInput(path + ": empty clump file (no 'x,y,z,r' header)");

@@ -2,6 +2,7 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "geom/limits.h"
 #include "geom/mesh/cgal_mesh.h"
 #include "io/atomic_file.h"
 
@@ -416,7 +417,7 @@ Mesh read_ply(const std::string& path, const std::string& data) {
     int axis_of[3] = {-1, -1, -1};  // property index of x, y, z
     for (int j = 0; j < static_cast<int>(e.properties.size()); ++j)
       for (int k = 0; k < 3; ++k)
-        if (!e.properties[j].list && e.properties[j].name == std::string_view("xyz" + k, 1))
+        if (!e.properties[j].list && e.properties[j].name == std::string_view(&"xyz"[k], 1))
           axis_of[k] = j;
     if (is_vertex && std::count(axis_of, axis_of + 3, -1) > 0)
       bad(path, "PLY vertex element lacks an x, y or z property");
@@ -547,8 +548,9 @@ Mesh read_mesh(const std::string& path, MeshReadReport* report) {
   Mesh mesh = read_mesh_raw(path);
   for (size_t i = 0; i < mesh.vertices.size(); ++i) {
     const Vec3& p = mesh.vertices[i];
-    if (!p.allFinite())
-      bad(path, "vertex " + std::to_string(i) + " (counting from 0) has a non-finite coordinate (" +
+    if (!p.allFinite() || !(p.cwiseAbs().maxCoeff() <= kMaxLength))
+      bad(path, "vertex " + std::to_string(i) +
+                    " (counting from 0) has a coordinate that is not finite or beyond 1e30 (" +
                     format_number(p.x()) + ", " + format_number(p.y()) + ", " +
                     format_number(p.z()) + ")");
   }
@@ -573,6 +575,9 @@ Mesh read_mesh(const std::string& path, MeshReadReport* report) {
   }
   // Relative to the bounding box so that a flat "solid" with round-off volume is rejected too.
   const auto bb = bounding_box(mesh);
+  if (!((bb[1] - bb[0]).norm() >= kMinLength))
+    bad(path, "mesh is smaller than 1e-30 across: bounding-box diagonal " +
+                  format_number((bb[1] - bb[0]).norm()));
   const double volume = signed_volume(mesh);
   if (!(volume > 1e-12 * std::pow((bb[1] - bb[0]).norm(), 3)))
     bad(path, "mesh encloses no volume: signed volume " + format_number(volume, 6) +

@@ -243,10 +243,13 @@ FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions&
     for (int c : order) exact_radius(c);
     std::stable_sort(order.begin(), order.end(),
                      [&](int a, int b) { return cand[a].radius > cand[b].radius; });
-    r.stopped_by = "min-radius";
+    r.stopped_by = "candidates";  // unless the budget, coverage or min_radius ends it first
     for (int c : order) {
       if (budget_or_coverage_met()) break;
-      if (cand[c].radius < options.min_radius) break;
+      if (cand[c].radius < options.min_radius) {
+        r.stopped_by = "min-radius";
+        break;
+      }
       bool inside = false;
       for (const auto& s : r.clump.spheres) inside |= (cand[c].center - s.center).norm() < s.radius;
       if (!inside) {
@@ -258,6 +261,7 @@ FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions&
     return r;
   }
   int round = 0;
+  bool skipped_small = false;  // a candidate was dropped by min_radius
   while (true) {
     if (budget_or_coverage_met()) break;
     bool placed = false;
@@ -270,13 +274,18 @@ FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions&
         placed = true;
         break;
       }
-      if (exact_radius(e.index) < options.min_radius) continue;
+      if (exact_radius(e.index) < options.min_radius) {
+        skipped_small = true;
+        continue;
+      }
       e.gain = grid.visit(cand[e.index].center, cand[e.index].radius, false);
       e.round = round;
       if (e.gain > 0) queue.push(e);
     }
     if (!placed) {
-      r.stopped_by = "min-radius";  // every remaining candidate adds nothing
+      // No candidate adds coverage: the medial candidates ran out, unless min_radius dropped
+      // some of them.
+      r.stopped_by = skipped_small ? "min-radius" : "candidates";
       break;
     }
     ++round;

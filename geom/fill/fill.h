@@ -43,7 +43,9 @@ struct FillResult {
   int candidates = 0;
   /// Covered fraction of the interior voxels after each sphere (same length as the clump).
   std::vector<double> coverage_curve;
-  std::string stopped_by;  ///< "spheres", "coverage", "min-radius" (no candidate left)
+  /// "spheres" (the budget), "coverage" (the target), "min-radius" (the candidates left are
+  /// smaller) or "candidates" (no medial candidate left adds coverage).
+  std::string stopped_by;
 };
 
 /// Throws InvalidInput for spheres < 0, coverage outside [0, 1], a negative or non-finite

@@ -1,6 +1,7 @@
 #include "geom/shapes/block.h"
 
 #include "geom/errors.h"
+#include "geom/limits.h"
 
 #include <cmath>
 #include <map>
@@ -17,9 +18,9 @@ void positive(double v, const char* field) {
 }  // namespace
 
 void validate(const BlockParams& p) {
-  positive(p.L, "L");
-  positive(p.W, "W");
-  positive(p.H, "H");
+  check_size(p.L, "block: L");
+  check_size(p.W, "block: W");
+  check_size(p.H, "block: H");
   positive(p.sl, "sl");
   positive(p.su, "su");
   if (p.nd < 1 || p.nd > 64)

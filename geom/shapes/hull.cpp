@@ -2,6 +2,7 @@
 
 #include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"
+#include "geom/limits.h"
 #include "geom/mesh/cgal_mesh.h"
 
 #include <cmath>
@@ -10,9 +11,7 @@
 namespace clumpkit {
 
 void validate(const HullParams& p) {
-  if (!(p.diameter > 0.0) || !std::isfinite(p.diameter))
-    throw InvalidInput("hull: diameter must be positive and finite, got " +
-                       std::to_string(p.diameter));
+  check_size(p.diameter, "hull: diameter");
   if (p.points < 4 || p.points > 100000)
     throw InvalidInput("hull: points must be in [4, 100000], got " + std::to_string(p.points));
   if (!(p.roundness_min >= 1.0) || !(p.roundness_max >= p.roundness_min) ||

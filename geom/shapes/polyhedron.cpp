@@ -2,6 +2,7 @@
 
 #include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"
+#include "geom/limits.h"
 #include "geom/mesh/cgal_mesh.h"
 #include "geom/shapes/primitives.h"
 
@@ -33,7 +34,7 @@ void to_principal_frame(Mesh& m, PrincipalFrame& f) {
 }  // namespace
 
 void validate(const PolyhedronParams& p) {
-  check(p.diameter > 0.0 && std::isfinite(p.diameter), "diameter", p.diameter, "must be positive");
+  check_size(p.diameter, "polyhedron: diameter");
   check(p.planes >= 0 && p.planes <= 10000, "planes", p.planes, "must be in [0, 10000]");
   check(p.E > 0.0 && p.E <= 1.0, "E", p.E, "must be in (0, 1]");
   check(p.F > 0.0 && p.F <= 1.0, "F", p.F, "must be in (0, 1]");

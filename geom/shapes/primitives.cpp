@@ -1,6 +1,7 @@
 #include "geom/shapes/primitives.h"
 
 #include "geom/errors.h"
+#include "geom/limits.h"
 
 #include <cmath>
 #include <map>
@@ -10,10 +11,7 @@ namespace clumpkit {
 
 namespace {
 void require_positive(const Vec3& v, const char* what) {
-  for (int k = 0; k < 3; ++k)
-    if (!(v[k] > 0.0) || !std::isfinite(v[k]))
-      throw InvalidInput(std::string(what) + " must be positive and finite, got " +
-                         std::to_string(v[k]));
+  for (int k = 0; k < 3; ++k) check_size(v[k], what);
 }
 }  // namespace
 

@@ -1,6 +1,7 @@
 #include "geom/shapes/shape_spec.h"
 
 #include "geom/errors.h"
+#include "geom/limits.h"
 #include "geom/shapes/block.h"
 #include "geom/shapes/hull.h"
 #include "geom/shapes/polyhedron.h"
@@ -100,7 +101,8 @@ void validate(const FractionSpec& spec, const std::string& prefix) {
   };
   const double inf = std::numeric_limits<double>::infinity();
   if (spec.method == "block") {
-    for (const char* n : {"L", "W", "H", "L_over_H"}) bounds(n, 1e-300, inf, "must be positive");
+    for (const char* n : {"L", "W", "H", "L_over_H"})
+      bounds(n, kMinLength, kMaxLength, "must be a size between 1e-30 and 1e30");
     bounds("W_split", 0.0, 1.0, "must be in [0, 1]");
     bounds("nd", 1, 64, "must be in [1, 64]");
     bounds("sl", 1e-300, inf, "must be positive");
@@ -117,21 +119,22 @@ void validate(const FractionSpec& spec, const std::string& prefix) {
           (spec.params.count("sl") ? describe(spec.params.at("sl")) : "0.8") +
           " su=" + (spec.params.count("su") ? describe(spec.params.at("su")) : "1.2"));
   } else if (spec.method == "hull") {
-    bounds("diameter", 1e-300, inf, "must be positive");
+    bounds("diameter", kMinLength, kMaxLength, "must be a size between 1e-30 and 1e30");
     bounds("points", 4, 100000, "must be in [4, 100000]");
     bounds("roundness_min", 1.0, inf, "must be at least 1");
     bounds("roundness_max", 1.0, inf, "must be at least 1");
     bounds("aspect_min", 1e-300, 1.0, "must be in (0, 1]");
     bounds("max_attempts", 1, 1e9, "must be at least 1");
   } else if (spec.method == "polyhedron") {
-    bounds("diameter", 1e-300, inf, "must be positive");
+    bounds("diameter", kMinLength, kMaxLength, "must be a size between 1e-30 and 1e30");
     bounds("planes", 0, 10000, "must be in [0, 10000]");
     bounds("E", 1e-300, 1.0, "must be in (0, 1]");
     bounds("F", 1e-300, 1.0, "must be in (0, 1]");
     bounds("offset_min", 1e-300, 1.0, "must be in (0, 1]");
     bounds("offset_max", 1e-300, 1.0, "must be in (0, 1]");
   } else if (spec.method == "ellipsoid") {
-    for (const char* n : {"a", "b", "c"}) bounds(n, 1e-300, inf, "must be positive");
+    for (const char* n : {"a", "b", "c"})
+      bounds(n, kMinLength, kMaxLength, "must be a size between 1e-30 and 1e30");
     bounds("level", 0, 6, "must be in [0, 6]");
   }
 }

@@ -1,5 +1,7 @@
 #include "io/cli/common.h"
 
+#include "geom/errors.h"
+
 #include <tbb/global_control.h>
 
 #include <time.h>
@@ -8,6 +10,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 namespace clumpkit::cli {
@@ -81,6 +84,20 @@ Interrupter signal_interrupter(ProgressBar& bar, const std::string& command) {
 
 void note(const std::string& message) {
   std::fprintf(stderr, "clumpkit: note: %s\n", message.c_str());
+}
+
+void warning(const std::string& message) {
+  std::fprintf(stderr, "clumpkit: warning: %s\n", message.c_str());
+}
+
+void check_not_input(const std::string& out, const std::string& option, const std::string& in) {
+  std::error_code ec;
+  const bool same =
+      std::filesystem::equivalent(out, in, ec) ||
+      std::filesystem::weakly_canonical(out, ec) == std::filesystem::weakly_canonical(in, ec);
+  if (same)
+    throw InvalidInput(option + " " + out + " is the input " + in +
+                       ", which would be overwritten: choose another output");
 }
 
 }  // namespace clumpkit::cli

@@ -57,4 +57,11 @@ Interrupter signal_interrupter(ProgressBar& bar, const std::string& command);
 /// Writes one note line "clumpkit: note: ..." to stderr.
 void note(const std::string& message);
 
+/// Writes one warning line "clumpkit: warning: ..." to stderr (the command still succeeds).
+void warning(const std::string& message);
+
+/// Throws InvalidInput when the output file `out` (given as `option`) is the input file `in`
+/// (the same file, whatever the spelling of its path), so an input is never overwritten.
+void check_not_input(const std::string& out, const std::string& option, const std::string& in);
+
 }  // namespace clumpkit::cli

@@ -75,6 +75,7 @@ void register_fill(CLI::App& app) {
       throw InvalidInput("--spheres must be at least 1, got " + std::to_string(o->spheres));
     o->fill.spheres = std::max(0, o->spheres);
     validate(o->fill);
+    check_not_input(o->out, "--output", o->mesh);
     MeshReadReport report;
     Mesh mesh;
     std::string inside_outside = "OpenVDB signed distance (watertight mesh)";
@@ -93,6 +94,10 @@ void register_fill(CLI::App& app) {
     if (r.clump.spheres.empty())
       throw InvalidInput(o->mesh + ": no sphere fits with --min-radius " +
                          format_number(o->fill.min_radius));
+    if (o->spheres > 0 && static_cast<int>(r.clump.spheres.size()) < o->spheres)
+      warning("the budget of " + std::to_string(o->spheres) + " spheres was not reached: " +
+              std::to_string(r.clump.spheres.size()) + " placed, stopped by " + r.stopped_by +
+              (r.stopped_by == "candidates" ? " (no medial candidate left adds coverage)" : ""));
     const Fidelity f = assess_fidelity(mesh, r.clump, r.voxel);
     write_clump(o->out, r.clump,
                 "clumpkit fill " + o->mesh + "\nspheres " + std::to_string(r.clump.spheres.size()) +

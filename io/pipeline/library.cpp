@@ -4,6 +4,7 @@
 #include "geom/errors.h"
 #include "geom/fill/fidelity.h"
 #include "geom/fill/fill.h"
+#include "geom/hash.h"
 #include "geom/template/clump_template.h"
 #include "io/atomic_file.h"
 #include "io/clump_io.h"
@@ -42,6 +43,14 @@ const std::vector<std::string>& fidelity_columns() {
                                              "inertia_error",
                                              "overshoot_depth_max"};
   return c;
+}
+
+// A particle record's checksum: FNV-1a 64 of its compact JSON without the field. A record
+// changed on disk (a flipped byte, an edit) no longer matches and is redone, never reused.
+std::string record_checksum(const nlohmann::ordered_json& rec) {
+  Fnv1a h;
+  h.add(std::string_view(rec.dump()));
+  return h.hex();
 }
 
 // One particle, start to finish; returns its record (also written as NNNNN.json).
@@ -106,8 +115,10 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
   t["spheres_file"] = "particles/" + stem + ".template.csv";
   f["voxel"] = filled.voxel;
   f["stopped_by"] = filled.stopped_by;
+  nlohmann::ordered_json sealed = rec;
+  sealed["checksum"] = record_checksum(rec);
   write_file_atomically((dir / (stem + ".json")).string(),
-                        [&](std::ostream& o) { o << rec.dump(1) << "\n"; });
+                        [&](std::ostream& o) { o << sealed.dump(1) << "\n"; });
   return rec;
 }
 
@@ -133,17 +144,27 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
 
   std::vector<nlohmann::ordered_json> records(total);
   std::vector<char> todo(total, 1);
-  LibraryResult result{total, 0, out_dir};
+  LibraryResult result;
+  result.particles = total;
+  result.out_dir = out_dir;
   for (std::size_t i = 0; i < total; ++i) {
     const fs::path rec = parts / (id_name(i) + ".json");
     if (!fs::exists(rec)) continue;
+    // A record that does not parse or fails its checksum (atomic writes cannot leave one, but
+    // disks and users can) is redone and reported, never used.
     try {
-      records[i] = nlohmann::ordered_json::parse(slurp(rec));
-      todo[i] = 0;
-      ++result.resumed;
+      nlohmann::ordered_json r = nlohmann::ordered_json::parse(slurp(rec));
+      const std::string stored = r.value("checksum", std::string());
+      r.erase("checksum");
+      if (stored == record_checksum(r)) {
+        records[i] = std::move(r);
+        todo[i] = 0;
+        ++result.resumed;
+        continue;
+      }
     } catch (const nlohmann::json::exception&) {
-      // A damaged record (cannot happen with atomic writes, but a user may edit files): redo it.
     }
+    result.redone.push_back("particles/" + id_name(i) + ".json");
   }
 
   try {

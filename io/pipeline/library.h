@@ -5,6 +5,7 @@
 #include "io/recipe.h"
 
 #include <string>
+#include <vector>
 
 namespace clumpkit {
 
@@ -15,6 +16,8 @@ struct LibraryOptions {
 struct LibraryResult {
   std::size_t particles = 0;
   std::size_t resumed = 0;  ///< particles found finished from an earlier run and kept
+  /// Records of an earlier run refused (unreadable, or failing their checksum) and redone.
+  std::vector<std::string> redone;
   std::string out_dir;
 };
 
@@ -25,7 +28,9 @@ struct LibraryResult {
 /// is written atomically, its .json last, so a run killed or interrupted (Interrupted, told to
 /// the interrupter as stage "library") and restarted with the same recipe keeps the finished
 /// particles of DIR.partial and ends byte-identical to an uninterrupted run, for any thread
-/// count; a DIR.partial of another recipe is discarded. Fill settings come from the recipe's
+/// count; a DIR.partial of another recipe is discarded. Each NNNNN.json carries a "checksum"
+/// (FNV-1a 64 of the record's compact JSON without it); a record that fails it is redone and
+/// named in `redone`. Fill settings come from the recipe's
 /// [fill] table (defaults otherwise).
 LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
                           const LibraryOptions& options, const Interrupter& interrupter = {});

@@ -403,9 +403,11 @@ TEST_F(MeshIoTest, NonFiniteCoordinatesAreRejected) {
   m.vertices[3].y() = inf;
   write_mesh(path("inf.obj"), m);
   write_mesh(path("inf.stl"), m, MeshFormat::StlAscii);
-  for (const char* name : {"nan.ply", "nan.stl", "inf.obj", "inf.stl"})
+  m.vertices[3].y() = 1e300;  // finite, but its cube overflows in the volume
+  write_mesh(path("huge.ply"), m);
+  for (const char* name : {"nan.ply", "nan.stl", "inf.obj", "inf.stl", "huge.ply"})
     expect_error<InvalidInput>([&] { read_mesh(path(name)); },
-                               {path(name) + ": vertex", "non-finite coordinate"});
+                               {path(name) + ": vertex", "not finite or beyond 1e30"});
 }
 
 TEST_F(MeshIoTest, UnsupportedPlyFormat) {

@@ -57,7 +57,9 @@ TEST(Recipe, ErrorsNameFileFieldAndValue) {
   e = error_of(kBlock + "W_split = { uniform = [0.5, 1.5] }\n");
   EXPECT_FALSE(e.empty());
   e = error_of("[[fraction]]\nmethod = \"block\"\ncount = 3\nW = -0.03\nL = 0.05\nH = 0.02\n");
-  EXPECT_NE(e.find("fraction[0].W: must be positive"), std::string::npos) << e;
+  EXPECT_NE(e.find("fraction[0].W: must be a size between 1e-30 and 1e30, got -0.03"),
+            std::string::npos)
+      << e;
   e = error_of("[[fraction]]\nmethod = \"cube\"\ncount = 3\n");
   EXPECT_NE(e.find("fraction[0].method"), std::string::npos) << e;
   e = error_of("[[fraction]]\nmethod = \"block\"\ncount = 3\nL = 0.05\nH = 0.02\n");

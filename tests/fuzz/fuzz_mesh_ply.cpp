@@ -1,0 +1,9 @@
+// Fuzzes the PLY reader (read_mesh: parse, then the watertightness and orientation checks).
+#include "fuzz_input.h"
+#include "io/mesh_io.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string path = fuzz::as_file(data, size, "mesh.ply");
+  fuzz::refuse_only_cleanly([&] { clumpkit::read_mesh(path); });
+  return 0;
+}
