@@ -8,6 +8,7 @@
 #include <unistd.h>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -84,6 +85,13 @@ Interrupter signal_interrupter(ProgressBar& bar, const std::string& command) {
 
 void note(const std::string& message) {
   std::fprintf(stderr, "clumpkit: note: %s\n", message.c_str());
+}
+
+double max_memory_bytes(double gib) {
+  if (!(gib >= 0) || !std::isfinite(gib))
+    throw InvalidInput("--max-memory must be a positive number of GiB, got " + std::to_string(gib));
+  if (gib > 0) return gib * 1073741824.0;
+  return 0.5 * double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
 }
 
 void warning(const std::string& message) {

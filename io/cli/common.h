@@ -57,6 +57,10 @@ Interrupter signal_interrupter(ProgressBar& bar, const std::string& command);
 /// Writes one note line "clumpkit: note: ..." to stderr.
 void note(const std::string& message);
 
+/// The memory budget of --max-memory GIB in bytes: `gib` GiB when positive, otherwise half of
+/// this machine's physical memory. Throws InvalidInput for a NaN or negative value.
+double max_memory_bytes(double gib);
+
 /// Writes one warning line "clumpkit: warning: ..." to stderr (the command still succeeds).
 void warning(const std::string& message);
 

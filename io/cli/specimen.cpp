@@ -17,6 +17,7 @@ void register_specimen(CLI::App& app) {
     std::string recipe, out;
     int threads = 0;
     double checkpoint_seconds = 60;
+    double max_memory_gib = 0;  // 0: half of this machine's memory
     bool resume = false, quiet = false, json = false;
   };
   auto o = std::make_shared<Opts>();
@@ -40,6 +41,9 @@ void register_specimen(CLI::App& app) {
                 "Wall-clock seconds between checkpoints of a running stage")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  c->add_option("--max-memory", o->max_memory_gib,
+                "Refuse a recipe whose estimated memory exceeds this many GiB (default: half "
+                "of this machine's memory)");
   c->add_flag("--resume", o->resume, "Continue a killed run from DIR.partial");
   c->add_flag("--quiet", o->quiet, "No progress bar");
   c->add_flag("--json", o->json, "Print report.json on stdout");
@@ -48,8 +52,12 @@ void register_specimen(CLI::App& app) {
     set_threads(o->threads);
     const SpecimenRecipe recipe = read_specimen_recipe(o->recipe);
     ProgressBar bar("specimen", o->quiet);
-    const SpecimenJobResult job = run_specimen(recipe, o->out, {o->resume, o->checkpoint_seconds},
-                                               signal_interrupter(bar, "specimen"), t0);
+    SpecimenJobOptions options;
+    options.resume = o->resume;
+    options.checkpoint_seconds = o->checkpoint_seconds;
+    options.max_memory_bytes = max_memory_bytes(o->max_memory_gib);
+    const SpecimenJobResult job =
+        run_specimen(recipe, o->out, options, signal_interrupter(bar, "specimen"), t0);
     bar.finish();
     const dem::SpecimenResult& result = job.specimen;
     const nlohmann::ordered_json& report = job.report;

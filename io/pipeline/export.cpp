@@ -52,6 +52,7 @@ ExportResult run_export(const std::string& format, const std::string& source,
     throw InvalidInput(
         "export: --tile and --test oedometer do not go together (one platen, "
         "one container)");
+  check_output_spares(out_dir, source, "the source");
   ExportSource src = read_export_source(source, options.source);
   std::vector<SpecimenBody>& bodies = src.bodies;
   const EngineSettings& settings = src.settings;

@@ -59,6 +59,8 @@ ImportResult run_import(const std::string& engine, const std::string& run_dir,
                         const std::string& specimen_dir, const std::string& out_dir) {
   if (engine != "lammps")
     throw InvalidInput("import: unknown engine '" + engine + "' (available: lammps)");
+  check_output_spares(out_dir, specimen_dir, "the specimen");
+  check_output_spares(out_dir, run_dir, "the run directory");
   const fs::path src(specimen_dir);
   if (!fs::exists(src / "specimen.csv"))
     throw InvalidInput(specimen_dir + ": not a specimen directory (no specimen.csv)");

@@ -6,6 +6,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <atomic>
 #include <exception>
 #include <filesystem>
@@ -23,6 +24,17 @@ void check_output_directory(const std::string& dir) {
     throw InvalidInput(dir +
                        ": output directory exists and is not a clumpkit output; "
                        "remove it or choose another --out");
+}
+
+void check_output_spares(const std::string& dir, const std::string& input,
+                         const std::string& what) {
+  std::error_code ec;
+  const fs::path out = fs::weakly_canonical(dir, ec), in = fs::weakly_canonical(input, ec);
+  // `in` lies in `out` when `out` is a prefix of it, component by component.
+  const auto mismatch = std::mismatch(out.begin(), out.end(), in.begin(), in.end());
+  if (!out.empty() && mismatch.first == out.end())
+    throw InvalidInput("--out " + dir + " would replace " + what + " " + input +
+                       ": choose another --out");
 }
 
 void publish_directory(const std::string& staging, const std::string& dir) {

@@ -52,6 +52,11 @@ nlohmann::ordered_json manifest_head(const std::string& command, const ShapeReci
 /// before they start.
 void check_output_directory(const std::string& dir);
 
+/// Throws InvalidInput when replacing the output directory `dir` would remove the input `input`
+/// (the same path, whatever its spelling, or a file or directory inside it); `what` names the
+/// input in the message (e.g. "the source").
+void check_output_spares(const std::string& dir, const std::string& input, const std::string& what);
+
 /// Starts a job that resumes nothing: checks `dir` (check_output_directory), empties and creates
 /// DIR.partial and returns its path. Throws IoError when it cannot be created.
 std::string begin_staging(const std::string& dir);

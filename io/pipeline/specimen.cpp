@@ -1,6 +1,7 @@
 #include "io/pipeline/specimen.h"
 
 #include "geom/errors.h"
+#include "geom/format.h"
 #include "io/atomic_file.h"
 #include "io/pipeline/job.h"
 #include "io/pipeline/library.h"
@@ -8,6 +9,7 @@
 #include "io/recipe.h"
 #include "io/specimen_io.h"
 
+#include <cmath>
 #include <filesystem>
 #include <vector>
 
@@ -74,10 +76,31 @@ SpecimenJobResult build_into(const SpecimenRecipe& recipe, const std::string& ou
 
 }  // namespace
 
+double estimated_specimen_bytes(const dem::SpecimenSpec& spec) {
+  // Bodies ≈ the container's solid volume shared out by mass over the classes, each class's
+  // particles of the volume of its mean sieve size; about 1 KiB per body (the body, its spheres,
+  // contacts and neighbour lists), held three times (calibration, layer and specimen worlds).
+  const double solid = M_PI * spec.radius * spec.radius * spec.height * (1 - spec.porosity_guess);
+  double bodies = 0;
+  for (const dem::ParticleClass& c : spec.classes) {
+    const double d = 0.5 * (c.min_size + c.max_size);
+    bodies += 0.01 * c.mass_percent * solid / (M_PI / 6 * d * d * d);
+  }
+  return 3 * 1024 * bodies;
+}
+
 SpecimenJobResult run_specimen(const SpecimenRecipe& recipe, const std::string& out_dir,
                                const SpecimenJobOptions& options, const Interrupter& interrupter,
                                std::chrono::steady_clock::time_point started) {
   check_output_directory(out_dir);
+  if (options.max_memory_bytes > 0) {
+    const double need = estimated_specimen_bytes(specimen_spec(recipe, {}));
+    if (!(need <= options.max_memory_bytes))
+      throw InvalidInput(
+          recipe.path + ": the specimen would need about " + format_number(need / 1073741824.0, 3) +
+          " GiB (estimated from the container and the gradation), over --max-memory " +
+          format_number(options.max_memory_bytes / 1073741824.0, 3) + " GiB");
+  }
   const fs::path staging = out_dir + ".partial";
   if (!options.resume) fs::remove_all(staging);
   fs::create_directories(staging);

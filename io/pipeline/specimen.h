@@ -17,7 +17,14 @@ namespace clumpkit {
 struct SpecimenJobOptions {
   bool resume = false;             ///< continue from DIR.partial instead of starting afresh
   double checkpoint_seconds = 60;  ///< wall-clock seconds between checkpoints of a stage
+  /// Refuse, before anything is built, a recipe whose estimated_specimen_bytes exceed this
+  /// (0: no limit).
+  double max_memory_bytes = 0;
 };
+
+/// A rough (within a few times) estimate of the memory a specimen build takes, from its
+/// container and gradation: bodies ≈ solid volume / mean particle volume per class, 3 KiB each.
+double estimated_specimen_bytes(const dem::SpecimenSpec& spec);
 
 struct SpecimenJobResult {
   dem::SpecimenResult specimen;

@@ -1,0 +1,163 @@
+// The bad-input matrix: every command × {missing file, a directory, empty, binary garbage,
+// truncated, NaN, zero/negative sizes, extreme magnitudes, --out whose parent is a file, --out
+// equal to an input} gives one line "clumpkit: error: ..." naming the file, field or value,
+// exit 2, and nothing at the output (no DIR.partial, no temporary file either).
+#include "cli_helpers.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+using namespace cli_test;
+
+namespace {
+
+struct Case {
+  std::string command;  // what follows `clumpkit`
+  std::string needle;   // the file, field or value the message must name
+  std::string out;      // the output that must not appear ("" when the command writes none)
+};
+
+// The inputs every case draws on: good ones to corrupt, and each kind of bad file.
+struct Inputs {
+  fs::path d;
+  explicit Inputs(const fs::path& dir) : d(dir) {
+    const Result r = run_cli("shape box --size 1,2,3 -o " + (d / "box.stl").string(), d);
+    EXPECT_EQ(r.rc, 0) << r.err;
+    const std::string stl = slurp(d / "box.stl");
+    write(d / "trunc.stl", stl.substr(0, stl.size() / 2));
+    write(d / "empty.stl", "");
+    write(d / "empty.csv", "");
+    write(d / "empty.toml", "");
+    std::string garbage;
+    for (int k = 0; k < 4096; ++k) garbage.push_back(static_cast<char>((k * 7919 + 13) % 256));
+    for (const char* n : {"garbage.stl", "garbage.csv", "garbage.toml", "garbage.obj"})
+      write(d / n, garbage);
+    write(d / "nan.obj",
+          "v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+    write(d / "huge.obj",
+          "v 0 0 0\nv 1e300 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+    write(d / "flat.obj",
+          "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\nf 1 3 2\nf 2 3 4\n");
+    write(d / "good.csv", "x,y,z,r\n0,0,0,1\n0.5,0,0,1\n");
+    write(d / "trunc.csv", "x,y,z,r\n0,0,0,1\n0.5,0,");
+    write(d / "nan.csv", "x,y,z,r\n0,0,0,1\n0.5,nan,0,1\n");
+    write(d / "zero.csv", "x,y,z,r\n0,0,0,0\n");
+    write(d / "negative.csv", "x,y,z,r\n0,0,0,-1\n");
+    write(d / "huge.csv", "x,y,z,r\n0,0,0,1e300\n");
+    write(d / "tiny.csv", "x,y,z,r\n0,0,0,1e-300\n");
+    write(d / "rocks.toml", kTinyRocks);
+    const std::string rocks = kTinyRocks;
+    write(d / "trunc.toml", rocks.substr(0, rocks.find("W = {") + 8));
+    auto with = [&](const std::string& from, const std::string& to) {
+      std::string t = rocks;
+      t.replace(t.find(from), from.size(), to);
+      return t;
+    };
+    write(d / "nan.toml", with("W = { uniform = [0.010, 0.015] }", "W = nan"));
+    write(d / "negative.toml", with("W = { uniform = [0.010, 0.015] }", "W = -0.01"));
+    write(d / "huge.toml", with("W = { uniform = [0.010, 0.015] }", "W = 1e300"));
+    write(d / "zero.toml", with("W = { uniform = [0.010, 0.015] }", "W = 0"));
+    tiny_specimen_recipe(d);  // tiny.toml (its rock recipe: rocks.toml)
+    const std::string spec = kTinySpecimen;
+    auto spec_with = [&](const std::string& from, const std::string& to) {
+      std::string t = spec;
+      t.replace(t.find(from), from.size(), to);
+      return t;
+    };
+    write(d / "spec_nan.toml", spec_with("diameter = 0.060", "diameter = nan"));
+    write(d / "spec_negative.toml", spec_with("height = 0.100", "height = -0.1"));
+    write(d / "spec_huge.toml", spec_with("diameter = 0.060", "diameter = 1e300"));
+    write(d / "parent_file", "a file, not a directory\n");
+    fs::create_directories(d / "a_dir");
+  }
+  std::string operator()(const std::string& name) const { return (d / name).string(); }
+};
+
+}  // namespace
+
+TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
+  const fs::path d = scratch();
+  const Inputs in(d);
+  const std::string out = in("out"), csv_out = in("out.csv"), mesh_out = in("out.stl");
+  const std::string pf = in("parent_file") + "/x";
+  std::vector<Case> cases;
+  // describe MESH
+  for (const char* f : {"missing.stl", "a_dir", "empty.stl", "garbage.stl", "trunc.stl", "nan.obj",
+                        "huge.obj", "flat.obj"})
+    cases.push_back({"describe " + in(f), f, ""});
+  // fill MESH -o OUT
+  for (const char* f : {"missing.stl", "a_dir", "empty.stl", "garbage.obj", "trunc.stl", "nan.obj",
+                        "huge.obj", "flat.obj"})
+    cases.push_back({"fill " + in(f) + " -o " + csv_out, f, csv_out});
+  cases.push_back({"fill " + in("box.stl") + " -o " + in("box.stl"), "would be overwritten", ""});
+  cases.push_back({"fill " + in("box.stl") + " -o " + pf + ".csv", "parent_file", ""});
+  cases.push_back({"fill " + in("box.stl") + " -o " + csv_out + " --min-radius -1", "-1", csv_out});
+  cases.push_back({"fill " + in("box.stl") + " -o " + csv_out + " --spheres 0", "0", csv_out});
+  // volume CLUMP
+  for (const char* f : {"missing.csv", "a_dir", "empty.csv", "garbage.csv", "trunc.csv", "nan.csv",
+                        "zero.csv", "negative.csv", "huge.csv", "tiny.csv"})
+    cases.push_back({"volume " + in(f), f, ""});
+  // shape box --size -o OUT
+  for (const char* size : {"0,1,1", "-1,1,1", "1e300,1,1", "1e-300,1,1", "nan,1,1"})
+    cases.push_back(
+        {"shape box --size " + std::string(size) + " -o " + mesh_out, "box size", mesh_out});
+  cases.push_back({"shape box --size 1,1,1 -o " + pf + ".stl", "parent_file", ""});
+  // shapes and library --recipe R --out D
+  for (const char* command : {"shapes", "library"}) {
+    for (const char* f : {"missing.toml", "a_dir", "empty.toml", "garbage.toml", "trunc.toml",
+                          "nan.toml", "negative.toml", "huge.toml", "zero.toml"})
+      cases.push_back(
+          {std::string(command) + " --quiet --recipe " + in(f) + " --out " + out, f, out});
+    cases.push_back(
+        {std::string(command) + " --quiet --recipe " + in("rocks.toml") + " --out " + pf,
+         "parent_file", ""});
+    cases.push_back({std::string(command) + " --quiet --recipe " + in("rocks.toml") + " --out " +
+                         in("rocks.toml"),
+                     "rocks.toml", ""});
+  }
+  // specimen --recipe R --out D
+  for (const char* f : {"missing.toml", "a_dir", "empty.toml", "garbage.toml", "trunc.toml",
+                        "spec_nan.toml", "spec_negative.toml", "spec_huge.toml"})
+    cases.push_back({"specimen --quiet --recipe " + in(f) + " --out " + out, f, out});
+  // A request over the memory budget is refused before anything is built, with the estimate.
+  cases.push_back(
+      {"specimen --quiet --max-memory 0.000001 --recipe " + in("tiny.toml") + " --out " + out,
+       "would need about", out});
+  cases.push_back({"specimen --quiet --recipe " + in("tiny.toml") + " --out " + in("tiny.toml"),
+                   "tiny.toml", ""});
+  // export FORMAT SRC --out D (a clump CSV source)
+  for (const char* f : {"missing.csv", "a_dir", "empty.csv", "garbage.csv", "trunc.csv", "nan.csv",
+                        "zero.csv", "negative.csv", "huge.csv", "tiny.csv"})
+    cases.push_back({"export lammps " + in(f) + " --density 2650 --out " + out, f, out});
+  cases.push_back({"export vtk " + in("good.csv") + " --density 0 --out " + out, "--density", out});
+  cases.push_back(
+      {"export vtk " + in("good.csv") + " --density 2650 --out " + pf, "parent_file", ""});
+  cases.push_back(
+      {"export vtk " + in("a_dir") + " --density 2650 --out " + in("a_dir"), "would replace", ""});
+  // import lammps RUN --specimen S --out D
+  write(d / "run" / "atoms.0.txt", "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n3\n");
+  cases.push_back(
+      {"import lammps " + in("missing") + " --specimen " + in("a_dir") + " --out " + out, "a_dir",
+       out});
+  cases.push_back(
+      {"import lammps " + in("run") + " --specimen " + in("run") + " --out " + in("run"),
+       "would replace", ""});
+
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.command);
+    expect_one_line_error(run_cli(c.command, d), c.needle);
+    if (!c.out.empty()) {
+      EXPECT_FALSE(fs::exists(c.out));
+      EXPECT_FALSE(fs::exists(c.out + ".partial"));
+    }
+    for (const auto& e : fs::directory_iterator(d))
+      EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+  }
+  // The inputs are untouched.
+  EXPECT_EQ(slurp(d / "rocks.toml"), std::string(kTinyRocks));
+  EXPECT_TRUE(fs::is_regular_file(d / "box.stl"));
+  std::printf("bad-input matrix: %zu cases over 9 commands\n", cases.size());
+}
