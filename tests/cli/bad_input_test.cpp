@@ -49,27 +49,21 @@ struct Inputs {
     write(d / "huge.csv", "x,y,z,r\n0,0,0,1e300\n");
     write(d / "tiny.csv", "x,y,z,r\n0,0,0,1e-300\n");
     write(d / "rocks.toml", kTinyRocks);
-    const std::string rocks = kTinyRocks;
+    const std::string rocks = kTinyRocks, spec = kTinySpecimen;
     write(d / "trunc.toml", rocks.substr(0, rocks.find("W = {") + 8));
-    auto with = [&](const std::string& from, const std::string& to) {
-      std::string t = rocks;
-      t.replace(t.find(from), from.size(), to);
-      return t;
+    // `text` with `from` replaced by `to`.
+    auto edited = [](std::string text, const std::string& from, const std::string& to) {
+      return text.replace(text.find(from), from.size(), to);
     };
-    write(d / "nan.toml", with("W = { uniform = [0.010, 0.015] }", "W = nan"));
-    write(d / "negative.toml", with("W = { uniform = [0.010, 0.015] }", "W = -0.01"));
-    write(d / "huge.toml", with("W = { uniform = [0.010, 0.015] }", "W = 1e300"));
-    write(d / "zero.toml", with("W = { uniform = [0.010, 0.015] }", "W = 0"));
+    const std::string w = "W = { uniform = [0.010, 0.015] }";
+    write(d / "nan.toml", edited(rocks, w, "W = nan"));
+    write(d / "negative.toml", edited(rocks, w, "W = -0.01"));
+    write(d / "huge.toml", edited(rocks, w, "W = 1e300"));
+    write(d / "zero.toml", edited(rocks, w, "W = 0"));
     tiny_specimen_recipe(d);  // tiny.toml (its rock recipe: rocks.toml)
-    const std::string spec = kTinySpecimen;
-    auto spec_with = [&](const std::string& from, const std::string& to) {
-      std::string t = spec;
-      t.replace(t.find(from), from.size(), to);
-      return t;
-    };
-    write(d / "spec_nan.toml", spec_with("diameter = 0.060", "diameter = nan"));
-    write(d / "spec_negative.toml", spec_with("height = 0.100", "height = -0.1"));
-    write(d / "spec_huge.toml", spec_with("diameter = 0.060", "diameter = 1e300"));
+    write(d / "spec_nan.toml", edited(spec, "diameter = 0.060", "diameter = nan"));
+    write(d / "spec_negative.toml", edited(spec, "height = 0.100", "height = -0.1"));
+    write(d / "spec_huge.toml", edited(spec, "diameter = 0.060", "diameter = 1e300"));
     write(d / "parent_file", "a file, not a directory\n");
     fs::create_directories(d / "a_dir");
   }
