@@ -36,3 +36,29 @@ TEST(CliFaults, LibraryRedoesAParticleRecordThatFailsItsChecksum) {
   for (const char* f : {"library.csv", "particles/00002.json", "particles/00002.csv"})
     EXPECT_EQ(slurp(d / "lib" / f), slurp(d / "clean" / f)) << f;
 }
+
+// A specimen stage record with one changed byte is refused on --resume, naming the file; the
+// run is stopped by SIGTERM as soon as that record exists.
+TEST(CliFaults, SpecimenRefusesAStageRecordThatFailsItsChecksum) {
+  const fs::path d = scratch();
+  const fs::path recipe = tiny_specimen_recipe(d);
+  const fs::path out = d / "spec",
+                 record = d / "spec.partial" / "checkpoints" / "calibration-0.done";
+  const std::string start = std::string(CLUMPKIT_BINARY) + " specimen --quiet --recipe " +
+                            recipe.string() + " --out " + out.string();
+  const std::string script =
+      "(" + start + " >/dev/null 2>&1 & pid=$!; for i in $(seq 6000); do [ -e " + record.string() +
+      " ] && break; sleep 0.01; done; kill -TERM $pid; wait $pid)";
+  std::system(("bash -c '" + script + "'").c_str());
+  ASSERT_TRUE(fs::exists(record)) << "the run ended before its first stage record";
+  ASSERT_FALSE(fs::exists(out));
+  std::string text = slurp(record);
+  const std::size_t digit = text.find_first_of("0123456789");
+  ASSERT_NE(digit, std::string::npos);
+  text[digit] = text[digit] == '1' ? '2' : '1';
+  write(record, text);
+  const Result r = run_cli(
+      "specimen --quiet --resume --recipe " + recipe.string() + " --out " + out.string(), d);
+  expect_one_line_error(r, "calibration-0.done: stage record checksum mismatch");
+  EXPECT_FALSE(fs::exists(out));
+}
