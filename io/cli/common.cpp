@@ -1,6 +1,7 @@
 #include "io/cli/common.h"
 
 #include "geom/errors.h"
+#include "io/pipeline/job.h"
 
 #include <tbb/global_control.h>
 
@@ -99,11 +100,8 @@ void warning(const std::string& message) {
 }
 
 void check_not_input(const std::string& out, const std::string& option, const std::string& in) {
-  std::error_code ec;
-  const bool same =
-      std::filesystem::equivalent(out, in, ec) ||
-      std::filesystem::weakly_canonical(out, ec) == std::filesystem::weakly_canonical(in, ec);
-  if (same)
+  std::error_code ec;  // hard links are the same file too
+  if (std::filesystem::equivalent(out, in, ec) || lies_within(out, in))
     throw InvalidInput(option + " " + out + " is the input " + in +
                        ", which would be overwritten: choose another output");
 }

@@ -32,22 +32,25 @@ fs::path mesh_beside(const fs::path& clump_csv) {
                      stem + ".stl (.obj, .ply) lies beside it");
 }
 
+// A template in SI (lengths × u, V × u³, I × u⁵) at unit density, its mass and moments times
+// the mass-equivalence factor (1, or V_mesh/V_clump); the density comes in layout_templates.
+TemplateBody scaled_template(const ClumpTemplate& c, double u, double factor, int template_id) {
+  TemplateBody t;
+  t.template_id = template_id;
+  for (const Sphere& s : c.spheres) t.spheres.push_back({u * s.center, u * s.radius});
+  t.volume = std::pow(u, 3) * c.mass.volume;
+  t.mass = factor * t.volume;
+  t.moments = factor * std::pow(u, 5) * c.principal_moments;
+  return t;
+}
+
 std::vector<TemplateBody> library_templates(const fs::path& dir, double u, bool mesh_mass) {
   const std::vector<dem::RockTemplate> rock = read_rock_templates(dir.string());
   const std::vector<double> factor = mesh_mass ? read_library_column(dir.string(), "density_factor")
                                                : std::vector<double>(rock.size(), 1.0);
   std::vector<TemplateBody> out;
-  for (std::size_t i = 0; i < rock.size(); ++i) {
-    const ClumpTemplate& c = rock[i].clump;
-    TemplateBody t;
-    t.template_id = static_cast<int>(i);
-    for (const Sphere& s : c.spheres) t.spheres.push_back({u * s.center, u * s.radius});
-    // The unit-density values times the mass equivalence; the density comes in layout.
-    t.volume = std::pow(u, 3) * c.mass.volume;
-    t.mass = factor[i] * t.volume;
-    t.moments = factor[i] * std::pow(u, 5) * c.principal_moments;
-    out.push_back(std::move(t));
-  }
+  for (std::size_t i = 0; i < rock.size(); ++i)
+    out.push_back(scaled_template(rock[i].clump, u, factor[i], static_cast<int>(i)));
   return out;
 }
 
@@ -62,13 +65,7 @@ TemplateBody clump_template(const fs::path& csv, double u, bool mesh_mass) {
                        ": the clump's volume and moments are not positive and "
                        "finite (volume " +
                        format_number(c.mass.volume) + ")");
-  TemplateBody t;
-  for (const Sphere& s : c.spheres) t.spheres.push_back({u * s.center, u * s.radius});
-  const double factor = mesh_mass ? c.density_factor : 1.0;
-  t.volume = std::pow(u, 3) * c.mass.volume;
-  t.mass = factor * t.volume;
-  t.moments = factor * std::pow(u, 5) * c.principal_moments;
-  return t;
+  return scaled_template(c, u, mesh_mass ? c.density_factor : 1.0, 0);
 }
 
 }  // namespace

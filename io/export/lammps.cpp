@@ -15,12 +15,16 @@ std::string lammps_run_command(int ranks) {
              : "mpirun --allow-run-as-root -np " + std::to_string(ranks) + " lmp -in in.clumpkit";
 }
 
-LammpsContact lammps_contact(const std::vector<SpecimenBody>& bodies,
-                             const EngineSettings& settings) {
+double lammps_atom_density(const SpecimenBody& body) {
+  double spheres_volume = 0;
+  for (const Sphere& s : body.spheres) spheres_volume += 4.0 / 3.0 * M_PI * std::pow(s.radius, 3);
+  return body.mass / spheres_volume;
+}
+
+LammpsContact lammps_contact(const SpecimenExtents& e, const EngineSettings& settings) {
   // Contact law: kn, kt = ks, μ; the dashpot c = 2β·sqrt(m_eff·kn) becomes LAMMPS's
   // γn = c/m_eff at the median body's m_eff = m/2 (LAMMPS scales the dashpot with each pair's
   // m_eff, clumpkit with sqrt(m_eff)); no tangential dashpot (γt = 0), no local damping.
-  const SpecimenExtents e = specimen_extents(bodies);
   const dem::ContactParams& c = settings.contact;
   const double m_eff = 0.5 * e.m_median;
   const double gamma_n = 2.0 * c.damping_ratio * std::sqrt(c.kn / m_eff);
@@ -70,10 +74,8 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
     std::size_t id = 0;
     for (const SpecimenBody& b : bodies) {
       const bool rock = b.kind == dem::BodyKind::rock;
-      double spheres_volume = 0;
-      for (const Sphere& s : b.spheres) spheres_volume += 4.0 / 3.0 * M_PI * std::pow(s.radius, 3);
       // Rock: Σ m_i = M (per-atom quantities only; the rigid fix takes M from the infile).
-      const double density = b.mass / spheres_volume;
+      const double density = lammps_atom_density(b);
       for (const Sphere& s : b.spheres)
         o << ++id << " " << (rock ? 1 : 2) << " " << format_number(s.center.x()) << " "
           << format_number(s.center.y()) << " " << format_number(s.center.z()) << " "
@@ -112,7 +114,7 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
   }));
 
   const dem::ContactParams& c = settings.contact;
-  const LammpsContact lc = lammps_contact(bodies, settings);
+  const LammpsContact lc = lammps_contact(e, settings);
   const double dt = lc.dt;
   const std::string& contact_args = lc.args;
   files.push_back(write_export_file(dir, "in.clumpkit", [&](std::ostream& o) {

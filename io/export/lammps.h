@@ -52,8 +52,11 @@ struct LammpsContact {
   std::string args;
   double dt = 0, skin = 0, cutoff = 0;
 };
-LammpsContact lammps_contact(const std::vector<SpecimenBody>& bodies,
-                             const EngineSettings& settings);
+LammpsContact lammps_contact(const SpecimenExtents& extents, const EngineSettings& settings);
+
+/// The atom density of a body's spheres that makes their masses sum to the body's mass M:
+/// M / Σ(4/3·π·r³) (the spheres overlap, so it is not the material density).
+double lammps_atom_density(const SpecimenBody& body);
 
 /// The deck lines both LAMMPS decks open with: SI units, spheres with molecule ids, fixed
 /// boundaries, newton off, ghost velocities and fix rigid/small's ghost cutoff.

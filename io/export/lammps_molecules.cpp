@@ -25,9 +25,7 @@ std::vector<std::string> write_lammps_molecules(const std::vector<SpecimenBody>&
   for (std::size_t k = 0; k < bodies.size(); ++k) {
     const SpecimenBody& b = bodies[k];
     const std::vector<Sphere> local = body_frame_spheres(b);
-    double spheres_volume = 0;
-    for (const Sphere& s : local) spheres_volume += 4.0 / 3.0 * M_PI * std::pow(s.radius, 3);
-    const double density = b.mass / spheres_volume;
+    const double density = lammps_atom_density(b);
     files.push_back(
         write_export_file(dir, lammps_molecule_name(b.template_id), [&](std::ostream& o) {
           // The first line of a molecule file is a comment; the header's mass, com and inertia
@@ -67,7 +65,7 @@ std::vector<std::string> write_lammps_molecules(const std::vector<SpecimenBody>&
 
   // The drop region: inside the cylinder and above the floor by the largest reach, so every
   // deposited sphere starts inside the container whatever its random orientation.
-  const LammpsContact lc = lammps_contact(bodies, settings);
+  const LammpsContact lc = lammps_contact(e, settings);
   const double pad = 2 * e.r_max, R = settings.container_radius, H = settings.container_height;
   const std::size_t n = bodies.size();
   files.push_back(write_export_file(dir, "in.deposit", [&](std::ostream& o) {

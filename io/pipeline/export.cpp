@@ -56,12 +56,12 @@ ExportResult run_export(const std::string& format, const std::string& source,
   ExportSource src = read_export_source(source, options.source);
   std::vector<SpecimenBody>& bodies = src.bodies;
   const EngineSettings& settings = src.settings;
+  const std::string not_specimen =
+      ", and " + source + " is " + (src.kind == "library" ? "a clump library" : "a clump CSV");
   if (tiles > 1 && src.templates)
-    throw InvalidInput("export: --tile copies a specimen, and " + source + " is " +
-                       (src.kind == "library" ? "a clump library" : "a clump CSV"));
+    throw InvalidInput("export: --tile copies a specimen" + not_specimen);
   if (options.lammps.oedometer && src.templates)
-    throw InvalidInput("export: --test oedometer tests a specimen, and " + source + " is " +
-                       (src.kind == "library" ? "a clump library" : "a clump CSV"));
+    throw InvalidInput("export: --test oedometer tests a specimen" + not_specimen);
   if (tiles > 1)
     bodies = tile_bodies(bodies, options.lammps.tiles_x, options.lammps.tiles_y,
                          2 * settings.container_radius);

@@ -26,13 +26,15 @@ void check_output_directory(const std::string& dir) {
                        "remove it or choose another --out");
 }
 
+bool lies_within(const std::string& path, const std::string& dir) {
+  std::error_code ec;
+  const fs::path d = fs::weakly_canonical(dir, ec), p = fs::weakly_canonical(path, ec);
+  return !d.empty() && std::mismatch(d.begin(), d.end(), p.begin(), p.end()).first == d.end();
+}
+
 void check_output_spares(const std::string& dir, const std::string& input,
                          const std::string& what) {
-  std::error_code ec;
-  const fs::path out = fs::weakly_canonical(dir, ec), in = fs::weakly_canonical(input, ec);
-  // `in` lies in `out` when `out` is a prefix of it, component by component.
-  const auto mismatch = std::mismatch(out.begin(), out.end(), in.begin(), in.end());
-  if (!out.empty() && mismatch.first == out.end())
+  if (lies_within(input, dir))
     throw InvalidInput("--out " + dir + " would replace " + what + " " + input +
                        ": choose another --out");
 }

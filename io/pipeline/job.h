@@ -52,6 +52,10 @@ nlohmann::ordered_json manifest_head(const std::string& command, const ShapeReci
 /// before they start.
 void check_output_directory(const std::string& dir);
 
+/// Whether `path` is `dir` or lies inside it, comparing canonical paths component by component
+/// (so any spelling of the same path, symbolic links resolved, counts as the same).
+bool lies_within(const std::string& path, const std::string& dir);
+
 /// Throws InvalidInput when replacing the output directory `dir` would remove the input `input`
 /// (the same path, whatever its spelling, or a file or directory inside it); `what` names the
 /// input in the message (e.g. "the source").
