@@ -32,8 +32,13 @@ void write_file_atomically(const std::string& path, const std::function<void(std
                                 : std::ios::out | std::ios::trunc);
   if (!out)
     fail(std::string("cannot create a temporary file for writing: ") + std::strerror(errno));
+  // The first failing write(2) leaves its errno (ENOSPC, EFBIG, EIO); later calls may not touch
+  // it, so the reason is taken as soon as the stream fails.
+  int reason = 0;
   try {
+    errno = 0;
     fill(out);
+    if (!out) reason = errno;
   } catch (...) {
     out.close();
     std::error_code ignored;
@@ -41,7 +46,10 @@ void write_file_atomically(const std::string& path, const std::function<void(std
     throw;
   }
   out.close();  // flushes; a full disk shows up here as a failed stream
-  if (!out) fail("write failed (disk full or I/O error)");
+  if (!out) {
+    if (reason == 0) reason = errno;
+    fail(std::string("write failed: ") + (reason != 0 ? std::strerror(reason) : "I/O error"));
+  }
   std::error_code ec;
   fs::rename(tmp, target, ec);
   if (ec) fail("cannot rename the temporary file into place: " + ec.message());

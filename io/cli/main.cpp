@@ -5,10 +5,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 
 int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f) would otherwise kill us mid-write with no word; ignored, the
+  // write fails with EFBIG and the atomic writer reports it and keeps the earlier file.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{
       "clumpkit " CLUMPKIT_VERSION
       " - irregular particles, sphere clumps and DEM specimens for geomaterials.\n"

@@ -4,12 +4,21 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -44,6 +53,8 @@ inline void write(const fs::path& p, const std::string& text) {
   o << text;
 }
 
+/// Runs `clumpkit ARGS` (in the test's working directory: give it absolute paths), its standard
+/// output and error captured through files in `dir`.
 inline Result run_cli(const std::string& args, const fs::path& dir) {
   const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
   const std::string cmd =
@@ -116,12 +127,104 @@ inline fs::path tiny_specimen_recipe(const fs::path& d) {
   return d / "tiny.toml";
 }
 
-// Builds the tiny specimen into `d`/spec (about 600 bodies, 6 s); fails the test if it cannot.
+// The tiny specimen is deterministic, so the tests that only read it share one build per binary:
+// the first to ask builds it under a lock in the build tree (test-cache/), the others wait and
+// copy it. (Under the sanitizers one build takes a minute; eight tests need it.)
+inline fs::path shared_tiny_specimen() {
+  const fs::path binary(CLUMPKIT_BINARY);
+  std::uint64_t key = 1469598103934665603ull;  // FNV-1a of the recipes and the binary's stamp
+  const std::string stamp = std::string(kTinyRocks) + kTinySpecimen +
+                            std::to_string(fs::file_size(binary)) +
+                            std::to_string(fs::last_write_time(binary).time_since_epoch().count());
+  for (unsigned char c : stamp) key = (key ^ c) * 1099511628211ull;
+  const fs::path cache = binary.parent_path() / "test-cache";
+  fs::create_directories(cache);
+  const fs::path dir = cache / ("tiny-" + std::to_string(key));
+  const int lock = ::open((dir.string() + ".lock").c_str(), O_CREAT | O_RDWR, 0644);
+  EXPECT_GE(lock, 0);
+  ::flock(lock, LOCK_EX);
+  if (!fs::exists(dir / "spec" / "manifest.json")) {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const Result r = run_cli("specimen --quiet --recipe " + tiny_specimen_recipe(dir).string() +
+                                 " --out " + (dir / "spec").string(),
+                             dir);
+    EXPECT_EQ(r.rc, 0) << r.err;
+  }
+  ::flock(lock, LOCK_UN);
+  ::close(lock);
+  return dir / "spec";
+}
+
+// The tiny specimen (about 600 bodies) and its recipes in `d` (spec/, tiny.toml, rocks.toml): a
+// copy of the shared build; fails the test if it cannot be built.
 inline void build_tiny_specimen(const fs::path& d) {
-  const Result r = run_cli("specimen --quiet --recipe " + tiny_specimen_recipe(d).string() +
-                               " --out " + (d / "spec").string(),
-                           d);
-  ASSERT_EQ(r.rc, 0) << r.err;
+  const fs::path spec = shared_tiny_specimen();
+  ASSERT_TRUE(fs::exists(spec / "manifest.json")) << "the tiny specimen was not built";
+  tiny_specimen_recipe(d);
+  fs::copy(spec, d / "spec", fs::copy_options::recursive);
+}
+
+/// `o` with every "seconds" member removed, at any depth (the wall-clock fields of reports).
+inline nlohmann::json without_seconds(nlohmann::json o) {
+  if (o.is_object()) {
+    o.erase("seconds");
+    for (auto& [key, value] : o.items()) value = without_seconds(value);
+  } else if (o.is_array()) {
+    for (auto& value : o) value = without_seconds(value);
+  }
+  return o;
+}
+
+/// Every file under `a` and `b` is the same, byte for byte, and both hold the same files; JSON
+/// files are compared with their wall-clock "seconds" fields left out.
+inline void expect_same_outputs(const fs::path& a, const fs::path& b) {
+  auto files = [](const fs::path& root) {
+    std::vector<fs::path> found;
+    for (const auto& e : fs::recursive_directory_iterator(root))
+      if (e.is_regular_file()) found.push_back(fs::relative(e.path(), root));
+    std::sort(found.begin(), found.end());
+    return found;
+  };
+  const std::vector<fs::path> in_a = files(a), in_b = files(b);
+  ASSERT_EQ(in_a, in_b) << a << " and " << b << " hold different files";
+  ASSERT_FALSE(in_a.empty()) << a;
+  for (const fs::path& f : in_a) {
+    if (f.extension() == ".json")
+      EXPECT_EQ(without_seconds(nlohmann::json::parse(slurp(a / f))),
+                without_seconds(nlohmann::json::parse(slurp(b / f))))
+          << f;
+    else
+      EXPECT_TRUE(slurp(a / f) == slurp(b / f)) << f << " differs";
+  }
+}
+
+/// Runs `clumpkit ARGS` with its standard error to `cwd`/stopped.err (and its working directory
+/// there), sends it SIGTERM after `seconds` and waits for it; returns its exit code (130 when it
+/// stopped at a safe point, 0 when it had already finished).
+inline int run_cli_stopped_after(const std::string& args, const fs::path& cwd, double seconds) {
+  char delay[32];
+  std::snprintf(delay, sizeof delay, "%.3f", seconds);
+  const std::string script = "cd " + cwd.string() + " && { " + CLUMPKIT_BINARY + " " + args +
+                             " >/dev/null 2>stopped.err & pid=$!; sleep " + delay +
+                             "; kill -TERM $pid 2>/dev/null; wait $pid; }";
+  const int status = std::system(("bash -c '" + script + "'").c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// A time drawn uniformly in [lo, hi] from the machine's entropy, so every run of a fault test
+/// stops its job somewhere else; the test prints it.
+inline double random_seconds(double lo, double hi) {
+  std::random_device entropy;
+  return std::uniform_real_distribution<double>(lo, hi)(entropy);
+}
+
+/// Wall-clock seconds `run` takes.
+template <class F>
+double timed(F&& run) {
+  const auto start = std::chrono::steady_clock::now();
+  run();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 /// Whitespace-separated numbers of every line of `path` not starting with '#'.

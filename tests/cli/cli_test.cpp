@@ -579,22 +579,3 @@ TEST(Cli, SpecimenBadRecipesFailBeforeSimulation) {
   EXPECT_FALSE(fs::exists(d / "o"));
   EXPECT_FALSE(fs::exists(d / "o.partial"));
 }
-
-TEST(Cli, QuickSpecimenReachesItsTargetRelativeDensity) {
-  const fs::path d = scratch();
-  const Result r = run_cli("specimen --quiet --json --recipe " + std::string(CLUMPKIT_SOURCE_DIR) +
-                               "/assets/recipes/quick-specimen.toml --out " + (d / "q").string(),
-                           d);
-  ASSERT_EQ(r.rc, 0) << r.err;
-  const auto report = nlohmann::json::parse(r.out);
-  std::printf("quick specimen: porosity %.4f, Dr %.3f, mu* %.3f, %.0f s\n",
-              report["porosity"].get<double>(), report["relative_density"].get<double>(),
-              report["friction_compaction"].get<double>(),
-              report["seconds"]["total"].get<double>());
-  EXPECT_NEAR(report["relative_density"].get<double>(), 0.5, 0.03);
-  double lo = 1, hi = 0;
-  for (double n : report["layer_porosity"]) lo = std::min(lo, n), hi = std::max(hi, n);
-  EXPECT_LE(hi - lo, 0.02);
-  // About the container height (0.2 m): the layer volumes follow the target porosity.
-  EXPECT_NEAR(report["height"].get<double>(), 0.2, 0.03);
-}

@@ -62,3 +62,58 @@ TEST(CliFaults, SpecimenRefusesAStageRecordThatFailsItsChecksum) {
   expect_one_line_error(r, "calibration-0.done: stage record checksum mismatch");
   EXPECT_FALSE(fs::exists(out));
 }
+
+// A library stopped by SIGTERM at a random time, then run again with the same command, ends
+// byte-identical to a run never stopped (twice, at times drawn afresh on every test run).
+TEST(CliFaults, LibraryStoppedAtRandomTimesEndsByteIdentical) {
+  const fs::path d = scratch();
+  std::string recipe = kTinyRocks;
+  recipe.replace(recipe.find("count = 6"), 9, "count = 60");
+  write(d / "rocks.toml", recipe);
+  // Every run writes to the same --out (an output may name its directory), then is moved aside.
+  const std::string out = (d / "lib").string();
+  const std::string run =
+      "library --quiet --recipe " + (d / "rocks.toml").string() + " --out " + out;
+  Result r;
+  const double whole = timed([&] { r = run_cli(run, d); });
+  ASSERT_EQ(r.rc, 0) << r.err;
+  fs::rename(out, d / "clean");
+  for (int k = 0; k < 2; ++k) {
+    const double when = random_seconds(0.05 * whole, 0.95 * whole);
+    const int rc = run_cli_stopped_after(run, d, when);
+    std::printf("library of %.2f s stopped by SIGTERM after %.3f s: exit %d\n", whole, when, rc);
+    EXPECT_TRUE(rc == 130 || rc == 0) << slurp(d / "stopped.err");
+    if (rc == 130) {
+      EXPECT_FALSE(fs::exists(out));
+    }
+    r = run_cli(run, d);
+    ASSERT_EQ(r.rc, 0) << r.err;
+    EXPECT_FALSE(fs::exists(out + ".partial"));
+    const fs::path at = d / ("stopped-" + std::to_string(k));
+    fs::rename(out, at);
+    expect_same_outputs(d / "clean", at);
+  }
+}
+
+// A file-size limit hit mid-write (ulimit -f; clumpkit ignores SIGXFSZ so the write error
+// surfaces) gives exit 2 and one line naming the file, and leaves the earlier output intact with
+// no temporary file beside it.
+TEST(CliFaults, FileSizeLimitMidWriteKeepsTheEarlierOutput) {
+  const fs::path d = scratch();
+  const std::string shape = "shape ellipsoid --axes 3,2,1 --level 5 -o ";
+  Result r = run_cli(shape + (d / "big.stl").string(), d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  ASSERT_GT(fs::file_size(d / "big.stl"), 200000u);
+  write(d / "out.stl", "earlier output\n");
+  const std::string limited = "ulimit -f 64; exec " + std::string(CLUMPKIT_BINARY) + " " + shape +
+                              (d / "out.stl").string() + " 2>" + (d / "err.txt").string();
+  const int status = std::system(("bash -c '" + limited + "'").c_str());
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by a signal: SIGXFSZ not ignored";
+  Result limit;
+  limit.rc = WEXITSTATUS(status);
+  limit.err = slurp(d / "err.txt");
+  expect_one_line_error(limit, "out.stl: write failed: File too large");
+  EXPECT_EQ(slurp(d / "out.stl"), "earlier output\n");
+  for (const auto& e : fs::directory_iterator(d))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+}
