@@ -1,5 +1,6 @@
 #include "geom/descriptors/descriptors.h"
 
+#include "geom/descriptors/farthest_pair.h"
 #include "geom/errors.h"
 #include "geom/mesh/cgal_mesh.h"
 
@@ -183,25 +184,14 @@ double polygon_perimeter(const std::vector<Vec2>& poly) {
   return s;
 }
 
-// Caliper dimensions of a point set (see caliper_dimensions). O(n²) in the number of points, so
-// callers pass convex-hull vertices.
+// Caliper dimensions of a point set (see caliper_dimensions); callers pass convex-hull vertices.
 CaliperDimensions caliper_of_points(const std::vector<Vec3>& pts) {
   CaliperDimensions c;
   const size_t n = pts.size();
-  double best = 0.0;
-  size_t bi = 0, bj = 0;
-  for (size_t i = 0; i < n; ++i)
-    for (size_t j = i + 1; j < n; ++j) {
-      const double d2 = (pts[j] - pts[i]).squaredNorm();
-      if (d2 > best) {
-        best = d2;
-        bi = i;
-        bj = j;
-      }
-    }
-  if (!(best > 0.0)) return c;
-  c.L = std::sqrt(best);
-  c.dir_L = canonical_sign((pts[bj] - pts[bi]) / c.L);
+  const FarthestPair longest = farthest_pair(pts);
+  if (!(longest.squared_distance > 0.0)) return c;
+  c.L = std::sqrt(longest.squared_distance);
+  c.dir_L = canonical_sign((pts[longest.j] - pts[longest.i]) / c.L);
 
   // W: diameter of the projection on the plane perpendicular to L (attained at hull vertices of
   // the projection).
@@ -211,16 +201,12 @@ CaliperDimensions caliper_of_points(const std::vector<Vec3>& pts) {
   flat.reserve(n);
   for (const auto& x : pts) flat.emplace_back(x.dot(p), x.dot(q));
   const std::vector<Vec2> h = hull_2d(std::move(flat));
-  double wbest = 0.0;
-  Vec2 wdir(1.0, 0.0);
-  for (size_t i = 0; i < h.size(); ++i)
-    for (size_t j = i + 1; j < h.size(); ++j) {
-      const double d2 = (h[j] - h[i]).squaredNorm();
-      if (d2 > wbest) {
-        wbest = d2;
-        wdir = h[j] - h[i];
-      }
-    }
+  std::vector<Vec3> lifted;  // z = 0 adds nothing to any squared distance
+  lifted.reserve(h.size());
+  for (const Vec2& x : h) lifted.emplace_back(x.x(), x.y(), 0.0);
+  const FarthestPair widest = farthest_pair(lifted);
+  const double wbest = widest.squared_distance;
+  const Vec2 wdir = wbest > 0.0 ? Vec2(h[widest.j] - h[widest.i]) : Vec2(1.0, 0.0);
   c.W = std::sqrt(wbest);
   c.dir_W = wbest > 0.0 ? canonical_sign((wdir.x() * p + wdir.y() * q).normalized()) : p;
   c.dir_H = c.dir_L.cross(c.dir_W).normalized();
