@@ -60,6 +60,7 @@ struct Inputs {
     write(d / "negative.toml", edited(rocks, w, "W = -0.01"));
     write(d / "huge.toml", edited(rocks, w, "W = 1e300"));
     write(d / "zero.toml", edited(rocks, w, "W = 0"));
+    write(d / "many.toml", edited(rocks, "count = 6", "count = 1000000000000"));
     tiny_specimen_recipe(d);  // tiny.toml (its rock recipe: rocks.toml)
     write(d / "spec_nan.toml", edited(spec, "diameter = 0.060", "diameter = nan"));
     write(d / "spec_negative.toml", edited(spec, "height = 0.100", "height = -0.1"));
@@ -90,10 +91,16 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
   cases.push_back({"fill " + in("box.stl") + " -o " + pf + ".csv", "parent_file", ""});
   cases.push_back({"fill " + in("box.stl") + " -o " + csv_out + " --min-radius -1", "-1", csv_out});
   cases.push_back({"fill " + in("box.stl") + " -o " + csv_out + " --spheres 0", "0", csv_out});
+  // Requests that would exhaust memory are refused before allocating, with the estimate.
+  cases.push_back({"fill " + in("box.stl") + " -o " + csv_out + " --voxel-size 1e-6",
+                   "distance field would have", csv_out});
   // volume CLUMP
   for (const char* f : {"missing.csv", "a_dir", "empty.csv", "garbage.csv", "trunc.csv", "nan.csv",
                         "zero.csv", "negative.csv", "huge.csv", "tiny.csv"})
     cases.push_back({"volume " + in(f), f, ""});
+  cases.push_back({"volume " + in("good.csv") + " --method voxel --voxel 1e-6", "2e9 voxels", ""});
+  cases.push_back(
+      {"volume " + in("good.csv") + " --method pixel-slice --slices 1000000", "exceeds 1e8", ""});
   // shape box --size -o OUT
   for (const char* size : {"0,1,1", "-1,1,1", "1e300,1,1", "1e-300,1,1", "nan,1,1"})
     cases.push_back(
@@ -111,6 +118,9 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
     cases.push_back({std::string(command) + " --quiet --recipe " + in("rocks.toml") + " --out " +
                          in("rocks.toml"),
                      "rocks.toml", ""});
+    cases.push_back(
+        {std::string(command) + " --quiet --recipe " + in("many.toml") + " --out " + out,
+         "fraction[0].count", out});
   }
   // specimen --recipe R --out D
   for (const char* f : {"missing.toml", "a_dir", "empty.toml", "garbage.toml", "trunc.toml",
