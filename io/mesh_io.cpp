@@ -436,6 +436,10 @@ Mesh read_ply(const std::string& path, const std::string& data) {
         const double n = body.read(prop.count_type, e, i);
         if (!(n >= 0))  // also rejects NaN from a float count type
           bad(path, "negative list length in element '" + shown(e.name) + "' " + std::to_string(i));
+        // A float count type can hold any magnitude; past 2^31 entries no file is that long.
+        if (n > 2147483647.0)
+          bad(path, "list length " + format_number(n) + " in element '" + shown(e.name) + "' " +
+                        std::to_string(i) + " is beyond any file");
         const bool indices =
             is_face && (prop.name == "vertex_indices" || prop.name == "vertex_index");
         face.clear();

@@ -234,6 +234,9 @@ std::vector<SpecimenBody> read_specimen_csv(const std::string& path) {
   auto integer = [&](const std::string& cell, const char* field) {
     const double v = number(cell, field);
     if (v != std::floor(v)) bad("field " + std::string(field) + ": not an integer: '" + cell + "'");
+    // Ids and counts index memory: beyond 2^53 they are not even exact doubles.
+    if (!(std::abs(v) <= 9007199254740992.0))
+      bad("field " + std::string(field) + ": integer out of range: '" + cell + "'");
     return static_cast<long>(v);
   };
   const std::string format_line =
@@ -268,7 +271,10 @@ std::vector<SpecimenBody> read_specimen_csv(const std::string& path) {
         b.kind = dem::BodyKind::soil;
       else
         bad("field kind: expected rock or soil, found '" + c[1] + "'");
-      b.template_id = static_cast<int>(integer(c[2], "template"));
+      const long template_id = integer(c[2], "template");
+      if (template_id < -1 || template_id > 2147483647L)
+        bad("field template: out of range: '" + c[2] + "'");
+      b.template_id = static_cast<int>(template_id);
       b.position = Vec3(number(c[3], "x"), number(c[4], "y"), number(c[5], "z"));
       b.orientation = Eigen::Quaterniond(number(c[6], "qw"), number(c[7], "qx"), number(c[8], "qy"),
                                          number(c[9], "qz"));

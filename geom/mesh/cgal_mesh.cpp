@@ -128,7 +128,13 @@ bool orient_outward(Mesh& mesh) {
     throw InvalidInput("mesh is not manifold: orienting it required duplicating vertices");
   SurfaceMesh sm;
   PMP::polygon_soup_to_polygon_mesh(pts, polys, sm);
-  if (CGAL::is_closed(sm)) PMP::orient_to_bound_a_volume(sm);
+  if (CGAL::is_closed(sm)) {
+    // orient_to_bound_a_volume requires a surface that does not intersect itself (it reads out
+    // of bounds otherwise, e.g. on two copies of one triangle); such a surface bounds no volume.
+    if (PMP::does_self_intersect(sm))
+      throw InvalidInput("the surface intersects itself, so it bounds no volume");
+    PMP::orient_to_bound_a_volume(sm);
+  }
   Mesh out = from_surface_mesh(sm);
   bool changed = out.triangles.size() != mesh.triangles.size();
   for (size_t i = 0; !changed && i < out.triangles.size(); ++i) {

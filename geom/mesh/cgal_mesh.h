@@ -16,6 +16,8 @@ bool self_intersects(const Mesh& mesh);
 
 /// Makes the orientation of a closed manifold mesh consistent and outward (CGAL PMP
 /// orient_polygon_soup + orient_to_bound_a_volume). Returns true if any triangle was flipped.
+/// Throws InvalidInput when that needs duplicated vertices (not manifold) or when the closed
+/// surface intersects itself.
 bool orient_outward(Mesh& mesh);
 
 }  // namespace clumpkit
