@@ -115,16 +115,29 @@ bool self_intersects(const Mesh& mesh) {
 }
 
 bool orient_outward(Mesh& mesh) {
+  // Only the vertices of triangles go to CGAL: an isolated vertex becomes a vertex without a
+  // halfedge, on which orient_to_bound_a_volume reads out of bounds (found by fuzz_mesh_obj).
+  std::vector<int> compact(mesh.vertices.size(), -1);
+  std::vector<int> original;
   std::vector<Point> pts;
-  pts.reserve(mesh.vertices.size());
-  for (const auto& p : mesh.vertices) pts.emplace_back(p.x(), p.y(), p.z());
   std::vector<std::vector<std::size_t>> polys;
   polys.reserve(mesh.triangles.size());
-  for (const auto& t : mesh.triangles)
-    polys.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
-  const auto before = polys;
+  for (const auto& t : mesh.triangles) {
+    std::vector<std::size_t> poly;
+    for (int v : t) {
+      if (compact[std::size_t(v)] < 0) {
+        compact[std::size_t(v)] = int(original.size());
+        original.push_back(v);
+        const Vec3& p = mesh.vertices[std::size_t(v)];
+        pts.emplace_back(p.x(), p.y(), p.z());
+      }
+      poly.push_back(std::size_t(compact[std::size_t(v)]));
+    }
+    polys.push_back(std::move(poly));
+  }
+  const std::size_t used = pts.size();
   PMP::orient_polygon_soup(pts, polys);
-  if (pts.size() != mesh.vertices.size())
+  if (pts.size() != used)
     throw InvalidInput("mesh is not manifold: orienting it required duplicating vertices");
   SurfaceMesh sm;
   PMP::polygon_soup_to_polygon_mesh(pts, polys, sm);
@@ -135,7 +148,10 @@ bool orient_outward(Mesh& mesh) {
       throw InvalidInput("the surface intersects itself, so it bounds no volume");
     PMP::orient_to_bound_a_volume(sm);
   }
-  Mesh out = from_surface_mesh(sm);
+  Mesh out = from_surface_mesh(sm);  // vertices in the order of `pts`
+  for (auto& t : out.triangles)
+    for (int& v : t) v = original[std::size_t(v)];
+  out.vertices = mesh.vertices;
   bool changed = out.triangles.size() != mesh.triangles.size();
   for (size_t i = 0; !changed && i < out.triangles.size(); ++i) {
     // Same triangle up to rotation of indices?

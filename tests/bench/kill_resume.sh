@@ -63,7 +63,7 @@ bench() {  # NAME ARGS...: the clean run, then N stopped and resumed runs
     rc=0
     wait "$pid" || rc=$?
     resumed=0
-    if [ "$rc" = 130 ]; then
+    if [ "$rc" != 0 ]; then  # 130: stopped at a safe point; 143: killed before it began
       start=$(date +%s.%N)
       # shellcheck disable=SC2086
       "$bin" "$@" $resume --quiet --out "$work/$name/out" >/dev/null

@@ -201,7 +201,8 @@ inline void expect_same_outputs(const fs::path& a, const fs::path& b) {
 
 /// Runs `clumpkit ARGS` with its standard error to `cwd`/stopped.err (and its working directory
 /// there), sends it SIGTERM after `seconds` and waits for it; returns its exit code (130 when it
-/// stopped at a safe point, 0 when it had already finished).
+/// stopped at a safe point, 0 when it had already finished, 143 when the signal came before it
+/// had installed its handler).
 inline int run_cli_stopped_after(const std::string& args, const fs::path& cwd, double seconds) {
   char delay[32];
   std::snprintf(delay, sizeof delay, "%.3f", seconds);

@@ -82,8 +82,11 @@ TEST(CliFaults, LibraryStoppedAtRandomTimesEndsByteIdentical) {
     const double when = random_seconds(0.05 * whole, 0.95 * whole);
     const int rc = run_cli_stopped_after(run, d, when);
     std::printf("library of %.2f s stopped by SIGTERM after %.3f s: exit %d\n", whole, when, rc);
-    EXPECT_TRUE(rc == 130 || rc == 0) << slurp(d / "stopped.err");
-    if (rc == 130) {
+    // 130: stopped at a safe point; 0: it had finished; 143: the signal came before the job
+    // installed its handler (a loaded machine can take that long to start the process), and
+    // killed it.
+    EXPECT_TRUE(rc == 130 || rc == 0 || rc == 143) << slurp(d / "stopped.err");
+    if (rc != 0) {
       EXPECT_FALSE(fs::exists(out));
     }
     r = run_cli(run, d);

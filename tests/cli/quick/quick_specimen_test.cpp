@@ -43,11 +43,16 @@ TEST(CliQuick, QuickSpecimenReachesItsTargetAndResumesByteIdenticalAfterSigterm)
     const int rc = run_cli_stopped_after(run, d, when);
     std::printf("quick specimen of %.0f s stopped by SIGTERM after %.1f s: exit %d\n", whole, when,
                 rc);
-    EXPECT_TRUE(rc == 130 || rc == 0) << slurp(d / "stopped.err");
+    // 130: stopped at a safe point; 0: it had finished; 143: the signal came before the job
+    // installed its handler (a loaded machine can take that long to start the process), and
+    // killed it.
+    EXPECT_TRUE(rc == 130 || rc == 0 || rc == 143) << slurp(d / "stopped.err");
     if (rc == 130) {
-      EXPECT_FALSE(fs::exists(out));
       EXPECT_NE(slurp(d / "stopped.err").find("continue with --resume"), std::string::npos)
           << slurp(d / "stopped.err");
+    }
+    if (rc != 0) {
+      EXPECT_FALSE(fs::exists(out));
       r = run_cli(run + " --resume", d);
       ASSERT_EQ(r.rc, 0) << r.err;
     }
