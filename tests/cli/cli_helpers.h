@@ -2,6 +2,8 @@
 // contract, and the tiny specimen recipe several commands share.
 #pragma once
 
+#include "geom/hash.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -132,11 +134,11 @@ inline fs::path tiny_specimen_recipe(const fs::path& d) {
 // copy it. (Under the sanitizers one build takes a minute; eight tests need it.)
 inline fs::path shared_tiny_specimen() {
   const fs::path binary(CLUMPKIT_BINARY);
-  std::uint64_t key = 1469598103934665603ull;  // FNV-1a of the recipes and the binary's stamp
+  // Keyed by the recipes and the binary's stamp, so a rebuilt binary builds afresh.
   const std::string stamp = std::string(kTinyRocks) + kTinySpecimen +
                             std::to_string(fs::file_size(binary)) +
                             std::to_string(fs::last_write_time(binary).time_since_epoch().count());
-  for (unsigned char c : stamp) key = (key ^ c) * 1099511628211ull;
+  const std::uint64_t key = clumpkit::fnv1a(stamp.data(), stamp.size());
   const fs::path cache = binary.parent_path() / "test-cache";
   fs::create_directories(cache);
   const fs::path dir = cache / ("tiny-" + std::to_string(key));
