@@ -2,6 +2,7 @@
 
 #include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"
+#include "geom/format.h"
 #include "geom/mesh/ray_inside.h"
 
 #include <tbb/parallel_for.h>
@@ -56,6 +57,36 @@ double field_voxel_size(const Mesh& mesh, const FieldOptions& o) {
   return f.extents[0] / o.voxels;
 }
 
+namespace {
+
+// Grid dimensions: voxel centres from about two voxels below the box to two above.
+std::array<int, 3> field_dims(const std::array<Vec3, 2>& bb, double h) {
+  std::array<int, 3> dims{};
+  for (int k = 0; k < 3; ++k) {
+    const double n = std::ceil((bb[1][k] - bb[0][k]) / h) + 5;
+    if (!(n < 2e9))
+      throw InvalidInput("distance field would have " + format_number(n) +
+                         " voxels along one axis: use fewer --voxels or a larger voxel size");
+    dims[k] = static_cast<int>(n);
+  }
+  return dims;
+}
+
+double product(const std::array<int, 3>& d) {
+  return double(d[0]) * d[1] * d[2];
+}
+
+}  // namespace
+
+double field_voxel_count(const Mesh& mesh, const FieldOptions& options) {
+  return product(field_dims(bounding_box(mesh), field_voxel_size(mesh, options)));
+}
+
+double fill_bytes_estimate(const Mesh& mesh, const FieldOptions& options) {
+  return 64.0 * 1048576.0 + 16.0 * field_voxel_count(mesh, options) +
+         450.0 * double(mesh.triangles.size());
+}
+
 DistanceField make_distance_field(const Mesh& mesh, const FieldOptions& options) {
   init_openvdb();
   const double h = field_voxel_size(mesh, options);
@@ -66,15 +97,21 @@ DistanceField make_distance_field(const Mesh& mesh, const FieldOptions& options)
   // side. The half-voxel offset keeps axis-aligned faces (boxes!) off the voxel centres, where
   // a centre at distance 0 would drop a whole layer of cells from the interior count.
   const Vec3 lo = bb[0] - 1.5 * h * Vec3::Ones();
-  double total = 1.0;
-  for (int k = 0; k < 3; ++k) {
-    f.dims[k] = static_cast<int>(std::ceil((bb[1][k] - bb[0][k]) / h)) + 5;
-    total *= f.dims[k];
+  f.dims = field_dims(bb, h);
+  const double total = product(f.dims);
+  if (total > 2e9)
+    throw InvalidInput("distance field would have " + format_number(total) +
+                       " voxels (limit 2e9): use fewer --voxels or a larger voxel size");
+  if (options.max_bytes > 0) {
+    const double need = fill_bytes_estimate(mesh, options);
+    if (!(need <= options.max_bytes))
+      throw InvalidInput("fill would need an estimated " + format_number(need / 1073741824.0, 3) +
+                         " GiB (" + format_number(total) + " voxels of size " + format_number(h) +
+                         ", " + std::to_string(mesh.triangles.size()) +
+                         " triangles), more than --max-memory " +
+                         format_number(options.max_bytes / 1073741824.0, 3) +
+                         " GiB: use fewer --voxels or a larger voxel size");
   }
-  if (total > 2e8)
-    throw InvalidInput("distance field would have " +
-                       std::to_string(static_cast<long long>(total)) +
-                       " voxels (limit 2e8): use fewer --voxels or a larger voxel size");
   f.origin = lo;
 
   // OpenVDB index space: voxel (i, j, k) centre at h (i, j, k) relative to lo. Points are shifted

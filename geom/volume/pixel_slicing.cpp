@@ -1,6 +1,7 @@
 #include "geom/volume/pixel_slicing.h"
 
 #include "geom/errors.h"
+#include "geom/format.h"
 #include "geom/volume/slicing.h"
 
 #include <opencv2/core.hpp>
@@ -13,7 +14,17 @@
 
 namespace clumpkit {
 
-PixelSliceResult pixel_slice_volume(const Clump& clump, const PixelSliceOptions& opt) {
+namespace {
+
+// Slice spacing, pixel size and the one pixel grid every slice shares (anchored at the clump's
+// lower xy corner).
+struct SliceGrid {
+  double spacing = 0, pixel = 0;
+  int slices = 0, cols = 0, rows = 0;
+  Vec3 lo, hi;
+};
+
+SliceGrid slice_grid(const Clump& clump, const PixelSliceOptions& opt) {
   validate(clump);
   if (opt.slices_across_smallest < 1)
     throw InvalidInput("pixel slicing: slices_across_smallest must be at least 1, got " +
@@ -21,28 +32,49 @@ PixelSliceResult pixel_slice_volume(const Clump& clump, const PixelSliceOptions&
   if (!(opt.pixel >= 0.0) || !std::isfinite(opt.pixel))
     throw InvalidInput("pixel slicing: pixel size must be finite and >= 0, got " +
                        std::to_string(opt.pixel));
-
+  SliceGrid g;
   double rmin = clump.spheres[0].radius;
-  Vec3 lo = clump.spheres[0].center, hi = lo;
+  g.lo = clump.spheres[0].center;
+  g.hi = g.lo;
   for (const Sphere& s : clump.spheres) {
     rmin = std::min(rmin, s.radius);
-    lo = lo.cwiseMin(Vec3(s.center.array() - s.radius));
-    hi = hi.cwiseMax(Vec3(s.center.array() + s.radius));
+    g.lo = g.lo.cwiseMin(Vec3(s.center.array() - s.radius));
+    g.hi = g.hi.cwiseMax(Vec3(s.center.array() + s.radius));
   }
-  PixelSliceResult res;
-  res.spacing = 2.0 * rmin / opt.slices_across_smallest;
-  res.pixel = opt.pixel > 0.0 ? opt.pixel : res.spacing;
-  const double h = res.spacing, p = res.pixel;
+  g.spacing = 2.0 * rmin / opt.slices_across_smallest;
+  g.pixel = opt.pixel > 0.0 ? opt.pixel : g.spacing;
   // Slabs of height h from z_min; the last may overhang z_max (its slice is then empty or thin).
-  res.slices = std::max(1, static_cast<int>(std::ceil((hi.z() - lo.z()) / h - 1e-9)));
+  const double slices = std::ceil((g.hi.z() - g.lo.z()) / g.spacing - 1e-9);
+  const double cols = std::ceil((g.hi.x() - g.lo.x()) / g.pixel - 1e-9);
+  const double rows = std::ceil((g.hi.y() - g.lo.y()) / g.pixel - 1e-9);
+  // An int indexes slices, rows and columns (cv::Mat), and one slice's pixels.
+  if (!(slices < 2e9) || !(cols * rows < 2e9))
+    throw InvalidInput("pixel slicing: " + format_number(slices) + " slices of " +
+                       format_number(cols) + " x " + format_number(rows) +
+                       " pixels is beyond the 2e9 an index holds; use fewer slices or a larger "
+                       "pixel");
+  g.slices = std::max(1, static_cast<int>(slices));
+  g.cols = std::max(1, static_cast<int>(cols));
+  g.rows = std::max(1, static_cast<int>(rows));
+  return g;
+}
 
-  // One pixel grid for every slice, anchored at the clump's lower xy corner.
-  const int cols = std::max(1, static_cast<int>(std::ceil((hi.x() - lo.x()) / p - 1e-9)));
-  const int rows = std::max(1, static_cast<int>(std::ceil((hi.y() - lo.y()) / p - 1e-9)));
-  if (static_cast<double>(cols) * rows > 1e8)
-    throw InvalidInput("pixel slicing: a slice of " + std::to_string(cols) + " x " +
-                       std::to_string(rows) +
-                       " pixels exceeds 1e8; use fewer slices or a larger pixel");
+}  // namespace
+
+double pixel_slice_bytes_estimate(const Clump& clump, const PixelSliceOptions& opt) {
+  const SliceGrid g = slice_grid(clump, opt);
+  return 64.0 * 1048576.0 + 3.0 * double(g.cols) * g.rows + 64.0 * double(clump.spheres.size());
+}
+
+PixelSliceResult pixel_slice_volume(const Clump& clump, const PixelSliceOptions& opt) {
+  const SliceGrid g = slice_grid(clump, opt);
+  PixelSliceResult res;
+  res.spacing = g.spacing;
+  res.pixel = g.pixel;
+  res.slices = g.slices;
+  const double h = res.spacing, p = res.pixel;
+  const int cols = g.cols, rows = g.rows;
+  const Vec3 lo = g.lo;
   cv::Mat image(rows, cols, CV_8UC1);
 
   std::vector<Disk> disks;

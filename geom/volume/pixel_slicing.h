@@ -51,4 +51,9 @@ struct PixelSliceResult {
 /// Throws InvalidInput for bad spheres or options, or when one slice would exceed 10⁸ pixels.
 PixelSliceResult pixel_slice_volume(const Clump& clump, const PixelSliceOptions& opt);
 
+/// Estimated peak bytes of pixel_slice_volume: 3 per pixel of one slice (the image, its inverted
+/// copy and the PNG encoder's buffer when slices are written), 64 per ball and 64 MiB for the
+/// program. Throws what pixel_slice_volume throws for bad options.
+double pixel_slice_bytes_estimate(const Clump& clump, const PixelSliceOptions& opt);
+
 }  // namespace clumpkit

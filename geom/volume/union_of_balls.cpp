@@ -407,4 +407,8 @@ UnionProperties union_properties(const Clump& clump) {
   return out;
 }
 
+double union_bytes_estimate(const Clump& clump) {
+  return 64.0 * 1048576.0 + 1500.0 * double(clump.spheres.size());
+}
+
 }  // namespace clumpkit

@@ -1,6 +1,7 @@
 #include "geom/volume/voxel_volume.h"
 
 #include "geom/errors.h"
+#include "geom/format.h"
 
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Composite.h>
@@ -14,23 +15,49 @@
 
 namespace clumpkit {
 
-VoxelVolumeResult voxel_volume(const Clump& clump, double voxel_size) {
+namespace {
+
+struct Box {
+  Vec3 lo, hi;
+};
+
+// The clump's bounding box, after checking the input.
+Box checked_box(const Clump& clump, double voxel_size) {
   validate(clump);
   if (!(voxel_size > 0.0) || !std::isfinite(voxel_size))
     throw InvalidInput("voxel volume: voxel size must be positive and finite, got " +
                        std::to_string(voxel_size));
+  Box b{clump.spheres[0].center, clump.spheres[0].center};
+  for (const Sphere& s : clump.spheres) {
+    b.lo = b.lo.cwiseMin(Vec3(s.center.array() - s.radius));
+    b.hi = b.hi.cwiseMax(Vec3(s.center.array() + s.radius));
+  }
+  const Vec3 cells = (b.hi - b.lo) / voxel_size;
+  if (!(cells.maxCoeff() < 1e9))
+    throw InvalidInput("voxel volume: voxel size " + format_number(voxel_size) + " gives " +
+                       format_number(cells.maxCoeff()) +
+                       " voxels along one axis, beyond OpenVDB's 32-bit coordinates; use a "
+                       "larger voxel");
+  return b;
+}
+
+}  // namespace
+
+double voxel_volume_bytes_estimate(const Clump& clump, double voxel_size) {
+  checked_box(clump, voxel_size);
+  double surface = 0;
+  for (const Sphere& s : clump.spheres) {
+    const double r = s.radius / voxel_size;
+    if (r >= 1.5) surface += 4.0 * M_PI * r * r;  // OpenVDB drops smaller balls
+  }
+  return 64.0 * 1048576.0 + 100.0 * surface;
+}
+
+VoxelVolumeResult voxel_volume(const Clump& clump, double voxel_size) {
+  const Box box = checked_box(clump, voxel_size);
+  const Vec3 lo = box.lo, hi = box.hi;
   static std::once_flag once;
   std::call_once(once, [] { openvdb::initialize(); });
-
-  Vec3 lo = clump.spheres[0].center, hi = lo;
-  for (const Sphere& s : clump.spheres) {
-    lo = lo.cwiseMin(Vec3(s.center.array() - s.radius));
-    hi = hi.cwiseMax(Vec3(s.center.array() + s.radius));
-  }
-  const Vec3 cells = (hi - lo) / voxel_size;
-  if (cells.prod() > 2e9)
-    throw InvalidInput("voxel volume: voxel size " + std::to_string(voxel_size) +
-                       " gives more than 2e9 voxels; use a larger voxel");
   const Vec3 ref = 0.5 * (lo + hi);
 
   openvdb::FloatGrid::Ptr grid;

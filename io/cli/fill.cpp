@@ -38,6 +38,7 @@ void register_fill(CLI::App& app) {
     std::string mesh, out;
     FillOptions fill;
     int spheres = -1;
+    double max_memory_gib = 0;  // 0: half of this machine's memory
     bool json = false, allow_open = false;
   };
   auto o = std::make_shared<Opts>();
@@ -65,6 +66,9 @@ void register_fill(CLI::App& app) {
                 "Reach past the surface as a fraction of each sphere's inscribed radius; 0 with "
                 "--tolerance 0 keeps every sphere inside")
       ->capture_default_str();
+  c->add_option("--max-memory", o->max_memory_gib,
+                "Refuse, before allocating, a fill estimated to need more than this many GiB "
+                "(default: half of this machine's memory)");
   c->add_flag("--allow-open", o->allow_open,
               "Accept a mesh that is not watertight: inside/outside by Embree ray-parity voting "
               "(the report says so; volumes are then approximate)");
@@ -74,6 +78,7 @@ void register_fill(CLI::App& app) {
     if (o->spheres == 0 || o->spheres < -1)
       throw InvalidInput("--spheres must be at least 1, got " + std::to_string(o->spheres));
     o->fill.spheres = std::max(0, o->spheres);
+    o->fill.field.max_bytes = max_memory_bytes(o->max_memory_gib);
     validate(o->fill);
     check_not_input(o->out, "--output", o->mesh);
     MeshReadReport report;

@@ -16,6 +16,7 @@ void register_library(CLI::App& app) {
   struct Opts {
     std::string recipe, out;
     int threads = 0;
+    double max_memory_gib = 0;  // 0: half of this machine's memory
     bool png = false, quiet = false, json = false;
   };
   auto o = std::make_shared<Opts>();
@@ -32,6 +33,9 @@ void register_library(CLI::App& app) {
   c->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->capture_default_str();
   c->add_flag("--png", o->png,
               "Also write NNNNN.png: three views with mesh silhouette and sphere outlines");
+  c->add_option("--max-memory", o->max_memory_gib,
+                "Refuse a particle whose fill is estimated to need more than this many GiB "
+                "divided by the threads (default: half of this machine's memory)");
   c->add_flag("--quiet", o->quiet, "No progress bar");
   c->add_flag("--json", o->json, "Print a JSON summary on stdout");
   c->callback([o] {
@@ -41,6 +45,7 @@ void register_library(CLI::App& app) {
     ProgressBar bar("library", o->quiet);
     LibraryOptions lo;
     lo.png = o->png;
+    lo.max_memory_bytes = max_memory_bytes(o->max_memory_gib);
     const auto r = run_library(recipe, o->out, lo, signal_interrupter(bar, "library"));
     bar.finish();
     for (const std::string& f : r.redone)

@@ -42,6 +42,7 @@ void register_volume(CLI::App& app) {
     std::string clump, method = "exact", rule = "touch", png;
     int slices = 100;
     double pixel = 0.0, voxel = 0.0;
+    double max_memory_gib = 0;  // 0: half of this machine's memory
     bool json = false;
   };
   auto o = std::make_shared<Opts>();
@@ -66,6 +67,9 @@ void register_volume(CLI::App& app) {
       ->capture_default_str();
   c->add_option("--png", o->png, "pixel-slice: write slice images into this directory");
   c->add_option("--voxel", o->voxel, "voxel: voxel size (default: smallest radius / 10)");
+  c->add_option("--max-memory", o->max_memory_gib,
+                "Refuse, before computing anything, a method estimated to need more than this "
+                "many GiB (default: half of this machine's memory)");
   c->add_flag("--json", o->json, "Print one JSON object keyed by method on stdout");
   c->callback([o] {
     const std::vector<std::string> known = {
@@ -76,8 +80,35 @@ void register_volume(CLI::App& app) {
           "' (known: exact, inclusion-exclusion, analytic-slice, pixel-slice, voxel, all)");
     if (o->rule != "centre" && o->rule != "center" && o->rule != "touch")
       throw InvalidInput("--rule: expected centre or touch, got '" + o->rule + "'");
+    const double budget = max_memory_bytes(o->max_memory_gib);
     const Clump clump = read_clump(o->clump);
     auto want = [&](const char* m) { return o->method == m || o->method == "all"; };
+    PixelSliceOptions po;
+    po.slices_across_smallest = o->slices;
+    po.pixel = o->pixel;
+    po.rule = o->rule == "touch" ? PixelRule::Touch : PixelRule::Centre;
+    double h = o->voxel;
+    if (h <= 0) {
+      double rmin = clump.spheres[0].radius;
+      for (const auto& s : clump.spheres) rmin = std::min(rmin, s.radius);
+      h = rmin / 10.0;
+    }
+    // Every method asked for is checked before the first one runs, so a refusal costs nothing.
+    auto check = [&](const char* method, double need, const std::string& advice) {
+      if (!(need <= budget))
+        throw InvalidInput("volume --method " + std::string(method) + " on " + o->clump +
+                           " would need an estimated " + format_number(need / 1073741824.0, 3) +
+                           " GiB, more than --max-memory " +
+                           format_number(budget / 1073741824.0, 3) + " GiB: " + advice);
+    };
+    if (want("exact") || want("analytic-slice") || want("inclusion-exclusion"))
+      check(o->method == "all" ? "exact" : o->method.c_str(), union_bytes_estimate(clump),
+            "split the clump");
+    if (want("pixel-slice"))
+      check("pixel-slice", pixel_slice_bytes_estimate(clump, po),
+            "use fewer --slices or a larger --pixel");
+    if (want("voxel"))
+      check("voxel", voxel_volume_bytes_estimate(clump, h), "use a larger --voxel");
     nlohmann::ordered_json out;
     if (want("exact")) {
       const double t0 = now();
@@ -102,10 +133,6 @@ void register_volume(CLI::App& app) {
     }
     if (want("pixel-slice")) {
       const double t0 = now();
-      PixelSliceOptions po;
-      po.slices_across_smallest = o->slices;
-      po.pixel = o->pixel;
-      po.rule = o->rule == "touch" ? PixelRule::Touch : PixelRule::Centre;
       if (!o->png.empty()) {
         std::error_code ec;
         std::filesystem::create_directories(o->png, ec);
@@ -124,12 +151,6 @@ void register_volume(CLI::App& app) {
                             {"pixel", p.pixel},   {"rule", o->rule},    {"seconds", now() - t0}};
     }
     if (want("voxel")) {
-      double h = o->voxel;
-      if (h <= 0) {
-        double rmin = clump.spheres[0].radius;
-        for (const auto& s : clump.spheres) rmin = std::min(rmin, s.radius);
-        h = rmin / 10.0;
-      }
       const double t0 = now();
       const VoxelVolumeResult v = voxel_volume(clump, h);
       out["voxel"] = {{"volume", v.volume_levelset},

@@ -13,6 +13,7 @@
 #include "io/views.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -53,6 +54,35 @@ std::string record_checksum(const nlohmann::ordered_json& rec) {
   return h.hex();
 }
 
+// The memory one fill may use: the budget shared by the fills running at once.
+double fill_memory_share(const LibraryOptions& options) {
+  if (!(options.max_memory_bytes > 0)) return 0.0;
+  return options.max_memory_bytes / std::max(1, tbb::this_task_arena::max_concurrency());
+}
+
+// Refuses, before any output exists, a recipe whose first particle of some fraction would fill
+// beyond its memory share (the particles of a fraction share their resolution and proportions,
+// so the first stands for the rest; a later one beyond it is refused when its turn comes).
+void check_fill_memory(const ShapeRecipe& recipe, const std::vector<int>& fraction_of,
+                       const LibraryOptions& options) {
+  const double share = fill_memory_share(options);
+  if (share <= 0) return;
+  std::vector<char> seen(recipe.fractions.size(), 0);
+  for (std::size_t i = 0; i < fraction_of.size(); ++i) {
+    if (seen[fraction_of[i]]) continue;
+    seen[fraction_of[i]] = 1;
+    Rng rng = Rng::stream(recipe.seed, i);
+    const GeneratedShape shape = generate_shape(recipe.fractions[fraction_of[i]], rng);
+    const double need = fill_bytes_estimate(shape.mesh, recipe.fill.field);
+    if (!(need <= share))
+      throw InvalidInput(
+          "fraction " + recipe.fractions[fraction_of[i]].name + ": the fill of particle " +
+          std::to_string(i) + " would need an estimated " + format_number(need / 1073741824.0, 3) +
+          " GiB, more than its share of --max-memory (" + format_number(share / 1073741824.0, 3) +
+          " GiB per thread): lower fill.voxels or use fewer --threads");
+  }
+}
+
 // One particle, start to finish; returns its record (also written as NNNNN.json).
 nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, int fraction,
                                      const fs::path& dir, const LibraryOptions& options) {
@@ -60,7 +90,9 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
   const FractionSpec& spec = recipe.fractions[fraction];
   const GeneratedShape shape = generate_shape(spec, rng);
   const Descriptors desc = describe(shape.mesh);
-  const FillResult filled = fill(shape.mesh, recipe.fill);
+  FillOptions fill_options = recipe.fill;
+  fill_options.field.max_bytes = fill_memory_share(options);
+  const FillResult filled = fill(shape.mesh, fill_options);
   if (filled.clump.spheres.empty())
     throw InvalidInput("no sphere fits (fill.min_radius " + format_number(recipe.fill.min_radius) +
                        ")");
@@ -130,6 +162,8 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
   // DIR.partial of the same recipe is a killed run's work and is resumed; one of another
   // recipe is stale and starts afresh.
   check_output_directory(out_dir);
+  const std::vector<int> fraction_of = particle_fractions(recipe);
+  check_fill_memory(recipe, fraction_of, options);
   const fs::path out = out_dir + ".partial", parts = out / "particles";
   const fs::path stamp = out / "recipe.toml";
   std::error_code ec;
@@ -139,7 +173,6 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
   if (ec) throw IoError(out.string() + ": cannot create directory: " + ec.message());
   write_file_atomically(stamp.string(), [&](std::ostream& o) { o << recipe.text; });
 
-  const std::vector<int> fraction_of = particle_fractions(recipe);
   const std::size_t total = fraction_of.size();
 
   std::vector<nlohmann::ordered_json> records(total);

@@ -11,6 +11,10 @@ namespace clumpkit {
 
 struct LibraryOptions {
   bool png = false;  ///< also write particles/NNNNN.png (three views, mesh and sphere outlines)
+  /// Memory the particles being filled at once may share (bytes, 0: no limit): each fill gets
+  /// this divided by the worker threads, and one whose estimate exceeds its share is refused
+  /// before allocating (the finished particles stay for a resume).
+  double max_memory_bytes = 0;
 };
 
 struct LibraryResult {

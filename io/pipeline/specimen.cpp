@@ -29,8 +29,11 @@ SpecimenJobResult build_into(const SpecimenRecipe& recipe, const std::string& ou
   std::string library = recipe.library;
   if (library.empty() && !recipe.library_recipe.empty()) {
     const fs::path lib = staging / "library";
-    if (!(options.resume && fs::exists(lib / "manifest.json")))
-      run_library(read_shape_recipe(recipe.library_recipe), lib.string(), {}, interrupter);
+    if (!(options.resume && fs::exists(lib / "manifest.json"))) {
+      LibraryOptions lo;
+      lo.max_memory_bytes = options.max_memory_bytes;
+      run_library(read_shape_recipe(recipe.library_recipe), lib.string(), lo, interrupter);
+    }
     library = lib.string();
   }
   std::vector<dem::RockTemplate> templates;

@@ -97,13 +97,20 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
   // Requests that would exhaust memory are refused before allocating, with the estimate.
   cases.push_back({"fill " + in("box.stl") + " -o " + csv_out + " --voxel-size 1e-6",
                    "distance field would have", csv_out});
+  cases.push_back({"fill " + in("box.stl") + " -o " + csv_out + " --voxels 400 --max-memory 1",
+                   "would need an estimated", csv_out});
   // volume CLUMP
   for (const char* f : {"missing.csv", "a_dir", "empty.csv", "garbage.csv", "trunc.csv", "nan.csv",
                         "zero.csv", "negative.csv", "huge.csv", "tiny.csv"})
     cases.push_back({"volume " + in(f), f, ""});
-  cases.push_back({"volume " + in("good.csv") + " --method voxel --voxel 1e-6", "2e9 voxels", ""});
-  cases.push_back(
-      {"volume " + in("good.csv") + " --method pixel-slice --slices 1000000", "exceeds 1e8", ""});
+  cases.push_back({"volume " + in("good.csv") + " --method voxel --voxel 1e-10", "32-bit", ""});
+  cases.push_back({"volume " + in("good.csv") + " --method voxel --voxel 1e-4 --max-memory 1",
+                   "would need an estimated", ""});
+  cases.push_back({"volume " + in("good.csv") + " --method pixel-slice --slices 1000000",
+                   "beyond the 2e9", ""});
+  cases.push_back({"volume " + in("good.csv") + " --method all --slices 20000 --max-memory 1",
+                   "pixel-slice on " + in("good.csv") + " would need an estimated", ""});
+  cases.push_back({"volume " + in("good.csv") + " --max-memory -1", "--max-memory", ""});
   // shape box --size -o OUT
   for (const char* size : {"0,1,1", "-1,1,1", "1e300,1,1", "1e-300,1,1", "nan,1,1"})
     cases.push_back(
@@ -125,6 +132,9 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
         {std::string(command) + " --quiet --recipe " + in("many.toml") + " --out " + out,
          "fraction[0].count", out});
   }
+  cases.push_back(
+      {"library --quiet --max-memory 0.01 --recipe " + in("rocks.toml") + " --out " + out,
+       "would need an estimated", out});
   // specimen --recipe R --out D
   for (const char* f : {"missing.toml", "a_dir", "empty.toml", "garbage.toml", "trunc.toml",
                         "spec_nan.toml", "spec_negative.toml", "spec_huge.toml"})
