@@ -34,6 +34,10 @@ struct Body {
   BodyKind kind = BodyKind::soil;
   int template_id = -1;  ///< index of the template in its library; −1 for a plain soil sphere
   double scale = 1.0;    ///< template length scale (body = template × scale); 1 for soil
+  /// Volume-equivalent diameter (m) that sizes its contact stiffness under linear scaling;
+  /// 0: World::add_body sets the sphere's diameter for a plain sphere, else (6·volume/π)^(1/3)
+  /// (left 0 for a clump without a volume, which only a size-scaled law refuses).
+  double diameter = 0.0;
 
   Vec3 position = Vec3::Zero();  ///< centroid in the world (m)
   Vec3 velocity = Vec3::Zero();  ///< m/s (at the half step, leapfrog)

@@ -22,6 +22,18 @@ double restitution_from_damping_ratio(double beta) {
   return std::exp(-beta * kPi / std::sqrt(1.0 - beta * beta));
 }
 
+void validate(const ContactParams& p) {
+  auto positive = [](double v, const char* what) {
+    if (!(v > 0.0) || !std::isfinite(v))
+      throw InvalidInput(std::string("contact: ") + what + " must be positive and finite, got " +
+                         std::to_string(v));
+  };
+  positive(p.kn, "kn");
+  if (!(p.ks >= 0.0) || !std::isfinite(p.ks))
+    throw InvalidInput("contact: ks must be finite and >= 0, got " + std::to_string(p.ks));
+  if (p.scaling == StiffnessScaling::linear) positive(p.d_ref, "d_ref (linear stiffness scaling)");
+}
+
 void update_contact(ContactState& s, const Vec3& normal, double overlap, const Vec3& point,
                     const Vec3& v, double effective_mass, const ContactParams& p, double dt) {
   update_contact_force(s.shear, s.normal_force, normal, overlap, v,

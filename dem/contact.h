@@ -10,10 +10,18 @@
 
 namespace clumpkit::dem {
 
+/// How contact stiffness depends on particle size.
+enum class StiffnessScaling {
+  none,   ///< every contact has kn and ks
+  linear  ///< kn ∝ d (zones.md §3, Thakur et al. 2015): see pair_stiffness_factor
+};
+
 /// Contact parameters (SI). Defaults follow Jin et al. 2017 §4.1 (kn = ks = 1e6 N/m, μ = 0.8).
 struct ContactParams {
-  double kn = 1e6;        ///< normal stiffness (N/m)
-  double ks = 1e6;        ///< shear stiffness (N/m)
+  double kn = 1e6;  ///< normal stiffness (N/m); with linear scaling kn_ref, at d = d_ref
+  double ks = 1e6;  ///< shear stiffness (N/m); with linear scaling ks at d = d_ref
+  StiffnessScaling scaling = StiffnessScaling::none;
+  double d_ref = 0.0;     ///< reference diameter of linear scaling (m)
   double friction = 0.8;  ///< Coulomb coefficient μ
   /// Viscous normal damping ratio β (0 = none): dashpot c = 2·β·sqrt(m_eff·kn). Use
   /// damping_ratio_from_restitution(e) to ask for a restitution coefficient instead.
@@ -22,6 +30,33 @@ struct ContactParams {
   /// F_k -= α·|F_k|·sign(v_k) for each force and torque component (local_damping()).
   double local_damping = 0.0;
 };
+
+/// Factor f on kn and ks for a contact of bodies of volume-equivalent diameters d_i and d_j
+/// (every sphere of a clump has its body's d): 1 without scaling; with linear scaling the two
+/// particle springs k_i = 2·kn_ref·d_i/d_ref in series, kn_ij = 2·(kn_ref/d_ref)·d_i·d_j /
+/// (d_i + d_j), so f = 2·d_i·d_j / ((d_i + d_j)·d_ref) (equal sizes: d/d_ref). Written so that
+/// scaling both diameters by a power of two scales f exactly (zones.md §3 similarity).
+inline double pair_stiffness_factor(const ContactParams& p, double d_i, double d_j) {
+  if (p.scaling == StiffnessScaling::none) return 1.0;
+  return (2.0 * d_i) * d_j / ((d_i + d_j) * p.d_ref);
+}
+
+/// The factor for a body of diameter d on a rigid wall: the series limit d_j → ∞ of
+/// pair_stiffness_factor, 2·d/d_ref.
+inline double wall_stiffness_factor(const ContactParams& p, double d) {
+  if (p.scaling == StiffnessScaling::none) return 1.0;
+  return 2.0 * d / p.d_ref;
+}
+
+/// p with kn and ks multiplied by `factor` (the rest unchanged).
+inline ContactParams scaled_stiffness(ContactParams p, double factor) {
+  p.kn *= factor;
+  p.ks *= factor;
+  return p;
+}
+
+/// Throws InvalidInput for stiffnesses or a scaling reference that are not positive and finite.
+void validate(const ContactParams& p);
 
 /// Damping ratio giving restitution e in a head-on collision of the linear spring-dashpot:
 /// β = −ln e / sqrt(π² + ln² e) (from e = exp(−β·π / sqrt(1 − β²)); the classical result for

@@ -217,7 +217,7 @@ double interpolate_friction(const std::vector<CalibrationPoint>& c, double targe
 // The canonical text must name every field: these asserts fail to compile when a field is added
 // to one of the structs, so it cannot be forgotten here (a forgotten contact parameter would let
 // --resume mix two specs).
-static_assert(sizeof(ContactParams) == 5 * sizeof(double), "add the new field to canonical_text");
+static_assert(sizeof(ContactParams) == 7 * sizeof(double), "add the new field to canonical_text");
 static_assert(sizeof(ParticleClass) == 3 * sizeof(double) + sizeof(double),
               "add the new field to canonical_text");
 
@@ -237,6 +237,11 @@ std::string canonical_text(const SpecimenSpec& s) {
   line("contact.friction", format_number(s.contact.friction));
   line("contact.damping_ratio", format_number(s.contact.damping_ratio));
   line("contact.local_damping", format_number(s.contact.local_damping));
+  // Written only when set, so the fingerprints of specimens made before scaling existed hold.
+  if (s.contact.scaling != StiffnessScaling::none) {
+    line("contact.scaling", "linear");
+    line("contact.d_ref", format_number(s.contact.d_ref));
+  }
   line("target_relative_density", format_number(s.target_relative_density));
   for (double f : s.calibration_frictions) line("calibration_friction", format_number(f));
   line("seed", std::to_string(s.seed));

@@ -37,7 +37,11 @@ double body_critical_timestep(const Body& body, double kn, double ks) {
 double critical_timestep(const World& world) {
   const ContactParams& p = world.options().contact;
   double dt = std::numeric_limits<double>::infinity();
-  for (const Body& b : world.bodies()) dt = std::min(dt, body_critical_timestep(b, p.kn, p.ks));
+  // With size-scaled stiffness a body's stiffest contact is with a wall (the series limit).
+  for (const Body& b : world.bodies()) {
+    const double f = wall_stiffness_factor(p, b.diameter);
+    dt = std::min(dt, body_critical_timestep(b, p.kn * f, p.ks * f));
+  }
   return dt;
 }
 

@@ -7,7 +7,8 @@ namespace clumpkit::dem {
 
 /// A rigid wall. Plane: the half-space side of `normal` is the inside; it translates with
 /// `velocity` (m/s). Cylinder: the inside of an infinite vertical (z) cylinder of `radius`
-/// around the axis through `point` (its x, y); static.
+/// around the axis through `point` (its x, y); its radius grows at `radial_velocity` (m/s,
+/// negative: it closes in), which a servo sets for a confining stress.
 struct Wall {
   enum class Kind { plane, cylinder };
   Kind kind = Kind::plane;
@@ -15,6 +16,10 @@ struct Wall {
   Vec3 normal = Vec3::UnitZ();   ///< unit, into the domain (plane only)
   double radius = 0.0;           ///< m (cylinder only)
   Vec3 velocity = Vec3::Zero();  ///< m/s (plane only)
+  double radial_velocity = 0.0;  ///< dR/dt, m/s (cylinder only)
+  /// Coulomb coefficient of sphere–wall contacts; negative: the contact law's μ. Element-test
+  /// cells use 0 (frictionless walls, so wall and Love–Weber stresses agree).
+  double friction = -1.0;
 
   /// Throws InvalidInput for a zero or non-finite normal; the normal is normalised.
   static Wall plane(const Vec3& point, const Vec3& normal, const Vec3& velocity = Vec3::Zero());

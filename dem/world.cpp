@@ -46,6 +46,7 @@ World::World(WorldOptions options) : options_(options) {
   if (!(options_.near_skin_fraction > 0.0 && options_.near_skin_fraction <= 1.0))
     throw InvalidInput("DEM world: near_skin_fraction must be in (0, 1], got " +
                        std::to_string(options_.near_skin_fraction));
+  validate(options_.contact);
   body_first_sphere_.push_back(0);
 }
 
@@ -54,6 +55,17 @@ int World::add_body(Body body) {
   if (body.spheres.empty()) throw InvalidInput("DEM world: body has no spheres");
   if (!(body.mass > 0.0) || !(body.moments.minCoeff() > 0.0))
     throw InvalidInput("DEM world: body mass and moments must be positive");
+  if (body.diameter <= 0.0) {
+    // A plain sphere's own diameter, exactly (no cube root): scaled copies stay exact.
+    if (body.spheres.size() == 1 && body.spheres[0].center.isZero(0.0))
+      body.diameter = 2.0 * body.spheres[0].radius;
+    else if (body.volume > 0.0)
+      body.diameter = std::cbrt(6.0 * body.volume / 3.14159265358979323846);
+  }
+  if (options_.contact.scaling != StiffnessScaling::none &&
+      (!(body.diameter > 0.0) || !std::isfinite(body.diameter)))
+    throw InvalidInput(
+        "DEM world: size-scaled stiffness needs each body's diameter (give it or a volume)");
   const int index = static_cast<int>(bodies_.size());
   for (const Sphere& s : body.spheres) {
     sphere_body_.push_back(index);
@@ -265,7 +277,10 @@ void World::rescale_friction(double new_friction) {
                        std::to_string(new_friction));
   options_.contact.friction = new_friction;
   for (PairContact& c : contacts_) dem::rescale_friction(c.state, new_friction);
-  for (WallContact& c : wall_contacts_) dem::rescale_friction(c.state, new_friction);
+  for (WallContact& c : wall_contacts_) {
+    const double own = walls_[c.wall].friction;  // a wall with its own μ keeps it
+    dem::rescale_friction(c.state, own >= 0.0 ? own : new_friction);
+  }
   sc.pairs_valid_ = sc.walls_valid_ = false;  // the slots take the new states from the lists
 }
 

@@ -70,17 +70,26 @@ void World::derive_pair_index() {
   sc.slot_geometry_.resize(m);
   sc.slot_active_.assign(m, 0);
   sc.slot_damping_.resize(m);
+  sc.slot_stiffness_.resize(m);
   sc.damping_valid_ = false;
 }
 
-// The dashpot of every candidate pair from the bodies' current (packed) masses.
+// The dashpot and stiffness factor of every candidate pair from the bodies' current (packed)
+// masses and diameters.
 void World::update_damping() {
   StepCache& sc = cache_.get();
   const ContactParams& p = options_.contact;
+  const bool scaled = p.scaling != StiffnessScaling::none;
   parallel_items(candidates_.size(), [&](std::size_t k) {
-    const double ma = sc.kinematics_[sphere_body_[candidates_[k].first]].mass;
-    const double mb = sc.kinematics_[sphere_body_[candidates_[k].second]].mass;
-    sc.slot_damping_[k] = normal_dashpot(ma * mb / (ma + mb), p);
+    const int a = sphere_body_[candidates_[k].first], b = sphere_body_[candidates_[k].second];
+    const double ma = sc.kinematics_[a].mass, mb = sc.kinematics_[b].mass;
+    if (scaled) {
+      const double f = pair_stiffness_factor(p, sc.body_diameter_[a], sc.body_diameter_[b]);
+      sc.slot_stiffness_[k] = f;
+      sc.slot_damping_[k] = normal_dashpot(ma * mb / (ma + mb), scaled_stiffness(p, f));
+    } else {
+      sc.slot_damping_[k] = normal_dashpot(ma * mb / (ma + mb), p);
+    }
   });
   sc.damping_valid_ = true;
 }
@@ -129,9 +138,11 @@ bool World::walls_moved() const {
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     const Wall& a = walls_[w];
     const Wall& b = sc.walls_at_build_[w];
-    if (a.kind != b.kind || a.radius != b.radius || a.normal != b.normal) return true;
+    if (a.kind != b.kind || a.normal != b.normal) return true;
     if (a.kind == Wall::Kind::cylinder) {
       if (a.point.x() != b.point.x() || a.point.y() != b.point.y()) return true;
+      // A servo-driven radius, like a plane, may move half the skin before new candidates.
+      if (!(std::abs(a.radius - b.radius) <= 0.5 * options_.skin)) return true;
     } else if (!(std::abs((a.point - b.point).dot(a.normal)) <= 0.5 * options_.skin)) {
       return true;
     }
@@ -204,6 +215,7 @@ void World::compute_forces() {
   StepCache& sc = cache_.get();
   const double dt = options_.timestep;
   const ContactParams& p = options_.contact;
+  const bool scaled = p.scaling != StiffnessScaling::none;
   if (!sc.damping_valid_) update_damping();
 
   // Pair contacts, one slot per candidate: a touching pair keeps its shear history when it
@@ -241,8 +253,12 @@ void World::compute_forces() {
     const Vec3 point = sphere_world_[i] + (sphere_radius_[i] - 0.5 * delta) * n;
     const Vec3 va = point_velocity(a.velocity, a.angular_velocity, point, a.position);
     const Vec3 vb = point_velocity(b.velocity, b.angular_velocity, point, b.position);
-    update_contact_force(state.shear, state.normal_force, n, delta, vb - va, sc.slot_damping_[k], p,
-                         dt);
+    if (scaled)
+      update_contact_force(state.shear, state.normal_force, n, delta, vb - va, sc.slot_damping_[k],
+                           scaled_stiffness(p, sc.slot_stiffness_[k]), dt);
+    else
+      update_contact_force(state.shear, state.normal_force, n, delta, vb - va, sc.slot_damping_[k],
+                           p, dt);
     if (sc.record_geometry_) sc.slot_geometry_[k] = SlotGeometry{n, point, delta};
     const Vec3 f = state.normal_force * n + state.shear;  // ContactState::force()
     // Body of j receives +f, body of i −f (sum_wrench forms the torques).
@@ -265,8 +281,16 @@ void World::compute_forces() {
     sc.wall_slot_active_[k] = 1;
     const Kinematics& b = sc.kinematics_[sphere_body_[s]];
     const Vec3 vb = b.velocity + b.angular_velocity.cross(hit.point - b.position);
-    const Vec3 vw = walls_[w].kind == Wall::Kind::plane ? walls_[w].velocity : Vec3::Zero();
-    update_contact(state, hit.normal, hit.overlap, hit.point, vb - vw, b.mass, p, dt);
+    const Wall& wall = walls_[w];
+    // A growing cylinder's surface moves along −normal (outward) at radial_velocity.
+    const Vec3 vw = wall.kind == Wall::Kind::plane ? wall.velocity
+                    : wall.radial_velocity != 0.0  ? Vec3(-wall.radial_velocity * hit.normal)
+                                                   : Vec3(Vec3::Zero());
+    const int body = sphere_body_[s];
+    ContactParams q =
+        scaled ? scaled_stiffness(p, wall_stiffness_factor(p, sc.body_diameter_[body])) : p;
+    if (wall.friction >= 0.0) q.friction = wall.friction;
+    update_contact(state, hit.normal, hit.overlap, hit.point, vb - vw, b.mass, q, dt);
   });
 
   // The sums per body are made by integrate(), in the same pass that advances the body.

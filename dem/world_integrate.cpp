@@ -29,8 +29,10 @@ void World::load_bodies() {
   sc.body_wrench_.resize(nb);
   sc.rotation_.resize(nb);
   sc.body_touched_.assign(nb, 0);
+  sc.body_diameter_.resize(nb);
   parallel_items(nb, [&](std::size_t k) {
     const Body& b = bodies_[k];
+    sc.body_diameter_[k] = b.diameter;
     sc.kinematics_[k] = Kinematics{b.position, b.velocity, b.angular_velocity, b.mass};
     sc.body_wrench_[k] = Wrench{b.force, b.torque};
     Spin spin = Spin::general;
@@ -140,8 +142,12 @@ void World::integrate() {
   });
   sc.positions_fresh_ = true;
   sc.moved_ = !have_reference || moved.load();
-  for (Wall& w : walls_)
-    if (w.kind == Wall::Kind::plane) w.point += w.velocity * dt;
+  for (Wall& w : walls_) {
+    if (w.kind == Wall::Kind::plane)
+      w.point += w.velocity * dt;
+    else if (w.radial_velocity != 0.0)
+      w.radius += w.radial_velocity * dt;
+  }
 }
 
 }  // namespace clumpkit::dem

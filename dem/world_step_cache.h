@@ -80,6 +80,10 @@ struct StepCache {
   // Per candidate: the normal dashpot 2·β·sqrt(m_eff·kn) (update_contact's formula), computed
   // when the candidates or the masses change instead of at every contact and step.
   std::vector<double> slot_damping_;
+  // Per candidate: the factor on kn and ks of the size rule (pair_stiffness_factor), computed
+  // with the dashpot; per body its diameter (packed by load_bodies). Unused without scaling.
+  std::vector<double> slot_stiffness_;
+  std::vector<double> body_diameter_;
   bool damping_valid_ = false;
   // Per candidate, the contact state in two parts: what the contact law carries from step to
   // step (read and written every step), and the geometry (normal, point, overlap), which only

@@ -155,6 +155,7 @@ struct WorldCodec {
     w.f64(o.near_skin_fraction);
     w.f64(o.contact.kn), w.f64(o.contact.ks), w.f64(o.contact.friction);
     w.f64(o.contact.damping_ratio), w.f64(o.contact.local_damping);
+    w.u8(o.contact.scaling == StiffnessScaling::none ? 0 : 1), w.f64(o.contact.d_ref);
     w.i64(lists.steps);
     w.f64(lists.time);
     w.i64(lists.builds);
@@ -173,11 +174,13 @@ struct WorldCodec {
       w.u8(static_cast<std::uint8_t>(b.kind));
       w.i32(b.template_id);
       w.f64(b.scale);
+      w.f64(b.diameter);
     }
     w.u64(world.walls().size());
     for (const Wall& wall : world.walls()) {
       w.u8(wall.kind == Wall::Kind::plane ? 0 : 1);
       w.vec(wall.point), w.vec(wall.normal), w.f64(wall.radius), w.vec(wall.velocity);
+      w.f64(wall.radial_velocity), w.f64(wall.friction);
     }
     w.u64(world.contacts().size());
     for (const PairContact& c : world.contacts()) w.i32(c.i), w.i32(c.j), w.state(c.state);
@@ -203,6 +206,10 @@ struct WorldCodec {
     o.near_skin_fraction = r.f64();
     o.contact.kn = r.f64(), o.contact.ks = r.f64(), o.contact.friction = r.f64();
     o.contact.damping_ratio = r.f64(), o.contact.local_damping = r.f64();
+    const std::uint8_t scaling = r.u8();
+    if (scaling > 1) r.fail("unknown stiffness scaling " + std::to_string(scaling));
+    o.contact.scaling = scaling == 0 ? StiffnessScaling::none : StiffnessScaling::linear;
+    o.contact.d_ref = r.f64();
     const std::int64_t steps = r.i64();
     const double time = r.f64();
     const std::int64_t builds = r.i64();
@@ -240,6 +247,7 @@ struct WorldCodec {
       b.kind = static_cast<BodyKind>(kind);
       b.template_id = r.i32();
       b.scale = r.f64();
+      b.diameter = r.f64();
       const Eigen::Quaterniond q = b.orientation;
       try {
         world.add_body(std::move(b));
@@ -249,7 +257,7 @@ struct WorldCodec {
       world.bodies().back().orientation = q;  // exact bits, not re-normalised
     }
 
-    const std::size_t walls = r.count(1 + 10 * 8, "wall");
+    const std::size_t walls = r.count(1 + 12 * 8, "wall");
     for (std::size_t k = 0; k < walls; ++k) {
       Wall wall;
       const std::uint8_t kind = r.u8();
@@ -257,6 +265,7 @@ struct WorldCodec {
         r.fail("unknown kind " + std::to_string(kind) + " of wall " + std::to_string(k));
       wall.kind = kind == 0 ? Wall::Kind::plane : Wall::Kind::cylinder;
       wall.point = r.vec(), wall.normal = r.vec(), wall.radius = r.f64(), wall.velocity = r.vec();
+      wall.radial_velocity = r.f64(), wall.friction = r.f64();
       world.add_wall(wall);
     }
 

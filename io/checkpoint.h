@@ -11,7 +11,7 @@ namespace clumpkit {
 
 /// Current checkpoint format version (bumped on any layout change, or a change in what a
 /// stored word means: 4 = run_until's height reference is the one after the window test).
-inline constexpr std::uint32_t kCheckpointVersion = 4;
+inline constexpr std::uint32_t kCheckpointVersion = 5;
 
 /// Writes `world` and `info` to `path`: magic "CLUMPKITCKPT", version, then little-endian
 /// integers and raw IEEE-754 doubles — options (gravity, timestep, skin, near-skin fraction,

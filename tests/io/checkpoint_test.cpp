@@ -42,10 +42,16 @@ void write_bytes(const std::string& path, const std::string& bytes) {
 // down.
 // Gravity, friction, viscous damping: contacts with shear history form within a few hundred
 // steps.
-World make_deposition(int spheres, bool platen = true) {
+// `scaled`: kn ∝ d (d_ref 1 cm), a frictionless floor and a cylinder closing in at 1 cm/s — every
+// field a servo-driven element test adds to the world.
+World make_deposition(int spheres, bool platen = true, bool scaled = false) {
   WorldOptions o;
   o.contact.kn = 1e5;
   o.contact.ks = 1e5;
+  if (scaled) {
+    o.contact.scaling = StiffnessScaling::linear;
+    o.contact.d_ref = 0.01;
+  }
   o.contact.friction = 0.5;
   o.contact.damping_ratio = 0.3;
   World world(o);
@@ -74,8 +80,13 @@ World make_deposition(int spheres, bool platen = true) {
     c.angular_velocity = Vec3(rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-5, 5));
     world.add_body(std::move(c));
   }
-  world.add_wall(Wall::plane(Vec3::Zero(), Vec3::UnitZ()));
-  world.add_wall(Wall::cylinder(0.0, 0.0, R));
+  Wall floor = Wall::plane(Vec3::Zero(), Vec3::UnitZ()), side = Wall::cylinder(0.0, 0.0, R);
+  if (scaled) {
+    floor.friction = 0.0;
+    side.radial_velocity = -0.01;
+  }
+  world.add_wall(floor);
+  world.add_wall(side);
   if (platen) world.add_wall(Wall::plane(Vec3(0, 0, top + 0.03), -Vec3::UnitZ(), Vec3(0, 0, -0.2)));
   world.options().timestep = 0.2 * critical_timestep(world);
   return world;
@@ -121,8 +132,10 @@ void expect_identical(const World& a, const World& b) {
     EXPECT_TRUE(same_bits(x.state.shear, y.state.shear)) << "wall contact " << k;
   }
   ASSERT_EQ(a.walls().size(), b.walls().size());
-  for (std::size_t k = 0; k < a.walls().size(); ++k)
+  for (std::size_t k = 0; k < a.walls().size(); ++k) {
     EXPECT_TRUE(same_bits(a.walls()[k].point, b.walls()[k].point)) << "wall " << k;
+    EXPECT_TRUE(same_bits(a.walls()[k].radius, b.walls()[k].radius)) << "wall " << k;
+  }
 }
 
 bool any_shear(const World& w) {
@@ -157,6 +170,28 @@ TEST(DemCheckpoint, HalfRunCheckpointLoadContinuesBitIdentically) {
 
   resumed.step(kSteps / 2);
   expect_identical(straight, resumed);
+  std::filesystem::remove(path);
+}
+
+TEST(DemCheckpoint, SizeScaledLawAndServoWallsContinueBitIdentically) {
+  constexpr int kSteps = 6000;
+  World straight = make_deposition(160, true, true);
+  straight.step(kSteps);
+  World first = make_deposition(160, true, true);
+  first.step(kSteps / 2);
+  ASSERT_FALSE(first.wall_contacts().empty());
+  const std::string path = temp_path("scaled.ckpt");
+  save_checkpoint(path, first);
+  World resumed = load_checkpoint(path);
+  EXPECT_EQ(resumed.options().contact.scaling, StiffnessScaling::linear);
+  EXPECT_EQ(resumed.options().contact.d_ref, 0.01);
+  EXPECT_EQ(resumed.walls()[0].friction, 0.0);
+  EXPECT_EQ(resumed.walls()[1].radial_velocity, -0.01);
+  for (std::size_t k = 0; k < first.bodies().size(); ++k)
+    EXPECT_TRUE(same_bits(first.bodies()[k].diameter, resumed.bodies()[k].diameter));
+  resumed.step(kSteps / 2);
+  expect_identical(straight, resumed);
+  EXPECT_LT(straight.walls()[1].radius, 0.05);  // the cylinder did close in
   std::filesystem::remove(path);
 }
 

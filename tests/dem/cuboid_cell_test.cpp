@@ -1,0 +1,58 @@
+// Servo-controlled cuboid cell (issue 16 acceptance 5): a servo wall holds its target stress at
+// equilibrium, and the Love–Weber stress of the settled packing equals the walls' stress.
+#include "dem/cuboid_cell.h"
+#include "dem/stress.h"
+#include "geom/errors.h"
+#include "loose_packing.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+using namespace clumpkit;
+using namespace clumpkit::dem;
+
+TEST(DemServo, SpeedClosesTheErrorAgainstTheContactStiffness) {
+  ServoGain g;
+  g.relaxation = 0.5;
+  g.max_speed = 1.0;
+  // Under-stressed by 1 kPa on 1 m² against 1e6 N/m in a 1e-4 s step: move in 0.5·1e3/1e6 m
+  // in that step, 5 m/s, clamped to 1.
+  EXPECT_DOUBLE_EQ(servo_speed(99e3, 100e3, 1.0, 1e6, 1e-4, g), 1.0);
+  EXPECT_DOUBLE_EQ(servo_speed(99.99e3, 100e3, 1.0, 1e6, 1e-4, g), 0.05);
+  EXPECT_DOUBLE_EQ(servo_speed(100.01e3, 100e3, 1.0, 1e6, 1e-4, g), -0.05);
+  EXPECT_DOUBLE_EQ(servo_speed(0, 100e3, 1.0, 0.0, 1e-4, g), 1.0);  // no contact: close in
+  g.relaxation = 0;
+  EXPECT_THROW(servo_speed(0, 1, 1, 1, 1, g), InvalidInput);
+}
+
+TEST(DemServo, SettledIsotropicPackingHoldsItsTargetAndLoveWeberMatchesTheWalls) {
+  test::LoosePacking p = test::loose_packing(10, 10, 10, 1.0, true);
+  ConsolidationSettings s;
+  s.target = Vec3::Constant(100e3);
+  s.gain.max_speed = 0.2;
+  s.tolerance = 0.005;
+  s.unbalanced = 1e-3;
+  const ConsolidationResult r = servo_consolidate(p.world, p.cell, s);
+  std::printf(
+      "consolidated in %lld steps: wall stress %.1f %.1f %.1f Pa, unbalanced %.2e, Z %.2f\n",
+      r.steps, r.stress.x(), r.stress.y(), r.stress.z(), r.unbalanced,
+      coordination_number(p.world));
+  ASSERT_TRUE(r.reached);
+  // Every wall, not only each axis' mean, within 1 % of the target.
+  const Vec3 l = cell_lengths(p.world, p.cell);
+  for (int a = 0; a < 3; ++a)
+    for (int side = 0; side < 2; ++side) {
+      const double area = l[(a + 1) % 3] * l[(a + 2) % 3];
+      EXPECT_NEAR(wall_stress(p.world, p.cell.walls[2 * a + side], area), 100e3, 1e3);
+    }
+  // Love–Weber over the cell: the diagonal equals the wall stress within 2 % and the mean
+  // stress is the target. (The off-diagonal need not vanish: the walls' normal pressures are not
+  // uniform, and their moments give the average a shear part of ~1 %.)
+  const Mat3 lw = cell_love_weber_stress(p.world, p.cell);
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(lw(a, a) / r.stress[a], 1.0, 0.02);
+  EXPECT_NEAR(mean_stress(lw), 100e3, 2e3);
+  EXPECT_NEAR((lw - lw.transpose()).norm(), 0.0, 1e-9);  // symmetrised
+  std::printf("Love-Weber diagonal %.1f %.1f %.1f Pa, off-diagonal max %.1f Pa\n", lw(0, 0),
+              lw(1, 1), lw(2, 2), (lw - Mat3(lw.diagonal().asDiagonal())).cwiseAbs().maxCoeff());
+}
