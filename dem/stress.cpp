@@ -39,10 +39,14 @@ double wall_stress(const World& world, int wall, double area) {
 double wall_contact_stiffness(const World& world, int wall) {
   check_wall(world, wall);
   const ContactParams& p = world.options().contact;
+  const double dt = world.options().timestep;
   double k = 0.0;
   for (const WallContact& c : world.wall_contacts())
-    if (c.wall == wall && c.state.overlap > 0.0)
-      k += p.kn * wall_stiffness_factor(p, world.bodies()[world.sphere_body(c.sphere)].diameter);
+    if (c.wall == wall && c.state.overlap > 0.0) {
+      const Body& b = world.bodies()[world.sphere_body(c.sphere)];
+      const ContactParams q = scaled_stiffness(p, wall_stiffness_factor(p, b.diameter));
+      k += q.kn + normal_dashpot(b.mass, q) / dt;
+    }
   return k;
 }
 

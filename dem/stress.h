@@ -16,8 +16,10 @@ Vec3 wall_force(const World& world, int wall);
 /// its area `area` (2πR·h for a height h): Σ over contacts of the outward radial push, / A.
 double wall_stress(const World& world, int wall, double area);
 
-/// Sum of the normal stiffnesses of the wall's touching contacts (N/m), size scaling included:
-/// how stiff the packing is against it, for a servo gain.
+/// Sum of the normal stiffnesses of the wall's touching contacts (N/m), size scaling included,
+/// plus each contact's dashpot over the time step, c/dt: the force one step of wall motion
+/// adds (k·v·dt from the spring, c·v from the dashpot), which a servo gain must divide by — a
+/// gain on the springs alone makes a viscously damped packing chatter.
 double wall_contact_stiffness(const World& world, int wall);
 
 /// Love–Weber average stress (Pa, compression positive, symmetrised):

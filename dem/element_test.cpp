@@ -1,0 +1,265 @@
+#include "dem/element_test.h"
+
+#include "dem/stress.h"
+#include "geom/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace clumpkit::dem {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+int add_frictionless(World& world, Wall wall) {
+  wall.friction = 0.0;
+  return world.add_wall(wall);
+}
+
+// Lateral extents: cuboid x and y lengths; cylinder the diameter twice.
+std::array<double, 2> lateral_extents(const World& world, const TestCell& cell) {
+  if (cell.shape == TestCell::Shape::cylinder) {
+    const double d = 2.0 * world.walls()[cell.lateral[0]].radius;
+    return {d, d};
+  }
+  return {world.walls()[cell.lateral[1]].point.x() - world.walls()[cell.lateral[0]].point.x(),
+          world.walls()[cell.lateral[3]].point.y() - world.walls()[cell.lateral[2]].point.y()};
+}
+
+double axial_area(const World& world, const TestCell& cell) {
+  if (cell.shape == TestCell::Shape::cylinder) {
+    const double r = world.walls()[cell.lateral[0]].radius;
+    return kPi * r * r;
+  }
+  const auto e = lateral_extents(world, cell);
+  return e[0] * e[1];
+}
+
+// Area of lateral wall k of the cell.
+double lateral_area(const World& world, const TestCell& cell, std::size_t k) {
+  const double h = cell_height(world, cell);
+  if (cell.shape == TestCell::Shape::cylinder)
+    return 2.0 * kPi * world.walls()[cell.lateral[0]].radius * h;
+  const auto e = lateral_extents(world, cell);
+  return (k < 2 ? e[1] : e[0]) * h;  // x walls span y, y walls span x
+}
+
+void servo(World& world, int wall, double area, double target, const ServoGain& gain) {
+  set_wall_speed(world, wall,
+                 servo_speed(wall_stress(world, wall, area), target, area,
+                             wall_contact_stiffness(world, wall), world.options().timestep, gain));
+}
+
+}  // namespace
+
+TestCell add_cuboid_test_cell(World& world, const Vec3& lo, const Vec3& hi) {
+  if (!((hi - lo).minCoeff() > 0.0) || !(hi - lo).allFinite())
+    throw InvalidInput("test cell: the box must have positive, finite edges");
+  TestCell c;
+  c.shape = TestCell::Shape::cuboid;
+  for (int a = 0; a < 2; ++a) {
+    c.lateral.push_back(add_frictionless(world, Wall::plane(lo, Vec3::Unit(a))));
+    c.lateral.push_back(add_frictionless(world, Wall::plane(hi, -Vec3::Unit(a))));
+  }
+  c.bottom = add_frictionless(world, Wall::plane(lo, Vec3::UnitZ()));
+  c.top = add_frictionless(world, Wall::plane(hi, -Vec3::UnitZ()));
+  return c;
+}
+
+TestCell add_cylinder_test_cell(World& world, double radius, double z_lo, double z_hi) {
+  if (!(radius > 0.0) || !(z_hi > z_lo) || !std::isfinite(radius) || !std::isfinite(z_hi - z_lo))
+    throw InvalidInput("test cell: the cylinder must have a positive radius and height");
+  TestCell c;
+  c.shape = TestCell::Shape::cylinder;
+  c.lateral.push_back(add_frictionless(world, Wall::cylinder(0.0, 0.0, radius)));
+  c.bottom = add_frictionless(world, Wall::plane(Vec3(0, 0, z_lo), Vec3::UnitZ()));
+  c.top = add_frictionless(world, Wall::plane(Vec3(0, 0, z_hi), -Vec3::UnitZ()));
+  return c;
+}
+
+double cell_height(const World& world, const TestCell& cell) {
+  return world.walls()[cell.top].point.z() - world.walls()[cell.bottom].point.z();
+}
+
+double cell_volume(const World& world, const TestCell& cell) {
+  return axial_area(world, cell) * cell_height(world, cell);
+}
+
+double axial_stress(const World& world, const TestCell& cell) {
+  const double a = axial_area(world, cell);
+  return 0.5 * (wall_stress(world, cell.bottom, a) + wall_stress(world, cell.top, a));
+}
+
+double lateral_stress(const World& world, const TestCell& cell) {
+  double s = 0;
+  for (std::size_t k = 0; k < cell.lateral.size(); ++k)
+    s += wall_stress(world, cell.lateral[k], lateral_area(world, cell, k));
+  return s / static_cast<double>(cell.lateral.size());
+}
+
+void drive_cell(World& world, const TestCell& cell, const Control& axial, const Control& lateral,
+                const ServoGain& gain, int steps) {
+  using Mode = Control::Mode;
+  const double a = axial_area(world, cell);
+  switch (axial.mode) {
+    case Mode::stress:
+      servo(world, cell.bottom, a, axial.stress, gain);
+      servo(world, cell.top, a, axial.stress, gain);
+      break;
+    case Mode::velocity:
+      set_wall_speed(world, cell.bottom, 0.0);
+      set_wall_speed(world, cell.top, axial.speed);
+      break;
+    case Mode::fixed:
+      set_wall_speed(world, cell.bottom, 0.0);
+      set_wall_speed(world, cell.top, 0.0);
+      break;
+  }
+  for (std::size_t k = 0; k < cell.lateral.size(); ++k) {
+    if (lateral.mode == Mode::stress)
+      servo(world, cell.lateral[k], lateral_area(world, cell, k), lateral.stress, gain);
+    else if (lateral.mode == Mode::fixed)
+      set_wall_speed(world, cell.lateral[k], 0.0);
+    else
+      throw InvalidInput("test cell: lateral walls are stress-controlled or fixed");
+  }
+  world.step(steps);
+}
+
+ElementTestResult run_element_test(World& world, const TestCell& cell, const ElementTestSettings& s,
+                                   const std::function<bool()>& stop) {
+  using Mode = Control::Mode;
+  auto positive = [](double v, const char* what) {
+    if (!(v > 0.0) || !std::isfinite(v))
+      throw InvalidInput(std::string("element test: ") + what + " must be positive, got " +
+                         std::to_string(v));
+  };
+  positive(s.confining, "confining stress");
+  positive(s.strain_rate, "strain rate");
+  if (s.kind != TestKind::triaxial && !(s.final_stress > s.confining))
+    throw InvalidInput("element test: final stress must exceed the confining stress");
+  if (s.kind == TestKind::triaxial) positive(s.max_axial_strain, "maximum axial strain");
+  if (s.record_every < 1) throw InvalidInput("element test: record_every must be at least 1");
+  if (s.friction >= 0.0) world.rescale_friction(s.friction);
+
+  const double dt = world.options().timestep;
+  const double h_start = cell_height(world, cell);
+  ServoGain gain = s.gain;
+  // Default speed limit: a thousandth of the height per 1,000 steps, or ten times the platen.
+  if (!(gain.max_speed > 0.0))
+    gain.max_speed = std::max(1e-6 * h_start / dt, 10.0 * s.strain_rate * h_start);
+
+  ElementTestResult r;
+  for (const Body& b : world.bodies()) r.solid_volume += b.volume;
+
+  // 1. Isotropic consolidation to the confining stress.
+  const Control confine{Mode::stress, s.confining, 0.0};
+  constexpr int kCheck = 100;
+  while (r.consolidation_steps < s.max_consolidation_steps) {
+    drive_cell(world, cell, confine, confine, gain, 1);
+    if (++r.consolidation_steps % kCheck != 0) continue;
+    const double ea = std::abs(axial_stress(world, cell) / s.confining - 1.0);
+    const double el = std::abs(lateral_stress(world, cell) / s.confining - 1.0);
+    if (ea <= s.consolidation_tolerance && el <= s.consolidation_tolerance &&
+        mean_unbalanced_force_ratio(world) <= s.consolidation_unbalanced) {
+      r.consolidated = true;
+      break;
+    }
+    if (stop && r.consolidation_steps % (kCheck * 10) == 0 && stop()) {
+      r.stopped = true;
+      return r;
+    }
+  }
+
+  // 2. Loading, from the consolidated state.
+  const double h0 = cell_height(world, cell), v0 = cell_volume(world, cell);
+  auto row = [&](long long step) {
+    CurveRow c;
+    c.step = step;
+    c.axial_strain = (h0 - cell_height(world, cell)) / h0;
+    const double v = cell_volume(world, cell);
+    c.volumetric_strain = (v0 - v) / v0;
+    c.axial_stress = axial_stress(world, cell);
+    c.lateral_stress = lateral_stress(world, cell);
+    c.p = (c.axial_stress + 2.0 * c.lateral_stress) / 3.0;
+    c.q = c.axial_stress - c.lateral_stress;
+    c.porosity = 1.0 - r.solid_volume / v;
+    c.coordination = coordination_number(world);
+    c.unbalanced = mean_unbalanced_force_ratio(world);
+    return c;
+  };
+  r.curve.push_back(row(0));
+  const double rate =
+      s.stress_rate > 0.0 ? s.stress_rate : 20.0 * s.confining * s.strain_rate;  // Pa/s
+  const double platen_speed = s.strain_rate * h0;
+  // A bound on the loading steps: the planned duration four times over.
+  double duration = 0;
+  if (s.kind == TestKind::isotropic) duration = (s.final_stress - s.confining) / rate;
+  if (s.kind == TestKind::oedometer) duration = 0.5 / s.strain_rate;
+  if (s.kind == TestKind::triaxial) duration = s.max_axial_strain / s.strain_rate;
+  const long long max_steps = static_cast<long long>(std::ceil(4.0 * duration / dt)) + 1000;
+  long long step = 0;
+  while (step < max_steps) {
+    for (int k = 0; k < s.record_every; ++k, ++step) {
+      Control axial, lateral;
+      switch (s.kind) {
+        case TestKind::isotropic: {
+          const double target = std::min(s.final_stress, s.confining + rate * dt * double(step));
+          axial = lateral = Control{Mode::stress, target, 0.0};
+          break;
+        }
+        case TestKind::oedometer:
+          axial = Control{Mode::velocity, 0.0, platen_speed};
+          lateral = Control{Mode::fixed, 0.0, 0.0};
+          break;
+        case TestKind::triaxial:
+          axial = Control{Mode::velocity, 0.0, platen_speed};
+          lateral = Control{Mode::stress, s.confining, 0.0};
+          break;
+      }
+      drive_cell(world, cell, axial, lateral, gain, 1);
+    }
+    const CurveRow c = row(step);
+    r.curve.push_back(c);
+    bool done = false;
+    if (s.kind == TestKind::isotropic)
+      done = c.p >= s.final_stress * (1.0 - s.consolidation_tolerance);
+    if (s.kind == TestKind::oedometer) done = c.axial_stress >= s.final_stress;
+    if (s.kind == TestKind::triaxial) done = c.axial_strain >= s.max_axial_strain;
+    if (done) break;
+    if (stop && stop()) {
+      r.stopped = true;
+      break;
+    }
+  }
+  for (int w : cell.lateral) set_wall_speed(world, w, 0.0);
+  set_wall_speed(world, cell.bottom, 0.0);
+  set_wall_speed(world, cell.top, 0.0);
+  return r;
+}
+
+double tangent_modulus(const std::vector<CurveRow>& curve, double (*stress)(const CurveRow&),
+                       double (*strain)(const CurveRow&), double lo, double hi) {
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (const CurveRow& c : curve) {
+    const double y = stress(c), x = strain(c);
+    if (!(y >= lo && y <= hi)) continue;
+    n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+  }
+  if (n < 3) return std::numeric_limits<double>::quiet_NaN();
+  const double den = n * sxx - sx * sx;
+  if (!(den > 0)) return std::numeric_limits<double>::quiet_NaN();
+  return (n * sxy - sx * sy) / den;
+}
+
+double friction_angle(const CurveRow& row) {
+  const double sum = row.axial_stress + row.lateral_stress;
+  if (!(sum > 0)) return std::numeric_limits<double>::quiet_NaN();
+  return std::asin(std::clamp((row.axial_stress - row.lateral_stress) / sum, -1.0, 1.0)) * 180.0 /
+         kPi;
+}
+
+}  // namespace clumpkit::dem

@@ -1,0 +1,108 @@
+// Element tests on a DEM specimen in a servo-controlled cell: isotropic, oedometer, triaxial.
+#pragma once
+
+#include "dem/servo.h"
+#include "dem/world.h"
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace clumpkit::dem {
+
+/// The rigid frictionless walls that hold a test specimen. Cuboid: six planes, −x, +x, −y, +y
+/// (lateral) then −z, +z (platens). Cylinder: one vertical cylinder (lateral) then the platens.
+struct TestCell {
+  enum class Shape { cuboid, cylinder };
+  Shape shape = Shape::cuboid;
+  std::vector<int> lateral;  ///< lateral wall indices
+  int bottom = -1, top = -1;
+};
+
+/// Adds the frictionless walls of a cuboid [lo, hi] or of a vertical cylinder of `radius` about
+/// the z-axis between z_lo and z_hi.
+TestCell add_cuboid_test_cell(World& world, const Vec3& lo, const Vec3& hi);
+TestCell add_cylinder_test_cell(World& world, double radius, double z_lo, double z_hi);
+
+/// Current size of the cell: height between the platens (m), lateral extents (cuboid: x and y
+/// lengths; cylinder: both the diameter), volume (m³).
+double cell_height(const World& world, const TestCell& cell);
+double cell_volume(const World& world, const TestCell& cell);
+
+/// Axial stress (mean of the two platens) and lateral stress (mean over the lateral walls, each
+/// over its current area), Pa, compression positive.
+double axial_stress(const World& world, const TestCell& cell);
+double lateral_stress(const World& world, const TestCell& cell);
+
+/// How the platens or the lateral walls move during a stage.
+struct Control {
+  enum class Mode { stress, velocity, fixed };
+  Mode mode = Mode::fixed;
+  double stress = 0;  ///< stress mode: target (Pa)
+  double speed = 0;   ///< velocity mode: closing speed of the top platen (m/s; bottom stays)
+};
+
+/// One step: walls under stress control get their servo speed, the top platen under velocity
+/// control closes in at its speed, fixed walls stay; then the world steps `steps` times.
+void drive_cell(World& world, const TestCell& cell, const Control& axial, const Control& lateral,
+                const ServoGain& gain, int steps = 1);
+
+/// Which element test.
+enum class TestKind { isotropic, oedometer, triaxial };
+
+/// Parameters of run_element_test (SI).
+struct ElementTestSettings {
+  TestKind kind = TestKind::triaxial;
+  double confining = 100e3;  ///< consolidation stress, and the lateral stress of a triaxial
+  /// isotropic: stress at the end of loading; oedometer: axial stress at the end (Pa).
+  double final_stress = 400e3;
+  double strain_rate = 0.05;      ///< axial strain rate of oedometer and triaxial (1/s)
+  double stress_rate = 0.0;       ///< isotropic loading rate (Pa/s); 0: confining·strain_rate·20
+  double max_axial_strain = 0.2;  ///< triaxial end
+  double friction = -1;           ///< μ of the test (negative: the world's)
+  double consolidation_tolerance = 0.005;  ///< relative stress error at equilibrium
+  double consolidation_unbalanced = 1e-3;  ///< unbalanced-force ratio at equilibrium
+  long long max_consolidation_steps = 3'000'000;
+  ServoGain gain;          ///< max_speed 0: 10 × the platen speed, or height/1000 per 1,000 steps
+  int record_every = 200;  ///< steps between curve rows
+};
+
+/// One row of the curve. Strains and stresses compression positive; strains from the start of
+/// loading (the end of consolidation).
+struct CurveRow {
+  long long step = 0;
+  double axial_strain = 0, volumetric_strain = 0;
+  double axial_stress = 0, lateral_stress = 0, p = 0, q = 0;
+  double porosity = 0, coordination = 0, unbalanced = 0;
+};
+
+/// What a test produced.
+struct ElementTestResult {
+  long long consolidation_steps = 0;
+  bool consolidated = false;  ///< equilibrium reached within max_consolidation_steps
+  std::vector<CurveRow> curve;
+  double solid_volume = 0;  ///< Σ body volumes (m³)
+  bool stopped = false;     ///< ended early by the stop callback
+};
+
+/// Consolidates the specimen in `cell` isotropically to the confining stress (servo on every
+/// wall, gravity as the world has it), then loads it: isotropic — all walls follow a stress ramp
+/// to final_stress; oedometer — lateral walls fixed, top platen at strain_rate until
+/// final_stress; triaxial — lateral stress held by servo, top platen at strain_rate to
+/// max_axial_strain. `stop` is asked every record and ends the test early when true.
+/// Deterministic: the same world and settings give the same curve for any thread count.
+ElementTestResult run_element_test(World& world, const TestCell& cell,
+                                   const ElementTestSettings& settings,
+                                   const std::function<bool()>& stop = {});
+
+/// Tangent modulus dy/dx of the least-squares line through the rows whose `x_of` (stress) lies
+/// in [lo, hi]: the bulk modulus (p against ε_v) or the constrained modulus (σ_a against ε_a).
+/// NaN with fewer than 3 rows there.
+double tangent_modulus(const std::vector<CurveRow>& curve, double (*stress)(const CurveRow&),
+                       double (*strain)(const CurveRow&), double lo, double hi);
+
+/// Mobilised friction angle (degrees) of a triaxial row: asin((σ_a − σ_r)/(σ_a + σ_r)).
+double friction_angle(const CurveRow& row);
+
+}  // namespace clumpkit::dem

@@ -1,0 +1,64 @@
+// `clumpkit test isotropic|oedometer|triaxial --specimen DIR --recipe T.toml --out DIR`.
+#include "geom/format.h"
+#include "io/cli/common.h"
+#include "io/pipeline/element_test.h"
+#include "io/test_recipe.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+namespace clumpkit::cli {
+
+void register_test(CLI::App& app) {
+  struct Opts {
+    std::string kind, specimen, recipe, out;
+    int threads = 0;
+    bool quiet = false, json = false;
+  };
+  auto o = std::make_shared<Opts>();
+  auto* c = app.add_subcommand(
+      "test",
+      "Element test of a specimen (a `clumpkit specimen` directory) in a frictionless cylinder "
+      "cell, gravity off: isotropic consolidation to [test] confining by servo-controlled walls, "
+      "then isotropic (stress ramp to final_stress: bulk_modulus), oedometer (radial wall fixed, "
+      "platen at strain_rate to final_stress: constrained_modulus, k0) or triaxial (radial "
+      "stress held, platen at strain_rate to max_axial_strain: young_modulus at 1e-4, "
+      "peak_friction_angle, critical_friction_angle). Writes DIR/curve.csv (compression "
+      "positive), curve.png, report.json, manifest.json. Same bytes for any --threads.");
+  c->add_option("KIND", o->kind, "isotropic, oedometer or triaxial")->required();
+  c->add_option("--specimen", o->specimen, "Specimen directory")->required();
+  c->add_option("--recipe", o->recipe, "Test recipe (see assets/recipes/test-*.toml)")->required();
+  c->add_option("--out", o->out, "Output directory")->required();
+  c->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->capture_default_str();
+  c->add_flag("--quiet", o->quiet, "No progress bar");
+  c->add_flag("--json", o->json, "Print report.json on stdout");
+  c->callback([o] {
+    const auto t0 = std::chrono::steady_clock::now();
+    const dem::TestKind kind = test_kind(o->kind);
+    set_threads(o->threads);
+    const TestRecipe recipe = read_test_recipe(o->recipe);
+    ProgressBar bar("test", o->quiet);
+    nlohmann::ordered_json rep =
+        run_element_test_job(kind, o->specimen, recipe, o->out, signal_interrupter(bar, "test"));
+    bar.finish();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (rep["inertial_number"].get<double>() > 1e-3)
+      warning("inertial number " + format_number(rep["inertial_number"].get<double>()) +
+              " > 1e-3: the test is not quasi-static; lower test.strain_rate");
+    if (!rep["consolidated"].get<bool>())
+      warning("consolidation did not reach equilibrium within its step limit");
+    if (o->json) {
+      std::cout << rep.dump(2) << "\n";
+    } else {
+      std::printf("wrote %s: %s test, %lld steps in %.1f s: curve.csv, curve.png, report.json\n",
+                  o->out.c_str(), o->kind.c_str(), rep["steps"].get<long long>(), seconds);
+    }
+  });
+}
+
+}  // namespace clumpkit::cli

@@ -1,0 +1,242 @@
+#include "io/pipeline/element_test.h"
+
+#include "dem/stress.h"
+#include "dem/timestep.h"
+#include "geom/errors.h"
+#include "geom/format.h"
+#include "io/atomic_file.h"
+#include "io/pipeline/job.h"
+#include "io/plot.h"
+#include "io/specimen_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+namespace clumpkit {
+
+namespace fs = std::filesystem;
+
+dem::TestKind test_kind(const std::string& name) {
+  if (name == "isotropic") return dem::TestKind::isotropic;
+  if (name == "oedometer") return dem::TestKind::oedometer;
+  if (name == "triaxial") return dem::TestKind::triaxial;
+  throw InvalidInput("test: unknown test '" + name + "' (known: isotropic, oedometer, triaxial)");
+}
+
+namespace {
+
+const char* kind_name(dem::TestKind k) {
+  switch (k) {
+    case dem::TestKind::isotropic:
+      return "isotropic";
+    case dem::TestKind::oedometer:
+      return "oedometer";
+    case dem::TestKind::triaxial:
+      return "triaxial";
+  }
+  return "";
+}
+
+double report_number(const nlohmann::json& j, const std::string& path, const char* a,
+                     const char* b) {
+  const nlohmann::json* v = j.contains(a) ? &j[a] : nullptr;
+  if (v && b) v = v->contains(b) ? &(*v)[b] : nullptr;
+  if (!v || !v->is_number() || !std::isfinite(v->get<double>()))
+    throw InvalidInput(path + ": field " + a + "." + b + " missing or not a number");
+  return v->get<double>();
+}
+
+// The contact law: the specimen's, overridden field by field by the recipe.
+dem::ContactParams contact_law(const nlohmann::json& report, const std::string& path,
+                               const TestRecipe& r) {
+  dem::ContactParams c;
+  c.kn = report_number(report, path, "contact", "kn");
+  c.ks = report_number(report, path, "contact", "ks");
+  c.friction = report_number(report, path, "contact", "friction");
+  c.damping_ratio = report_number(report, path, "contact", "damping_ratio");
+  c.local_damping = report_number(report, path, "contact", "local_damping");
+  const double ks_over_kn = r.ks_over_kn.value_or(c.ks / c.kn);
+  if (r.kn_ref) c.kn = *r.kn_ref;
+  c.ks = ks_over_kn * c.kn;
+  if (r.scaling) c.scaling = *r.scaling;
+  if (r.d_ref) c.d_ref = *r.d_ref;
+  if (r.damping_ratio) c.damping_ratio = *r.damping_ratio;
+  if (r.local_damping) c.local_damping = *r.local_damping;
+  dem::validate(c);
+  return c;
+}
+
+double axial(const dem::CurveRow& c) {
+  return c.axial_stress;
+}
+double axial_strain(const dem::CurveRow& c) {
+  return c.axial_strain;
+}
+double mean_p(const dem::CurveRow& c) {
+  return c.p;
+}
+double vol_strain(const dem::CurveRow& c) {
+  return c.volumetric_strain;
+}
+
+double nan_to_null_safe(double v) {
+  return std::isfinite(v) ? v : 0.0;
+}
+
+}  // namespace
+
+nlohmann::ordered_json run_element_test_job(dem::TestKind kind, const std::string& specimen_dir,
+                                            const TestRecipe& recipe, const std::string& out_dir,
+                                            const Interrupter& interrupter) {
+  check_output_directory(out_dir);
+  check_output_spares(out_dir, specimen_dir, "the specimen");
+  const fs::path src = specimen_dir;
+  const std::string report_path = (src / "report.json").string();
+  const nlohmann::json spec_report = read_json_file(report_path);
+  const std::vector<SpecimenBody> rows = read_specimen_csv((src / "specimen.csv").string());
+  if (rows.empty()) throw InvalidInput((src / "specimen.csv").string() + ": no bodies");
+
+  dem::WorldOptions o;
+  o.gravity = Vec3::Zero();  // element tests: stress far above the specimen's weight
+  o.contact = contact_law(spec_report, report_path, recipe);
+  double d_sum = 0, r_min = std::numeric_limits<double>::max(), z_lo = 1e300, z_hi = -1e300;
+  double rho_sum = 0, vol_sum = 0;
+  for (const SpecimenBody& b : rows) {
+    for (const Sphere& s : b.spheres) {
+      r_min = std::min(r_min, s.radius);
+      z_lo = std::min(z_lo, s.center.z() - s.radius);
+      z_hi = std::max(z_hi, s.center.z() + s.radius);
+    }
+    d_sum += std::cbrt(6.0 * b.volume / M_PI);
+    rho_sum += b.mass;
+    vol_sum += b.volume;
+  }
+  const double d_mean = d_sum / double(rows.size()), density = rho_sum / vol_sum;
+  o.skin = 0.2 * r_min;  // a length of the specimen, not an absolute one (zones.md §3)
+  dem::World world(o);
+  for (const SpecimenBody& b : rows) world.add_body(dem_body(b));
+  const double radius = 0.5 * report_number(spec_report, report_path, "container", "diameter");
+  const dem::TestCell cell = dem::add_cylinder_test_cell(world, radius, z_lo, z_hi);
+  world.options().timestep = recipe.timestep_safety * dem::critical_timestep(world);
+
+  dem::ElementTestSettings s = recipe.settings;
+  s.kind = kind;
+  // Asked every 1,000 consolidation steps and at every record of the loading.
+  long long checks = 0;
+  auto stop = [&] {
+    ++checks;
+    return interrupter && interrupter("test", std::min(0.99, double(checks % 100) / 100.0));
+  };
+  const dem::ElementTestResult r = dem::run_element_test(world, cell, s, stop);
+  if (r.stopped) throw Interrupted("test: stopped on request (nothing written; run it again)");
+
+  const std::string staging = begin_staging(out_dir);
+  const fs::path out = staging;
+  write_file_atomically((out / "curve.csv").string(), [&](std::ostream& f) {
+    f << "step,axial_strain,volumetric_strain,axial_stress_pa,radial_stress_pa,p_pa,q_pa,"
+         "porosity,coordination_number,unbalanced_force\n";
+    for (const dem::CurveRow& c : r.curve)
+      f << c.step << "," << format_number(c.axial_strain) << ","
+        << format_number(c.volumetric_strain) << "," << format_number(c.axial_stress) << ","
+        << format_number(c.lateral_stress) << "," << format_number(c.p) << "," << format_number(c.q)
+        << "," << format_number(c.porosity) << "," << format_number(c.coordination) << ","
+        << format_number(c.unbalanced) << "\n";
+  });
+
+  nlohmann::ordered_json rep;
+  rep["test"] = kind_name(kind);
+  rep["specimen"] = specimen_dir;
+  rep["recipe"] = recipe.path;
+  rep["bodies"] = rows.size();
+  rep["consolidated"] = r.consolidated;
+  rep["consolidation_steps"] = r.consolidation_steps;
+  rep["confining_stress"] = s.confining;
+  rep["timestep"] = world.options().timestep;
+  rep["contact"] = {
+      {"stiffness_scaling", o.contact.scaling == dem::StiffnessScaling::linear ? "linear" : "none"},
+      {"kn", o.contact.kn},
+      {"ks", o.contact.ks},
+      {"d_ref", o.contact.d_ref},
+      {"friction", s.friction >= 0 ? s.friction : o.contact.friction}};
+  const dem::CurveRow& first = r.curve.front();
+  const dem::CurveRow& last = r.curve.back();
+  rep["porosity"] = first.porosity;
+  rep["coordination_number"] = first.coordination;
+  // Inertial number I = ε̇·d·sqrt(ρ/p): quasi-static below 1e-3 (GDR MiDi 2004).
+  const double inertial = s.strain_rate * d_mean * std::sqrt(density / s.confining);
+  rep["inertial_number"] = inertial;
+  PlotCurve plot;
+  std::string x_label, y_label;
+  if (kind == dem::TestKind::isotropic) {
+    const auto range = recipe.modulus_range.value_or(std::make_pair(s.confining, s.final_stress));
+    rep["bulk_modulus"] = nan_to_null_safe(
+        dem::tangent_modulus(r.curve, mean_p, vol_strain, range.first, range.second));
+    rep["modulus_range"] = {range.first, range.second};
+    for (const auto& c : r.curve)
+      plot.x.push_back(c.volumetric_strain), plot.y.push_back(c.p / 1e3);
+    x_label = "volumetric strain (-)";
+    y_label = "mean stress p (kPa)";
+  } else if (kind == dem::TestKind::oedometer) {
+    const auto range = recipe.modulus_range.value_or(std::make_pair(s.confining, s.final_stress));
+    rep["constrained_modulus"] = nan_to_null_safe(
+        dem::tangent_modulus(r.curve, axial, axial_strain, range.first, range.second));
+    rep["modulus_range"] = {range.first, range.second};
+    rep["k0"] = last.lateral_stress / last.axial_stress;
+    for (const auto& c : r.curve)
+      plot.x.push_back(c.axial_strain), plot.y.push_back(c.axial_stress / 1e3);
+    x_label = "axial strain (-)";
+    y_label = "axial stress (kPa)";
+  } else {
+    // Secant Young's modulus at ε_a = 1e-4: q interpolated there over the strain.
+    double e_young = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t k = 1; k < r.curve.size(); ++k)
+      if (r.curve[k].axial_strain >= 1e-4) {
+        const auto& a = r.curve[k - 1];
+        const auto& b = r.curve[k];
+        const double t = (1e-4 - a.axial_strain) / (b.axial_strain - a.axial_strain);
+        const double q = (a.q - first.q) + t * (b.q - a.q);
+        e_young = q / 1e-4;
+        break;
+      }
+    double peak = -90, q_peak = 0, peak_strain = 0;
+    for (const auto& c : r.curve)
+      if (dem::friction_angle(c) > peak) {
+        peak = dem::friction_angle(c);
+        q_peak = c.q;
+        peak_strain = c.axial_strain;
+      }
+    const double from = last.axial_strain * (1.0 - recipe.critical_fraction);
+    double sum = 0;
+    int n = 0;
+    for (const auto& c : r.curve)
+      if (c.axial_strain >= from) sum += dem::friction_angle(c), ++n;
+    rep["young_modulus"] = nan_to_null_safe(e_young);
+    rep["peak_friction_angle"] = peak;
+    rep["peak_deviator_stress"] = q_peak;
+    rep["peak_axial_strain"] = peak_strain;
+    rep["critical_friction_angle"] = n ? sum / n : 0.0;
+    rep["final_axial_strain"] = last.axial_strain;
+    rep["final_volumetric_strain"] = last.volumetric_strain;
+    for (const auto& c : r.curve) plot.x.push_back(c.axial_strain), plot.y.push_back(c.q / 1e3);
+    x_label = "axial strain (-)";
+    y_label = "deviator stress q (kPa)";
+  }
+  rep["steps"] = last.step;
+  write_line_plot(
+      (out / "curve.png").string(), plot, x_label, y_label,
+      std::string(kind_name(kind)) + " test, " + format_number(s.confining / 1e3, 4) + " kPa");
+  write_file_atomically((out / "report.json").string(),
+                        [&](std::ostream& f) { f << rep.dump(2) << "\n"; });
+  nlohmann::ordered_json m = manifest_head("test", recipe.path, recipe.text, 0);
+  m["test"] = kind_name(kind);
+  m["specimen"] = specimen_dir;
+  m["files"] = {"curve.csv", "curve.png", "report.json"};
+  write_file_atomically((out / "manifest.json").string(),
+                        [&](std::ostream& f) { f << m.dump(2) << "\n"; });
+  publish_directory(staging, out_dir);
+  return rep;
+}
+
+}  // namespace clumpkit

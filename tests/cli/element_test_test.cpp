@@ -1,0 +1,170 @@
+// `clumpkit test` on the tiny specimen (issue 16): a triaxial curve with a peak, the same bytes
+// for 1 and 2 threads; isotropic and oedometer moduli; bad input refused cleanly.
+#include "cli_helpers.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+using namespace cli_test;
+
+namespace {
+
+// Loading fast enough for a test, slow enough to stay quasi-static (inertial number < 1e-3).
+const char* kTriaxial = R"([test]
+confining = 100e3
+strain_rate = 0.5
+max_axial_strain = 0.04
+record_every = 400
+)";
+
+const char* kIsotropic = R"([test]
+confining = 100e3
+final_stress = 300e3
+strain_rate = 0.5
+record_every = 400
+)";
+
+// The numeric rows of curve.csv (its header skipped), each with its 10 columns.
+std::vector<std::vector<double>> curve_rows(const fs::path& path) {
+  std::string text = slurp(path);
+  for (char& c : text)
+    if (c == ',') c = ' ';
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);  // header
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::istringstream s(line);
+    std::vector<double> row;
+    double v;
+    while (s >> v) row.push_back(v);
+    EXPECT_EQ(row.size(), 10u) << line;
+    if (row.size() == 10) rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace
+
+TEST(CliElementTest, TriaxialHasAPeakAndTheSameBytesForOneAndTwoThreads) {
+  const fs::path d = scratch();
+  ASSERT_NO_FATAL_FAILURE(build_tiny_specimen(d));
+  write(d / "tri.toml", kTriaxial);
+  const std::string base = "test triaxial --quiet --specimen " + (d / "spec").string() +
+                           " --recipe " + (d / "tri.toml").string();
+  const Result one = run_cli(base + " --threads 1 --out " + (d / "t1").string(), d);
+  ASSERT_EQ(one.rc, 0) << one.err;
+  const Result two = run_cli(base + " --threads 2 --json --out " + (d / "t2").string(), d);
+  ASSERT_EQ(two.rc, 0) << two.err;
+  for (const char* f : {"curve.csv", "report.json"})
+    EXPECT_EQ(slurp(d / "t1" / f), slurp(d / "t2" / f)) << f << " differs between thread counts";
+  EXPECT_GT(fs::file_size(d / "t1" / "curve.png"), 5000u);
+  const auto rep = nlohmann::json::parse(two.out);
+  EXPECT_EQ(rep, nlohmann::json::parse(slurp(d / "t1" / "report.json")));
+  EXPECT_TRUE(rep["consolidated"].get<bool>());
+  EXPECT_LT(rep["inertial_number"].get<double>(), 1e-3);
+  // Columns: step, ε_a, ε_v, σ_a, σ_r, p, q, n, Z, unbalanced.
+  const auto rows = curve_rows(d / "t1" / "curve.csv");
+  ASSERT_GT(rows.size(), 20u);
+  EXPECT_NEAR(rows.front()[3], 100e3, 1e3);  // consolidated: σ_a = σ_r = 100 kPa
+  EXPECT_NEAR(rows.front()[4], 100e3, 1e3);
+  double q_max = 0;
+  for (const auto& r : rows) {
+    EXPECT_NEAR(r[4], 100e3, 10e3) << "the radial servo holds the confining stress";
+    EXPECT_NEAR(r[5], (r[3] + 2 * r[4]) / 3, 1e-6 * r[3]);
+    EXPECT_NEAR(r[6], r[3] - r[4], 1e-6 * r[3]);
+    q_max = std::max(q_max, r[6]);
+  }
+  EXPECT_GT(q_max, 30e3);  // the specimen carries a deviator
+  EXPECT_GE(rows.back()[1], 0.04);
+  // The report's peak is the curve's, in degrees: sin φ = (σ_a − σ_r)/(σ_a + σ_r).
+  const double phi = rep["peak_friction_angle"].get<double>();
+  EXPECT_GT(phi, 10.0);
+  EXPECT_LT(phi, 60.0);
+  EXPECT_GT(rep["young_modulus"].get<double>(), 0.0);
+  EXPECT_LE(rep["critical_friction_angle"].get<double>(), phi + 1e-9);
+}
+
+TEST(CliElementTest, IsotropicAndOedometerGiveModuliWithTheOedometerStiffer) {
+  const fs::path d = scratch();
+  ASSERT_NO_FATAL_FAILURE(build_tiny_specimen(d));
+  write(d / "iso.toml", kIsotropic);
+  const std::string spec =
+      " --quiet --specimen " + (d / "spec").string() + " --recipe " + (d / "iso.toml").string();
+  const Result iso = run_cli("test isotropic --json" + spec + " --out " + (d / "iso").string(), d);
+  ASSERT_EQ(iso.rc, 0) << iso.err;
+  const Result oed = run_cli("test oedometer --json" + spec + " --out " + (d / "oed").string(), d);
+  ASSERT_EQ(oed.rc, 0) << oed.err;
+  const auto ji = nlohmann::json::parse(iso.out), jo = nlohmann::json::parse(oed.out);
+  const double k = ji["bulk_modulus"].get<double>(), m = jo["constrained_modulus"].get<double>();
+  std::printf("bulk modulus %.4g Pa, constrained modulus %.4g Pa, K0 %.3f\n", k, m,
+              jo["k0"].get<double>());
+  EXPECT_GT(k, 0.0);
+  // Elasticity: M = K + 4G/3 > K for any positive shear modulus.
+  EXPECT_GT(m, k);
+  EXPECT_GT(jo["k0"].get<double>(), 0.0);
+  EXPECT_LT(jo["k0"].get<double>(), 1.0);
+  // Under isotropic loading the stress is isotropic and p reaches the final stress.
+  const auto rows = curve_rows(d / "iso" / "curve.csv");
+  EXPECT_NEAR(rows.back()[5], 300e3, 3e3);
+  for (const auto& r : rows) EXPECT_LT(std::abs(r[6]), 0.05 * r[5]);
+}
+
+TEST(CliElementTest, BundledTestRecipeParses) {
+  // The bundled recipe against the tiny specimen, cut short by the recipe's own keys: it parses
+  // and runs (its full length is for the quick specimen).
+  const fs::path d = scratch();
+  ASSERT_NO_FATAL_FAILURE(build_tiny_specimen(d));
+  std::string text =
+      slurp(fs::path(CLUMPKIT_SOURCE_DIR) / "assets/recipes/test-triaxial-quick.toml");
+  ASSERT_NE(text.find("max_axial_strain = 0.2"), std::string::npos);
+  text.replace(text.find("max_axial_strain = 0.2"), 22, "max_axial_strain = 0.002");
+  write(d / "quick.toml", text);
+  const Result r =
+      run_cli("test triaxial --quiet --specimen " + (d / "spec").string() + " --recipe " +
+                  (d / "quick.toml").string() + " --out " + (d / "tri").string(),
+              d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_TRUE(fs::exists(d / "tri" / "manifest.json"));
+}
+
+TEST(CliElementTest, BadInputIsRefusedWithOneLine) {
+  const fs::path d = scratch();
+  ASSERT_NO_FATAL_FAILURE(build_tiny_specimen(d));
+  write(d / "tri.toml", kTriaxial);
+  write(d / "unknown.toml", "[test]\nconfinning = 1e5\n");
+  write(d / "negative.toml", "[test]\nconfining = -1\n");
+  write(d / "linear.toml", "[contact]\nstiffness_scaling = \"linear\"\n");
+  const std::string spec = " --specimen " + (d / "spec").string();
+  const std::string out = (d / "out").string();
+  struct Case {
+    std::string args, needle;
+  };
+  const Case cases[] = {
+      {"test shear" + spec + " --recipe " + (d / "tri.toml").string() + " --out " + out, "shear"},
+      {"test triaxial" + spec + " --recipe " + (d / "unknown.toml").string() + " --out " + out,
+       "test.confinning"},
+      {"test triaxial" + spec + " --recipe " + (d / "negative.toml").string() + " --out " + out,
+       "test.confining"},
+      {"test triaxial" + spec + " --recipe " + (d / "linear.toml").string() + " --out " + out,
+       "contact.d_ref"},
+      {"test triaxial --specimen " + (d / "missing").string() + " --recipe " +
+           (d / "tri.toml").string() + " --out " + out,
+       "missing"},
+      {"test triaxial" + spec + " --recipe " + (d / "tri.toml").string() + " --out " +
+           (d / "spec").string(),
+       "spec"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.args);
+    expect_one_line_error(run_cli(c.args, d), c.needle);
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_FALSE(fs::exists(out + ".partial"));
+  }
+  EXPECT_TRUE(fs::exists(d / "spec" / "specimen.csv"));  // the specimen is untouched
+}
