@@ -131,7 +131,14 @@ void drive_cell(World& world, const TestCell& cell, const Control& axial, const 
 
 ElementTestResult run_element_test(World& world, const TestCell& cell, const ElementTestSettings& s,
                                    const std::function<bool()>& stop) {
+  ElementTestState state;
+  return run_element_test(world, cell, s, state, stop);
+}
+
+ElementTestResult run_element_test(World& world, const TestCell& cell, const ElementTestSettings& s,
+                                   ElementTestState& state, const std::function<bool()>& stop) {
   using Mode = Control::Mode;
+  using Phase = ElementTestState::Phase;
   auto positive = [](double v, const char* what) {
     if (!(v > 0.0) || !std::isfinite(v))
       throw InvalidInput(std::string("element test: ") + what + " must be positive, got " +
@@ -143,39 +150,53 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
     throw InvalidInput("element test: final stress must exceed the confining stress");
   if (s.kind == TestKind::triaxial) positive(s.max_axial_strain, "maximum axial strain");
   if (s.record_every < 1) throw InvalidInput("element test: record_every must be at least 1");
-  if (s.friction >= 0.0) world.rescale_friction(s.friction);
 
+  ElementTestState& st = state;
+  if (st.phase == Phase::start) {
+    if (s.friction >= 0.0) world.rescale_friction(s.friction);
+    st.start_height = cell_height(world, cell);
+    st.solid_volume = 0;
+    for (const Body& b : world.bodies()) st.solid_volume += b.volume;
+    st.phase = Phase::consolidation;
+  }
   const double dt = world.options().timestep;
-  const double h_start = cell_height(world, cell);
   ServoGain gain = s.gain;
-  // Default speed limit: a thousandth of the height per 1,000 steps, or ten times the platen.
+  // Default speed limit: a millionth of the height per step, or ten times the platen's speed.
   if (!(gain.max_speed > 0.0))
-    gain.max_speed = std::max(1e-6 * h_start / dt, 10.0 * s.strain_rate * h_start);
-
-  ElementTestResult r;
-  for (const Body& b : world.bodies()) r.solid_volume += b.volume;
+    gain.max_speed = std::max(1e-6 * st.start_height / dt, 10.0 * s.strain_rate * st.start_height);
+  auto result = [&](bool stopped) {
+    ElementTestResult r;
+    r.consolidation_steps = st.consolidation_steps;
+    r.consolidated = st.consolidated;
+    r.curve = st.curve;
+    r.solid_volume = st.solid_volume;
+    r.stopped = stopped;
+    return r;
+  };
 
   // 1. Isotropic consolidation to the confining stress.
-  const Control confine{Mode::stress, s.confining, 0.0};
-  constexpr int kCheck = 100;
-  while (r.consolidation_steps < s.max_consolidation_steps) {
-    drive_cell(world, cell, confine, confine, gain, 1);
-    if (++r.consolidation_steps % kCheck != 0) continue;
-    const double ea = std::abs(axial_stress(world, cell) / s.confining - 1.0);
-    const double el = std::abs(lateral_stress(world, cell) / s.confining - 1.0);
-    if (ea <= s.consolidation_tolerance && el <= s.consolidation_tolerance &&
-        mean_unbalanced_force_ratio(world) <= s.consolidation_unbalanced) {
-      r.consolidated = true;
-      break;
+  if (st.phase == Phase::consolidation) {
+    const Control confine{Mode::stress, s.confining, 0.0};
+    constexpr int kCheck = 100;
+    while (st.consolidation_steps < s.max_consolidation_steps) {
+      drive_cell(world, cell, confine, confine, gain, 1);
+      if (++st.consolidation_steps % kCheck != 0) continue;
+      const double ea = std::abs(axial_stress(world, cell) / s.confining - 1.0);
+      const double el = std::abs(lateral_stress(world, cell) / s.confining - 1.0);
+      if (ea <= s.consolidation_tolerance && el <= s.consolidation_tolerance &&
+          mean_unbalanced_force_ratio(world) <= s.consolidation_unbalanced) {
+        st.consolidated = true;
+        break;
+      }
+      if (stop && st.consolidation_steps % (kCheck * 10) == 0 && stop()) return result(true);
     }
-    if (stop && r.consolidation_steps % (kCheck * 10) == 0 && stop()) {
-      r.stopped = true;
-      return r;
-    }
+    st.height0 = cell_height(world, cell);
+    st.volume0 = cell_volume(world, cell);
+    st.phase = Phase::loading;
   }
 
   // 2. Loading, from the consolidated state.
-  const double h0 = cell_height(world, cell), v0 = cell_volume(world, cell);
+  const double h0 = st.height0, v0 = st.volume0;
   auto row = [&](long long step) {
     CurveRow c;
     c.step = step;
@@ -186,59 +207,59 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
     c.lateral_stress = lateral_stress(world, cell);
     c.p = (c.axial_stress + 2.0 * c.lateral_stress) / 3.0;
     c.q = c.axial_stress - c.lateral_stress;
-    c.porosity = 1.0 - r.solid_volume / v;
+    c.porosity = 1.0 - st.solid_volume / v;
     c.coordination = coordination_number(world);
     c.unbalanced = mean_unbalanced_force_ratio(world);
     return c;
   };
-  r.curve.push_back(row(0));
-  const double rate =
-      s.stress_rate > 0.0 ? s.stress_rate : 20.0 * s.confining * s.strain_rate;  // Pa/s
-  const double platen_speed = s.strain_rate * h0;
-  // A bound on the loading steps: the planned duration four times over.
-  double duration = 0;
-  if (s.kind == TestKind::isotropic) duration = (s.final_stress - s.confining) / rate;
-  if (s.kind == TestKind::oedometer) duration = 0.5 / s.strain_rate;
-  if (s.kind == TestKind::triaxial) duration = s.max_axial_strain / s.strain_rate;
-  const long long max_steps = static_cast<long long>(std::ceil(4.0 * duration / dt)) + 1000;
-  long long step = 0;
-  while (step < max_steps) {
-    for (int k = 0; k < s.record_every; ++k, ++step) {
-      Control axial, lateral;
-      switch (s.kind) {
-        case TestKind::isotropic: {
-          const double target = std::min(s.final_stress, s.confining + rate * dt * double(step));
-          axial = lateral = Control{Mode::stress, target, 0.0};
-          break;
+  if (st.phase == Phase::loading) {
+    if (st.curve.empty()) st.curve.push_back(row(0));
+    const double rate =
+        s.stress_rate > 0.0 ? s.stress_rate : 20.0 * s.confining * s.strain_rate;  // Pa/s
+    const double platen_speed = s.strain_rate * h0;
+    // A bound on the loading steps: the planned duration four times over.
+    double duration = 0;
+    if (s.kind == TestKind::isotropic) duration = (s.final_stress - s.confining) / rate;
+    if (s.kind == TestKind::oedometer) duration = 0.5 / s.strain_rate;
+    if (s.kind == TestKind::triaxial) duration = s.max_axial_strain / s.strain_rate;
+    const long long max_steps = static_cast<long long>(std::ceil(4.0 * duration / dt)) + 1000;
+    long long& step = st.loading_steps;
+    while (step < max_steps) {
+      for (int k = 0; k < s.record_every; ++k, ++step) {
+        Control axial, lateral;
+        switch (s.kind) {
+          case TestKind::isotropic: {
+            const double target = std::min(s.final_stress, s.confining + rate * dt * double(step));
+            axial = lateral = Control{Mode::stress, target, 0.0};
+            break;
+          }
+          case TestKind::oedometer:
+            axial = Control{Mode::velocity, 0.0, platen_speed};
+            lateral = Control{Mode::fixed, 0.0, 0.0};
+            break;
+          case TestKind::triaxial:
+            axial = Control{Mode::velocity, 0.0, platen_speed};
+            lateral = Control{Mode::stress, s.confining, 0.0};
+            break;
         }
-        case TestKind::oedometer:
-          axial = Control{Mode::velocity, 0.0, platen_speed};
-          lateral = Control{Mode::fixed, 0.0, 0.0};
-          break;
-        case TestKind::triaxial:
-          axial = Control{Mode::velocity, 0.0, platen_speed};
-          lateral = Control{Mode::stress, s.confining, 0.0};
-          break;
+        drive_cell(world, cell, axial, lateral, gain, 1);
       }
-      drive_cell(world, cell, axial, lateral, gain, 1);
+      const CurveRow c = row(step);
+      st.curve.push_back(c);
+      bool done = false;
+      if (s.kind == TestKind::isotropic)
+        done = c.p >= s.final_stress * (1.0 - s.consolidation_tolerance);
+      if (s.kind == TestKind::oedometer) done = c.axial_stress >= s.final_stress;
+      if (s.kind == TestKind::triaxial) done = c.axial_strain >= s.max_axial_strain;
+      if (done) break;
+      if (stop && stop()) return result(true);
     }
-    const CurveRow c = row(step);
-    r.curve.push_back(c);
-    bool done = false;
-    if (s.kind == TestKind::isotropic)
-      done = c.p >= s.final_stress * (1.0 - s.consolidation_tolerance);
-    if (s.kind == TestKind::oedometer) done = c.axial_stress >= s.final_stress;
-    if (s.kind == TestKind::triaxial) done = c.axial_strain >= s.max_axial_strain;
-    if (done) break;
-    if (stop && stop()) {
-      r.stopped = true;
-      break;
-    }
+    for (int w : cell.lateral) set_wall_speed(world, w, 0.0);
+    set_wall_speed(world, cell.bottom, 0.0);
+    set_wall_speed(world, cell.top, 0.0);
+    st.phase = Phase::done;
   }
-  for (int w : cell.lateral) set_wall_speed(world, w, 0.0);
-  set_wall_speed(world, cell.bottom, 0.0);
-  set_wall_speed(world, cell.top, 0.0);
-  return r;
+  return result(false);
 }
 
 double tangent_modulus(const std::vector<CurveRow>& curve, double (*stress)(const CurveRow&),

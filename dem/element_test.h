@@ -77,6 +77,21 @@ struct CurveRow {
   double porosity = 0, coordination = 0, unbalanced = 0;
 };
 
+/// Where a test is: everything besides the world that its later steps depend on, so a test
+/// stopped between two records (or consolidation checks) and saved with its world continues to
+/// the same bytes.
+struct ElementTestState {
+  enum class Phase { start, consolidation, loading, done };
+  Phase phase = Phase::start;
+  long long consolidation_steps = 0;
+  bool consolidated = false;  ///< equilibrium reached within max_consolidation_steps
+  long long loading_steps = 0;
+  double start_height = 0;          ///< cell height when the test began (m): the speed limit
+  double height0 = 0, volume0 = 0;  ///< at the end of consolidation: the strains' origin
+  double solid_volume = 0;          ///< Σ body volumes (m³)
+  std::vector<CurveRow> curve;
+};
+
 /// What a test produced.
 struct ElementTestResult {
   long long consolidation_steps = 0;
@@ -94,6 +109,12 @@ struct ElementTestResult {
 /// Deterministic: the same world and settings give the same curve for any thread count.
 ElementTestResult run_element_test(World& world, const TestCell& cell,
                                    const ElementTestSettings& settings,
+                                   const std::function<bool()>& stop = {});
+
+/// The same, continuing from `state` (a fresh one starts the test) and leaving in it where the
+/// test stopped: Phase::done at the end, else the phase to continue with the saved world.
+ElementTestResult run_element_test(World& world, const TestCell& cell,
+                                   const ElementTestSettings& settings, ElementTestState& state,
                                    const std::function<bool()>& stop = {});
 
 /// Tangent modulus dy/dx of the least-squares line through the rows whose `x_of` (stress) lies

@@ -17,7 +17,8 @@ void register_test(CLI::App& app) {
   struct Opts {
     std::string kind, specimen, recipe, out;
     int threads = 0;
-    bool quiet = false, json = false;
+    double checkpoint_seconds = 60;
+    bool resume = false, quiet = false, json = false;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -28,12 +29,20 @@ void register_test(CLI::App& app) {
       "platen at strain_rate to final_stress: constrained_modulus, k0) or triaxial (radial "
       "stress held, platen at strain_rate to max_axial_strain: young_modulus at 1e-4, "
       "peak_friction_angle, critical_friction_angle). Writes DIR/curve.csv (compression "
-      "positive), curve.png, report.json, manifest.json. Same bytes for any --threads.");
+      "positive), curve.png, report.json, manifest.json, in DIR.partial until the end (a "
+      "checkpoint every --checkpoint-seconds and on Ctrl-C; continue with --resume). Same "
+      "bytes for any --threads and after a resume.");
   c->add_option("KIND", o->kind, "isotropic, oedometer or triaxial")->required();
   c->add_option("--specimen", o->specimen, "Specimen directory")->required();
   c->add_option("--recipe", o->recipe, "Test recipe (see assets/recipes/test-*.toml)")->required();
   c->add_option("--out", o->out, "Output directory")->required();
   c->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->capture_default_str();
+  c->add_option("--checkpoint-seconds", o->checkpoint_seconds,
+                "Seconds between checkpoints in DIR.partial (0: only when interrupted)")
+      ->capture_default_str();
+  c->add_flag("--resume", o->resume,
+              "Continue the checkpoint kept in DIR.partial by a killed or interrupted run (same "
+              "bytes as an uninterrupted run)");
   c->add_flag("--quiet", o->quiet, "No progress bar");
   c->add_flag("--json", o->json, "Print report.json on stdout");
   c->callback([o] {
@@ -42,9 +51,14 @@ void register_test(CLI::App& app) {
     set_threads(o->threads);
     const TestRecipe recipe = read_test_recipe(o->recipe);
     ProgressBar bar("test", o->quiet);
-    nlohmann::ordered_json rep =
-        run_element_test_job(kind, o->specimen, recipe, o->out, signal_interrupter(bar, "test"));
+    ElementTestJobOptions jo;
+    jo.resume = o->resume;
+    jo.checkpoint_seconds = o->checkpoint_seconds;
+    const ElementTestJobResult job = run_element_test_job(kind, o->specimen, recipe, o->out, jo,
+                                                          signal_interrupter(bar, "test"));
     bar.finish();
+    if (!job.afresh_reason.empty()) note("started afresh: " + job.afresh_reason);
+    const nlohmann::ordered_json& rep = job.report;
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (rep["inertial_number"].get<double>() > 1e-3)

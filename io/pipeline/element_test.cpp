@@ -4,15 +4,21 @@
 #include "dem/timestep.h"
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "geom/hash.h"
 #include "io/atomic_file.h"
+#include "io/checkpoint.h"
 #include "io/pipeline/job.h"
 #include "io/plot.h"
 #include "io/specimen_io.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <limits>
+#include <optional>
+#include <sstream>
 
 namespace clumpkit {
 
@@ -85,11 +91,102 @@ double nan_to_null_safe(double v) {
   return std::isfinite(v) ? v : 0.0;
 }
 
+using Phase = dem::ElementTestState::Phase;
+
+std::string slurp_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(path + ": cannot open");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string fnv1a_hex(const std::string& text) {
+  Fnv1a h;
+  h.add(std::string_view(text));
+  return h.hex();
+}
+
+nlohmann::json state_json(const dem::ElementTestState& st, const dem::TestCell& cell,
+                          const std::string& fingerprint) {
+  nlohmann::json j;
+  j["fingerprint"] = fingerprint;
+  j["phase"] = static_cast<int>(st.phase);
+  j["consolidation_steps"] = st.consolidation_steps;
+  j["consolidated"] = st.consolidated;
+  j["loading_steps"] = st.loading_steps;
+  // nlohmann writes doubles with 17 significant digits: they read back to the same bits.
+  j["start_height"] = st.start_height;
+  j["height0"] = st.height0;
+  j["volume0"] = st.volume0;
+  j["solid_volume"] = st.solid_volume;
+  j["cell"] = {{"lateral", cell.lateral}, {"bottom", cell.bottom}, {"top", cell.top}};
+  nlohmann::json rows = nlohmann::json::array();
+  for (const dem::CurveRow& c : st.curve)
+    rows.push_back({c.step, c.axial_strain, c.volumetric_strain, c.axial_stress, c.lateral_stress,
+                    c.p, c.q, c.porosity, c.coordination, c.unbalanced});
+  j["curve"] = rows;
+  return j;
+}
+
+// The state an earlier run saved, or nothing when it is missing, damaged (checksum) or of other
+// inputs (fingerprint); `why` says which.
+std::optional<dem::ElementTestState> read_state(const fs::path& path,
+                                                const std::string& fingerprint, dem::TestCell& cell,
+                                                std::string& why) {
+  if (!fs::exists(path)) {
+    why = "no checkpoint in " + path.parent_path().string();
+    return std::nullopt;
+  }
+  try {
+    nlohmann::json j = nlohmann::json::parse(slurp_file(path.string()));
+    const std::string stored = j.value("checksum", std::string());
+    j.erase("checksum");
+    if (stored != fnv1a_hex(j.dump())) {
+      why = path.string() + " failed its checksum";
+      return std::nullopt;
+    }
+    if (j.at("fingerprint").get<std::string>() != fingerprint) {
+      why = path.string() + " is of another test, recipe, specimen or version";
+      return std::nullopt;
+    }
+    dem::ElementTestState st;
+    const int phase = j.at("phase").get<int>();
+    if (phase < 1 || phase > 2) throw InvalidInput("phase");
+    st.phase = static_cast<Phase>(phase);
+    st.consolidation_steps = j.at("consolidation_steps").get<long long>();
+    st.consolidated = j.at("consolidated").get<bool>();
+    st.loading_steps = j.at("loading_steps").get<long long>();
+    st.start_height = j.at("start_height").get<double>();
+    st.height0 = j.at("height0").get<double>();
+    st.volume0 = j.at("volume0").get<double>();
+    st.solid_volume = j.at("solid_volume").get<double>();
+    cell.shape = dem::TestCell::Shape::cylinder;
+    cell.lateral = j.at("cell").at("lateral").get<std::vector<int>>();
+    cell.bottom = j.at("cell").at("bottom").get<int>();
+    cell.top = j.at("cell").at("top").get<int>();
+    for (const auto& r : j.at("curve")) {
+      dem::CurveRow c;
+      c.step = r.at(0).get<long long>();
+      double* f[] = {
+          &c.axial_strain, &c.volumetric_strain, &c.axial_stress, &c.lateral_stress, &c.p, &c.q,
+          &c.porosity,     &c.coordination,      &c.unbalanced};
+      for (int k = 0; k < 9; ++k) *f[k] = r.at(k + 1).get<double>();
+      st.curve.push_back(c);
+    }
+    return st;
+  } catch (const std::exception&) {
+    why = path.string() + " is damaged";
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
-nlohmann::ordered_json run_element_test_job(dem::TestKind kind, const std::string& specimen_dir,
-                                            const TestRecipe& recipe, const std::string& out_dir,
-                                            const Interrupter& interrupter) {
+ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string& specimen_dir,
+                                          const TestRecipe& recipe, const std::string& out_dir,
+                                          const ElementTestJobOptions& options,
+                                          const Interrupter& interrupter) {
   check_output_directory(out_dir);
   check_output_spares(out_dir, specimen_dir, "the specimen");
   const fs::path src = specimen_dir;
@@ -97,6 +194,15 @@ nlohmann::ordered_json run_element_test_job(dem::TestKind kind, const std::strin
   const nlohmann::json spec_report = read_json_file(report_path);
   const std::vector<SpecimenBody> rows = read_specimen_csv((src / "specimen.csv").string());
   if (rows.empty()) throw InvalidInput((src / "specimen.csv").string() + ": no bodies");
+
+  // What a checkpoint must match: the test, the recipe, the specimen and this version.
+  Fnv1a fp;
+  fp.add(std::string_view(kind_name(kind)));
+  fp.add(std::string_view(recipe.text));
+  fp.add(std::string_view(slurp_file((src / "specimen.csv").string())));
+  fp.add(std::string_view(slurp_file(report_path)));
+  fp.add(std::string_view(CLUMPKIT_VERSION));
+  const std::string fingerprint = fp.hex();
 
   dem::WorldOptions o;
   o.gravity = Vec3::Zero();  // element tests: stress far above the specimen's weight
@@ -115,25 +221,69 @@ nlohmann::ordered_json run_element_test_job(dem::TestKind kind, const std::strin
   }
   const double d_mean = d_sum / double(rows.size()), density = rho_sum / vol_sum;
   o.skin = 0.2 * r_min;  // a length of the specimen, not an absolute one (zones.md §3)
-  dem::World world(o);
-  for (const SpecimenBody& b : rows) world.add_body(dem_body(b));
-  const double radius = 0.5 * report_number(spec_report, report_path, "container", "diameter");
-  const dem::TestCell cell = dem::add_cylinder_test_cell(world, radius, z_lo, z_hi);
-  world.options().timestep = recipe.timestep_safety * dem::critical_timestep(world);
+
+  // The work directory DIR.partial, continued with --resume when its checkpoint matches.
+  const fs::path out = out_dir + ".partial";
+  const fs::path ckpt = out / "test.ckpt", state_path = out / "test-state.json";
+  std::string why_afresh;
+  dem::TestCell cell;
+  std::optional<dem::ElementTestState> saved;
+  std::optional<dem::World> resumed_world;
+  if (options.resume) {
+    saved = read_state(state_path, fingerprint, cell, why_afresh);
+    if (saved) {
+      try {
+        resumed_world.emplace(load_checkpoint(ckpt.string()));
+      } catch (const std::exception& e) {
+        why_afresh = e.what();
+        saved.reset();
+      }
+    }
+  }
+  if (!saved) begin_staging(out_dir);  // afresh: an empty DIR.partial
+  dem::World world = saved ? std::move(*resumed_world) : dem::World(o);
+  dem::ElementTestState state = saved ? *saved : dem::ElementTestState{};
+  if (!saved) {
+    for (const SpecimenBody& b : rows) world.add_body(dem_body(b));
+    const double radius = 0.5 * report_number(spec_report, report_path, "container", "diameter");
+    cell = dem::add_cylinder_test_cell(world, radius, z_lo, z_hi);
+    world.options().timestep = recipe.timestep_safety * dem::critical_timestep(world);
+  }
 
   dem::ElementTestSettings s = recipe.settings;
   s.kind = kind;
-  // Asked every 1,000 consolidation steps and at every record of the loading.
+  auto save = [&] {
+    save_checkpoint(ckpt.string(), world);
+    nlohmann::json j = state_json(state, cell, fingerprint);
+    j["checksum"] = fnv1a_hex(j.dump());
+    write_file_atomically(state_path.string(), [&](std::ostream& f) { f << j.dump() << "\n"; });
+  };
+  // Asked every 1,000 consolidation steps and at every record of the loading: a checkpoint
+  // every checkpoint_seconds, and one when asked to stop.
+  auto last_save = std::chrono::steady_clock::now();
   long long checks = 0;
   auto stop = [&] {
     ++checks;
-    return interrupter && interrupter("test", std::min(0.99, double(checks % 100) / 100.0));
+    const auto now = std::chrono::steady_clock::now();
+    if (options.checkpoint_seconds > 0 &&
+        std::chrono::duration<double>(now - last_save).count() >= options.checkpoint_seconds) {
+      save();
+      last_save = now;
+    }
+    if (interrupter && interrupter("test", std::min(0.99, double(checks % 100) / 100.0))) {
+      save();
+      return true;
+    }
+    return false;
   };
-  const dem::ElementTestResult r = dem::run_element_test(world, cell, s, stop);
-  if (r.stopped) throw Interrupted("test: stopped on request (nothing written; run it again)");
+  const dem::ElementTestResult r = dem::run_element_test(world, cell, s, state, stop);
+  if (r.stopped)
+    throw Interrupted("test: stopped on request; " + out.string() +
+                      " is kept: continue with --resume");
+  std::error_code ec;
+  fs::remove(ckpt, ec);
+  fs::remove(state_path, ec);
 
-  const std::string staging = begin_staging(out_dir);
-  const fs::path out = staging;
   write_file_atomically((out / "curve.csv").string(), [&](std::ostream& f) {
     f << "step,axial_strain,volumetric_strain,axial_stress_pa,radial_stress_pa,p_pa,q_pa,"
          "porosity,coordination_number,unbalanced_force\n";
@@ -235,8 +385,12 @@ nlohmann::ordered_json run_element_test_job(dem::TestKind kind, const std::strin
   m["files"] = {"curve.csv", "curve.png", "report.json"};
   write_file_atomically((out / "manifest.json").string(),
                         [&](std::ostream& f) { f << m.dump(2) << "\n"; });
-  publish_directory(staging, out_dir);
-  return rep;
+  publish_directory(out.string(), out_dir);
+  ElementTestJobResult result;
+  result.report = rep;
+  result.resumed = saved.has_value();
+  result.afresh_reason = options.resume && !saved ? why_afresh : "";
+  return result;
 }
 
 }  // namespace clumpkit

@@ -21,10 +21,30 @@ dem::TestKind test_kind(const std::string& name);
 /// overrides it; see dem::run_element_test. Writes into `out_dir` (DIR.partial renamed at the
 /// end, job.h): curve.csv (step, axial_strain, volumetric_strain, axial_stress_pa,
 /// radial_stress_pa, p_pa, q_pa, porosity, coordination_number, unbalanced_force), curve.png,
-/// report.json (returned) and manifest.json. The interrupter is told the stage ("consolidation"
-/// or "loading") and stops the job with Interrupted.
-nlohmann::ordered_json run_element_test_job(dem::TestKind kind, const std::string& specimen_dir,
-                                            const TestRecipe& recipe, const std::string& out_dir,
-                                            const Interrupter& interrupter = {});
+/// report.json and manifest.json. The interrupter is told the stage ("test").
+/// Options of run_element_test_job.
+struct ElementTestJobOptions {
+  /// Continue the work kept in DIR.partial (its checkpoint, if it was made by the same test,
+  /// recipe, specimen and version; otherwise it starts afresh, saying so in the report).
+  bool resume = false;
+  double checkpoint_seconds = 60;  ///< wall-clock seconds between checkpoints (≤ 0: none)
+};
+
+/// What run_element_test_job did: report.json as written, and whether it continued a checkpoint
+/// (with --resume, the reason it could not, when it started afresh).
+struct ElementTestJobResult {
+  nlohmann::ordered_json report;
+  bool resumed = false;
+  std::string afresh_reason;
+};
+
+/// Work goes to DIR.partial: test.ckpt (the world, io/checkpoint.h) and test-state.json (where
+/// the test is, its curve so far, a fingerprint of its inputs and a checksum), saved every
+/// checkpoint_seconds and when the interrupter asks to stop (then Interrupted is thrown, saying
+/// to --resume). A resumed test ends with the same bytes as one never stopped.
+ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string& specimen_dir,
+                                          const TestRecipe& recipe, const std::string& out_dir,
+                                          const ElementTestJobOptions& options = {},
+                                          const Interrupter& interrupter = {});
 
 }  // namespace clumpkit
