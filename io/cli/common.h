@@ -21,6 +21,7 @@ void register_specimen(CLI::App& app);
 void register_export(CLI::App& app);
 void register_import(CLI::App& app);
 void register_test(CLI::App& app);
+void register_specimen_scale(CLI::App& app);
 
 /// Thread-count control shared by parallel subcommands: 0 = all cores.
 void set_threads(int threads);

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   clumpkit::cli::register_specimen(app);
   clumpkit::cli::register_export(app);
   clumpkit::cli::register_import(app);
+  clumpkit::cli::register_specimen_scale(app);
   clumpkit::cli::register_test(app);
   try {
     app.parse(argc, argv);

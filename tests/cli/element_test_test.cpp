@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 
@@ -116,6 +117,48 @@ TEST(CliElementTest, IsotropicAndOedometerGiveModuliWithTheOedometerStiffer) {
   for (const auto& r : rows) EXPECT_LT(std::abs(r[6]), 0.05 * r[5]);
 }
 
+TEST(CliElementTest, SpecimenScaledByTwoTestsTheSameBitForBit) {
+  // Seed 004 eqs. 1–3 through the CLI (issue 16 acceptance 1): `specimen-scale --factor 2`, then
+  // the same triaxial at half the strain rate (ε̇/λ): every strain and stress of the curve is the
+  // same bits — no absolute length hides in the reader, the cell, the servo, the time step or
+  // the skin.
+  const fs::path d = scratch();
+  ASSERT_NO_FATAL_FAILURE(build_tiny_specimen(d));
+  Result r = run_cli(
+      "specimen-scale " + (d / "spec").string() + " --factor 2 --out " + (d / "spec2").string(), d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto src = nlohmann::json::parse(slurp(d / "spec" / "report.json"));
+  const auto big = nlohmann::json::parse(slurp(d / "spec2" / "report.json"));
+  EXPECT_EQ(big["container"]["diameter"].get<double>(),
+            2 * src["container"]["diameter"].get<double>());
+  EXPECT_EQ(big["contact"]["kn"].get<double>(), 2 * src["contact"]["kn"].get<double>());
+  EXPECT_EQ(big["porosity"], src["porosity"]);
+  EXPECT_EQ(big["scale_factor"].get<double>(), 2.0);
+  const char* recipe =
+      "[test]\nconfining = 100e3\nstrain_rate = %s\nmax_axial_strain = 0.01\n"
+      "record_every = 400\n";
+  char text[256];
+  std::snprintf(text, sizeof text, recipe, "0.5");
+  write(d / "a.toml", text);
+  std::snprintf(text, sizeof text, recipe, "0.25");
+  write(d / "b.toml", text);
+  for (const char* c : {"a", "b"}) {
+    const std::string spec = std::string(c) == "a" ? "spec" : "spec2";
+    r = run_cli("test triaxial --quiet --specimen " + (d / spec).string() + " --recipe " +
+                    (d / (std::string(c) + ".toml")).string() + " --out " + (d / c).string(),
+                d);
+    ASSERT_EQ(r.rc, 0) << r.err;
+  }
+  const std::string a = slurp(d / "a" / "curve.csv"), b = slurp(d / "b" / "curve.csv");
+  EXPECT_GT(a.size(), 500u);
+  EXPECT_EQ(a, b) << "the λ = 2 copy's curve differs";
+  // Its specimen.csv: every length doubled, exactly.
+  const auto one = nlohmann::json::parse(slurp(d / "a" / "report.json"));
+  const auto two = nlohmann::json::parse(slurp(d / "b" / "report.json"));
+  EXPECT_EQ(two["timestep"].get<double>(), 2 * one["timestep"].get<double>());
+  EXPECT_EQ(two["peak_friction_angle"], one["peak_friction_angle"]);
+}
+
 TEST(CliElementTest, BundledTestRecipeParses) {
   // The bundled recipe against the tiny specimen, cut short by the recipe's own keys: it parses
   // and runs (its full length is for the quick specimen).
@@ -159,6 +202,13 @@ TEST(CliElementTest, BadInputIsRefusedWithOneLine) {
        "missing"},
       {"test triaxial" + spec + " --recipe " + (d / "tri.toml").string() + " --out " +
            (d / "spec").string(),
+       "spec"},
+      {"specimen-scale " + (d / "spec").string() + " --factor 0 --out " + out, "--factor"},
+      {"specimen-scale " + (d / "spec").string() + " --factor -2 --out " + out, "--factor"},
+      {"specimen-scale " + (d / "spec").string() + " --factor nan --out " + out, "--factor"},
+      {"specimen-scale " + (d / "spec").string() + " --factor 1e40 --out " + out, "1e30"},
+      {"specimen-scale " + (d / "missing").string() + " --factor 2 --out " + out, "missing"},
+      {"specimen-scale " + (d / "spec").string() + " --factor 2 --out " + (d / "spec").string(),
        "spec"},
   };
   for (const Case& c : cases) {
