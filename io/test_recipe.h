@@ -16,7 +16,8 @@ namespace clumpkit {
 /// specimen's), record_every (steps), timestep_safety (fraction of the critical step, default
 /// 0.2), modulus_range ([lo, hi] Pa, default [confining, final_stress] or [p0, 4 p0]).
 /// [contact] (optional, overrides the specimen's law): stiffness_scaling ("none" | "linear"),
-/// kn_ref (N/m), d_ref (m), ks_over_kn, damping_ratio, local_damping.
+/// kn_ref (N/m), d_ref (m), ks_over_kn, damping_ratio (default 0: no viscous damping in a
+/// quasi-static test), local_damping (default the specimen's).
 struct TestRecipe {
   std::string path, text;
   dem::ElementTestSettings settings;
