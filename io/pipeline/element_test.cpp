@@ -96,14 +96,6 @@ double nan_to_null_safe(double v) {
 
 using Phase = dem::ElementTestState::Phase;
 
-std::string slurp_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(path + ": cannot open");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 std::string fnv1a_hex(const std::string& text) {
   Fnv1a h;
   h.add(std::string_view(text));
@@ -142,7 +134,7 @@ std::optional<dem::ElementTestState> read_state(const fs::path& path,
     return std::nullopt;
   }
   try {
-    nlohmann::json j = nlohmann::json::parse(slurp_file(path.string()));
+    nlohmann::json j = nlohmann::json::parse(read_file_bytes(path.string()));
     const std::string stored = j.value("checksum", std::string());
     j.erase("checksum");
     if (stored != fnv1a_hex(j.dump())) {
@@ -202,8 +194,8 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
   Fnv1a fp;
   fp.add(std::string_view(kind_name(kind)));
   fp.add(std::string_view(recipe.text));
-  fp.add(std::string_view(slurp_file((src / "specimen.csv").string())));
-  fp.add(std::string_view(slurp_file(report_path)));
+  fp.add(std::string_view(read_file_bytes((src / "specimen.csv").string())));
+  fp.add(std::string_view(read_file_bytes(report_path)));
   fp.add(std::string_view(CLUMPKIT_VERSION));
   const std::string fingerprint = fp.hex();
 

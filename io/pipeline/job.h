@@ -29,6 +29,9 @@ void for_each_particle(const ShapeRecipe& recipe, const std::vector<int>& fracti
 /// be opened and InvalidInput naming it when it is not JSON.
 nlohmann::json read_json_file(const std::string& path);
 
+/// The bytes of a file. Throws IoError naming it when it cannot be opened.
+std::string read_file_bytes(const std::string& path);
+
 /// Fraction index of every particle of the recipe, in id order.
 std::vector<int> particle_fractions(const ShapeRecipe& recipe);
 

@@ -8,8 +8,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace clumpkit {
 
@@ -25,10 +23,7 @@ nlohmann::ordered_json run_specimen_scale(const std::string& specimen_dir, doubl
   const std::string report_path = (src / "report.json").string();
   std::vector<SpecimenBody> rows = read_specimen_csv((src / "specimen.csv").string());
   read_json_file(report_path);  // refuses a missing or malformed report, naming it
-  std::ifstream report_in(report_path, std::ios::binary);
-  std::stringstream report_text;
-  report_text << report_in.rdbuf();
-  nlohmann::ordered_json rep = nlohmann::ordered_json::parse(report_text.str());
+  nlohmann::ordered_json rep = nlohmann::ordered_json::parse(read_file_bytes(report_path));
   if (!rep.is_object()) throw InvalidInput(report_path + ": not a JSON object");
 
   const double l2 = factor * factor, l3 = l2 * factor;
