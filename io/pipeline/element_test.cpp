@@ -90,8 +90,9 @@ double vol_strain(const dem::CurveRow& c) {
   return c.volumetric_strain;
 }
 
-double nan_to_null_safe(double v) {
-  return std::isfinite(v) ? v : 0.0;
+// A measured value, or null when the curve could not give it (too few rows in the range).
+nlohmann::ordered_json measured(double v) {
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
 }
 
 using Phase = dem::ElementTestState::Phase;
@@ -316,8 +317,8 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
   std::string x_label, y_label;
   if (kind == dem::TestKind::isotropic) {
     const auto range = recipe.modulus_range.value_or(std::make_pair(s.confining, s.final_stress));
-    rep["bulk_modulus"] = nan_to_null_safe(
-        dem::tangent_modulus(r.curve, mean_p, vol_strain, range.first, range.second));
+    rep["bulk_modulus"] =
+        measured(dem::tangent_modulus(r.curve, mean_p, vol_strain, range.first, range.second));
     rep["modulus_range"] = {range.first, range.second};
     for (const auto& c : r.curve)
       plot.x.push_back(c.volumetric_strain), plot.y.push_back(c.p / 1e3);
@@ -325,8 +326,8 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
     y_label = "mean stress p (kPa)";
   } else if (kind == dem::TestKind::oedometer) {
     const auto range = recipe.modulus_range.value_or(std::make_pair(s.confining, s.final_stress));
-    rep["constrained_modulus"] = nan_to_null_safe(
-        dem::tangent_modulus(r.curve, axial, axial_strain, range.first, range.second));
+    rep["constrained_modulus"] =
+        measured(dem::tangent_modulus(r.curve, axial, axial_strain, range.first, range.second));
     rep["modulus_range"] = {range.first, range.second};
     rep["k0"] = last.lateral_stress / last.axial_stress;
     for (const auto& c : r.curve)
@@ -357,7 +358,7 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
     int n = 0;
     for (const auto& c : r.curve)
       if (c.axial_strain >= from) sum += dem::friction_angle(c), ++n;
-    rep["young_modulus"] = nan_to_null_safe(e_young);
+    rep["young_modulus"] = measured(e_young);
     rep["peak_friction_angle"] = peak;
     rep["peak_deviator_stress"] = q_peak;
     rep["peak_axial_strain"] = peak_strain;
