@@ -128,7 +128,8 @@ nlohmann::json state_json(const dem::ElementTestState& st, const dem::TestCell& 
 // The state an earlier run saved, or nothing when it is missing, damaged (checksum) or of other
 // inputs (fingerprint); `why` says which.
 std::optional<dem::ElementTestState> read_state(const fs::path& path,
-                                                const std::string& fingerprint, dem::TestCell& cell,
+                                                const std::string& fingerprint,
+                                                const fs::path& checkpoint, dem::TestCell& cell,
                                                 std::string& why) {
   if (!fs::exists(path)) {
     why = "no checkpoint in " + path.parent_path().string();
@@ -144,6 +145,11 @@ std::optional<dem::ElementTestState> read_state(const fs::path& path,
     }
     if (j.at("fingerprint").get<std::string>() != fingerprint) {
       why = path.string() + " is of another test, recipe, specimen or version";
+      return std::nullopt;
+    }
+    if (!fs::exists(checkpoint) ||
+        j.at("checkpoint").get<std::string>() != fnv1a_hex(read_file_bytes(checkpoint.string()))) {
+      why = checkpoint.string() + " is not the checkpoint " + path.string() + " was saved with";
       return std::nullopt;
     }
     dem::ElementTestState st;
@@ -226,7 +232,7 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
   std::optional<dem::ElementTestState> saved;
   std::optional<dem::World> resumed_world;
   if (options.resume) {
-    saved = read_state(state_path, fingerprint, cell, why_afresh);
+    saved = read_state(state_path, fingerprint, ckpt, cell, why_afresh);
     if (saved) {
       try {
         resumed_world.emplace(load_checkpoint(ckpt.string()));
@@ -249,8 +255,11 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
   dem::ElementTestSettings s = recipe.settings;
   s.kind = kind;
   auto save = [&] {
+    // The world first, then the state naming the world's bytes: a run killed between the two
+    // writes leaves a pair that does not match, which a resume refuses (and starts afresh).
     save_checkpoint(ckpt.string(), world);
     nlohmann::json j = state_json(state, cell, fingerprint);
+    j["checkpoint"] = fnv1a_hex(read_file_bytes(ckpt.string()));
     j["checksum"] = fnv1a_hex(j.dump());
     write_file_atomically(state_path.string(), [&](std::ostream& f) { f << j.dump() << "\n"; });
   };
