@@ -1,4 +1,4 @@
-// Non-overlapping random placement of spheres and clumps in a vertical cylinder (specimen stage 1).
+// Non-overlapping random placement of spheres and clumps in a vertical cylinder or a box.
 #include "dem/placement.h"
 
 #include "geom/errors.h"
@@ -12,22 +12,24 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// Uniform grid over the cylinder's square footprint [-R, R]², growing upwards in z as spheres
-/// are added. Holds indices of placed spheres.
+/// Uniform grid over a rectangular footprint [x0, x0 + wx] × [y0, y0 + wy], growing upwards in z
+/// from z0 as spheres are added. Holds indices of placed spheres.
 class SphereGrid {
  public:
-  SphereGrid(double radius, double cell, double max_sphere_radius)
-      : origin_(-radius), cell_(cell), reach_(max_sphere_radius) {
-    n_ = static_cast<int>(std::floor(2.0 * radius / cell)) + 1;
+  SphereGrid(const Vec3& origin, double width_x, double width_y, double cell,
+             double max_sphere_radius)
+      : origin_(origin), cell_(cell), reach_(max_sphere_radius) {
+    nx_ = static_cast<int>(std::floor(width_x / cell)) + 1;
+    ny_ = static_cast<int>(std::floor(width_y / cell)) + 1;
   }
 
   void add(const Vec3& center, double r) {
-    const int ix = clamp_xy(index(center.x() - origin_));
-    const int iy = clamp_xy(index(center.y() - origin_));
-    const int iz = std::max(0, index(center.z()));
+    const int ix = std::clamp(index(center.x() - origin_.x()), 0, nx_ - 1);
+    const int iy = std::clamp(index(center.y() - origin_.y()), 0, ny_ - 1);
+    const int iz = std::max(0, index(center.z() - origin_.z()));
     if (iz >= layers_) {
       layers_ = iz + 1;
-      cells_.resize(static_cast<std::size_t>(layers_) * n_ * n_);
+      cells_.resize(static_cast<std::size_t>(layers_) * nx_ * ny_);
     }
     cells_[cell_index(ix, iy, iz)].push_back(static_cast<int>(centers_.size()));
     centers_.push_back(center);
@@ -38,12 +40,13 @@ class SphereGrid {
   bool overlaps(const Vec3& center, double r) const {
     if (layers_ == 0) return false;
     const double d = r + reach_;
-    const int x0 = clamp_xy(index(center.x() - d - origin_));
-    const int x1 = clamp_xy(index(center.x() + d - origin_));
-    const int y0 = clamp_xy(index(center.y() - d - origin_));
-    const int y1 = clamp_xy(index(center.y() + d - origin_));
-    const int z0 = std::max(0, index(center.z() - d));
-    const int z1 = std::min(layers_ - 1, index(center.z() + d));
+    const Vec3 c = center - origin_;
+    const int x0 = std::clamp(index(c.x() - d), 0, nx_ - 1);
+    const int x1 = std::clamp(index(c.x() + d), 0, nx_ - 1);
+    const int y0 = std::clamp(index(c.y() - d), 0, ny_ - 1);
+    const int y1 = std::clamp(index(c.y() + d), 0, ny_ - 1);
+    const int z0 = std::max(0, index(c.z() - d));
+    const int z1 = std::min(layers_ - 1, index(c.z() + d));
     for (int iz = z0; iz <= z1; ++iz)
       for (int iy = y0; iy <= y1; ++iy)
         for (int ix = x0; ix <= x1; ++ix)
@@ -60,20 +63,48 @@ class SphereGrid {
     // Clamp before converting so far-away queries cannot overflow.
     return static_cast<int>(std::clamp(i, -1.0, 1e9));
   }
-  int clamp_xy(int i) const { return std::clamp(i, 0, n_ - 1); }
   std::size_t cell_index(int ix, int iy, int iz) const {
-    return (static_cast<std::size_t>(iz) * n_ + iy) * n_ + ix;
+    return (static_cast<std::size_t>(iz) * ny_ + iy) * nx_ + ix;
   }
 
-  double origin_;
+  Vec3 origin_;
   double cell_;
   double reach_;
-  int n_ = 1;
+  int nx_ = 1, ny_ = 1;
   int layers_ = 0;
   std::vector<std::vector<int>> cells_;
   std::vector<Vec3> centers_;
   std::vector<double> radii_;
 };
+
+/// Checks the items (every sphere finite with a positive radius) and returns each item's
+/// effective bounding radius (never below what its spheres need, with a rounding margin); sets
+/// the largest sphere radius and bounding radius. `who` names the caller in errors.
+std::vector<double> bounding_radii(const std::vector<PlacementItem>& items, const char* who,
+                                   double& max_sphere, double& max_bound) {
+  std::vector<double> bound(items.size());
+  max_sphere = 0.0;
+  max_bound = 0.0;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const PlacementItem& item = items[i];
+    if (item.spheres.empty())
+      throw InvalidInput(std::string(who) + ": item " + std::to_string(i) + " has no spheres");
+    double need = 0.0;
+    for (std::size_t s = 0; s < item.spheres.size(); ++s) {
+      const Sphere& sphere = item.spheres[s];
+      if (!(sphere.radius > 0.0) || !std::isfinite(sphere.radius) || !sphere.center.allFinite())
+        throw InvalidInput(std::string(who) + ": item " + std::to_string(i) + " sphere " +
+                           std::to_string(s) + " has a bad centre or radius " +
+                           std::to_string(sphere.radius));
+      need = std::max(need, sphere.center.norm() + sphere.radius);
+      max_sphere = std::max(max_sphere, sphere.radius);
+    }
+    const double given = std::isfinite(item.bounding_radius) ? item.bounding_radius : 0.0;
+    bound[i] = std::max(given, need) * (1.0 + 1e-12);  // margin for rotation rounding
+    max_bound = std::max(max_bound, bound[i]);
+  }
+  return bound;
+}
 
 }  // namespace
 
@@ -98,34 +129,16 @@ std::vector<Placement> place_in_cylinder(const std::vector<PlacementItem>& items
     throw InvalidInput("place_in_cylinder: max_trials must be at least 1, got " +
                        std::to_string(max_trials));
 
-  // Effective bounding radii (never below what the spheres need, with a rounding margin) and
-  // the largest sphere and item.
-  std::vector<double> bound(items.size());
-  double max_sphere = 0.0;
-  double max_bound = 0.0;
+  double max_sphere = 0.0, max_bound = 0.0;
+  std::vector<double> bound = bounding_radii(items, "place_in_cylinder", max_sphere, max_bound);
   for (std::size_t i = 0; i < items.size(); ++i) {
-    const PlacementItem& item = items[i];
-    if (item.spheres.empty())
-      throw InvalidInput("place_in_cylinder: item " + std::to_string(i) + " has no spheres");
-    double need = 0.0;
-    for (std::size_t s = 0; s < item.spheres.size(); ++s) {
-      const Sphere& sphere = item.spheres[s];
-      if (!(sphere.radius > 0.0) || !std::isfinite(sphere.radius) || !sphere.center.allFinite())
-        throw InvalidInput("place_in_cylinder: item " + std::to_string(i) + " sphere " +
-                           std::to_string(s) + " has a bad centre or radius " +
-                           std::to_string(sphere.radius));
-      need = std::max(need, sphere.center.norm() + sphere.radius);
-      max_sphere = std::max(max_sphere, sphere.radius);
-    }
-    const double given = std::isfinite(item.bounding_radius) ? item.bounding_radius : 0.0;
-    bound[i] = std::max(given, need);
-    if (bound[i] > radius)
+    if (bound[i] > radius * (1.0 + 1e-12))
       throw InvalidInput("place_in_cylinder: item " + std::to_string(i) + " (bounding radius " +
                          std::to_string(bound[i]) + ") does not fit in a cylinder of radius " +
                          std::to_string(radius));
-    bound[i] = std::min(bound[i] * (1.0 + 1e-12), radius);  // margin for rotation rounding
-    max_bound = std::max(max_bound, bound[i]);
+    bound[i] = std::min(bound[i], radius);
   }
+  max_bound = std::min(max_bound, radius);
 
   std::vector<Placement> placements;
   placements.reserve(items.size());
@@ -136,7 +149,8 @@ std::vector<Placement> place_in_cylinder(const std::vector<PlacementItem>& items
   }
 
   const double band = 2.0 * max_bound;
-  SphereGrid grid(radius, 2.0 * max_sphere, max_sphere);
+  SphereGrid grid(Vec3(-radius, -radius, 0.0), 2.0 * radius, 2.0 * radius, 2.0 * max_sphere,
+                  max_sphere);
   double z_lo = 0.0;
   std::vector<Vec3> world;  // candidate sphere centres
 
@@ -173,6 +187,49 @@ std::vector<Placement> place_in_cylinder(const std::vector<PlacementItem>& items
     }
   }
   if (height) *height = top;
+  return placements;
+}
+
+std::vector<Placement> place_in_box(const std::vector<PlacementItem>& items, const Vec3& lo,
+                                    const Vec3& hi, Rng& rng, int max_trials) {
+  if (!lo.allFinite() || !hi.allFinite() || !((hi - lo).minCoeff() > 0.0))
+    throw InvalidInput("place_in_box: the box must have positive, finite edges");
+  if (max_trials < 1)
+    throw InvalidInput("place_in_box: max_trials must be at least 1, got " +
+                       std::to_string(max_trials));
+  double max_sphere = 0.0, max_bound = 0.0;
+  const std::vector<double> bound = bounding_radii(items, "place_in_box", max_sphere, max_bound);
+  const Vec3 size = hi - lo;
+  std::vector<Placement> placements;
+  placements.reserve(items.size());
+  if (items.empty()) return placements;
+  SphereGrid grid(lo, size.x(), size.y(), 2.0 * max_sphere, max_sphere);
+  std::vector<Vec3> world;  // candidate sphere centres
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const PlacementItem& item = items[i];
+    const double b = bound[i];
+    if (2.0 * b >= size.minCoeff())
+      throw InvalidInput("place_in_box: item " + std::to_string(i) + " (bounding radius " +
+                         std::to_string(b) + ") does not fit in the box");
+    world.resize(item.spheres.size());
+    bool placed = false;
+    for (int t = 0; t < max_trials && !placed; ++t) {
+      const Vec3 position(rng.uniform(lo.x() + b, hi.x() - b), rng.uniform(lo.y() + b, hi.y() - b),
+                          rng.uniform(lo.z() + b, hi.z() - b));
+      const Eigen::Quaterniond orientation = uniform_orientation(rng);
+      bool free = true;
+      for (std::size_t s = 0; s < item.spheres.size() && free; ++s) {
+        world[s] = orientation * item.spheres[s].center + position;
+        free = !grid.overlaps(world[s], item.spheres[s].radius);
+      }
+      if (!free) continue;
+      for (std::size_t s = 0; s < item.spheres.size(); ++s)
+        grid.add(world[s], item.spheres[s].radius);
+      placements.push_back({position, orientation});
+      placed = true;
+    }
+    if (!placed) return {};  // too crowded: the caller enlarges the box
+  }
   return placements;
 }
 

@@ -1,4 +1,4 @@
-// Non-overlapping random placement of spheres and clumps in a vertical cylinder (specimen stage 1).
+// Non-overlapping random placement of spheres and clumps in a vertical cylinder or a box.
 #pragma once
 
 #include "geom/random.h"
@@ -42,5 +42,14 @@ Eigen::Quaterniond uniform_orientation(Rng& rng);
 /// max_trials < 1, an item without spheres, a bad sphere, or an item wider than the cylinder.
 std::vector<Placement> place_in_cylinder(const std::vector<PlacementItem>& items, double radius,
                                          Rng& rng, int max_trials = 200, double* height = nullptr);
+
+/// Places items in the given order (largest first) at uniformly random positions and orientations
+/// inside the box [lo, hi] (every item's bounding ball inside it), no sphere overlapping any
+/// sphere of an earlier item: up to `max_trials` random trials per item. Returns an empty vector
+/// when some item found no room (the box is too crowded: enlarge it and try again). Deterministic
+/// for a given Rng state. Throws InvalidInput for an empty or non-finite box, max_trials < 1, a
+/// bad item, or an item wider than the box.
+std::vector<Placement> place_in_box(const std::vector<PlacementItem>& items, const Vec3& lo,
+                                    const Vec3& hi, Rng& rng, int max_trials = 1000);
 
 }  // namespace clumpkit::dem

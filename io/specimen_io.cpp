@@ -130,6 +130,10 @@ dem::SpecimenSpec specimen_spec(const SpecimenRecipe& r, std::vector<dem::RockTe
   s.contact.friction = r.friction;
   s.contact.damping_ratio = r.damping_ratio;
   s.contact.local_damping = r.local_damping;
+  if (r.linear_scaling) {
+    s.contact.scaling = dem::StiffnessScaling::linear;
+    s.contact.d_ref = r.d_ref;
+  }
   s.target_relative_density = r.target_relative_density;
   s.calibration_frictions = r.calibration_frictions;
   s.seed = r.seed;
@@ -141,9 +145,27 @@ dem::SpecimenSpec specimen_spec(const SpecimenRecipe& r, std::vector<dem::RockTe
   return s;
 }
 
-std::vector<SpecimenBody> specimen_bodies(const dem::SpecimenResult& result) {
+dem::CompressionSpec compression_spec(const SpecimenRecipe& r,
+                                      std::vector<dem::RockTemplate> templates) {
+  const dem::SpecimenSpec s = specimen_spec(r, std::move(templates));
+  dem::CompressionSpec c;
+  c.shape = r.cuboid ? dem::CompressionSpec::Shape::cuboid : dem::CompressionSpec::Shape::cylinder;
+  c.size = r.cuboid ? Vec3(r.container_size[0], r.container_size[1], r.container_size[2])
+                    : Vec3(r.container_diameter, r.container_diameter, r.container_height);
+  c.porosity = r.compression_porosity;
+  c.friction = r.compression_friction;
+  c.classes = s.classes;
+  c.templates = s.templates;
+  c.soil_density = r.soil_density;
+  c.rock_density = r.rock_density;
+  c.contact = s.contact;
+  c.seed = r.seed;
+  return c;
+}
+
+std::vector<SpecimenBody> specimen_bodies(const dem::World& world) {
   std::vector<SpecimenBody> out;
-  const auto& bodies = result.world.bodies();
+  const auto& bodies = world.bodies();
   out.reserve(bodies.size());
   for (std::size_t k = 0; k < bodies.size(); ++k) {
     const dem::Body& b = bodies[k];
@@ -445,6 +467,22 @@ std::vector<std::string> write_slices(const std::string& dir, const dem::Specime
   return names;
 }
 
+namespace {
+
+// The contact law as report.json records it (the test command and the exports read it back).
+nlohmann::ordered_json contact_json(const SpecimenRecipe& recipe) {
+  nlohmann::ordered_json c = {{"kn", recipe.kn},
+                              {"ks", recipe.ks},
+                              {"friction", recipe.friction},
+                              {"damping_ratio", recipe.damping_ratio},
+                              {"local_damping", recipe.local_damping},
+                              {"stiffness_scaling", recipe.linear_scaling ? "linear" : "none"}};
+  if (recipe.linear_scaling) c["d_ref"] = recipe.d_ref;
+  return c;
+}
+
+}  // namespace
+
 nlohmann::ordered_json specimen_report(const SpecimenRecipe& recipe, const dem::SpecimenResult& r) {
   nlohmann::ordered_json j;
   std::size_t spheres = 0, rocks = 0;
@@ -464,11 +502,7 @@ nlohmann::ordered_json specimen_report(const SpecimenRecipe& recipe, const dem::
   j["friction"] = recipe.friction;
   j["container"] = {{"diameter", recipe.container_diameter}, {"height", recipe.container_height}};
   j["density"] = {{"rock", recipe.rock_density}, {"soil", recipe.soil_density}};
-  j["contact"] = {{"kn", recipe.kn},
-                  {"ks", recipe.ks},
-                  {"friction", recipe.friction},
-                  {"damping_ratio", recipe.damping_ratio},
-                  {"local_damping", recipe.local_damping}};
+  j["contact"] = contact_json(recipe);
   j["height"] = r.height;
   j["layer_height"] = r.layer_height;
   j["layer_porosity_compacted"] = r.layer_porosity_compacted;
@@ -508,6 +542,44 @@ nlohmann::ordered_json specimen_report(const SpecimenRecipe& recipe, const dem::
   for (const auto& [k, v] : r.seconds) seconds[k] = v;
   j["steps"] = steps;
   j["seconds"] = seconds;
+  return j;
+}
+
+nlohmann::ordered_json compression_report(const SpecimenRecipe& recipe,
+                                          const dem::CompressionResult& r) {
+  nlohmann::ordered_json j;
+  std::size_t spheres = 0, rocks = 0;
+  for (const dem::Body& b : r.world.bodies()) {
+    spheres += b.spheres.size();
+    rocks += b.kind == dem::BodyKind::rock;
+  }
+  j["recipe"] = recipe.path;
+  j["seed"] = recipe.seed;
+  j["method"] = "compression";
+  j["porosity"] = r.porosity;
+  j["target_porosity"] = recipe.compression_porosity;
+  j["friction_compression"] = recipe.compression_friction;
+  j["friction"] = recipe.friction;
+  if (recipe.cuboid)
+    j["container"] = {{"shape", "cuboid"},
+                      {"size", {r.hi.x() - r.lo.x(), r.hi.y() - r.lo.y(), r.hi.z() - r.lo.z()}},
+                      {"lo", {r.lo.x(), r.lo.y(), r.lo.z()}},
+                      {"hi", {r.hi.x(), r.hi.y(), r.hi.z()}}};
+  else
+    j["container"] = {{"shape", "cylinder"}, {"diameter", 2 * r.radius}, {"height", r.height}};
+  j["density"] = {{"rock", recipe.rock_density}, {"soil", recipe.soil_density}};
+  j["contact"] = contact_json(recipe);
+  j["height"] = r.height;
+  j["bodies"] = r.world.bodies().size();
+  j["rocks"] = rocks;
+  j["soil"] = r.world.bodies().size() - rocks;
+  j["spheres"] = spheres;
+  j["coordination_number"] = r.coordination;
+  j["mean_stress"] = r.mean_stress;
+  j["gravity"] = false;
+  j["timestep"] = r.timestep;
+  j["steps"] = {{"compression", r.compression_steps}, {"relaxation", r.relax_steps}};
+  j["relaxed_by"] = r.relaxed_by;
   return j;
 }
 

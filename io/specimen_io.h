@@ -2,6 +2,7 @@
 // files of `clumpkit specimen` (CSV, VTP, report, calibration plot, slice images).
 #pragma once
 
+#include "dem/compression.h"
 #include "dem/specimen.h"
 #include "io/specimen_recipe.h"
 
@@ -49,7 +50,15 @@ struct SpecimenBody {
 
 /// The bodies of a built specimen as specimen.csv holds them (ids from 1, spheres in the world
 /// frame).
-std::vector<SpecimenBody> specimen_bodies(const dem::SpecimenResult& result);
+std::vector<SpecimenBody> specimen_bodies(const dem::World& world);
+inline std::vector<SpecimenBody> specimen_bodies(const dem::SpecimenResult& result) {
+  return specimen_bodies(result.world);
+}
+
+/// The spec of a recipe with preparation.method = "compression" (gravity-free cuboid or
+/// cylinder at a target porosity), classes as specimen_spec makes them.
+dem::CompressionSpec compression_spec(const SpecimenRecipe& recipe,
+                                      std::vector<dem::RockTemplate> templates);
 
 /// A body's spheres in its own (principal) frame: q⁻¹(c − x).
 std::vector<Sphere> body_frame_spheres(const SpecimenBody& body);
@@ -92,5 +101,11 @@ std::vector<std::string> write_slices(const std::string& dir, const dem::Specime
 /// contact law the exports put into the engines' decks.
 nlohmann::ordered_json specimen_report(const SpecimenRecipe& recipe,
                                        const dem::SpecimenResult& result);
+
+/// report.json of a compression specimen: method, container (shape; cuboid: size, lo, hi;
+/// cylinder: diameter, height), porosity, coordination number, mean stress, the contact law
+/// (with stiffness_scaling and d_ref), densities, counts, steps and time step.
+nlohmann::ordered_json compression_report(const SpecimenRecipe& recipe,
+                                          const dem::CompressionResult& result);
 
 }  // namespace clumpkit

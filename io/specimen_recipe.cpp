@@ -4,6 +4,7 @@
 #include "io/report.h"
 #include "io/toml_fields.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -39,8 +40,12 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
   r.path = path;
   r.text = text;
   bool have_gradation = false;
+  std::vector<std::string> deposition_keys;  // keys that only the deposition method uses
+  bool have_diameter = false, have_size = false;
   for (const auto& [key, val] : root) {
     const std::string k(key.str());
+    if (k == "target_relative_density" || k == "layers" || k == "calibration_frictions")
+      deposition_keys.push_back(k);
     if (k == "seed") {
       const long long s = f.integer(val, k);
       if (s < 0) f.fail(k, "must be non-negative, got " + toml_show(val));
@@ -50,12 +55,48 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
     } else if (k == "container") {
       for (const auto& [ck, cv] : f.table(val, k)) {
         const std::string c(ck.str()), field = "container." + c;
-        if (c == "diameter")
+        if (c == "diameter") {
           r.container_diameter = positive(f, cv, field);
-        else if (c == "height")
+          have_diameter = true;
+        } else if (c == "height") {
           r.container_height = positive(f, cv, field);
-        else
-          f.fail(field, "unknown key (known: diameter, height)");
+          have_diameter = true;
+        } else if (c == "shape") {
+          const std::string shape = f.string(cv, field);
+          if (shape != "cylinder" && shape != "cuboid")
+            f.fail(field, "expected \"cylinder\" or \"cuboid\", got " + toml_show(cv));
+          r.cuboid = shape == "cuboid";
+        } else if (c == "size") {
+          const std::vector<double> v = numbers(f, cv, field);
+          if (v.size() != 3) f.fail(field, "expected [x, y, z] edges, got " + toml_show(cv));
+          for (int a = 0; a < 3; ++a) {
+            if (!(v[a] > 0)) f.fail(field, "edges must be positive, got " + toml_show(cv));
+            r.container_size[a] = v[a];
+          }
+          have_size = true;
+        } else {
+          f.fail(field, "unknown key (known: shape, diameter, height, size)");
+        }
+      }
+    } else if (k == "preparation") {
+      for (const auto& [pk, pv] : f.table(val, k)) {
+        const std::string c(pk.str()), field = "preparation." + c;
+        if (c == "method") {
+          const std::string m = f.string(pv, field);
+          if (m != "deposition" && m != "compression")
+            f.fail(field, "expected \"deposition\" or \"compression\", got " + toml_show(pv));
+          r.compression = m == "compression";
+        } else if (c == "porosity") {
+          r.compression_porosity = f.number(pv, field);
+          if (!(r.compression_porosity > 0.2 && r.compression_porosity < 0.9))
+            f.fail(field, "must be in (0.2, 0.9), got " + toml_show(pv));
+        } else if (c == "friction") {
+          r.compression_friction = f.number(pv, field);
+          if (!(r.compression_friction >= 0 && r.compression_friction <= 10))
+            f.fail(field, "must be in [0, 10], got " + toml_show(pv));
+        } else {
+          f.fail(field, "unknown key (known: method, porosity, friction)");
+        }
       }
     } else if (k == "gradation") {
       have_gradation = true;
@@ -125,8 +166,17 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
           r.local_damping = f.number(cv, field);
           if (!(r.local_damping >= 0 && r.local_damping < 1))
             f.fail(field, "must be in [0, 1), got " + toml_show(cv));
+        } else if (g == "stiffness_scaling") {
+          const std::string m = f.string(cv, field);
+          if (m != "none" && m != "linear")
+            f.fail(field, "expected \"none\" or \"linear\", got " + toml_show(cv));
+          r.linear_scaling = m == "linear";
+        } else if (g == "d_ref") {
+          r.d_ref = positive(f, cv, field);
         } else {
-          f.fail(field, "unknown key (known: kn, ks, friction, damping_ratio, local_damping)");
+          f.fail(field,
+                 "unknown key (known: kn, ks, friction, damping_ratio, local_damping, "
+                 "stiffness_scaling, d_ref)");
         }
       }
     } else if (k == "target_relative_density") {
@@ -143,10 +193,26 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
       f.fail(
           k,
           "unknown key (known: seed, name, description, container, gradation, soil_rock_threshold, "
-          "rock_mass_fraction, fines, rock, density, contact, target_relative_density, layers, "
-          "calibration_frictions)");
+          "rock_mass_fraction, fines, rock, density, contact, preparation, "
+          "target_relative_density, layers, calibration_frictions)");
     }
   }
+
+  // The preparation and its container.
+  if (r.linear_scaling && !(r.d_ref > 0))
+    f.fail("contact.d_ref",
+           "needed by stiffness_scaling = \"linear\" (the diameter at which kn "
+           "and ks hold)");
+  if (r.cuboid && !r.compression)
+    f.fail("container.shape",
+           "a cuboid needs preparation.method = \"compression\" (deposition "
+           "builds cylinders)");
+  if (r.cuboid && have_diameter)
+    f.fail("container", "a cuboid has size = [x, y, z], not diameter or height");
+  if (!r.cuboid && have_size)
+    f.fail("container.size", "is for shape = \"cuboid\" (a cylinder has diameter and height)");
+  if (r.compression && !deposition_keys.empty())
+    f.fail(deposition_keys.front(), "applies to preparation.method = \"deposition\" only");
 
   // Gradation: sieves descending, passing descending from exactly 100.
   if (!have_gradation) f.fail("gradation", "missing (sieves = [...], passing = [...])");
@@ -188,13 +254,21 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
                                      " % above the threshold " +
                                      format_number(r.soil_rock_threshold) + " m, got " +
                                      format_number(100 * r.rock_mass_fraction) + " %");
-  if (2 * r.sieves.front() >= r.container_diameter)
+  const double narrowest = r.cuboid
+                               ? *std::min_element(r.container_size.begin(), r.container_size.end())
+                               : std::min(r.container_diameter, r.container_height);
+  if (r.compression) {
+    if (4 * r.sieves.front() > narrowest)
+      f.fail(r.cuboid ? "container.size" : "container.diameter",
+             "must be at least four largest particles (" + format_number(r.sieves.front()) +
+                 " m) across, got " + format_number(narrowest));
+  } else if (2 * r.sieves.front() >= r.container_diameter)
     f.fail("container.diameter", "not wider than twice the largest particle (" +
                                      format_number(r.sieves.front()) + " m), got " +
                                      format_number(r.container_diameter));
   // Porosity is measured one largest sieve size away from floor, top and wall, in each layer
   // too: a layer must be thicker than two of them, the container wider than two more.
-  if (2 * r.sieves.front() >= r.container_height / r.layers)
+  if (!r.compression && 2 * r.sieves.front() >= r.container_height / r.layers)
     f.fail("container.height", "a layer (" + format_number(r.container_height / r.layers) +
                                    " m) must be thicker than twice the largest particle (" +
                                    format_number(r.sieves.front()) + " m), got " +

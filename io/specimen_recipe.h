@@ -2,6 +2,7 @@
 // target relative density of a DEM specimen (Jin et al. 2017 §4).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -18,8 +19,17 @@ struct SizeClass {
 struct SpecimenRecipe {
   std::string path, text;
   std::uint64_t seed = 1;
+  /// [container] shape: "cylinder" (diameter, height) or "cuboid" (size = edges x, y, z; only
+  /// with preparation.method = "compression").
+  bool cuboid = false;
   double container_diameter = 0.3, container_height = 0.6;  ///< cylinder [m]
-  std::vector<double> sieves;                               ///< sieve sizes [m], descending
+  std::array<double, 3> container_size{0.1, 0.1, 0.1};      ///< cuboid edges [m]
+  /// [preparation] method: "deposition" (under gravity, quasi-vibration calibration, layers:
+  /// Jin et al. 2017) or "compression" (gravity off: homogeneous compression of a loose random
+  /// packing to `porosity` at `friction`, dem/compression.h — specimens for element tests).
+  bool compression = false;
+  double compression_porosity = 0.37, compression_friction = 0.0;
+  std::vector<double> sieves;         ///< sieve sizes [m], descending
   std::vector<double> passing;        ///< percent passing each sieve, descending, first = 100
   std::vector<SizeClass> classes;     ///< derived from sieves and passing
   double soil_rock_threshold = 0.02;  ///< particles above are rock clumps, below soil spheres [m]
@@ -31,6 +41,10 @@ struct SpecimenRecipe {
       library_recipe;  ///< a shapes recipe with [fill] to build one (paths relative to the recipe)
   double soil_density = 2700.0, rock_density = 2870.0;  ///< [kg/m³]
   double kn = 1e6, ks = 1e6, friction = 0.8;            ///< contact law, N/m
+  /// contact.stiffness_scaling = "linear": kn and ks are the values at diameter d_ref and each
+  /// contact's stiffness scales with its bodies' diameters (seed 004; dem/contact.h).
+  bool linear_scaling = false;
+  double d_ref = 0.0;  ///< m
   /// Viscous normal damping ratio β and PFC local damping α of the preparation (defaults of
   /// dem::deposition_contact()).
   double damping_ratio = 0.5, local_damping = 0.1;

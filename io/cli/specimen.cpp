@@ -32,8 +32,12 @@ void register_specimen(CLI::App& app) {
       "seconds, ...), calibration.csv and calibration.png (n against mu), slices/*.png (rock "
       "red, soil blue) and manifest.json. Work goes to DIR.partial (checkpoints every "
       "--checkpoint-seconds, and on Ctrl-C); a killed or interrupted run continues with --resume "
-      "to the same bytes. Same seed, "
-      "same bytes, for any --threads.");
+      "to the same bytes. With [preparation] method = \"compression\" (gravity off; container "
+      "shape cuboid with size = [x, y, z], or cylinder): the particles are placed loose in the "
+      "container enlarged 1.4 times and compressed homogeneously by its rigid frictionless walls "
+      "to the target porosity at preparation.friction (the specimens of `clumpkit test`); "
+      "report.json gives porosity, coordination_number, mean_stress and the container box (no "
+      "calibration or slices; --resume restarts it). Same seed, same bytes, for any --threads.");
   c->add_option("--recipe", o->recipe, "Specimen recipe file (see assets/recipes/)")->required();
   c->add_option("--out", o->out, "Output directory")->required();
   c->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->capture_default_str();
@@ -64,6 +68,13 @@ void register_specimen(CLI::App& app) {
 
     if (o->json) {
       std::cout << report.dump(2) << "\n";
+    } else if (recipe.compression) {
+      std::printf(
+          "specimen %s: %zu bodies, porosity %.4f (compressed at mu %.3f), coordination %.2f, "
+          "mean stress %.4g Pa, %.0f s\n",
+          o->out.c_str(), result.world.bodies().size(), result.porosity,
+          recipe.compression_friction, result.coordination, report["mean_stress"].get<double>(),
+          report["seconds"]["total"].get<double>());
     } else {
       std::printf(
           "specimen %s: %zu bodies, porosity %.4f, relative density %.3f (target %.2f), height "

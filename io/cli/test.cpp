@@ -18,7 +18,7 @@ void register_test(CLI::App& app) {
     std::string kind, specimen, recipe, out;
     int threads = 0;
     double checkpoint_seconds = 60;
-    bool resume = false, quiet = false, json = false;
+    bool resume = false, quiet = false, json = false, allow_dynamic = false;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -43,6 +43,9 @@ void register_test(CLI::App& app) {
   c->add_flag("--resume", o->resume,
               "Continue the checkpoint kept in DIR.partial by a killed or interrupted run (same "
               "bytes as an uninterrupted run)");
+  c->add_flag("--allow-dynamic", o->allow_dynamic,
+              "Run even when the strain rate gives an inertial number above 1e-2 (refused "
+              "otherwise: not a quasi-static test)");
   c->add_flag("--quiet", o->quiet, "No progress bar");
   c->add_flag("--json", o->json, "Print report.json on stdout");
   c->callback([o] {
@@ -54,6 +57,7 @@ void register_test(CLI::App& app) {
     ElementTestJobOptions jo;
     jo.resume = o->resume;
     jo.checkpoint_seconds = o->checkpoint_seconds;
+    jo.allow_dynamic = o->allow_dynamic;
     const ElementTestJobResult job = run_element_test_job(kind, o->specimen, recipe, o->out, jo,
                                                           signal_interrupter(bar, "test"));
     bar.finish();

@@ -63,6 +63,12 @@ dem::ContactParams contact_law(const nlohmann::json& report, const std::string& 
   c.friction = report_number(report, path, "contact", "friction");
   c.damping_ratio = report_number(report, path, "contact", "damping_ratio");
   c.local_damping = report_number(report, path, "contact", "local_damping");
+  // The law the specimen was built with (report.json of specimens before 0.x has no rule: none).
+  const nlohmann::json& rc = report.at("contact");
+  if (rc.contains("stiffness_scaling") && rc["stiffness_scaling"] == "linear") {
+    c.scaling = dem::StiffnessScaling::linear;
+    c.d_ref = report_number(report, path, "contact", "d_ref");
+  }
   const double ks_over_kn = r.ks_over_kn.value_or(c.ks / c.kn);
   if (r.kn_ref) c.kn = *r.kn_ref;
   c.ks = ks_over_kn * c.kn;
@@ -97,6 +103,27 @@ nlohmann::ordered_json measured(double v) {
 
 using Phase = dem::ElementTestState::Phase;
 
+// The container of the specimen as a test cell: a cuboid at its recorded box, or a cylinder of
+// its diameter with the platens on the specimen's bottom and top.
+dem::TestCell test_cell(dem::World& world, const nlohmann::json& report, const std::string& path,
+                        double z_lo, double z_hi) {
+  const nlohmann::json& c = report.contains("container") ? report["container"] : nlohmann::json();
+  if (c.is_object() && c.value("shape", std::string()) == "cuboid") {
+    Vec3 lo, hi;
+    try {
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = c.at("lo").at(a).get<double>();
+        hi[a] = c.at("hi").at(a).get<double>();
+      }
+    } catch (const std::exception&) {
+      throw InvalidInput(path + ": field container.lo/hi missing or not three numbers");
+    }
+    return dem::add_cuboid_test_cell(world, lo, hi);
+  }
+  const double radius = 0.5 * report_number(report, path, "container", "diameter");
+  return dem::add_cylinder_test_cell(world, radius, z_lo, z_hi);
+}
+
 std::string fnv1a_hex(const std::string& text) {
   Fnv1a h;
   h.add(std::string_view(text));
@@ -116,7 +143,10 @@ nlohmann::json state_json(const dem::ElementTestState& st, const dem::TestCell& 
   j["height0"] = st.height0;
   j["volume0"] = st.volume0;
   j["solid_volume"] = st.solid_volume;
-  j["cell"] = {{"lateral", cell.lateral}, {"bottom", cell.bottom}, {"top", cell.top}};
+  j["cell"] = {{"shape", cell.shape == dem::TestCell::Shape::cuboid ? "cuboid" : "cylinder"},
+               {"lateral", cell.lateral},
+               {"bottom", cell.bottom},
+               {"top", cell.top}};
   nlohmann::json rows = nlohmann::json::array();
   for (const dem::CurveRow& c : st.curve)
     rows.push_back({c.step, c.axial_strain, c.volumetric_strain, c.axial_stress, c.lateral_stress,
@@ -163,7 +193,9 @@ std::optional<dem::ElementTestState> read_state(const fs::path& path,
     st.height0 = j.at("height0").get<double>();
     st.volume0 = j.at("volume0").get<double>();
     st.solid_volume = j.at("solid_volume").get<double>();
-    cell.shape = dem::TestCell::Shape::cylinder;
+    cell.shape = j.at("cell").at("shape").get<std::string>() == "cuboid"
+                     ? dem::TestCell::Shape::cuboid
+                     : dem::TestCell::Shape::cylinder;
     cell.lateral = j.at("cell").at("lateral").get<std::vector<int>>();
     cell.bottom = j.at("cell").at("bottom").get<int>();
     cell.top = j.at("cell").at("top").get<int>();
@@ -223,6 +255,16 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
   }
   const double d_mean = d_sum / double(rows.size()), density = rho_sum / vol_sum;
   o.skin = 0.2 * r_min;  // a length of the specimen, not an absolute one (zones.md §3)
+  // Inertial number I = ε̇·d·sqrt(ρ/p): quasi-static below 1e-3, dense flow above 1e-2 (GDR
+  // MiDi 2004). Refused before anything is written unless the user asks for a dynamic test.
+  const double inertial =
+      recipe.settings.strain_rate * d_mean * std::sqrt(density / recipe.settings.confining);
+  if (inertial > 1e-2 && !options.allow_dynamic)
+    throw InvalidInput(recipe.path +
+                       ": test.strain_rate: " + format_number(recipe.settings.strain_rate) +
+                       " gives an inertial number " + format_number(inertial, 3) +
+                       " > 1e-2 on this specimen (a dynamic test, not quasi-static): lower it, or "
+                       "pass --allow-dynamic");
 
   // The work directory DIR.partial, continued with --resume when its checkpoint matches.
   const fs::path out = out_dir + ".partial";
@@ -247,8 +289,7 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
   dem::ElementTestState state = saved ? *saved : dem::ElementTestState{};
   if (!saved) {
     for (const SpecimenBody& b : rows) world.add_body(dem_body(b));
-    const double radius = 0.5 * report_number(spec_report, report_path, "container", "diameter");
-    cell = dem::add_cylinder_test_cell(world, radius, z_lo, z_hi);
+    cell = test_cell(world, spec_report, report_path, z_lo, z_hi);
     world.options().timestep = recipe.timestep_safety * dem::critical_timestep(world);
   }
 
@@ -319,8 +360,6 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
   const dem::CurveRow& last = r.curve.back();
   rep["porosity"] = first.porosity;
   rep["coordination_number"] = first.coordination;
-  // Inertial number I = ε̇·d·sqrt(ρ/p): quasi-static below 1e-3 (GDR MiDi 2004).
-  const double inertial = s.strain_rate * d_mean * std::sqrt(density / s.confining);
   rep["inertial_number"] = inertial;
   PlotCurve plot;
   std::string x_label, y_label;

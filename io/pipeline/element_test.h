@@ -28,6 +28,9 @@ struct ElementTestJobOptions {
   /// recipe, specimen and version; otherwise it starts afresh, saying so in the report).
   bool resume = false;
   double checkpoint_seconds = 60;  ///< wall-clock seconds between checkpoints (≤ 0: none)
+  /// Run a test whose inertial number I = ε̇·d·sqrt(ρ/σ3) exceeds 1e-2 (refused otherwise: a
+  /// dynamic test, not a quasi-static element test).
+  bool allow_dynamic = false;
 };
 
 /// What run_element_test_job did: report.json as written, and whether it continued a checkpoint

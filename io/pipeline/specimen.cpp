@@ -19,6 +19,44 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// The report's library entry: where the library will be once DIR.partial is published.
+std::string library_entry(const std::string& library, const fs::path& staging,
+                          const fs::path& out) {
+  return library.rfind(staging.string(), 0) == 0 ? (out / fs::path(library).filename()).string()
+                                                 : library;
+}
+
+/// A gravity-free specimen (preparation.method = "compression"): one stage of about a minute,
+/// restarted rather than resumed; its files go to DIR.partial, published at the end.
+SpecimenJobResult compress_into(const SpecimenRecipe& recipe, const std::string& out_dir,
+                                const fs::path& staging, std::vector<dem::RockTemplate> templates,
+                                const std::string& library, const Interrupter& interrupter,
+                                std::chrono::steady_clock::time_point started) {
+  const dem::CompressionResult result =
+      dem::compress_specimen(compression_spec(recipe, std::move(templates)), interrupter);
+  const std::vector<SpecimenBody> bodies = specimen_bodies(result.world);
+  write_specimen_csv((staging / "specimen.csv").string(), bodies);
+  write_specimen_vtp((staging / "specimen.vtp").string(), bodies);
+  nlohmann::ordered_json report = compression_report(recipe, result);
+  if (!library.empty()) report["library"] = library_entry(library, staging, out_dir);
+  report["seconds"]["total"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  write_file_atomically((staging / "report.json").string(),
+                        [&](std::ostream& s) { s << report.dump(2) << "\n"; });
+  nlohmann::ordered_json manifest =
+      manifest_head("specimen", recipe.path, recipe.text, recipe.seed);
+  write_file_atomically((staging / "manifest.json").string(),
+                        [&](std::ostream& s) { s << manifest.dump(2) << "\n"; });
+  publish_directory(staging.string(), out_dir);
+  SpecimenJobResult job;
+  job.specimen.world = result.world;
+  job.specimen.porosity = result.porosity;
+  job.specimen.height = result.height;
+  job.specimen.coordination = result.coordination;
+  job.report = std::move(report);
+  return job;
+}
+
 /// The job inside DIR.partial (`staging`), published to `out_dir` at the end.
 SpecimenJobResult build_into(const SpecimenRecipe& recipe, const std::string& out_dir,
                              const fs::path& staging, const SpecimenJobOptions& options,
@@ -38,6 +76,9 @@ SpecimenJobResult build_into(const SpecimenRecipe& recipe, const std::string& ou
   }
   std::vector<dem::RockTemplate> templates;
   if (!library.empty()) templates = read_rock_templates(library);
+  if (recipe.compression)
+    return compress_into(recipe, out_dir, staging, std::move(templates), library, interrupter,
+                         started);
   const dem::SpecimenSpec spec = specimen_spec(recipe, std::move(templates));
 
   StageFiles stages((staging / "checkpoints").string(), options.resume);
@@ -60,9 +101,7 @@ SpecimenJobResult build_into(const SpecimenRecipe& recipe, const std::string& ou
   for (int k = 1; k <= slices; ++k) heights.push_back(result.height * k / (slices + 1));
   write_slices((staging / "slices").string(), result, spec.radius, heights);
   nlohmann::ordered_json report = specimen_report(recipe, result);
-  report["library"] = library.rfind(staging.string(), 0) == 0
-                          ? (out / fs::path(library).filename()).string()
-                          : library;
+  report["library"] = library_entry(library, staging, out);
   report["seconds"]["total"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   write_file_atomically((staging / "report.json").string(),
@@ -97,7 +136,13 @@ SpecimenJobResult run_specimen(const SpecimenRecipe& recipe, const std::string& 
                                std::chrono::steady_clock::time_point started) {
   check_output_directory(out_dir);
   if (options.max_memory_bytes > 0) {
-    const double need = estimated_specimen_bytes(specimen_spec(recipe, {}));
+    dem::SpecimenSpec spec = specimen_spec(recipe, {});
+    if (recipe.cuboid) {  // the same volume as a cylinder of the cuboid's height
+      const auto& e = recipe.container_size;
+      spec.radius = std::sqrt(e[0] * e[1] / M_PI);
+      spec.height = e[2];
+    }
+    const double need = estimated_specimen_bytes(spec);
     if (!(need <= options.max_memory_bytes))
       throw InvalidInput(
           recipe.path + ": the specimen would need about " + format_number(need / 1073741824.0, 3) +

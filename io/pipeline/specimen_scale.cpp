@@ -51,6 +51,10 @@ nlohmann::ordered_json run_specimen_scale(const std::string& specimen_dir, doubl
   if (rep.contains("container")) {
     scale(rep["container"], "diameter", factor);
     scale(rep["container"], "height", factor);
+    for (const char* k : {"size", "lo", "hi"})
+      if (rep["container"].contains(k) && rep["container"][k].is_array())
+        for (auto& x : rep["container"][k])
+          if (x.is_number()) x = x.get<double>() * factor;
   }
   scale(rep, "height", factor);
   scale(rep, "layer_height", factor);
@@ -58,8 +62,12 @@ nlohmann::ordered_json run_specimen_scale(const std::string& specimen_dir, doubl
     for (const char* k : {"radius", "z_lo", "z_hi"}) scale(rep["measurement_region"], k, factor);
   }
   if (rep.contains("contact")) {
-    scale(rep["contact"], "kn", factor);
-    scale(rep["contact"], "ks", factor);
+    // A size-scaled law (kn at d_ref) scales through the diameters: kn_ref and d_ref stay.
+    const bool linear = rep["contact"].value("stiffness_scaling", std::string()) == "linear";
+    if (!linear) {
+      scale(rep["contact"], "kn", factor);
+      scale(rep["contact"], "ks", factor);
+    }
   }
   rep["scaled_from"] = specimen_dir;
   rep["scale_factor"] = factor;

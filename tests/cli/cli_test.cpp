@@ -576,6 +576,17 @@ TEST(Cli, SpecimenBadRecipesFailBeforeSimulation) {
   expect_one_line_error(run("diameter = 0.060", "diameter = 0.020"), "container.diameter");
   expect_one_line_error(run("recipe = \"rocks.toml\"", "library = \"no-such-dir\""),
                         "rock.library: no clump library");
+  // Gravity-free specimens: a cuboid needs the compression method, which has no layers.
+  expect_one_line_error(
+      run("diameter = 0.060\nheight = 0.100", "shape = \"cuboid\"\nsize = [0.1, 0.1, 0.1]"),
+      "container.shape: a cuboid needs preparation.method");
+  expect_one_line_error(run("[container]", "[preparation]\nmethod = \"compression\"\n[container]"),
+                        "layers: applies to preparation.method");
+  expect_one_line_error(run("[container]", "[preparation]\nmethod = \"squeeze\"\n[container]"),
+                        "preparation.method: expected");
+  expect_one_line_error(
+      run("[container]", "[contact]\nstiffness_scaling = \"linear\"\n[container]"),
+      "contact.d_ref");
   EXPECT_FALSE(fs::exists(d / "o"));
   EXPECT_FALSE(fs::exists(d / "o.partial"));
 }

@@ -177,6 +177,77 @@ TEST(CliElementTest, BundledTestRecipeParses) {
   EXPECT_TRUE(fs::exists(d / "tri" / "manifest.json"));
 }
 
+TEST(CliElementTest, CompressedCuboidAndItsScaledCopyTestTheSameBitForBit) {
+  // A gravity-free cuboid specimen (preparation.method = "compression", ~570 spheres of 10 mm in
+  // an 8 d cube at n = 0.40, kn ∝ d) tested in a cuboid cell at seed 004's 5 MPa, and its copy
+  // at λ = 2 (specimen-scale: the recorded linear law keeps kn_ref, the diameters double the
+  // stiffness) tested at half the strain rate: the same curve, bit for bit.
+  const fs::path d = scratch();
+  write(d / "cube.toml", R"(seed = 3
+soil_rock_threshold = 1.0
+rock_mass_fraction = 0.0
+[container]
+shape = "cuboid"
+size = [0.08, 0.08, 0.08]
+[preparation]
+method = "compression"
+porosity = 0.40
+[gradation]
+sieves = [0.0101, 0.0099]
+passing = [100, 0]
+[density]
+soil = 2650
+[contact]
+kn = 8e7
+ks = 8e5
+friction = 0.8
+stiffness_scaling = "linear"
+d_ref = 0.01
+)");
+  Result r = run_cli(
+      "specimen --quiet --recipe " + (d / "cube.toml").string() + " --out " + (d / "cube").string(),
+      d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto spec = nlohmann::json::parse(slurp(d / "cube" / "report.json"));
+  EXPECT_EQ(spec["container"]["shape"], "cuboid");
+  EXPECT_NEAR(spec["porosity"].get<double>(), 0.40, 1e-12);
+  EXPECT_EQ(spec["contact"]["stiffness_scaling"], "linear");
+  EXPECT_EQ(spec["contact"]["d_ref"].get<double>(), 0.01);
+  EXPECT_GT(spec["bodies"].get<int>(), 500);
+  r = run_cli(
+      "specimen-scale " + (d / "cube").string() + " --factor 2 --out " + (d / "cube2").string(), d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto big = nlohmann::json::parse(slurp(d / "cube2" / "report.json"));
+  EXPECT_EQ(big["contact"]["kn"], spec["contact"]["kn"]);  // kn_ref at d_ref: unchanged
+  EXPECT_EQ(big["container"]["hi"][2].get<double>(), 2 * spec["container"]["hi"][2].get<double>());
+  const char* recipe =
+      "[test]\nconfining = 5e6\nstrain_rate = %s\nmax_axial_strain = 2e-4\nrecord_every = 100\n";
+  char text[256];
+  std::snprintf(text, sizeof text, recipe, "0.1");
+  write(d / "a.toml", text);
+  std::snprintf(text, sizeof text, recipe, "0.05");
+  write(d / "b.toml", text);
+  for (const char* c : {"a", "b"}) {
+    const std::string s = std::string(c) == "a" ? "cube" : "cube2";
+    r = run_cli("test triaxial --quiet --specimen " + (d / s).string() + " --recipe " +
+                    (d / (std::string(c) + ".toml")).string() + " --out " + (d / c).string(),
+                d);
+    ASSERT_EQ(r.rc, 0) << r.err;
+  }
+  EXPECT_EQ(slurp(d / "a" / "curve.csv"), slurp(d / "b" / "curve.csv"));
+  const auto rep = nlohmann::json::parse(slurp(d / "a" / "report.json"));
+  EXPECT_TRUE(rep["consolidated"].get<bool>());
+  EXPECT_EQ(rep["contact"]["stiffness_scaling"], "linear");
+  // The cuboid cell holds σ3 = 5 MPa on its four lateral walls; Young's modulus is of the order
+  // of the affine estimate (zones.md §3: K_V ≈ 0.33·kn/d = 2.6 GPa, E of order 1 GPa).
+  const auto rows = curve_rows(d / "a" / "curve.csv");
+  ASSERT_GT(rows.size(), 10u);
+  for (const auto& row : rows) EXPECT_NEAR(row[4], 5e6, 0.01 * 5e6);
+  const double e = rep["young_modulus"].get<double>();
+  EXPECT_GT(e, 0.3e9);
+  EXPECT_LT(e, 3e9);
+}
+
 TEST(CliElementTest, BadInputIsRefusedWithOneLine) {
   const fs::path d = scratch();
   ASSERT_NO_FATAL_FAILURE(build_tiny_specimen(d));
@@ -184,6 +255,9 @@ TEST(CliElementTest, BadInputIsRefusedWithOneLine) {
   write(d / "unknown.toml", "[test]\nconfinning = 1e5\n");
   write(d / "negative.toml", "[test]\nconfining = -1\n");
   write(d / "linear.toml", "[contact]\nstiffness_scaling = \"linear\"\n");
+  // Inertial number ε̇·d·sqrt(ρ/p) ≈ 1e4 · 0.01 · 0.16 ≫ 1e-2 on the tiny specimen.
+  write(d / "dynamic.toml", "[test]\nconfining = 1e5\nstrain_rate = 1e4\n");
+  fs::create_directories(d / "notspec");
   const std::string spec = " --specimen " + (d / "spec").string();
   const std::string out = (d / "out").string();
   struct Case {
@@ -197,6 +271,11 @@ TEST(CliElementTest, BadInputIsRefusedWithOneLine) {
        "test.confining"},
       {"test triaxial" + spec + " --recipe " + (d / "linear.toml").string() + " --out " + out,
        "contact.d_ref"},
+      {"test triaxial" + spec + " --recipe " + (d / "dynamic.toml").string() + " --out " + out,
+       "--allow-dynamic"},
+      {"test oedometer --specimen " + (d / "notspec").string() + " --recipe " +
+           (d / "tri.toml").string() + " --out " + out,
+       "notspec"},
       {"test triaxial --specimen " + (d / "missing").string() + " --recipe " +
            (d / "tri.toml").string() + " --out " + out,
        "missing"},
