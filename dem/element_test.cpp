@@ -153,7 +153,9 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
 
   ElementTestState& st = state;
   if (st.phase == Phase::start) {
-    if (s.friction >= 0.0) world.rescale_friction(s.friction);
+    st.test_friction = s.friction >= 0.0 ? s.friction : world.options().contact.friction;
+    world.rescale_friction(s.consolidation_friction >= 0.0 ? s.consolidation_friction
+                                                           : st.test_friction);
     st.start_height = cell_height(world, cell);
     st.solid_volume = 0;
     for (const Body& b : world.bodies()) st.solid_volume += b.volume;
@@ -192,6 +194,8 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
     }
     st.height0 = cell_height(world, cell);
     st.volume0 = cell_volume(world, cell);
+    if (world.options().contact.friction != st.test_friction)
+      world.rescale_friction(st.test_friction);
     st.phase = Phase::loading;
   }
 

@@ -61,6 +61,11 @@ struct ElementTestSettings {
   double stress_rate = 0.0;       ///< isotropic loading rate (Pa/s); 0: confining·strain_rate·20
   double max_axial_strain = 0.2;  ///< triaxial end
   double friction = -1;           ///< μ of the test (negative: the world's)
+  /// μ during the consolidation (negative: the test's). 0 consolidates a frictionless packing
+  /// to its densest state at the confining stress, whatever its preparation (a protocol that
+  /// makes specimens of different sizes and laws comparable); the test's μ applies from the
+  /// start of loading.
+  double consolidation_friction = -1;
   double consolidation_tolerance = 0.005;  ///< relative stress error at equilibrium
   double consolidation_unbalanced = 1e-3;  ///< unbalanced-force ratio at equilibrium
   long long max_consolidation_steps = 3'000'000;
@@ -89,6 +94,7 @@ struct ElementTestState {
   double start_height = 0;          ///< cell height when the test began (m): the speed limit
   double height0 = 0, volume0 = 0;  ///< at the end of consolidation: the strains' origin
   double solid_volume = 0;          ///< Σ body volumes (m³)
+  double test_friction = 0;         ///< μ of the loading
   std::vector<CurveRow> curve;
 };
 

@@ -56,6 +56,8 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
           if (r.critical_fraction > 1) f.fail(field, "must be in (0, 1], got " + toml_show(tv));
         } else if (t == "friction") {
           s.friction = non_negative(f, tv, field);
+        } else if (t == "consolidation_friction") {
+          s.consolidation_friction = non_negative(f, tv, field);
         } else if (t == "record_every") {
           const long long n = f.integer(tv, field);
           if (n < 1 || n > 1000000) f.fail(field, "must be in [1, 1e6], got " + toml_show(tv));
@@ -73,8 +75,8 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
         } else {
           f.fail(field,
                  "unknown key (known: confining, final_stress, strain_rate, stress_rate, "
-                 "max_axial_strain, critical_fraction, friction, record_every, timestep_safety, "
-                 "modulus_range, consolidation_tolerance)");
+                 "max_axial_strain, critical_fraction, friction, consolidation_friction, "
+                 "record_every, timestep_safety, modulus_range, consolidation_tolerance)");
         }
       }
     } else if (k == "contact") {

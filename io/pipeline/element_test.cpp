@@ -143,6 +143,7 @@ nlohmann::json state_json(const dem::ElementTestState& st, const dem::TestCell& 
   j["height0"] = st.height0;
   j["volume0"] = st.volume0;
   j["solid_volume"] = st.solid_volume;
+  j["test_friction"] = st.test_friction;
   j["cell"] = {{"shape", cell.shape == dem::TestCell::Shape::cuboid ? "cuboid" : "cylinder"},
                {"lateral", cell.lateral},
                {"bottom", cell.bottom},
@@ -193,6 +194,7 @@ std::optional<dem::ElementTestState> read_state(const fs::path& path,
     st.height0 = j.at("height0").get<double>();
     st.volume0 = j.at("volume0").get<double>();
     st.solid_volume = j.at("solid_volume").get<double>();
+    st.test_friction = j.at("test_friction").get<double>();
     cell.shape = j.at("cell").at("shape").get<std::string>() == "cuboid"
                      ? dem::TestCell::Shape::cuboid
                      : dem::TestCell::Shape::cylinder;
@@ -355,7 +357,10 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
       {"kn", o.contact.kn},
       {"ks", o.contact.ks},
       {"d_ref", o.contact.d_ref},
-      {"friction", s.friction >= 0 ? s.friction : o.contact.friction}};
+      {"friction", s.friction >= 0 ? s.friction : o.contact.friction},
+      {"consolidation_friction", s.consolidation_friction >= 0
+                                     ? s.consolidation_friction
+                                     : (s.friction >= 0 ? s.friction : o.contact.friction)}};
   const dem::CurveRow& first = r.curve.front();
   const dem::CurveRow& last = r.curve.back();
   rep["porosity"] = first.porosity;
