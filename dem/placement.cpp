@@ -106,6 +106,19 @@ std::vector<double> bounding_radii(const std::vector<PlacementItem>& items, cons
   return bound;
 }
 
+/// Tries `item` at `position` and `orientation`: when none of its spheres overlaps a placed one,
+/// adds them to the grid (and `world` holds their centres) and returns true.
+bool try_place(const PlacementItem& item, const Vec3& position,
+               const Eigen::Quaterniond& orientation, SphereGrid& grid, std::vector<Vec3>& world) {
+  world.resize(item.spheres.size());
+  for (std::size_t s = 0; s < item.spheres.size(); ++s) {
+    world[s] = orientation * item.spheres[s].center + position;
+    if (grid.overlaps(world[s], item.spheres[s].radius)) return false;
+  }
+  for (std::size_t s = 0; s < item.spheres.size(); ++s) grid.add(world[s], item.spheres[s].radius);
+  return true;
+}
+
 }  // namespace
 
 Eigen::Quaterniond uniform_orientation(Rng& rng) {
@@ -158,7 +171,6 @@ std::vector<Placement> place_in_cylinder(const std::vector<PlacementItem>& items
     const PlacementItem& item = items[i];
     const double b = bound[i];
     const double disc = radius - b;
-    world.resize(item.spheres.size());
     bool placed = false;
     while (!placed) {
       const double z_min = std::max(z_lo, b);
@@ -168,16 +180,9 @@ std::vector<Placement> place_in_cylinder(const std::vector<PlacementItem>& items
         const double phi = 2.0 * kPi * rng.uniform();
         const Vec3 position(rho * std::cos(phi), rho * std::sin(phi), rng.uniform(z_min, z_max));
         const Eigen::Quaterniond orientation = uniform_orientation(rng);
-        bool free = true;
-        for (std::size_t s = 0; s < item.spheres.size() && free; ++s) {
-          world[s] = orientation * item.spheres[s].center + position;
-          free = !grid.overlaps(world[s], item.spheres[s].radius);
-        }
-        if (!free) continue;
-        for (std::size_t s = 0; s < item.spheres.size(); ++s) {
-          grid.add(world[s], item.spheres[s].radius);
+        if (!try_place(item, position, orientation, grid, world)) continue;
+        for (std::size_t s = 0; s < item.spheres.size(); ++s)
           top = std::max(top, world[s].z() + item.spheres[s].radius);
-        }
         placements.push_back({position, orientation});
         placed = true;
       }
@@ -211,20 +216,12 @@ std::vector<Placement> place_in_box(const std::vector<PlacementItem>& items, con
     if (2.0 * b >= size.minCoeff())
       throw InvalidInput("place_in_box: item " + std::to_string(i) + " (bounding radius " +
                          std::to_string(b) + ") does not fit in the box");
-    world.resize(item.spheres.size());
     bool placed = false;
     for (int t = 0; t < max_trials && !placed; ++t) {
       const Vec3 position(rng.uniform(lo.x() + b, hi.x() - b), rng.uniform(lo.y() + b, hi.y() - b),
                           rng.uniform(lo.z() + b, hi.z() - b));
       const Eigen::Quaterniond orientation = uniform_orientation(rng);
-      bool free = true;
-      for (std::size_t s = 0; s < item.spheres.size() && free; ++s) {
-        world[s] = orientation * item.spheres[s].center + position;
-        free = !grid.overlaps(world[s], item.spheres[s].radius);
-      }
-      if (!free) continue;
-      for (std::size_t s = 0; s < item.spheres.size(); ++s)
-        grid.add(world[s], item.spheres[s].radius);
+      if (!try_place(item, position, orientation, grid, world)) continue;
       placements.push_back({position, orientation});
       placed = true;
     }

@@ -481,17 +481,30 @@ nlohmann::ordered_json contact_json(const SpecimenRecipe& recipe) {
   return c;
 }
 
-}  // namespace
-
-nlohmann::ordered_json specimen_report(const SpecimenRecipe& recipe, const dem::SpecimenResult& r) {
+nlohmann::ordered_json report_head(const SpecimenRecipe& recipe) {
   nlohmann::ordered_json j;
+  j["recipe"] = recipe.path;
+  j["seed"] = recipe.seed;
+  return j;
+}
+
+// bodies, rocks, soil and spheres of a built specimen.
+void add_counts(nlohmann::ordered_json& j, const dem::World& world) {
   std::size_t spheres = 0, rocks = 0;
-  for (const dem::Body& b : r.world.bodies()) {
+  for (const dem::Body& b : world.bodies()) {
     spheres += b.spheres.size();
     rocks += b.kind == dem::BodyKind::rock;
   }
-  j["recipe"] = recipe.path;
-  j["seed"] = recipe.seed;
+  j["bodies"] = world.bodies().size();
+  j["rocks"] = rocks;
+  j["soil"] = world.bodies().size() - rocks;
+  j["spheres"] = spheres;
+}
+
+}  // namespace
+
+nlohmann::ordered_json specimen_report(const SpecimenRecipe& recipe, const dem::SpecimenResult& r) {
+  nlohmann::ordered_json j = report_head(recipe);
   j["porosity"] = r.porosity;
   j["relative_density"] = r.relative_density;
   j["target_relative_density"] = recipe.target_relative_density;
@@ -506,10 +519,7 @@ nlohmann::ordered_json specimen_report(const SpecimenRecipe& recipe, const dem::
   j["height"] = r.height;
   j["layer_height"] = r.layer_height;
   j["layer_porosity_compacted"] = r.layer_porosity_compacted;
-  j["bodies"] = r.world.bodies().size();
-  j["rocks"] = rocks;
-  j["soil"] = r.world.bodies().size() - rocks;
-  j["spheres"] = spheres;
+  add_counts(j, r.world);
   j["layer_porosity"] = r.layer_porosity;
   double lo = 1, hi = 0;
   for (double n : r.layer_porosity) lo = std::min(lo, n), hi = std::max(hi, n);
@@ -547,14 +557,7 @@ nlohmann::ordered_json specimen_report(const SpecimenRecipe& recipe, const dem::
 
 nlohmann::ordered_json compression_report(const SpecimenRecipe& recipe,
                                           const dem::CompressionResult& r) {
-  nlohmann::ordered_json j;
-  std::size_t spheres = 0, rocks = 0;
-  for (const dem::Body& b : r.world.bodies()) {
-    spheres += b.spheres.size();
-    rocks += b.kind == dem::BodyKind::rock;
-  }
-  j["recipe"] = recipe.path;
-  j["seed"] = recipe.seed;
+  nlohmann::ordered_json j = report_head(recipe);
   j["method"] = "compression";
   j["porosity"] = r.porosity;
   j["target_porosity"] = recipe.compression_porosity;
@@ -570,10 +573,7 @@ nlohmann::ordered_json compression_report(const SpecimenRecipe& recipe,
   j["density"] = {{"rock", recipe.rock_density}, {"soil", recipe.soil_density}};
   j["contact"] = contact_json(recipe);
   j["height"] = r.height;
-  j["bodies"] = r.world.bodies().size();
-  j["rocks"] = rocks;
-  j["soil"] = r.world.bodies().size() - rocks;
-  j["spheres"] = spheres;
+  add_counts(j, r.world);
   j["coordination_number"] = r.coordination;
   j["mean_stress"] = r.mean_stress;
   j["gravity"] = false;

@@ -26,6 +26,20 @@ std::string library_entry(const std::string& library, const fs::path& staging,
                                                  : library;
 }
 
+/// report.json (with the total seconds since `started`) and manifest.json into `staging`.
+void write_report_and_manifest(const fs::path& staging, const SpecimenRecipe& recipe,
+                               nlohmann::ordered_json& report,
+                               std::chrono::steady_clock::time_point started) {
+  report["seconds"]["total"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  write_file_atomically((staging / "report.json").string(),
+                        [&](std::ostream& s) { s << report.dump(2) << "\n"; });
+  nlohmann::ordered_json manifest =
+      manifest_head("specimen", recipe.path, recipe.text, recipe.seed);
+  write_file_atomically((staging / "manifest.json").string(),
+                        [&](std::ostream& s) { s << manifest.dump(2) << "\n"; });
+}
+
 /// A gravity-free specimen (preparation.method = "compression"): one stage of about a minute,
 /// restarted rather than resumed; its files go to DIR.partial, published at the end.
 SpecimenJobResult compress_into(const SpecimenRecipe& recipe, const std::string& out_dir,
@@ -39,14 +53,7 @@ SpecimenJobResult compress_into(const SpecimenRecipe& recipe, const std::string&
   write_specimen_vtp((staging / "specimen.vtp").string(), bodies);
   nlohmann::ordered_json report = compression_report(recipe, result);
   if (!library.empty()) report["library"] = library_entry(library, staging, out_dir);
-  report["seconds"]["total"] =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  write_file_atomically((staging / "report.json").string(),
-                        [&](std::ostream& s) { s << report.dump(2) << "\n"; });
-  nlohmann::ordered_json manifest =
-      manifest_head("specimen", recipe.path, recipe.text, recipe.seed);
-  write_file_atomically((staging / "manifest.json").string(),
-                        [&](std::ostream& s) { s << manifest.dump(2) << "\n"; });
+  write_report_and_manifest(staging, recipe, report, started);
   publish_directory(staging.string(), out_dir);
   SpecimenJobResult job;
   job.specimen.world = result.world;
@@ -102,14 +109,7 @@ SpecimenJobResult build_into(const SpecimenRecipe& recipe, const std::string& ou
   write_slices((staging / "slices").string(), result, spec.radius, heights);
   nlohmann::ordered_json report = specimen_report(recipe, result);
   report["library"] = library_entry(library, staging, out);
-  report["seconds"]["total"] =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  write_file_atomically((staging / "report.json").string(),
-                        [&](std::ostream& s) { s << report.dump(2) << "\n"; });
-  nlohmann::ordered_json manifest =
-      manifest_head("specimen", recipe.path, recipe.text, recipe.seed);
-  write_file_atomically((staging / "manifest.json").string(),
-                        [&](std::ostream& s) { s << manifest.dump(2) << "\n"; });
+  write_report_and_manifest(staging, recipe, report, started);
   fs::remove_all(staging / "checkpoints");
   publish_directory(staging.string(), out_dir);
   job.report = std::move(report);
