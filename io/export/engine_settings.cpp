@@ -17,6 +17,15 @@ EngineSettings engine_settings_from_report(const nlohmann::json& report, const s
                          " missing (a report of an older clumpkit; build the specimen again)");
     return report[section][key].get<double>();
   };
+  // What the decks cannot carry yet is refused rather than dropped silently.
+  if (report.contains("container") && report["container"].value("shape", "") == "cuboid")
+    throw InvalidInput(path +
+                       ": container.shape: \"cuboid\" specimens are not exported yet (the decks "
+                       "model a cylinder container): export a cylinder specimen");
+  if (report.contains("contact") && report["contact"].value("stiffness_scaling", "") == "linear")
+    throw InvalidInput(path +
+                       ": contact.stiffness_scaling: \"linear\" (kn ∝ d) is not exported yet "
+                       "(the decks use one kn and ks for every contact)");
   EngineSettings s;
   s.container_radius = 0.5 * field("container", "diameter");
   s.container_height = field("container", "height");

@@ -214,6 +214,11 @@ d_ref = 0.01
   EXPECT_EQ(spec["contact"]["stiffness_scaling"], "linear");
   EXPECT_EQ(spec["contact"]["d_ref"].get<double>(), 0.01);
   EXPECT_GT(spec["bodies"].get<int>(), 500);
+  // Not exportable yet: refused with one line rather than exported as a cylinder with one kn.
+  expect_one_line_error(
+      run_cli("export lammps " + (d / "cube").string() + " --out " + (d / "lmp").string(), d),
+      "container.shape");
+  EXPECT_FALSE(fs::exists(d / "lmp"));
   r = run_cli(
       "specimen-scale " + (d / "cube").string() + " --factor 2 --out " + (d / "cube2").string(), d);
   ASSERT_EQ(r.rc, 0) << r.err;
