@@ -27,14 +27,18 @@ print(text)
 PY
   "$bin" specimen --quiet --recipe "$1.toml" --out "$1" --threads 1
 }
-# Isotropic 100 -> 400 kPa; the stress ramp takes the same number of steps in every case.
-run_test() {  # NAME SPECIMEN LAW RATE_DIVISOR
+# Isotropic 100 -> 400 kPa. Rates ÷ λ for both laws, so the inertial number of consolidation
+# (walls at 10·strain_rate·height per second) and ramp is the same in every case: tied to the time
+# step instead (the default servo speed limit is 1e-6 of the height per step), the constant-kn
+# 3d packings, whose step is 5.2× longer rather than 3×, consolidated relatively slower and
+# ended denser (Z 4.47 against 4.20 for the same specimen under the linear law).
+run_test() {  # NAME SPECIMEN LAW LAMBDA
   python3 - "$3" "$4" > "$1.toml" <<'PY'
 import sys
-law, div = sys.argv[1], float(sys.argv[2])
-print("[test]\nconfining = 1e5\nfinal_stress = 4e5\nstrain_rate = 0.01\n"
+law, lam = sys.argv[1], float(sys.argv[2])
+print("[test]\nconfining = 1e5\nfinal_stress = 4e5\nstrain_rate = %r\n"
       "stress_rate = %r\nrecord_every = 200\nfriction = 0.8\n"
-      "[contact]\nstiffness_scaling = \"%s\"\nkn_ref = 8e7\nd_ref = 0.01\nks_over_kn = 0.01" % (1e7 / div, law))
+      "[contact]\nstiffness_scaling = \"%s\"\nkn_ref = 8e7\nd_ref = 0.01\nks_over_kn = 0.01" % (0.5 / lam, 1e7 / lam, law))
 PY
   "$bin" test isotropic --quiet --threads 1 --specimen "$2" --recipe "$1.toml" --out "$1"
 }
@@ -46,7 +50,7 @@ for s in $seeds; do
   run_test lin-d10-$s d10-$s linear 1
   run_test lin-d30-$s d30-$s linear 3
   run_test none-d10-$s d10-$s none 1
-  run_test none-d30-$s d30-$s none 5.196152422706632
+  run_test none-d30-$s d30-$s none 3
 done
 echo "wall time $(( $(date +%s) - t0 )) s (side $side d, porosity $porosity)"
 SEEDS="$seeds" python3 - <<'PY'
