@@ -164,7 +164,9 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
   const double dt = world.options().timestep;
   ServoGain gain = s.gain;
   // Default speed limit: a millionth of the height per step, or ten times the platen's speed.
-  if (!(gain.max_speed > 0.0))
+  if (s.servo_strain_rate > 0.0)
+    gain.max_speed = s.servo_strain_rate * st.start_height;
+  else if (!(gain.max_speed > 0.0))
     gain.max_speed = std::max(1e-6 * st.start_height / dt, 10.0 * s.strain_rate * st.start_height);
   auto result = [&](bool stopped) {
     ElementTestResult r;

@@ -69,7 +69,12 @@ struct ElementTestSettings {
   double consolidation_tolerance = 0.005;  ///< relative stress error at equilibrium
   double consolidation_unbalanced = 1e-3;  ///< unbalanced-force ratio at equilibrium
   long long max_consolidation_steps = 3'000'000;
-  ServoGain gain;          ///< max_speed 0: 10 × the platen speed, or height/1000 per 1,000 steps
+  ServoGain gain;  ///< max_speed 0: 10 × the platen speed, or height/1000 per 1,000 steps
+  /// Speed limit of every servo-driven wall as a strain rate of the cell (1/s; 0: gain's). Set
+  /// ÷ λ for specimens λ times larger, it keeps the consolidation's inertial number the same
+  /// whatever the time step (the default limit is per step, and the step of a constant-kn
+  /// specimen grows as λ^1.5).
+  double servo_strain_rate = 0.0;
   int record_every = 200;  ///< steps between curve rows
 };
 

@@ -56,6 +56,8 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
           if (r.critical_fraction > 1) f.fail(field, "must be in (0, 1], got " + toml_show(tv));
         } else if (t == "friction") {
           s.friction = non_negative(f, tv, field);
+        } else if (t == "servo_strain_rate") {
+          s.servo_strain_rate = positive(f, tv, field);
         } else if (t == "consolidation_friction") {
           s.consolidation_friction = non_negative(f, tv, field);
         } else if (t == "record_every") {
@@ -76,7 +78,8 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
           f.fail(field,
                  "unknown key (known: confining, final_stress, strain_rate, stress_rate, "
                  "max_axial_strain, critical_fraction, friction, consolidation_friction, "
-                 "record_every, timestep_safety, modulus_range, consolidation_tolerance)");
+                 "servo_strain_rate, record_every, timestep_safety, modulus_range, "
+                 "consolidation_tolerance)");
         }
       }
     } else if (k == "contact") {

@@ -25,10 +25,12 @@ print(text)
 PY
   "$bin" specimen --quiet --recipe "$1.toml" --out "$1" --threads 1
 }
-# A test of SPECIMEN with LAW (none/linear) at strain rate RATE.
-run_case() {  # CASE SPECIMEN LAW RATE
+# A test of SPECIMEN with LAW (none/linear), its rates (loading and servo) divided by LAMBDA.
+run_case() {  # CASE SPECIMEN LAW LAMBDA
   sed -e "s/^stiffness_scaling = .*/stiffness_scaling = \"$3\"/" \
-      -e "s/^strain_rate = .*/strain_rate = $4/" "$test" > "case$1.toml"
+      -e "s/^strain_rate = .*/strain_rate = $(python3 -c "print(0.1 / $4)")/" \
+      -e "s/^servo_strain_rate = .*/servo_strain_rate = $(python3 -c "print(2.7 / $4)")/" \
+      "$test" > "case$1.toml"
   "$bin" test triaxial --quiet --threads 1 --specimen "$2" --recipe "case$1.toml" --out "t$1"
 }
 
@@ -38,14 +40,14 @@ specimen s30 0.03 2
 specimen s60 0.06 3
 "$bin" specimen-scale s10 --factor 3 --out s10x3
 "$bin" specimen-scale s10 --factor 6 --out s10x6
-run_case 1 s10 none 0.1
-run_case 1l s10 linear 0.1
-run_case 2 s30 none "$(python3 -c 'print(0.1/3**1.5)')"
-run_case 3 s60 none "$(python3 -c 'print(0.1/6**1.5)')"
-run_case 4 s30 linear "$(python3 -c 'print(0.1/3)')"
-run_case 5 s60 linear "$(python3 -c 'print(0.1/6)')"
-run_case 6 s10x3 linear "$(python3 -c 'print(0.1/3)')"
-run_case 7 s10x6 linear "$(python3 -c 'print(0.1/6)')"
+run_case 1 s10 none 1
+run_case 1l s10 linear 1
+run_case 2 s30 none 3
+run_case 3 s60 none 6
+run_case 4 s30 linear 3
+run_case 5 s60 linear 6
+run_case 6 s10x3 linear 3
+run_case 7 s10x6 linear 6
 echo "wall time $(( $(date +%s) - t0 )) s (side $side d)"
 python3 - <<'PY'
 import json
