@@ -3,21 +3,25 @@
 # specimens of 10, 30 and 60 mm spheres with constant or size-scaled contact stiffness, and the
 # ratios of their Young's moduli (E at ε_a = 1e-4) to case #1's.
 #   tests/bench/table1.sh [OUT]   (default /tmp/clumpkit-table1; about 5 minutes on one core)
-# SIDE=15 makes every cube 15 diameters (default 10). Needs build/io/clumpkit (scripts/build).
+# SIDE=16 makes every cube 16 diameters (default 10); POROSITY overrides the recipe's. Needs
+# build/io/clumpkit (scripts/build).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 bin=${CLUMPKIT:-$root/build/io/clumpkit}
 out=${1:-/tmp/clumpkit-table1}
 side=${SIDE:-10}
+porosity=${POROSITY:-}
 rm -rf "$out" && mkdir -p "$out" && cd "$out"
 spec=$root/assets/recipes/elastic-scaling-specimen.toml
 test=$root/assets/recipes/elastic-scaling-table1.toml
 
 # A specimen of diameter d (m) and seed: the bundled recipe with every length scaled.
 specimen() {  # NAME D SEED
-  python3 - "$spec" "$2" "$3" "$side" > "$1.toml" <<'PY'
+  python3 - "$spec" "$2" "$3" "$side" "$porosity" > "$1.toml" <<'PY'
 import re, sys
 text, d, seed, side = open(sys.argv[1]).read(), float(sys.argv[2]), sys.argv[3], float(sys.argv[4])
+if sys.argv[5]:
+    text = re.sub(r"^porosity = .*$", "porosity = " + sys.argv[5], text, flags=re.M)
 text = re.sub(r"^seed = .*$", "seed = " + seed, text, flags=re.M)
 text = re.sub(r"^size = .*$", "size = [%r, %r, %r]" % ((side * d,) * 3), text, flags=re.M)
 text = re.sub(r"^sieves = .*$", "sieves = [%r, %r]" % (1.01 * d, 0.99 * d), text, flags=re.M)
