@@ -4,13 +4,13 @@
 # with size-scaled (linear) and constant (none) contact stiffness, and against the affine
 # estimate K = φ·Z·kn/(3π·d) (zones.md §3).
 #   tests/bench/modulus_equality.sh [OUT]   (default /tmp/clumpkit-modulus; ~20 min on one core)
-# SIDE (cube edge in diameters, default 16), POROSITY (default 0.41), SEEDS (default "1 2 3").
+# SIDE (cube edge in diameters, default 16), POROSITY (default 0.40), SEEDS (default "1 2 3").
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 bin=${CLUMPKIT:-$root/build/io/clumpkit}
 out=${1:-/tmp/clumpkit-modulus}
 side=${SIDE:-16}
-porosity=${POROSITY:-0.41}
+porosity=${POROSITY:-0.40}
 seeds=${SEEDS:-1 2 3}
 rm -rf "$out" && mkdir -p "$out" && cd "$out"
 spec=$root/assets/recipes/elastic-scaling-specimen.toml

@@ -2,14 +2,14 @@
 # Seed 004 Table 1 (issue 16 acceptance 3): seven small-strain triaxial tests at 5 MPa of
 # specimens of 10, 30 and 60 mm spheres with constant or size-scaled contact stiffness, and the
 # ratios of their Young's moduli (E at ε_a = 1e-4) to case #1's.
-#   tests/bench/table1.sh [OUT]   (default /tmp/clumpkit-table1; about 5 minutes on one core)
-# SIDE=16 makes every cube 16 diameters (default 10); POROSITY overrides the recipe's. Needs
+#   tests/bench/table1.sh [OUT]   (default /tmp/clumpkit-table1; about 6 minutes on one core)
+# SIDE sets the cube edge in diameters (default 16, as the recipe); POROSITY overrides the recipe's. Needs
 # build/io/clumpkit (scripts/build).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 bin=${CLUMPKIT:-$root/build/io/clumpkit}
 out=${1:-/tmp/clumpkit-table1}
-side=${SIDE:-10}
+side=${SIDE:-16}
 porosity=${POROSITY:-}
 rm -rf "$out" && mkdir -p "$out" && cd "$out"
 spec=$root/assets/recipes/elastic-scaling-specimen.toml
