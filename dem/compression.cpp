@@ -15,20 +15,24 @@ namespace {
 
 enum Stream : std::uint64_t { particles_stream = 11, placement_stream = 12 };
 
-// The container of `size` (cuboid edges, or diameter, diameter, height) scaled by `s` about the
-// origin's footprint, standing on z = 0: its walls' positions.
+// The container of `size` (cuboid edges, or diameter, diameter, height), centred on the z-axis
+// and standing on z = 0: its walls' positions.
 struct Box {
   Vec3 lo, hi;
   double radius = 0;  // cylinder
 };
 
-Box container(const CompressionSpec& spec, const Vec3& size) {
+Box container(const Vec3& size) {
   Box b;
   b.lo = Vec3(-0.5 * size.x(), -0.5 * size.y(), 0.0);
   b.hi = Vec3(0.5 * size.x(), 0.5 * size.y(), size.z());
   b.radius = 0.5 * size.x();
-  (void)spec;
   return b;
+}
+
+// Every body at rest (the quench of the closing, and the finished specimen).
+void stop_bodies(World& world) {
+  for (Body& b : world.bodies()) b.velocity = b.angular_velocity = Vec3::Zero();
 }
 
 double container_volume(const CompressionSpec& spec, const Vec3& size) {
@@ -99,7 +103,7 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const Interrupt
   std::vector<Placement> placed;
   for (int tries = 0; placed.empty(); ++tries) {
     if (tries == 40) throw InvalidInput("compression: no room for the loose packing");
-    const Box loose = container(spec, size * factor);
+    const Box loose = container(size * factor);
     Vec3 lo = loose.lo, hi = loose.hi;
     if (!cuboid) {  // the cylinder's inscribed square prism: every body inside the cylinder
       lo.head<2>() *= M_SQRT1_2;
@@ -130,7 +134,7 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const Interrupt
     b.orientation = placed[k].orientation;
     world.add_body(std::move(b));
   }
-  const Box start = container(spec, size * factor);
+  const Box start = container(size * factor);
   const TestCell cell =
       cuboid ? add_cuboid_test_cell(world, start.lo, start.hi)
              : add_cylinder_test_cell(world, start.radius, start.lo.z(), start.hi.z());
@@ -150,12 +154,11 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const Interrupt
     const double ratio = next / s;
     for (Body& b : world.bodies()) b.position = c_new + ratio * (b.position - c_old);
     s = next;
-    set_walls(world, cell, container(spec, size * s));
+    set_walls(world, cell, container(size * s));
     // Quench: every 100 steps all bodies stop (a steepest-descent relaxation between small
     // affine steps, as in jamming studies), so no kinetic energy builds up while the container
     // closes (with α = 0.7 alone it still reached 28 J).
-    if (k % 100 == 0)
-      for (Body& b : world.bodies()) b.velocity = b.angular_velocity = Vec3::Zero();
+    if (k % 100 == 0) stop_bodies(world);
     world.step(1);
     if (k % 1000 == 0 && interrupter && interrupter("compression", 0.9 * double(k) / steps))
       throw Interrupted("compression: stopped on request");
@@ -179,10 +182,10 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const Interrupt
   r.relax_steps = relax;
 
   // The specimen: at rest, with the material friction (shear history rescaled).
-  for (Body& b : world.bodies()) b.velocity = b.angular_velocity = Vec3::Zero();
+  stop_bodies(world);
   world.rescale_friction(spec.contact.friction);
   world.options().contact.local_damping = spec.contact.local_damping;
-  const Box end = container(spec, size);
+  const Box end = container(size);
   r.lo = end.lo;
   r.hi = end.hi;
   r.radius = cuboid ? 0.0 : end.radius;

@@ -107,13 +107,13 @@ using Phase = dem::ElementTestState::Phase;
 // its diameter with the platens on the specimen's bottom and top.
 dem::TestCell test_cell(dem::World& world, const nlohmann::json& report, const std::string& path,
                         double z_lo, double z_hi) {
-  const nlohmann::json& c = report.contains("container") ? report["container"] : nlohmann::json();
-  if (c.is_object() && c.value("shape", std::string()) == "cuboid") {
+  const auto c = report.find("container");
+  if (c != report.end() && c->is_object() && c->value("shape", std::string()) == "cuboid") {
     Vec3 lo, hi;
     try {
       for (int a = 0; a < 3; ++a) {
-        lo[a] = c.at("lo").at(a).get<double>();
-        hi[a] = c.at("hi").at(a).get<double>();
+        lo[a] = c->at("lo").at(a).get<double>();
+        hi[a] = c->at("hi").at(a).get<double>();
       }
     } catch (const std::exception&) {
       throw InvalidInput(path + ": field container.lo/hi missing or not three numbers");
@@ -352,15 +352,15 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
   rep["consolidation_steps"] = r.consolidation_steps;
   rep["confining_stress"] = s.confining;
   rep["timestep"] = world.options().timestep;
+  const double test_friction = s.friction >= 0 ? s.friction : o.contact.friction;
   rep["contact"] = {
       {"stiffness_scaling", o.contact.scaling == dem::StiffnessScaling::linear ? "linear" : "none"},
       {"kn", o.contact.kn},
       {"ks", o.contact.ks},
       {"d_ref", o.contact.d_ref},
-      {"friction", s.friction >= 0 ? s.friction : o.contact.friction},
-      {"consolidation_friction", s.consolidation_friction >= 0
-                                     ? s.consolidation_friction
-                                     : (s.friction >= 0 ? s.friction : o.contact.friction)}};
+      {"friction", test_friction},
+      {"consolidation_friction",
+       s.consolidation_friction >= 0 ? s.consolidation_friction : test_friction}};
   const dem::CurveRow& first = r.curve.front();
   const dem::CurveRow& last = r.curve.back();
   rep["porosity"] = first.porosity;

@@ -118,11 +118,11 @@ SpecimenJobResult build_into(const SpecimenRecipe& recipe, const std::string& ou
 
 }  // namespace
 
-double estimated_specimen_bytes(const dem::SpecimenSpec& spec) {
+double estimated_specimen_bytes(const dem::SpecimenSpec& spec, double container_volume) {
   // Bodies ≈ the container's solid volume shared out by mass over the classes, each class's
   // particles of the volume of its mean sieve size; about 1 KiB per body (the body, its spheres,
   // contacts and neighbour lists), held three times (calibration, layer and specimen worlds).
-  const double solid = M_PI * spec.radius * spec.radius * spec.height * (1 - spec.porosity_guess);
+  const double solid = container_volume * (1 - spec.porosity_guess);
   double bodies = 0;
   for (const dem::ParticleClass& c : spec.classes) {
     const double d = 0.5 * (c.min_size + c.max_size);
@@ -136,13 +136,11 @@ SpecimenJobResult run_specimen(const SpecimenRecipe& recipe, const std::string& 
                                std::chrono::steady_clock::time_point started) {
   check_output_directory(out_dir);
   if (options.max_memory_bytes > 0) {
-    dem::SpecimenSpec spec = specimen_spec(recipe, {});
-    if (recipe.cuboid) {  // the same volume as a cylinder of the cuboid's height
-      const auto& e = recipe.container_size;
-      spec.radius = std::sqrt(e[0] * e[1] / M_PI);
-      spec.height = e[2];
-    }
-    const double need = estimated_specimen_bytes(spec);
+    const auto& e = recipe.container_size;
+    const double volume = recipe.cuboid ? e[0] * e[1] * e[2]
+                                        : M_PI / 4 * recipe.container_diameter *
+                                              recipe.container_diameter * recipe.container_height;
+    const double need = estimated_specimen_bytes(specimen_spec(recipe, {}), volume);
     if (!(need <= options.max_memory_bytes))
       throw InvalidInput(
           recipe.path + ": the specimen would need about " + format_number(need / 1073741824.0, 3) +

@@ -23,8 +23,9 @@ struct SpecimenJobOptions {
 };
 
 /// A rough (within a few times) estimate of the memory a specimen build takes, from its
-/// container and gradation: bodies ≈ solid volume / mean particle volume per class, 3 KiB each.
-double estimated_specimen_bytes(const dem::SpecimenSpec& spec);
+/// container's volume (m³) and gradation: bodies ≈ solid volume / mean particle volume per class,
+/// 3 KiB each.
+double estimated_specimen_bytes(const dem::SpecimenSpec& spec, double container_volume);
 
 struct SpecimenJobResult {
   dem::SpecimenResult specimen;
