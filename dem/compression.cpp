@@ -115,6 +115,7 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const Interrupt
 
   WorldOptions o;
   o.gravity = Vec3::Zero();
+  o.sort_every = 1000;  // placement order is random: sort for locality (as LAMMPS)
   o.contact = spec.contact;
   o.contact.friction = spec.friction;
   // Strong local damping while closing (PFC's default 0.7): mapping the centres creates overlaps

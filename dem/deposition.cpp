@@ -20,6 +20,7 @@ World make_deposition_world(const std::vector<Body>& bodies,
     throw InvalidInput("make_deposition_world: timestep_safety must be positive and finite");
   WorldOptions options;
   options.contact = spec.contact;
+  options.sort_every = 1000;  // placement order is random: sort for locality (as LAMMPS)
   World world(options);
   for (std::size_t k = 0; k < bodies.size(); ++k) {
     if (bodies[k].spheres.empty())

@@ -219,7 +219,11 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
     return c;
   };
   if (st.phase == Phase::loading) {
-    if (st.curve.empty()) st.curve.push_back(row(0));
+    if (st.curve.empty()) {
+      st.curve.push_back(row(0));
+      // Asked once at the consolidated state too: a caller may save it (or stop there).
+      if (stop && stop()) return result(true);
+    }
     const double rate =
         s.stress_rate > 0.0 ? s.stress_rate : 20.0 * s.confining * s.strain_rate;  // Pa/s
     const double platen_speed = s.strain_rate * h0;

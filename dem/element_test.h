@@ -116,7 +116,8 @@ struct ElementTestResult {
 /// wall, gravity as the world has it), then loads it: isotropic — all walls follow a stress ramp
 /// to final_stress; oedometer — lateral walls fixed, top platen at strain_rate until
 /// final_stress; triaxial — lateral stress held by servo, top platen at strain_rate to
-/// max_axial_strain. `stop` is asked every record and ends the test early when true.
+/// max_axial_strain. `stop` is asked every 1,000 consolidation steps, at the consolidated state
+/// (state.phase loading, one curve row) and every record; it ends the test early when true.
 /// Deterministic: the same world and settings give the same curve for any thread count.
 ElementTestResult run_element_test(World& world, const TestCell& cell,
                                    const ElementTestSettings& settings,

@@ -43,6 +43,9 @@ World::World(WorldOptions options) : options_(options) {
   if (!(options_.skin >= 0.0) || !std::isfinite(options_.skin))
     throw InvalidInput("DEM world: skin must be non-negative, got " +
                        std::to_string(options_.skin));
+  if (options_.sort_every < 0)
+    throw InvalidInput("DEM world: sort_every must be non-negative, got " +
+                       std::to_string(options_.sort_every));
   if (!(options_.near_skin_fraction > 0.0 && options_.near_skin_fraction <= 1.0))
     throw InvalidInput("DEM world: near_skin_fraction must be in (0, 1], got " +
                        std::to_string(options_.near_skin_fraction));
@@ -182,6 +185,16 @@ void World::step(int count) {
   load_bodies();
   sc.positions_fresh_ = false;
   for (int s = 0; s < count; ++s) {
+    if (options_.sort_every > 0 && steps_ % options_.sort_every == 0) {
+      // The sort reads and renumbers the persistent state: bring it up to date first.
+      store_bodies();
+      if (sc.pairs_valid_) export_pairs();
+      if (sc.walls_valid_) export_walls();
+      if (sort_bodies()) {
+        load_bodies();
+        sc.positions_fresh_ = false;
+      }
+    }
     bool walls_stale = !sc.walls_valid_;
     const bool moved = sc.positions_fresh_ ? sc.moved_ : update_positions_and_check();
     if (moved || !near_valid_) {

@@ -153,6 +153,7 @@ struct WorldCodec {
     w.f64(o.timestep);
     w.f64(o.skin);
     w.f64(o.near_skin_fraction);
+    w.i32(o.sort_every);
     w.f64(o.contact.kn), w.f64(o.contact.ks), w.f64(o.contact.friction);
     w.f64(o.contact.damping_ratio), w.f64(o.contact.local_damping);
     w.u8(o.contact.scaling == StiffnessScaling::none ? 0 : 1), w.f64(o.contact.d_ref);
@@ -204,6 +205,8 @@ struct WorldCodec {
     o.timestep = r.f64();
     o.skin = r.f64();
     o.near_skin_fraction = r.f64();
+    o.sort_every = r.i32();
+    if (o.sort_every < 0) r.fail("negative sort interval " + std::to_string(o.sort_every));
     o.contact.kn = r.f64(), o.contact.ks = r.f64(), o.contact.friction = r.f64();
     o.contact.damping_ratio = r.f64(), o.contact.local_damping = r.f64();
     const std::uint8_t scaling = r.u8();

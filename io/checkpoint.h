@@ -10,13 +10,14 @@
 namespace clumpkit {
 
 /// Current checkpoint format version (bumped on any layout change, or a change in what a
-/// stored word means: 4 = run_until's height reference is the one after the window test).
-inline constexpr std::uint32_t kCheckpointVersion = 5;
+/// stored word means: 4 = run_until's height reference is the one after the window test;
+/// 6 = the sort interval, WorldOptions::sort_every).
+inline constexpr std::uint32_t kCheckpointVersion = 6;
 
 /// Writes `world` and `info` to `path`: magic "CLUMPKITCKPT", version, then little-endian
 /// integers and raw IEEE-754 doubles — options (gravity, timestep, skin, near-skin fraction,
-/// contact parameters), step count, time, every body (spheres, mass, moments, position,
-/// velocity, orientation, angular velocity, force, torque, rotation lock, volume, kind,
+/// sort interval, contact parameters), step count, time, every body (spheres, mass, moments,
+/// position, velocity, orientation, angular velocity, force, torque, rotation lock, volume, kind,
 /// template id, scale), walls (moving planes
 /// with their current point), pair and wall contacts with their full state (shear history
 /// included), the neighbour lists (build positions and pairs, filter positions and limit) and a

@@ -18,7 +18,8 @@ void register_test(CLI::App& app) {
     std::string kind, specimen, recipe, out;
     int threads = 0;
     double checkpoint_seconds = 60;
-    bool resume = false, quiet = false, json = false, allow_dynamic = false;
+    bool resume = false, quiet = false, json = false, allow_dynamic = false,
+         save_consolidated = false;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -46,6 +47,10 @@ void register_test(CLI::App& app) {
   c->add_flag("--allow-dynamic", o->allow_dynamic,
               "Run even when the strain rate gives an inertial number above 1e-2 (refused "
               "otherwise: not a quasi-static test)");
+  c->add_flag("--save-consolidated", o->save_consolidated,
+              "Also write DIR/consolidated: the consolidated specimen as a specimen directory "
+              "(cell as container, bottom platen at z = 0, gravity 0) for `clumpkit export`, so "
+              "another engine runs the same test from the same state");
   c->add_flag("--quiet", o->quiet, "No progress bar");
   c->add_flag("--json", o->json, "Print report.json on stdout");
   c->callback([o] {
@@ -58,6 +63,7 @@ void register_test(CLI::App& app) {
     jo.resume = o->resume;
     jo.checkpoint_seconds = o->checkpoint_seconds;
     jo.allow_dynamic = o->allow_dynamic;
+    jo.save_consolidated = o->save_consolidated;
     const ElementTestJobResult job = run_element_test_job(kind, o->specimen, recipe, o->out, jo,
                                                           signal_interrupter(bar, "test"));
     bar.finish();

@@ -5,6 +5,7 @@
 #include "io/atomic_file.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 namespace clumpkit {
@@ -36,6 +37,13 @@ EngineSettings engine_settings_from_report(const nlohmann::json& report, const s
   s.contact.friction = field("contact", "friction");
   s.contact.damping_ratio = field("contact", "damping_ratio");
   s.contact.local_damping = field("contact", "local_damping");
+  if (report.contains("gravity")) {
+    const auto& g = report["gravity"];
+    if (!g.is_number() || !(g.get<double>() >= 0.0) || !std::isfinite(g.get<double>()))
+      throw InvalidInput(path + ": field gravity: " + g.dump() +
+                         " is not a non-negative number (m/s²)");
+    s.gravity = g.get<double>();
+  }
   return s;
 }
 

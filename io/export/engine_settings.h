@@ -19,6 +19,9 @@ struct EngineSettings {
   double container_radius = 0.15, container_height = 0.6;  ///< m
   double rock_density = 2870, soil_density = 2700;         ///< kg/m³
   dem::ContactParams contact;                              ///< the material friction
+  /// m/s², downwards: report.json "gravity" when it has one (0 for the consolidated state of an
+  /// element test, `clumpkit test --save-consolidated`), else Earth's.
+  double gravity = 9.81;
 };
 
 /// The settings recorded in a specimen's report.json ("container", "density", "contact").

@@ -32,8 +32,10 @@ LammpsContact lammps_contact(const SpecimenExtents& e, const EngineSettings& set
   lc.dt = 0.2 * std::sqrt(e.m_min / c.kn);  // 1/10 of the sphere's 2·sqrt(m/k)
   lc.skin = 0.5 * e.r_min;
   lc.cutoff = 2 * e.reach + 2 * e.r_max + 2 * lc.skin;
-  lc.args = format_number(c.kn) + " " + format_number(c.ks) + " " + format_number(gamma_n) + " 0 " +
-            format_number(c.friction) + " 1";
+  const std::string springs =
+      format_number(c.kn) + " " + format_number(c.ks) + " " + format_number(gamma_n) + " 0 ";
+  lc.args = springs + format_number(c.friction) + " 1";
+  lc.frictionless_args = springs + "0 1";
   return lc;
 }
 
@@ -139,7 +141,8 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
          "timestep    ${dt}\n"
          "# Gravity on the soil atoms; the rigid fix applies M*g at each body's centroid (the\n"
          "# overlapping spheres' atom masses do not sum to the body's mass distribution).\n"
-         "fix         grav soil gravity 9.81 vector 0 0 -1\n";
+         "fix         grav soil gravity "
+      << format_number(settings.gravity) << " vector 0 0 -1\n";
     // clumpkit prepares specimens with masses scaled by λ (report.json density_scaling), so its
     // contacts carry λ times the overlap of the true weight. The deck damps that stored energy
     // away while it settles: a zero-temperature Langevin drag on the clumps (time constant 50
@@ -185,7 +188,8 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
       o << "# Oedometer test: a platen starts at the top H0 of the settled specimen (highest\n"
            "# sphere surface) and moves down at rate*H0 until the strain maxstrain; strain and\n"
            "# vertical stress (platen force / container area, compression positive) every 100\n"
-           "# steps in oedometer.csv.\n"
+           "# steps in oedometer.csv. Walls and platen are frictionless, as in clumpkit test's\n"
+           "# cell (wall friction would carry part of the platen's load).\n"
         << "undump      atoms\n"
         << (soils > 0 ? "if \"${relax} == 1\" then \"unfix visc\"\n" : "")
         << (rocks > 0 ? "undump      bodies\n" : "") << "variable    maxstrain index "
@@ -200,8 +204,14 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
            "variable    H0 equal $(c_top:%.17g)\n"
            "variable    s0 equal $(step)\n"
            "variable    dz equal -${rate}*${H0}*(step-${s0})*dt\n"
-           "region      platen plane 0 0 ${H0} 0 0 -1 side in units box move NULL NULL v_dz\n"
-        << "fix         platen all wall/gran/region hooke/history " << contact_args
+           "unfix       floor\n"
+        << "fix         floor all wall/gran hooke/history " << lc.frictionless_args
+        << " zplane 0.0 NULL\n"
+        << "unfix       cyl\n"
+        << "fix         cyl all wall/gran hooke/history " << lc.frictionless_args << " zcylinder "
+        << format_number(settings.container_radius) << "\n"
+        << "region      platen plane 0 0 ${H0} 0 0 -1 side in units box move NULL NULL v_dz\n"
+        << "fix         platen all wall/gran/region hooke/history " << lc.frictionless_args
         << " region platen contacts\n"
         << "compute     pf all reduce sum f_platen[4]\n"
            "variable    strain equal -v_dz/${H0}\n"

@@ -50,6 +50,7 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
 /// the ghost cutoff of fix rigid/small (the largest body must fit).
 struct LammpsContact {
   std::string args;
+  std::string frictionless_args;  ///< the same with μ = 0 (walls of an element test)
   double dt = 0, skin = 0, cutoff = 0;
 };
 LammpsContact lammps_contact(const SpecimenExtents& extents, const EngineSettings& settings);

@@ -163,7 +163,7 @@ std::vector<std::string> write_liggghts_export(const std::vector<SpecimenBody>& 
       << "pair_style gran " << model << "\n"
       << "pair_coeff * *\n"
       << "timestep " << format_number(dt) << "\n"
-      << "fix grav all gravity 9.81 vector 0.0 0.0 -1.0\n"
+      << "fix grav all gravity " << format_number(settings.gravity) << " vector 0.0 0.0 -1.0\n"
       << "fix floor all wall/gran " << model << " primitive type 1 zplane 0.0\n"
       << "fix cyl all wall/gran " << model << " primitive type 1 zcylinder "
       << format_number(settings.container_radius) << " 0.0 0.0\n"

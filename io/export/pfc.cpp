@@ -84,7 +84,7 @@ std::vector<std::string> write_pfc_export(const std::vector<SpecimenBody>& bodie
       << format_number(settings.container_radius) << " cap false false\n"
       << "wall property kn " << format_number(c.kn) << " ks " << format_number(c.ks) << " fric "
       << format_number(c.friction) << "\n"
-      << "model gravity 0 0 -9.81\n"
+      << "model gravity 0 0 " << format_number(-settings.gravity) << "\n"
       << "model timestep fix " << format_number(dt) << "\n"
       << "fish define clumpkit_report\n"
          "  ; id, mass and principal moments of every clump as PFC sees them\n"

@@ -87,6 +87,7 @@ std::vector<std::string> write_yade_export(const std::vector<SpecimenBody>& bodi
       << format_number(settings.soil_density) << "\n"
       << "CONTAINER_RADIUS, HEIGHT = " << format_number(settings.container_radius) << ", "
       << format_number(height) << "\n"
+      << "GRAVITY = " << format_number(settings.gravity) << "  # m/s², downwards\n"
       << "# Yade's clump centroid and axes come from a grid of step (smallest member radius) /\n"
          "# DISCRETIZATION (Clump::updateProperties; 0: the plain sphere sum, overlaps twice).\n"
          "DISCRETIZATION = 30\n"
@@ -159,7 +160,7 @@ O.engines = [
     InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
                     [Ip2_FrictMat_FrictMat_FrictPhys()],
                     [Law2_ScGeom_FrictPhys_CundallStrack()]),
-    NewtonIntegrator(damping=LOCAL_DAMPING, gravity=(0, 0, -9.81)),
+    NewtonIntegrator(damping=LOCAL_DAMPING, gravity=(0, 0, -GRAVITY)),
 ]
 
 with open("yade_residuals.txt", "w") as f:

@@ -217,6 +217,51 @@ std::optional<dem::ElementTestState> read_state(const fs::path& path,
   }
 }
 
+// The consolidated specimen as a specimen directory for `clumpkit export`: bodies shifted so the
+// bottom platen is the floor z = 0, the cylinder cell as the container, no gravity (the test has
+// none), the test's contact law with the specimen's dashpot (engines without PFC's local damping
+// need one to settle).
+void write_consolidated(const fs::path& dir, const dem::World& world, const dem::TestCell& cell,
+                        const nlohmann::json& spec_report, const dem::ContactParams& law,
+                        double test_friction, const dem::CurveRow& row, double confining) {
+  const double floor = world.walls()[cell.bottom].point.z();
+  std::vector<SpecimenBody> bodies = specimen_bodies(world);
+  std::size_t spheres = 0;
+  for (SpecimenBody& b : bodies) {
+    b.position.z() -= floor;
+    for (Sphere& sp : b.spheres) sp.center.z() -= floor;
+    spheres += b.spheres.size();
+  }
+  fs::create_directories(dir);
+  write_specimen_csv((dir / "specimen.csv").string(), bodies);
+  nlohmann::ordered_json rep;
+  rep["source"] = "consolidated state of clumpkit test";
+  rep["bodies"] = bodies.size();
+  rep["spheres"] = spheres;
+  rep["confining_stress"] = confining;
+  rep["porosity"] = row.porosity;
+  rep["coordination_number"] = row.coordination;
+  rep["gravity"] = 0.0;
+  rep["container"] = {{"diameter", 2.0 * world.walls()[cell.lateral.front()].radius},
+                      {"height", cell_height(world, cell)}};
+  rep["density"] = spec_report.at("density");
+  rep["contact"] = {
+      {"kn", law.kn},
+      {"ks", law.ks},
+      {"friction", test_friction},
+      {"damping_ratio", spec_report.at("contact").value("damping_ratio", 0.0)},
+      {"local_damping", law.local_damping},
+      {"stiffness_scaling", law.scaling == dem::StiffnessScaling::linear ? "linear" : "none"},
+      {"d_ref", law.d_ref}};
+  write_file_atomically((dir / "report.json").string(),
+                        [&](std::ostream& f) { f << rep.dump(2) << "\n"; });
+  nlohmann::ordered_json m;
+  m["command"] = "test";
+  m["files"] = {"specimen.csv", "report.json"};
+  write_file_atomically((dir / "manifest.json").string(),
+                        [&](std::ostream& f) { f << m.dump(2) << "\n"; });
+}
+
 }  // namespace
 
 ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string& specimen_dir,
@@ -242,6 +287,7 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
 
   dem::WorldOptions o;
   o.gravity = Vec3::Zero();  // element tests: stress far above the specimen's weight
+  o.sort_every = 1000;       // spatial order for locality (as LAMMPS)
   o.contact = contact_law(spec_report, report_path, recipe);
   double d_sum = 0, r_min = std::numeric_limits<double>::max(), z_lo = 1e300, z_hi = -1e300;
   double rho_sum = 0, vol_sum = 0;
@@ -268,6 +314,12 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
                        " > 1e-2 on this specimen (a dynamic test, not quasi-static): lower it, or "
                        "pass --allow-dynamic");
 
+  if (options.save_consolidated && spec_report.contains("container") &&
+      spec_report["container"].value("shape", std::string()) == "cuboid")
+    throw InvalidInput(report_path +
+                       ": container.shape: \"cuboid\": --save-consolidated writes cylinder cells "
+                       "only (the engine exports model a cylinder container)");
+
   // The work directory DIR.partial, continued with --resume when its checkpoint matches.
   const fs::path out = out_dir + ".partial";
   const fs::path ckpt = out / "test.ckpt", state_path = out / "test-state.json";
@@ -292,6 +344,7 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
   if (!saved) {
     for (const SpecimenBody& b : rows) world.add_body(dem_body(b));
     cell = test_cell(world, spec_report, report_path, z_lo, z_hi);
+
     world.options().timestep = recipe.timestep_safety * dem::critical_timestep(world);
   }
 
@@ -312,6 +365,10 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
   long long checks = 0;
   auto stop = [&] {
     ++checks;
+    if (options.save_consolidated && state.phase == Phase::loading && state.loading_steps == 0 &&
+        state.curve.size() == 1)
+      write_consolidated(out / "consolidated", world, cell, spec_report, o.contact,
+                         state.test_friction, state.curve.front(), s.confining);
     const auto now = std::chrono::steady_clock::now();
     if (options.checkpoint_seconds > 0 &&
         std::chrono::duration<double>(now - last_save).count() >= options.checkpoint_seconds) {
@@ -432,6 +489,7 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
   m["test"] = kind_name(kind);
   m["specimen"] = specimen_dir;
   m["files"] = {"curve.csv", "curve.png", "report.json"};
+  if (options.save_consolidated) m["files"].push_back("consolidated/");
   write_file_atomically((out / "manifest.json").string(),
                         [&](std::ostream& f) { f << m.dump(2) << "\n"; });
   publish_directory(out.string(), out_dir);

@@ -31,6 +31,12 @@ struct ElementTestJobOptions {
   /// Run a test whose inertial number I = ε̇·d·sqrt(ρ/σ3) exceeds 1e-2 (refused otherwise: a
   /// dynamic test, not a quasi-static element test).
   bool allow_dynamic = false;
+  /// Also write DIR/consolidated: the specimen at the end of consolidation as a specimen
+  /// directory (specimen.csv, report.json, manifest.json) that `clumpkit export` reads — the
+  /// cylinder cell as its container (bottom platen at z = 0), gravity 0, the test's contact law
+  /// with the specimen's viscous damping ratio — so another engine can run the same test from
+  /// the same state. Cylinder cells only (exports model cylinders).
+  bool save_consolidated = false;
 };
 
 /// What run_element_test_job did: report.json as written, and whether it continued a checkpoint

@@ -7,7 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -304,4 +307,59 @@ TEST(CliImport, BadInputFailsWithOneLineAndWritesNothing) {
                         "--tile must be NXxNY with 1 <= NX, NY <= 1000, got 0x3");
   EXPECT_FALSE(fs::exists(d / "o"));
   EXPECT_FALSE(fs::exists(d / "o.partial"));
+}
+
+// The same oedometer in both engines from the same state (issue 16 acceptance 7, small): the
+// tiny specimen consolidated by `clumpkit test oedometer --save-consolidated` to 10 kPa and loaded
+// to 300 kPa; its consolidated state exported with --test oedometer and loaded in LAMMPS at the
+// same strain rate between frictionless walls. The constrained moduli over 60–250 kPa agree
+// within 10 %, and the saved state is a specimen directory with the cell as its container.
+TEST(CliImport, LammpsOedometerFromTheSavedConsolidatedStateHasClumpkitsModulus) {
+  if (!have_program("lmp")) GTEST_SKIP() << "LAMMPS (lmp) not installed: run scripts/deps";
+  const fs::path d = scratch();
+  ASSERT_NO_FATAL_FAILURE(build_tiny_specimen(d));
+  write(d / "oed.toml",
+        "[test]\nconfining = 10e3\nfinal_stress = 300e3\nstrain_rate = 0.5\nrecord_every = 100\n"
+        "modulus_range = [60e3, 250e3]\n");
+  Result r = run_cli("test oedometer --quiet --json --save-consolidated --specimen " +
+                         (d / "spec").string() + " --recipe " + (d / "oed.toml").string() +
+                         " --out " + (d / "oed").string(),
+                     d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const double m_clumpkit = nlohmann::json::parse(r.out)["constrained_modulus"].get<double>();
+  const fs::path cons = d / "oed" / "consolidated";
+  const auto rep = nlohmann::json::parse(slurp(cons / "report.json"));
+  EXPECT_EQ(rep["gravity"].get<double>(), 0.0);
+  EXPECT_EQ(rep["confining_stress"].get<double>(), 10e3);
+  const auto source = nlohmann::json::parse(slurp(d / "spec" / "report.json"));
+  // The servo closed the cylinder a little; the bottom platen is the floor z = 0.
+  EXPECT_LT(rep["container"]["diameter"].get<double>(),
+            source["container"]["diameter"].get<double>());
+  EXPECT_GT(rep["container"]["diameter"].get<double>(),
+            0.9 * source["container"]["diameter"].get<double>());
+  r = run_cli("export lammps " + cons.string() + " --out " + (d / "lmp").string() +
+                  " --test oedometer --strain-rate 0.5 --max-strain 0.02",
+              d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const std::string deck = slurp(d / "lmp" / "in.clumpkit");
+  EXPECT_NE(deck.find("gravity 0 vector"), std::string::npos);
+  const fs::path run = run_copy(d / "lmp", d / "run", "lmp -in in.clumpkit");
+  // Least-squares slope of stress against strain over the recipe's range, as clumpkit's.
+  std::ifstream in(run / "oedometer.csv");
+  std::string line;
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, top = 0;
+  while (std::getline(in, line)) {
+    if (line.empty() || !std::isdigit(static_cast<unsigned char>(line[0]))) continue;
+    const std::size_t comma = line.find(',');
+    const double x = std::stod(line.substr(0, comma)), y = std::stod(line.substr(comma + 1));
+    top = std::max(top, y);
+    if (y < 60e3 || y > 250e3) continue;
+    n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+  }
+  ASSERT_GT(top, 250e3) << "LAMMPS did not load the specimen past the range";
+  ASSERT_GE(n, 10);
+  const double m_lammps = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  std::printf("constrained modulus: clumpkit %.4g Pa, LAMMPS %.4g Pa, ratio %.3f\n", m_clumpkit,
+              m_lammps, m_lammps / m_clumpkit);
+  EXPECT_NEAR(m_lammps / m_clumpkit, 1.0, 0.10);
 }
