@@ -9,15 +9,19 @@
 //      baseline folder, or regenerated exactly as make_clump.py does), ρ = 2870, lattice 0.0215 m
 //      in r < 0.1385, z in [0.0115, 0.50], random orientations.
 //  (c) the settled packing (in.dense): (a) settled for --settle steps (cached as a checkpoint in
-//      $TMPDIR), then --dense steps timed.
+//      $TMPDIR), then --dense steps timed, as settled (bodies in lattice order, already local)
+//      and shuffled (the same bodies added in a random order, shear history dropped: the order a
+//      specimen built from a shuffled library has), each unsorted and sorted every --sort steps
+//      (WorldOptions::sort_every; LAMMPS's atom_modify sort is on by default every 1,000).
 // Differences to LAMMPS: no tangential dashpot (LAMMPS uses 0.5·γn); wall dashpot with m_eff = m
 // (LAMMPS: the same γn, i.e. √2 larger); clump spins start at zero.
 //
-// Usage: dem_bench [--steps N] [--settle N] [--dense N] [--threads 1,2] [--full]
+// Usage: dem_bench [--steps N] [--settle N] [--dense N] [--sort N] [--threads 1,2] [--full]
 //                  [--lammps FILE] [--cases spheres,clumps,dense]
 //   defaults: --steps 5000 --settle 40000 --dense 2000 (--full: 40000, 100000, 10000), a few
 //   minutes on 2 cores (the settle runs once, then comes from the cached checkpoint). In.dense
 //   starts from a 100,000-step settle: use --full (or --settle 100000) for the ratio.
+//   --sort 1000 by default; 0 times the unsorted orders only.
 //   FILE: output of run.sh (SUMMARY lines), for the ratio column. Env CLUMPKIT_DEM_BENCH_FULL=1
 //   is --full.
 #include "dem/state_hash.h"
@@ -373,6 +377,7 @@ std::map<std::string, double> read_lammps(const std::string& path) {
 
 int main(int argc, char** argv) {
   long steps = 5000, settle = 40000, dense = 2000;
+  int sort_every = 1000;
   std::vector<int> threads{1, 2};
   std::string lammps, cases = "spheres,clumps,dense";
   const char* full_env = std::getenv("CLUMPKIT_DEM_BENCH_FULL");
@@ -392,6 +397,8 @@ int main(int argc, char** argv) {
       settle = std::atol(value().c_str());
     else if (a == "--dense")
       dense = std::atol(value().c_str());
+    else if (a == "--sort")
+      sort_every = std::atoi(value().c_str());
     else if (a == "--full")
       full = true;
     else if (a == "--lammps")
@@ -405,8 +412,8 @@ int main(int argc, char** argv) {
       while (std::getline(s, t, ',')) threads.push_back(std::atoi(t.c_str()));
     } else {
       std::fprintf(stderr,
-                   "usage: dem_bench [--steps N] [--settle N] [--dense N] [--threads 1,2] "
-                   "[--full] [--lammps FILE] [--cases spheres,clumps,dense]\n");
+                   "usage: dem_bench [--steps N] [--settle N] [--dense N] [--sort N] "
+                   "[--threads 1,2] [--full] [--lammps FILE] [--cases spheres,clumps,dense]\n");
       return 2;
     }
   }
@@ -459,7 +466,30 @@ int main(int argc, char** argv) {
         kinetic_energy(w), mean_unbalanced_force_ratio(w), max_top(w));
     const std::string name =
         settle >= 100000 ? "settled spheres" : "settling (" + std::to_string(settle) + ")";
-    for (int t : threads) rows.push_back(timed(name, "dense-spheres", w, t, dense));
+    // The same bodies in a random order (a deterministic shuffle): what sorting is for.
+    World shuffled(w.options());
+    for (const Wall& wall : w.walls()) shuffled.add_wall(wall);
+    std::vector<std::size_t> order(w.bodies().size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    Rng rng(4719);
+    for (std::size_t k = order.size(); k > 1; --k) std::swap(order[k - 1], order[rng.below(k)]);
+    for (std::size_t k : order) shuffled.add_body(w.bodies()[k]);
+    struct Variant {
+      std::string label;
+      const World* world;
+      int sort;
+    };
+    std::vector<Variant> variants{{"", &w, 0}, {", shuffled", &shuffled, 0}};
+    if (sort_every > 0) {
+      const std::string s = ", sorted/" + std::to_string(sort_every);
+      variants.insert(variants.begin() + 1, Variant{s, &w, sort_every});
+      variants.push_back(Variant{", shuffled" + s, &shuffled, sort_every});
+    }
+    for (const Variant& v : variants) {
+      World run = *v.world;
+      run.options().sort_every = v.sort;
+      for (int t : threads) rows.push_back(timed(name + v.label, "dense-spheres", run, t, dense));
+    }
   }
 
   const auto ref = lammps.empty() ? std::map<std::string, double>{} : read_lammps(lammps);
