@@ -3,14 +3,18 @@
 #include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "geom/mesh/mesh_index.h"
 #include "geom/mesh/ray_inside.h"
 
 #include <tbb/parallel_for.h>
 
 #include <openvdb/openvdb.h>
-#include <openvdb/tools/MeshToVolume.h>
+#include <openvdb/tools/FastSweeping.h>
+#include <openvdb/tools/SignedFloodFill.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <mutex>
 #include <string>
@@ -38,6 +42,27 @@ double DistanceField::sample(const Vec3& p) const {
     v += w * at(i0 + dx, j0 + dy, k0 + dz);
   }
   return v;
+}
+
+double feature_distance(const DistanceField& f, const Mesh& mesh, const Vec3& p) {
+  const Vec3 g = (p - f.origin) / f.h;
+  const int i0 = static_cast<int>(std::lround(g.x())), j0 = static_cast<int>(std::lround(g.y())),
+            k0 = static_cast<int>(std::lround(g.z()));
+  double best = std::numeric_limits<double>::infinity();
+  int seen[27];
+  int n = 0;
+  for (int k = std::max(0, k0 - 1); k <= std::min(f.dims[2] - 1, k0 + 1); ++k)
+    for (int j = std::max(0, j0 - 1); j <= std::min(f.dims[1] - 1, j0 + 1); ++j)
+      for (int i = std::max(0, i0 - 1); i <= std::min(f.dims[0] - 1, i0 + 1); ++i) {
+        const int t = f.feature[f.index(i, j, k)];
+        if (t < 0 || std::find(seen, seen + n, t) != seen + n) continue;
+        seen[n++] = t;
+        const auto& tri = mesh.triangles[t];
+        const auto& v = mesh.vertices;
+        best = std::min(best,
+                        (closest_point_on_triangle(p, v[tri[0]], v[tri[1]], v[tri[2]]) - p).norm());
+      }
+  return n ? best : std::abs(f.sample(p));
 }
 
 double field_voxel_size(const Mesh& mesh, const FieldOptions& o) {
@@ -84,10 +109,68 @@ double field_voxel_count(const Mesh& mesh, const FieldOptions& options) {
 
 double fill_bytes_estimate(const Mesh& mesh, const FieldOptions& options) {
   return 64.0 * 1048576.0 + 16.0 * field_voxel_count(mesh, options) +
-         450.0 * double(mesh.triangles.size());
+         200.0 * double(mesh.triangles.size());
 }
 
 DistanceField make_distance_field(const Mesh& mesh, const FieldOptions& options) {
+  const MeshIndex index(mesh);
+  return make_distance_field(index, options);
+}
+
+namespace {
+
+// Inside/outside of every voxel centre from the surface crossings of the grid's rows along x:
+// one ray per row instead of one per voxel, so the cost is rows × log(triangles). A row whose
+// crossings are odd in number grazed the surface (an edge, a tangent point, a face's plane): it
+// is cast again a hair off the voxel centres, which decides those centres the same way unless
+// they lie within 1e-4 voxel of the surface, and if still odd its voxels are decided by a 7-ray
+// vote each. The two voxels either side of a crossing get the crossed triangle
+// in `hint`: its distance bounds their nearest-triangle search.
+std::vector<std::uint8_t> inside_by_rows(const MeshIndex& index, const DistanceField& f,
+                                         std::vector<std::int32_t>& hint) {
+  std::vector<std::uint8_t> in(f.d.size(), 0);
+  // Rows still odd after three nudges (one running in a face's plane) are decided voxel by
+  // voxel by a 7-ray vote afterwards; one flag per row, so no thread writes another's.
+  std::vector<std::uint8_t> odd(std::size_t(f.dims[1]) * f.dims[2], 0);
+  tbb::parallel_for(0, f.dims[2], [&](int k) {
+    for (int j = 0; j < f.dims[1]; ++j) {
+      const Vec3 c = f.position(0, j, k);
+      auto xs = index.crossings_x(c.y(), c.z());
+      for (int attempt = 1; xs.size() % 2 == 1 && attempt <= 3; ++attempt)
+        xs = index.crossings_x(c.y() + 1e-4 * f.h * std::fmod(0.6180339887 * attempt, 1.0),
+                               c.z() + 1e-4 * f.h * std::fmod(0.7548776662 * attempt, 1.0));
+      if (xs.size() % 2 == 1) {
+        odd[std::size_t(k) * f.dims[1] + j] = 1;
+        continue;
+      }
+      for (std::size_t q = 0; q < xs.size(); q += 2) {
+        const int i0 = std::max(0, int(std::ceil((xs[q].x - f.origin.x()) / f.h)));
+        const int i1 = std::min(f.dims[0] - 1, int(std::floor((xs[q + 1].x - f.origin.x()) / f.h)));
+        for (int i = i0; i <= i1; ++i) in[f.index(i, j, k)] = 1;
+      }
+      for (const auto& x : xs) {
+        const int i = int(std::floor((x.x - f.origin.x()) / f.h));
+        if (i >= 0 && i < f.dims[0]) hint[f.index(i, j, k)] = x.triangle;
+        if (i + 1 >= 0 && i + 1 < f.dims[0]) hint[f.index(i + 1, j, k)] = x.triangle;
+      }
+    }
+  });
+  if (std::find(odd.begin(), odd.end(), 1) != odd.end()) {
+    const RayInside rays(index.mesh());
+    tbb::parallel_for(0, f.dims[2], [&](int k) {
+      for (int j = 0; j < f.dims[1]; ++j)
+        if (odd[std::size_t(k) * f.dims[1] + j])
+          for (int i = 0; i < f.dims[0]; ++i)
+            in[f.index(i, j, k)] = rays.inside(f.position(i, j, k));
+    });
+  }
+  return in;
+}
+
+}  // namespace
+
+DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& options) {
+  const Mesh& mesh = index.mesh();
   init_openvdb();
   const double h = field_voxel_size(mesh, options);
   const auto bb = bounding_box(mesh);
@@ -114,48 +197,169 @@ DistanceField make_distance_field(const Mesh& mesh, const FieldOptions& options)
   }
   f.origin = lo;
 
-  // OpenVDB index space: voxel (i, j, k) centre at h (i, j, k) relative to lo. Points are shifted
-  // to lo before the conversion to float so that far-from-origin meshes keep their precision.
-  auto xform = openvdb::math::Transform::createLinearTransform(h);
-  std::vector<openvdb::Vec3s> points;
-  points.reserve(mesh.vertices.size());
-  for (const auto& p : mesh.vertices) {
-    const Vec3 q = p - lo;
-    points.emplace_back(float(q.x()), float(q.y()), float(q.z()));
-  }
-  std::vector<openvdb::Vec3I> tris;
-  tris.reserve(mesh.triangles.size());
-  for (const auto& t : mesh.triangles) tris.emplace_back(t[0], t[1], t[2]);
-  const std::vector<openvdb::Vec4I> quads;
-  const auto grid = openvdb::tools::meshToSignedDistanceField<openvdb::FloatGrid>(
-      *xform, points, tris, quads, 1.0f, std::numeric_limits<float>::max());
+  f.d.assign(static_cast<std::size_t>(total), 0.0f);
+  f.feature.assign(static_cast<std::size_t>(total), -1);
 
-  f.d.assign(static_cast<std::size_t>(total), static_cast<float>(-3.0 * h));
-  const auto acc = grid->getConstAccessor();
-  for (int k = 0; k < f.dims[2]; ++k)
-    for (int j = 0; j < f.dims[1]; ++j)
-      for (int i = 0; i < f.dims[0]; ++i) {
-        const openvdb::Coord c(i, j, k);
-        float v;
-        if (acc.probeValue(c, v)) {
-          f.d[f.index(i, j, k)] = -v;  // OpenVDB: negative inside
-        } else {
-          // Inactive: background; OpenVDB marks the filled interior with active voxels, so an
-          // inactive voxel is outside unless its background sign says inside.
-          f.d[f.index(i, j, k)] = -acc.getValue(c);
-        }
-      }
+  // 1. Sign: ray parity along the rows, or (a mesh that is not closed) a vote of 7 rays per voxel.
+  std::vector<std::uint8_t> in;
   if (options.vote_sign) {
-    // OpenVDB's sign assumes a closed surface; the magnitudes (distances to the nearest
-    // triangle) stay right, so only the sign is re-decided, voxel by voxel.
+    in.assign(f.d.size(), 0);
     const RayInside rays(mesh);
     tbb::parallel_for(0, f.dims[2], [&](int k) {
       for (int j = 0; j < f.dims[1]; ++j)
+        for (int i = 0; i < f.dims[0]; ++i) in[f.index(i, j, k)] = rays.inside(f.position(i, j, k));
+    });
+  } else {
+    in = inside_by_rows(index, f, f.feature);  // f.feature holds the rows' hints until step 2
+  }
+
+  // 2. The surface voxels (a face neighbour on the other side): exact nearest-triangle searches,
+  // each bounded as tightly as is known for certain, since the bound decides how many triangles
+  // it visits: by h (the segment to that neighbour crosses the surface) and by the distance to
+  // any triangle already known near it (the rows' hints, the voxels before it in its z slab; the
+  // slabs run in parallel, and the result, the nearest triangle with ties to the lower index,
+  // does not depend on the bound).
+  constexpr int kBand = 2;
+  std::vector<std::uint8_t> layer(f.d.size(), 255);
+  auto differs = [&](int i, int j, int k) {
+    const std::uint8_t v = in[f.index(i, j, k)];
+    return (i > 0 && in[f.index(i - 1, j, k)] != v) ||
+           (i + 1 < f.dims[0] && in[f.index(i + 1, j, k)] != v) ||
+           (j > 0 && in[f.index(i, j - 1, k)] != v) ||
+           (j + 1 < f.dims[1] && in[f.index(i, j + 1, k)] != v) ||
+           (k > 0 && in[f.index(i, j, k - 1)] != v) ||
+           (k + 1 < f.dims[2] && in[f.index(i, j, k + 1)] != v);
+  };
+  tbb::parallel_for(0, f.dims[2], [&](int k) {
+    for (int j = 0; j < f.dims[1]; ++j)
+      for (int i = 0; i < f.dims[0]; ++i) {
+        const std::int64_t q = f.index(i, j, k);
+        if (!differs(i, j, k)) {
+          f.feature[q] = -1;
+          continue;
+        }
+        layer[q] = 0;
+        const Vec3 p = f.position(i, j, k);
+        double bound = 1.01 * h;
+        for (int b = std::max(0, j - 1); b <= std::min(f.dims[1] - 1, j + 1); ++b)
+          for (int a = std::max(0, i - 1); a <= std::min(f.dims[0] - 1, i + 1); ++a) {
+            const int t = f.feature[f.index(a, b, k)];
+            if (t >= 0) bound = std::min(bound, index.distance_to_triangle(p, t));
+          }
+        auto n = index.nearest(p, bound * (1.0 + 1e-9) + 1e-12 * h);
+        if (n.triangle < 0) n = index.nearest(p, std::numeric_limits<double>::infinity());
+        f.feature[q] = n.triangle;
+        f.d[q] = static_cast<float>(in[q] ? n.distance : -n.distance);
+      }
+  });
+
+  // The nearest of the triangles that the 26 neighbours of voxel (i, j, k) keep, among those
+  // neighbours `use` accepts: a feature transform, exact wherever the voxel's nearest triangle
+  // is one of them (all but where features compete), a few dozen point–triangle distances.
+  auto nearest_of_neighbours = [&](int i, int j, int k, auto&& use) {
+    const Vec3 p = f.position(i, j, k);
+    MeshIndex::Nearest best{std::numeric_limits<double>::infinity(), -1};
+    for (int c = std::max(0, k - 1); c <= std::min(f.dims[2] - 1, k + 1); ++c)
+      for (int b = std::max(0, j - 1); b <= std::min(f.dims[1] - 1, j + 1); ++b)
+        for (int a = std::max(0, i - 1); a <= std::min(f.dims[0] - 1, i + 1); ++a) {
+          const std::int64_t n = f.index(a, b, c);
+          const int t = f.feature[n];
+          if (t < 0 || t == best.triangle || !use(n)) continue;
+          const double d = index.distance_to_triangle(p, t);
+          if (d < best.distance || (d == best.distance && t < best.triangle)) best = {d, t};
+        }
+    if (best.triangle < 0) best = index.nearest(p, std::numeric_limits<double>::infinity());
+    return best;
+  };
+
+  // The band: kBand layers around the surface voxels, each from the layer before.
+  for (int L = 1; L <= kBand; ++L) {
+    tbb::parallel_for(0, f.dims[2], [&](int k) {
+      for (int j = 0; j < f.dims[1]; ++j)
         for (int i = 0; i < f.dims[0]; ++i) {
-          float& v = f.d[f.index(i, j, k)];
-          v = rays.inside(f.position(i, j, k)) ? std::abs(v) : -std::abs(v);
+          const std::int64_t q = f.index(i, j, k);
+          if (layer[q] != 255) continue;
+          bool next = false;
+          for (int c = std::max(0, k - 1); c <= std::min(f.dims[2] - 1, k + 1) && !next; ++c)
+            for (int b = std::max(0, j - 1); b <= std::min(f.dims[1] - 1, j + 1) && !next; ++b)
+              for (int a = std::max(0, i - 1); a <= std::min(f.dims[0] - 1, i + 1); ++a)
+                if (layer[f.index(a, b, c)] == L - 1) {
+                  next = true;
+                  break;
+                }
+          if (next) layer[q] = static_cast<std::uint8_t>(100 + L);  // marked, not yet done
         }
     });
+    tbb::parallel_for(0, f.dims[2], [&](int k) {
+      for (int j = 0; j < f.dims[1]; ++j)
+        for (int i = 0; i < f.dims[0]; ++i) {
+          const std::int64_t q = f.index(i, j, k);
+          if (layer[q] != 100 + L) continue;
+          const auto n =
+              nearest_of_neighbours(i, j, k, [&](std::int64_t m) { return layer[m] < L; });
+          f.feature[q] = n.triangle;
+          f.d[q] = static_cast<float>(in[q] ? n.distance : -n.distance);
+        }
+    });
+    for (auto& v : layer)
+      if (v == 100 + L) v = static_cast<std::uint8_t>(L);
+  }
+  std::vector<std::uint8_t> band(f.d.size(), 0);
+  for (std::size_t q = 0; q < band.size(); ++q) {
+    band[q] = layer[q] != 255;
+    if (!band[q] && !in[q]) f.d[q] = static_cast<float>(-(kBand + 1) * h);  // outside, far
+  }
+
+  // 3. The interior beyond the band. OpenVDB fast sweeping (first-order Eikonal, Zhao 2005)
+  // from the band inwards gives every deep voxel an approximate depth (within about a voxel);
+  // in that order, shallow first, each voxel then takes the nearest of the triangles its 26
+  // neighbours keep (they are shallower, so they have theirs): a feature transform whose values
+  // are exact distances to real triangles.
+  init_openvdb();
+  auto sdf = openvdb::FloatGrid::create(static_cast<float>((kBand + 1) * h));
+  sdf->setTransform(openvdb::math::Transform::createLinearTransform(h));
+  sdf->setGridClass(openvdb::GRID_LEVEL_SET);
+  auto mask = openvdb::MaskGrid::create();
+  mask->setTransform(sdf->transformPtr());
+  std::vector<std::int64_t> deep;
+  {
+    auto acc = sdf->getAccessor();
+    auto macc = mask->getAccessor();
+    for (int k = 0; k < f.dims[2]; ++k)
+      for (int j = 0; j < f.dims[1]; ++j)
+        for (int i = 0; i < f.dims[0]; ++i) {
+          const std::int64_t q = f.index(i, j, k);
+          if (band[q]) {
+            acc.setValueOn(openvdb::Coord(i, j, k), -f.d[q]);  // OpenVDB: negative inside
+          } else if (in[q]) {
+            macc.setValueOn(openvdb::Coord(i, j, k));
+            deep.push_back(q);
+          }
+        }
+  }
+  if (deep.empty()) return f;
+  // Inactive voxels inside the band take −background, so the sweep knows their side.
+  openvdb::tools::signedFloodFill(sdf->tree());
+  const auto swept = openvdb::tools::maskSdf(*sdf, *mask);
+  {
+    const auto acc = swept->getConstAccessor();
+    const std::int64_t nx = f.dims[0], nxy = nx * f.dims[1];
+    for (const std::int64_t q : deep) {
+      const float v =
+          -acc.getValue(openvdb::Coord(int(q % nx), int(q / nx % f.dims[1]), int(q / nxy)));
+      f.d[q] = std::isfinite(v) ? v : std::numeric_limits<float>::max();
+    }
+  }
+  std::stable_sort(deep.begin(), deep.end(),
+                   [&](std::int64_t a, std::int64_t b) { return f.d[a] < f.d[b]; });
+  std::vector<std::uint8_t> done(band);
+  const std::int64_t nx = f.dims[0], nxy = nx * f.dims[1];
+  for (const std::int64_t q : deep) {
+    const auto n = nearest_of_neighbours(int(q % nx), int(q / nx % f.dims[1]), int(q / nxy),
+                                         [&](std::int64_t m) { return done[m] != 0; });
+    f.feature[q] = n.triangle;
+    f.d[q] = static_cast<float>(n.distance);
+    done[q] = 1;
   }
   return f;
 }

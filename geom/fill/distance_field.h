@@ -1,7 +1,9 @@
-// Signed distance field of a closed mesh on a regular voxel grid (OpenVDB mesh-to-volume).
+// Signed distance field of a closed mesh on a regular voxel grid: ray-parity sign, exact narrow
+// band, OpenVDB fast sweeping inside.
 #pragma once
 
 #include "geom/mesh/mesh.h"
+#include "geom/mesh/mesh_index.h"
 
 #include <array>
 #include <cstdint>
@@ -25,13 +27,18 @@ struct FieldOptions {
 };
 
 /// Dense signed distance samples at voxel centres: positive inside, negative outside, in the
-/// units of the mesh. Values are OpenVDB's exact point-to-triangle distances (not a voxel
-/// count), so radii taken from them are sub-voxel accurate.
+/// units of the mesh. Each voxel inside and in the band around the surface also keeps its
+/// nearest triangle (its feature), and its value is the exact distance to that triangle: exact
+/// (not a voxel count) within two voxels of the surface, and deeper inside the distance to the
+/// nearest of the triangles its neighbours keep — the true distance but where two features
+/// compete (the medial surface), where it can run high by a rounding of the competition. Outside
+/// beyond the band: −3 voxels and no feature (only the sign is meant).
 struct DistanceField {
   Vec3 origin = Vec3::Zero();  ///< world position of voxel (0, 0, 0)'s centre
   double h = 1.0;              ///< voxel edge length
   std::array<int, 3> dims{0, 0, 0};
-  std::vector<float> d;  ///< x fastest, then y, then z
+  std::vector<float> d;               ///< x fastest, then y, then z
+  std::vector<std::int32_t> feature;  ///< nearest triangle per voxel, −1 where none is kept
 
   std::int64_t index(int i, int j, int k) const {
     return (std::int64_t(k) * dims[1] + j) * dims[0] + i;
@@ -42,6 +49,13 @@ struct DistanceField {
   double sample(const Vec3& p) const;
 };
 
+/// Distance from p to the mesh through the features of the 3 × 3 × 3 voxels around p: the
+/// smallest exact distance to one of their triangles, so never below the true distance and equal
+/// to it wherever one of them is p's nearest triangle (everywhere but where several features
+/// compete at p). A few dozen point–triangle distances, whatever the mesh's triangle count;
+/// where no feature is kept (far outside) the field's trilinear sample, negated to a magnitude.
+double feature_distance(const DistanceField& field, const Mesh& mesh, const Vec3& p);
+
 /// Voxel size implied by the options for this mesh.
 double field_voxel_size(const Mesh& mesh, const FieldOptions& options);
 
@@ -49,15 +63,25 @@ double field_voxel_size(const Mesh& mesh, const FieldOptions& options);
 double field_voxel_count(const Mesh& mesh, const FieldOptions& options);
 
 /// Estimated peak bytes of make_distance_field and a fill on its grid: 16 per voxel (the dense
-/// float field, OpenVDB's interior-filled grid, the coverage bits and the medial candidates;
-/// 13.7 measured on a cube at 1–28 M voxels), 450 per triangle (the mesh, its CGAL and Embree
-/// search trees; 598 MiB measured for 1.31 M triangles) and 64 MiB for the program itself.
+/// float field, the sign and band masks, the coverage bits and the medial candidates), 200 per
+/// triangle (the mesh as read, its Embree BVH) and 64 MiB for the program itself.
 double fill_bytes_estimate(const Mesh& mesh, const FieldOptions& options);
 
-/// Builds the field over the mesh bounding box plus two voxels, interior filled completely
-/// (openvdb::tools::meshToSignedDistanceField with an unbounded interior band). Throws
-/// InvalidInput for a bad resolution, a grid of more than 2e9 voxels (the index range of the
-/// coverage grid's rows), or an estimate above options.max_bytes, before allocating.
+/// Builds the field over the mesh bounding box plus two voxels. The cost does not grow with the
+/// triangle count beyond the index's O(log n) queries:
+///  1. sign: one ray per grid row along x, inside between crossings 1–2, 3–4, … (or, with
+///     vote_sign, a 7-ray vote per voxel for meshes that are not closed);
+///  2. exact distances (bounded nearest-triangle queries) in a band of two voxels around the
+///     voxels whose face neighbours differ in sign;
+///  3. the interior beyond the band: OpenVDB fast sweeping from the band (tools::maskSdf)
+///     orders the voxels by depth, and in that order each takes, of the triangles its 26
+///     neighbours keep, the nearest (a feature transform: exact point–triangle distances, a few
+///     dozen per voxel, however many triangles the mesh has).
+/// Throws InvalidInput for a bad resolution, a grid of more than 2e9 voxels (the index range of
+/// the coverage grid's rows), or an estimate above options.max_bytes, before allocating.
+DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& options);
+
+/// The same with an index built for the call.
 DistanceField make_distance_field(const Mesh& mesh, const FieldOptions& options);
 
 }  // namespace clumpkit

@@ -1,7 +1,7 @@
 #include "geom/fill/fidelity.h"
 
 #include "geom/errors.h"
-#include "geom/mesh/mesh_distance.h"
+#include "geom/mesh/mesh_index.h"
 #include "geom/mesh/ray_inside.h"
 #include "geom/volume/union_of_balls.h"
 
@@ -48,14 +48,13 @@ double intersection_length(const std::vector<Interval>& a, const std::vector<Int
   return s;
 }
 
-}  // namespace
-
-Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing) {
+// What both entry points share: `index` is set for a watertight mesh (rows from its crossings),
+// null for one that is not (rows by ray-parity voting).
+Fidelity assess(const Mesh& mesh, const MeshIndex* index, const Clump& clump, double spacing) {
   validate(clump);
   Fidelity r;
   r.spheres = static_cast<int>(clump.spheres.size());
-  const MeshCheck check = check_mesh(mesh);
-  r.watertight = check.closed && check.manifold && check.oriented;
+  r.watertight = index != nullptr;
   r.mesh_volume = signed_volume(mesh);
   if (r.watertight && !(r.mesh_volume > 0.0))
     throw InvalidInput("fidelity: the mesh has no positive volume");
@@ -66,60 +65,43 @@ Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing) {
     bb[1] = bb[1].cwiseMax(s.center + Vec3::Constant(s.radius));
   }
   // Row lattice in (y, z), offset by an irrational fraction so no row passes exactly through a
-  // mesh edge or vertex (that would double-count a crossing).
+  // mesh edge or vertex.
   const double y0 = bb[0].y() + spacing * 0.5012345, z0 = bb[0].z() + spacing * 0.4987654;
   const int ny = static_cast<int>((bb[1].y() - y0) / spacing) + 1;
   const int nz = static_cast<int>((bb[1].z() - z0) / spacing) + 1;
-  std::vector<std::vector<int>> tri_rows(std::size_t(ny) * nz), ball_rows(std::size_t(ny) * nz);
-  auto bucket = [&](double ylo, double yhi, double zlo, double zhi,
-                    std::vector<std::vector<int>>& rows, int id) {
-    const int ja = std::max(0, int(std::ceil((ylo - y0) / spacing))),
-              jb = std::min(ny - 1, int(std::floor((yhi - y0) / spacing)));
-    const int ka = std::max(0, int(std::ceil((zlo - z0) / spacing))),
-              kb = std::min(nz - 1, int(std::floor((zhi - z0) / spacing)));
-    for (int k = ka; k <= kb; ++k)
-      for (int j = ja; j <= jb; ++j) rows[std::size_t(k) * ny + j].push_back(id);
-  };
-  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
-    const auto& tri = mesh.triangles[t];
-    const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
-    bucket(std::min({a.y(), b.y(), c.y()}), std::max({a.y(), b.y(), c.y()}),
-           std::min({a.z(), b.z(), c.z()}), std::max({a.z(), b.z(), c.z()}), tri_rows, t);
-  }
+  std::vector<std::vector<int>> ball_rows(std::size_t(ny) * nz);
   for (int s = 0; s < static_cast<int>(clump.spheres.size()); ++s) {
     const auto& sp = clump.spheres[s];
-    bucket(sp.center.y() - sp.radius, sp.center.y() + sp.radius, sp.center.z() - sp.radius,
-           sp.center.z() + sp.radius, ball_rows, s);
+    const int ja = std::max(0, int(std::ceil((sp.center.y() - sp.radius - y0) / spacing))),
+              jb = std::min(ny - 1, int(std::floor((sp.center.y() + sp.radius - y0) / spacing)));
+    const int ka = std::max(0, int(std::ceil((sp.center.z() - sp.radius - z0) / spacing))),
+              kb = std::min(nz - 1, int(std::floor((sp.center.z() + sp.radius - z0) / spacing)));
+    for (int k = ka; k <= kb; ++k)
+      for (int j = ja; j <= jb; ++j) ball_rows[std::size_t(k) * ny + j].push_back(s);
   }
 
   double ball = 0.0, both = 0.0;
-  // Watertight meshes: exact intervals from crossing parity. Otherwise ray-parity voting.
+  // Watertight meshes: exact intervals from the crossings of each row (one ray through the
+  // index, whatever the triangle count). Otherwise ray-parity voting along the row.
   std::unique_ptr<RayInside> rays;
-  if (!r.watertight) rays = std::make_unique<RayInside>(mesh);
+  if (!index) rays = std::make_unique<RayInside>(mesh);
   double mesh_len = 0.0;
-  std::vector<double> crossings;
   std::vector<Interval> chords, solid;
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j) {
       const double y = y0 + j * spacing, z = z0 + k * spacing;
-      crossings.clear();
-      for (int t : tri_rows[std::size_t(k) * ny + j]) {
-        const auto& tri = mesh.triangles[t];
-        const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]],
-                   &c = mesh.vertices[tri[2]];
-        // Barycentric coordinates of (y, z) in the triangle's (y, z) projection.
-        const double det = (b.y() - a.y()) * (c.z() - a.z()) - (c.y() - a.y()) * (b.z() - a.z());
-        if (det == 0.0) continue;
-        const double u = ((y - a.y()) * (c.z() - a.z()) - (c.y() - a.y()) * (z - a.z())) / det;
-        const double v = ((b.y() - a.y()) * (z - a.z()) - (y - a.y()) * (b.z() - a.z())) / det;
-        if (u < 0.0 || v < 0.0 || u + v > 1.0) continue;
-        crossings.push_back(a.x() + u * (b.x() - a.x()) + v * (c.x() - a.x()));
-      }
-      std::sort(crossings.begin(), crossings.end());
       solid.clear();
-      if (!rays) {
-        for (std::size_t q = 0; q + 1 < crossings.size(); q += 2)
-          solid.emplace_back(crossings[q], crossings[q + 1]);
+      std::vector<MeshIndex::Crossing> xs;
+      if (index) {
+        xs = index->crossings_x(y, z);
+        // A row that grazed the surface (odd count) is cast again a hair to the side; if still
+        // odd (it runs in a face's plane), it is voted on like a mesh that is not watertight.
+        for (int attempt = 1; xs.size() % 2 == 1 && attempt <= 3; ++attempt)
+          xs = index->crossings_x(y + 1e-6 * spacing * attempt, z + 1.3e-6 * spacing * attempt);
+        if (xs.size() % 2 == 1 && !rays) rays = std::make_unique<RayInside>(mesh);
+      }
+      if (index && xs.size() % 2 == 0) {
+        for (std::size_t q = 0; q + 1 < xs.size(); q += 2) solid.emplace_back(xs[q].x, xs[q + 1].x);
       } else {
         // Not watertight: crossing parity is unreliable; vote on samples along the row, each
         // standing for a segment of length `spacing`.
@@ -130,7 +112,7 @@ Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing) {
             else
               solid.emplace_back(x - 0.5 * spacing, x + 0.5 * spacing);
           }
-        mesh_len += length(solid);
+        if (!index) mesh_len += length(solid);
       }
       chords.clear();
       for (int s : ball_rows[std::size_t(k) * ny + j]) {
@@ -146,7 +128,7 @@ Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing) {
       both += intersection_length(solid, uni);
     }
   const double cell = spacing * spacing;
-  if (rays) {
+  if (!index) {
     r.mesh_volume = mesh_len * cell;
     if (!(r.mesh_volume > 0.0)) throw InvalidInput("fidelity: the mesh encloses no volume");
     r.mesh_volume_method = "ray-parity voting on the row lattice (mesh not watertight)";
@@ -164,35 +146,66 @@ Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing) {
   for (int q = 0; q < 3; ++q)
     r.inertia_error = std::max(r.inertia_error, std::abs(lc[q] - lm[q]) / lm[q]);
 
-  // Surface points: a barycentric lattice on each triangle, fine enough for the spacing.
-  double sum = 0.0;
-  std::size_t count = 0;
-  for (const auto& tri : mesh.triangles) {
+  // Surface points spread by area: four per spacing² (at least 2,000, at most 400,000), the
+  // triangle of each drawn by stratified area and its place in it from a low-discrepancy
+  // sequence. The count follows the area, not the triangles, so a scan-sized mesh costs what
+  // its coarse original does.
+  std::vector<double> cumulative(mesh.triangles.size());
+  double area = 0.0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
     const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
-    const double edge = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-    const int m = std::max(1, static_cast<int>(std::ceil(edge / spacing)));
-    for (int p = 0; p <= m; ++p)
-      for (int q = 0; p + q <= m; ++q) {
-        const Vec3 x = a + (b - a) * (double(p) / m) + (c - a) * (double(q) / m);
-        double dmin = 1e300;
-        for (const auto& s : clump.spheres) dmin = std::min(dmin, (x - s.center).norm() - s.radius);
-        const double d = std::abs(dmin);
-        sum += d;
-        ++count;
-        r.surface_max_distance = std::max(r.surface_max_distance, d);
-      }
+    area += 0.5 * (b - a).cross(c - a).norm();
+    cumulative[t] = area;
   }
-  r.surface_mean_distance = count ? sum / double(count) : 0.0;
+  const auto samples = static_cast<std::size_t>(
+      std::clamp(std::ceil(4.0 * area / (spacing * spacing)), 2000.0, 400000.0));
+  double sum = 0.0;
+  for (std::size_t q = 0; q < samples; ++q) {
+    const double at = (double(q) + 0.5) / double(samples) * area;
+    const auto t = std::min<std::size_t>(
+        mesh.triangles.size() - 1,
+        std::lower_bound(cumulative.begin(), cumulative.end(), at) - cumulative.begin());
+    const auto& tri = mesh.triangles[t];
+    const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
+    // R2 sequence (Roberts 2018) mapped uniformly onto the triangle.
+    const double u1 = std::fmod(0.5 + 0.7548776662466927 * double(q), 1.0);
+    const double u2 = std::fmod(0.5 + 0.5698402909980532 * double(q), 1.0);
+    const double s1 = std::sqrt(u1);
+    const Vec3 x = (1.0 - s1) * a + s1 * (1.0 - u2) * b + s1 * u2 * c;
+    double dmin = 1e300;
+    for (const auto& s : clump.spheres) dmin = std::min(dmin, (x - s.center).norm() - s.radius);
+    const double d = std::abs(dmin);
+    sum += d;
+    r.surface_max_distance = std::max(r.surface_max_distance, d);
+  }
+  r.surface_mean_distance = sum / double(samples);
 
   // How far each sphere pokes out: radius minus the distance from its centre to the surface
   // (meaningful for centres inside the mesh, as every fill's are).
-  const MeshDistance dist(mesh);
+  std::unique_ptr<MeshIndex> own;
+  if (!index) own = std::make_unique<MeshIndex>(mesh);
+  const MeshIndex& dist = index ? *index : *own;
   for (const auto& s : clump.spheres) {
     const double d = dist.distance(s.center);
     r.overshoot_depth_max = std::max(r.overshoot_depth_max, s.radius - d);
   }
   r.overshoot_depth_max = std::max(0.0, r.overshoot_depth_max);
   return r;
+}
+
+}  // namespace
+
+Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing) {
+  const MeshCheck check = check_mesh(mesh);
+  if (!(check.closed && check.manifold && check.oriented))
+    return assess(mesh, nullptr, clump, spacing);
+  const MeshIndex index(mesh);
+  return assess(mesh, &index, clump, spacing);
+}
+
+Fidelity assess_fidelity(const MeshIndex& index, const Clump& clump, double spacing) {
+  return assess(index.mesh(), &index, clump, spacing);
 }
 
 }  // namespace clumpkit

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "geom/mesh/mesh.h"
+#include "geom/mesh/mesh_index.h"
 #include "geom/sphere.h"
 
 namespace clumpkit {
@@ -28,11 +29,15 @@ struct Fidelity {
 
 /// Clump volume, centroid and inertia are exact (power diagram). The part of the clump outside
 /// the mesh comes from exact 1-D integration along x of every row of a (y, z) lattice with spacing
-/// `spacing` (mesh intervals from ray crossings, clump intervals from sphere chords), so only the
-/// 2-D midpoint rule in (y, z) approximates it. Surface distances on a lattice of points on every
-/// triangle with the same spacing. A mesh that is not watertight is classified by Embree
+/// `spacing` (mesh intervals from the row's surface crossings, clump intervals from sphere
+/// chords), so only the 2-D midpoint rule in (y, z) approximates it. Surface distances at points
+/// spread by area, four per spacing². A mesh that is not watertight is classified by Embree
 /// ray-parity voting along each row instead, and its volume estimated the same way (labelled).
 /// spacing ≤ 0 picks 1/200 of the mesh's largest extent.
 Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing = 0.0);
+
+/// The same for a mesh known to be watertight (read_mesh checked it), with its index: nothing
+/// in it grows with the triangle count but the mesh's volume integrals.
+Fidelity assess_fidelity(const MeshIndex& index, const Clump& clump, double spacing = 0.0);
 
 }  // namespace clumpkit

@@ -2,7 +2,7 @@
 
 #include "geom/errors.h"
 #include "geom/fill/skeleton.h"
-#include "geom/mesh/mesh_distance.h"
+#include "geom/mesh/mesh_index.h"
 
 #include <algorithm>
 #include <cmath>
@@ -110,7 +110,7 @@ void validate(const FillOptions& o) {
     throw InvalidInput("ridge threshold must be in (0, 1], got " + std::to_string(o.ridge));
 }
 
-FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions& options) {
+FillResult fill(const MeshIndex& distance, const DistanceField& field, const FillOptions& options) {
   validate(options);
   FillResult r;
   r.voxel = field.h;
@@ -124,7 +124,6 @@ FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions&
   if (grid.interior() == 0)
     throw InvalidInput("the mesh has no interior voxel at voxel size " + std::to_string(field.h) +
                        ": use more --voxels");
-  const MeshDistance distance(mesh);
   const double tolerance =
       options.tolerance >= 0 ? options.tolerance : options.tolerance_voxels * field.h;
   // Radius of a sphere whose centre lies `d` inside the surface: the tolerance lets it poke out.
@@ -149,9 +148,15 @@ FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions&
     return (g > d && !fits(c, g)) ? d : g;
   };
   std::vector<char> exact(cand.size(), 0);
+  // Distances while searching come from the field's features (exact distances to the nearest
+  // triangles of the voxels around a point: a few dozen point–triangle distances, whatever the
+  // triangle count; never below the truth). The sphere a search ends with takes its radius from
+  // an exact nearest-triangle search of the index, bounded by the feature distance.
+  const Mesh& mesh = distance.mesh();
+  auto near_distance = [&](const Vec3& p) { return feature_distance(field, mesh, p); };
   auto exact_radius = [&](int c) {
     if (!exact[c]) {
-      cand[c].radius = radius_at(cand[c].center, distance.distance(cand[c].center));
+      cand[c].radius = radius_at(cand[c].center, near_distance(cand[c].center));
       exact[c] = 1;
     }
     return cand[c].radius;
@@ -185,7 +190,8 @@ FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions&
   // A sphere that kept its inscribed radius stays so while it moves; a grown one is re-checked
   // where it ends.
   auto search = [&](Vec3 c, double rad, auto&& gain) {
-    const bool grow = rad > distance.distance(c);
+    double dc = near_distance(c);
+    const bool grow = rad > dc;
     std::int64_t best = gain(Sphere{c, rad});
     for (double step = 0.5 * field.h; step > 0.2 * field.h; step *= 0.5) {
       for (int iter = 0; iter < 4; ++iter) {
@@ -195,13 +201,14 @@ FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions&
             for (int dx = -1; dx <= 1; ++dx) {
               if (dx == 0 && dy == 0 && dz == 0) continue;
               const Vec3 q = c + step * Vec3(dx, dy, dz);
-              const double dq = distance.distance(q);
+              const double dq = near_distance(q);
               const double rq = grow ? grown(dq) : dq;
               if (rq < options.min_radius || dq <= 0.0) continue;
               const std::int64_t g = gain(Sphere{q, rq});
               if (g > best) {
                 best = g;
                 c = q;
+                dc = dq;
                 rad = rq;
                 moved = true;
               }
@@ -209,16 +216,25 @@ FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions&
         if (!moved) break;
       }
     }
-    if (grow && !fits(c, rad)) rad = distance.distance(c);
     return Sphere{c, rad};
   };
 
+  // The radius a placed sphere keeps: from the exact distance at its centre (the features can
+  // run high where several compete), grown unless a band of it would then poke out.
+  auto exact_sphere = [&](const Vec3& c, bool grow) {
+    const double d = distance.distance(c, near_distance(c) * (1.0 + 1e-9) + 1e-12 * field.h);
+    const double g = grown(d);
+    return Sphere{c, grow && g > d && fits(c, g) ? g : d};
+  };
+
   auto accept = [&](int c) {
-    const Sphere s =
+    const bool grow = cand[c].radius > near_distance(cand[c].center);
+    const Sphere found =
         options.refine
             ? search(cand[c].center, cand[c].radius,
                      [&](const Sphere& b) { return grid.visit(b.center, b.radius, false); })
             : Sphere{cand[c].center, cand[c].radius};
+    const Sphere s = exact_sphere(found.center, grow);
     grid.visit(s.center, s.radius, true);
     r.clump.spheres.push_back(s);
     r.coverage_curve.push_back(1.0 - double(grid.uncovered()) / double(grid.interior()));
@@ -253,8 +269,10 @@ FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions&
       bool inside = false;
       for (const auto& s : r.clump.spheres) inside |= (cand[c].center - s.center).norm() < s.radius;
       if (!inside) {
-        grid.visit(cand[c].center, cand[c].radius, true);
-        r.clump.spheres.push_back(Sphere{cand[c].center, cand[c].radius});
+        const Sphere s =
+            exact_sphere(cand[c].center, cand[c].radius > near_distance(cand[c].center));
+        grid.visit(s.center, s.radius, true);
+        r.clump.spheres.push_back(s);
         r.coverage_curve.push_back(1.0 - double(grid.uncovered()) / double(grid.interior()));
       }
     }
@@ -296,7 +314,8 @@ FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions&
 
 FillResult fill(const Mesh& mesh, const FillOptions& options) {
   validate(options);
-  return fill(mesh, make_distance_field(mesh, options.field), options);
+  const MeshIndex index(mesh);
+  return fill(index, make_distance_field(index, options.field), options);
 }
 
 }  // namespace clumpkit

@@ -52,16 +52,17 @@ struct FillResult {
 /// min_radius, or a mesh without interior voxels at this resolution.
 void validate(const FillOptions& options);
 
-/// Fill on a precomputed field of `mesh`. Candidate centres come from the field's ridges; each
-/// candidate's radius is the exact distance from its centre to the mesh (CGAL AABB tree), since
-/// OpenVDB's filled interior overestimates distances far from the surface by up to a few voxels.
+/// Fill on a precomputed field of the index's mesh. Candidate centres come from the field's
+/// ridges; each candidate's radius is the exact distance from its centre to the mesh (the
+/// index's nearest-triangle query), since the swept interior of the field runs high by up to
+/// about a voxel.
 /// Greedy: the largest inscribed sphere first, then repeatedly the
 /// medial candidate whose ball covers the most still-uncovered interior voxels. Coverage gains
 /// only decrease as spheres are added, so a lazy priority queue (re-evaluate the top, accept if
 /// still the best) picks exactly the greedy choice. Ties go to the lower candidate index.
-FillResult fill(const Mesh& mesh, const DistanceField& field, const FillOptions& options);
+FillResult fill(const MeshIndex& index, const DistanceField& field, const FillOptions& options);
 
-/// Field + fill.
+/// Index + field + fill.
 FillResult fill(const Mesh& mesh, const FillOptions& options);
 
 }  // namespace clumpkit

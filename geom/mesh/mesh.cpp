@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <map>
 #include <unordered_map>
 
@@ -78,8 +80,11 @@ Mat3 solid_inertia(const Mesh& mesh) {
 MeshCheck check_mesh(const Mesh& mesh) {
   MeshCheck r;
   const int nv = static_cast<int>(mesh.vertices.size());
-  // Directed edge counts; key = (from, to).
-  std::map<std::pair<int, int>, int> directed;
+  // Every directed edge as one sorted key: the undirected edge (lo, hi) and its direction in the
+  // lowest bit, so each edge's uses are adjacent after one sort and are counted in one pass
+  // (a tree map took seconds on a scan's 4·10⁶ edges). Indices are below 2³¹.
+  std::vector<std::uint64_t> keys;
+  keys.reserve(3 * mesh.triangles.size());
   const auto bb =
       mesh.vertices.empty() ? std::array<Vec3, 2>{Vec3::Zero(), Vec3::Zero()} : bounding_box(mesh);
   const double scale = (bb[1] - bb[0]).norm();
@@ -93,54 +98,66 @@ MeshCheck check_mesh(const Mesh& mesh) {
     const Vec3& a = mesh.vertices[t[0]];
     const double area2 = (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a).norm();
     if (!(area2 > 1e-14 * scale * scale)) r.degenerate = true;
-    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+    for (int k = 0; k < 3; ++k) {
+      const int from = t[k], to = t[(k + 1) % 3];
+      const std::uint64_t lo = std::uint32_t(std::min(from, to)),
+                          hi = std::uint32_t(std::max(from, to));
+      keys.push_back((lo << 32) | (hi << 1) | std::uint64_t(from > to));
+    }
   }
+  std::sort(keys.begin(), keys.end());
   bool oriented = true;
-  for (const auto& [e, n] : directed) {
-    if (n > 1) oriented = false;
-    if (e.first < e.second || directed.find({e.second, e.first}) == directed.end()) {
-      const auto it = directed.find({e.second, e.first});
-      const int total = n + (it == directed.end() ? 0 : it->second);
-      if (total == 1) {
-        ++r.boundary_edges;
-        oriented = false;
-      } else if (total > 2) {
-        ++r.nonmanifold_edges;
-      } else if (it == directed.end()) {
-        oriented = false;  // the two uses run in the same direction
-      }
+  for (std::size_t q = 0; q < keys.size();) {
+    int uses[2] = {0, 0};  // low-to-high, high-to-low
+    const std::uint64_t edge = keys[q] >> 1;
+    for (; q < keys.size() && keys[q] >> 1 == edge; ++q) ++uses[keys[q] & 1];
+    if (uses[0] > 1 || uses[1] > 1) oriented = false;  // a directed edge used twice
+    const int total = uses[0] + uses[1];
+    if (total == 1) {
+      ++r.boundary_edges;
+      oriented = false;
+    } else if (total > 2) {
+      ++r.nonmanifold_edges;
+    } else if (uses[0] == 0 || uses[1] == 0) {
+      oriented = false;  // the two uses run in the same direction
     }
   }
   // Vertex manifoldness: the triangles around each vertex must form a single fan.
   bool vertex_manifold = true;
   if (r.nonmanifold_edges == 0 && !mesh.triangles.empty()) {
-    std::vector<std::vector<int>> star(nv);
+    // Stars in compressed rows: the faces of vertex v are star[first[v] .. first[v + 1]).
+    std::vector<int> first(nv + 1, 0);
+    for (const auto& t : mesh.triangles)
+      for (int v : t)
+        if (v >= 0 && v < nv) ++first[v + 1];
+    for (int v = 0; v < nv; ++v) first[v + 1] += first[v];
+    std::vector<int> star(first[nv]), fill(first.begin(), first.end() - 1);
     for (int f = 0; f < static_cast<int>(mesh.triangles.size()); ++f)
-      for (int k = 0; k < 3; ++k) {
-        const int v = mesh.triangles[f][k];
-        if (v >= 0 && v < nv) star[v].push_back(f);
-      }
+      for (int v : mesh.triangles[f])
+        if (v >= 0 && v < nv) star[fill[v]++] = f;
+    std::vector<int> parent;
+    std::vector<std::pair<int, int>> ends;  // (other endpoint, star index)
     for (int v = 0; v < nv && vertex_manifold; ++v) {
-      const auto& faces = star[v];
-      if (faces.empty()) continue;
-      // Union-find over faces of the star, joined when they share an edge through v.
-      std::vector<int> parent(faces.size());
-      for (size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+      const int m = first[v + 1] - first[v];
+      if (m == 0) continue;
+      // Union-find over the faces of the star, joined when they share an edge through v.
+      parent.resize(m);
+      for (int i = 0; i < m; ++i) parent[i] = i;
       auto find = [&](int x) {
         while (parent[x] != x) x = parent[x] = parent[parent[x]];
         return x;
       };
-      std::unordered_map<int, int> seen;  // other endpoint -> star index
-      for (size_t i = 0; i < faces.size(); ++i) {
-        for (int w : mesh.triangles[faces[i]]) {
-          if (w == v) continue;
-          auto [it, inserted] = seen.emplace(w, static_cast<int>(i));
-          if (!inserted) parent[find(static_cast<int>(i))] = find(it->second);
-        }
-      }
+      ends.clear();
+      for (int i = 0; i < m; ++i)
+        for (int w : mesh.triangles[star[first[v] + i]])
+          if (w != v) ends.emplace_back(w, i);
+      std::sort(ends.begin(), ends.end());
+      for (std::size_t e = 1; e < ends.size(); ++e)
+        if (ends[e].first == ends[e - 1].first)
+          parent[find(ends[e].second)] = find(ends[e - 1].second);
       const int root = find(0);
-      for (size_t i = 1; i < faces.size(); ++i)
-        if (find(static_cast<int>(i)) != root) vertex_manifold = false;
+      for (int i = 1; i < m; ++i)
+        if (find(i) != root) vertex_manifold = false;
     }
   }
   r.closed = r.boundary_edges == 0 && !mesh.triangles.empty();
@@ -154,33 +171,58 @@ void flip_orientation(Mesh& mesh) {
   for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
 }
 
+namespace {
+
+struct ExactHash {
+  std::size_t operator()(const std::array<double, 3>& p) const {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (double v : p) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &v, sizeof bits);
+      h = (h ^ bits) * 0xff51afd7ed558ccdull;
+      h ^= h >> 32;
+    }
+    return static_cast<std::size_t>(h);
+  }
+};
+
+}  // namespace
+
 void weld_vertices(Mesh& mesh, double relative_tolerance) {
   if (mesh.vertices.empty()) return;
   const auto bb = bounding_box(mesh);
   const double tol = relative_tolerance * (bb[1] - bb[0]).norm();
+  // First exact repeats (an STL file repeats every vertex about six times, bit for bit) by a
+  // hash table, in the order of first occurrence; then, with a tolerance, the survivors that
+  // share a cell of size `tol` (a tree map over far fewer points).
   std::vector<int> remap(mesh.vertices.size());
+  std::vector<Vec3> unique;
+  {
+    std::unordered_map<std::array<double, 3>, int, ExactHash> same;
+    same.reserve(mesh.vertices.size());
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+      const Vec3& p = mesh.vertices[i];
+      // + 0.0 makes −0 and +0 one key, as the tree map's comparison did.
+      auto [it, inserted] = same.emplace(
+          std::array<double, 3>{p.x() + 0.0, p.y() + 0.0, p.z() + 0.0}, int(unique.size()));
+      if (inserted) unique.push_back(p);
+      remap[i] = it->second;
+    }
+  }
   std::vector<Vec3> kept;
   if (tol > 0.0) {
-    // Quantize to a grid of cell `tol` and merge cell matches; STL writers repeat vertices
-    // bit-for-bit, so this also merges exactly equal coordinates.
+    std::vector<int> cell_of(unique.size());
     std::map<std::array<long long, 3>, int> cell;
-    for (size_t i = 0; i < mesh.vertices.size(); ++i) {
-      const Vec3& p = mesh.vertices[i];
+    for (std::size_t u = 0; u < unique.size(); ++u) {
       std::array<long long, 3> key;
-      for (int k = 0; k < 3; ++k) key[k] = std::llround((p[k] - bb[0][k]) / tol);
-      auto [it, inserted] = cell.emplace(key, static_cast<int>(kept.size()));
-      if (inserted) kept.push_back(p);
-      remap[i] = it->second;
+      for (int k = 0; k < 3; ++k) key[k] = std::llround((unique[u][k] - bb[0][k]) / tol);
+      auto [it, inserted] = cell.emplace(key, int(kept.size()));
+      if (inserted) kept.push_back(unique[u]);
+      cell_of[u] = it->second;
     }
+    for (int& r : remap) r = cell_of[r];
   } else {
-    std::map<std::array<double, 3>, int> same;  // exact matches only
-    for (size_t i = 0; i < mesh.vertices.size(); ++i) {
-      const Vec3& p = mesh.vertices[i];
-      auto [it, inserted] =
-          same.emplace(std::array<double, 3>{p.x(), p.y(), p.z()}, static_cast<int>(kept.size()));
-      if (inserted) kept.push_back(p);
-      remap[i] = it->second;
-    }
+    kept = std::move(unique);
   }
   std::vector<std::array<int, 3>> tris;
   tris.reserve(mesh.triangles.size());

@@ -1,6 +1,7 @@
 #include "geom/mesh/ray_inside.h"
 
 #include "geom/errors.h"
+#include "geom/mesh/embree_scene.h"
 
 #include <embree3/rtcore.h>
 
@@ -10,8 +11,7 @@
 namespace clumpkit {
 
 struct RayInside::Impl {
-  RTCDevice device = nullptr;
-  RTCScene scene = nullptr;
+  std::unique_ptr<EmbreeScene> embree;
   Vec3 shift = Vec3::Zero();  // Embree works in float: coordinates relative to the box centre
   Vec3 dirs[7];
 };
@@ -27,29 +27,10 @@ RayInside::RayInside(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
     const double phi = 2.0 * M_PI * std::fmod(0.7654321 + k * g * g, 1.0);
     m.dirs[k] = Vec3(std::sqrt(1 - z * z) * std::cos(phi), std::sqrt(1 - z * z) * std::sin(phi), z);
   }
-  m.device = rtcNewDevice("threads=1");
-  if (!m.device) throw NumericError("Embree: cannot create a device");
-  m.scene = rtcNewScene(m.device);
-  RTCGeometry geom = rtcNewGeometry(m.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-      geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertices.size()));
-  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-    for (int k = 0; k < 3; ++k) v[3 * i + k] = static_cast<float>(mesh.vertices[i][k] - m.shift[k]);
-  auto* t = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
-                                                           RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
-                                                           mesh.triangles.size()));
-  for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
-    for (int k = 0; k < 3; ++k) t[3 * i + k] = static_cast<unsigned>(mesh.triangles[i][k]);
-  rtcCommitGeometry(geom);
-  rtcAttachGeometry(m.scene, geom);
-  rtcReleaseGeometry(geom);
-  rtcCommitScene(m.scene);
+  m.embree = std::make_unique<EmbreeScene>(mesh, m.shift, false);
 }
 
-RayInside::~RayInside() {
-  if (impl_->scene) rtcReleaseScene(impl_->scene);
-  if (impl_->device) rtcReleaseDevice(impl_->device);
-}
+RayInside::~RayInside() = default;
 
 double RayInside::vote(const Vec3& p) const {
   const Impl& m = *impl_;
@@ -72,7 +53,7 @@ double RayInside::vote(const Vec3& p) const {
       rh.ray.tfar = std::numeric_limits<float>::infinity();
       rh.ray.mask = 0xFFFFFFFFu;
       rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-      rtcIntersect1(m.scene, &ctx, &rh);
+      rtcIntersect1(m.embree->scene, &ctx, &rh);
       if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) break;
       ++crossings;
       // Step past this hit: a relative epsilon, since the hit distance is a float.

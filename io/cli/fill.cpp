@@ -83,7 +83,7 @@ void register_fill(CLI::App& app) {
     check_not_input(o->out, "--output", o->mesh);
     MeshReadReport report;
     Mesh mesh;
-    std::string inside_outside = "OpenVDB signed distance (watertight mesh)";
+    std::string inside_outside = "ray parity along the grid rows (watertight mesh)";
     try {
       mesh = read_mesh(o->mesh, &report);
     } catch (const InvalidInput& e) {
@@ -95,7 +95,21 @@ void register_fill(CLI::App& app) {
       note(std::string(e.what()) + "; deciding inside/outside by ray-parity voting");
     }
     if (report.reoriented) note(o->mesh + ": triangles were not consistently outward; re-oriented");
-    const FillResult r = fill(mesh, o->fill);
+    // Phase times, so a user sees what grows with the triangle count (reading, indexing) apart
+    // from what should not (field, fill).
+    auto since = [](std::chrono::steady_clock::time_point t) {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    };
+    const double t_read = since(t0);
+    auto t = std::chrono::steady_clock::now();
+    const MeshIndex index(mesh);
+    const double t_index = since(t);
+    t = std::chrono::steady_clock::now();
+    const DistanceField field = make_distance_field(index, o->fill.field);
+    const double t_field = since(t);
+    t = std::chrono::steady_clock::now();
+    const FillResult r = fill(index, field, o->fill);
+    const double t_fill = since(t);
     if (r.clump.spheres.empty())
       throw InvalidInput(o->mesh + ": no sphere fits with --min-radius " +
                          format_number(o->fill.min_radius));
@@ -103,7 +117,10 @@ void register_fill(CLI::App& app) {
       warning("the budget of " + std::to_string(o->spheres) + " spheres was not reached: " +
               std::to_string(r.clump.spheres.size()) + " placed, stopped by " + r.stopped_by +
               (r.stopped_by == "candidates" ? " (no medial candidate left adds coverage)" : ""));
-    const Fidelity f = assess_fidelity(mesh, r.clump, r.voxel);
+    t = std::chrono::steady_clock::now();
+    const Fidelity f = o->fill.field.vote_sign ? assess_fidelity(mesh, r.clump, r.voxel)
+                                               : assess_fidelity(index, r.clump, r.voxel);
+    const double t_fidelity = since(t);
     write_clump(o->out, r.clump,
                 "clumpkit fill " + o->mesh + "\nspheres " + std::to_string(r.clump.spheres.size()) +
                     ", covered fraction " + format_number(f.covered_fraction));
@@ -118,15 +135,25 @@ void register_fill(CLI::App& app) {
         o->fill.tolerance >= 0 ? o->fill.tolerance : o->fill.tolerance_voxels * r.voxel;
     j["relative_tolerance"] = o->fill.tolerance_relative;
     j["seconds"] = seconds;
+    nlohmann::ordered_json phases;
+    phases["read"] = t_read;  // reading, welding and checking the mesh
+    phases["index"] = t_index;
+    phases["field"] = t_field;
+    phases["fill"] = t_fill;
+    phases["fidelity"] = t_fidelity;
+    j["seconds_by_phase"] = phases;
+    j["triangles"] = mesh.triangles.size();
     if (o->json) {
       std::cout << j.dump(2) << "\n";
     } else {
       std::printf(
           "wrote %s: %d spheres (stopped by %s), covered %.4f, overshoot %.4f, surface gap "
-          "mean %s max %s, %.3f s\n",
+          "mean %s max %s, %.3f s (read %.3f, index %.3f, field %.3f, fill %.3f, fidelity "
+          "%.3f)\n",
           o->out.c_str(), f.spheres, r.stopped_by.c_str(), f.covered_fraction, f.overshoot_fraction,
           format_number(f.surface_mean_distance).c_str(),
-          format_number(f.surface_max_distance).c_str(), seconds);
+          format_number(f.surface_max_distance).c_str(), seconds, t_read, t_index, t_field, t_fill,
+          t_fidelity);
     }
   });
 }

@@ -92,11 +92,15 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
   const Descriptors desc = describe(shape.mesh);
   FillOptions fill_options = recipe.fill;
   fill_options.field.max_bytes = fill_memory_share(options);
-  const FillResult filled = fill(shape.mesh, fill_options);
+  validate(fill_options);
+  // One search tree serves the field, the fill and the fidelity (generated meshes are closed).
+  const MeshIndex index(shape.mesh);
+  const FillResult filled =
+      fill(index, make_distance_field(index, fill_options.field), fill_options);
   if (filled.clump.spheres.empty())
     throw InvalidInput("no sphere fits (fill.min_radius " + format_number(recipe.fill.min_radius) +
                        ")");
-  const Fidelity fid = assess_fidelity(shape.mesh, filled.clump, filled.voxel);
+  const Fidelity fid = assess_fidelity(index, filled.clump, filled.voxel);
 
   const ClumpTemplate tpl = make_clump_template(filled.clump, desc.volume);
 

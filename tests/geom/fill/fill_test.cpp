@@ -3,7 +3,7 @@
 #include "geom/errors.h"
 #include "geom/fill/fidelity.h"
 #include "geom/mesh/cgal_mesh.h"
-#include "geom/mesh/mesh_distance.h"
+#include "geom/mesh/mesh_index.h"
 #include "geom/shapes/block.h"
 #include "geom/shapes/primitives.h"
 
@@ -89,7 +89,7 @@ TEST(Fill, ZeroToleranceKeepsEverySphereInside) {
   o.spheres = 60;
   o.tolerance_relative = 0.0;
   const FillResult r = fill(b, o);
-  const MeshDistance d(b);
+  const MeshIndex d(b);
   for (const auto& s : r.clump.spheres) EXPECT_LE(s.radius, d.distance(s.center) + 1e-9);
   const Fidelity f = assess_fidelity(b, r.clump, r.voxel / 2);
   EXPECT_LT(f.overshoot_fraction, 1e-4);
