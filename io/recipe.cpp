@@ -147,14 +147,11 @@ ShapeRecipe parse_shape_recipe(const std::string& text, const std::string& path)
           r.fill.coverage = p.number(fv, field);
         } else if (name == "min_radius") {
           r.fill.min_radius = p.number(fv, field);
-        } else if (name == "relative_tolerance") {
-          r.fill.tolerance_relative = p.number(fv, field);
-        } else if (name == "tolerance") {
-          r.fill.tolerance = p.number(fv, field);
+        } else if (name == "max_overshoot") {
+          r.fill.max_overshoot = p.number(fv, field);
         } else {
           p.fail(field,
-                 "unknown key (known: spheres, coverage, min_radius, voxels, relative_tolerance, "
-                 "tolerance)");
+                 "unknown key (known: spheres, coverage, min_radius, voxels, max_overshoot)");
         }
       }
       try {

@@ -37,7 +37,7 @@ struct ShapeRecipe {
 ///   # hull fractions accept roundness = [min, max].
 ///   [fill]                            # optional, for `clumpkit library`
 ///   spheres = 47; coverage = 0.9; min_radius = 0.002; voxels = 40
-///   relative_tolerance = 0.03; tolerance = 0.0
+///   max_overshoot = 0.01             # fraction of the volume the clump may put outside
 ShapeRecipe read_shape_recipe(const std::string& path);
 
 /// Same, from text already in memory; `path` is only used in messages.

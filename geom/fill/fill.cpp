@@ -1,6 +1,7 @@
 #include "geom/fill/fill.h"
 
 #include "geom/errors.h"
+#include "geom/fill/overshoot.h"
 #include "geom/fill/skeleton.h"
 #include "geom/mesh/mesh_index.h"
 
@@ -106,6 +107,8 @@ void validate(const FillOptions& o) {
   if (!(o.tolerance_relative >= 0.0 && o.tolerance_relative < 1.0))
     throw InvalidInput("--relative-tolerance must be in [0, 1), got " +
                        std::to_string(o.tolerance_relative));
+  if (!(o.max_overshoot >= 0.0 && o.max_overshoot < 1.0))
+    throw InvalidInput("--max-overshoot must be in [0, 1), got " + std::to_string(o.max_overshoot));
   if (!(o.ridge > 0.0 && o.ridge <= 1.0))
     throw InvalidInput("ridge threshold must be in (0, 1], got " + std::to_string(o.ridge));
 }
@@ -219,12 +222,35 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
     return Sphere{c, rad};
   };
 
+  // The overshoot contract: grown spheres are recorded on a ledger of rows a third of a voxel
+  // apart, over the field's box and a tenth more (a sphere grows past the surface by a few
+  // percent of its radius), and one is grown only while the ledger stays within 0.9 of the
+  // budget. The mesh volume: exact for a closed mesh, the interior voxels' for one that is not.
+  const Vec3 field_hi =
+      field.origin + field.h * Vec3(field.dims[0] - 1, field.dims[1] - 1, field.dims[2] - 1);
+  const Vec3 margin = 0.1 * (field_hi - field.origin).maxCoeff() * Vec3::Ones();
+  OvershootLedger ledger(distance, {field.origin - margin, field_hi + margin}, field.h / 3.0);
+  const double closed_volume = signed_volume(mesh);
+  const double mesh_volume = options.field.vote_sign || !(closed_volume > 0.0)
+                                 ? double(grid.interior()) * field.h * field.h * field.h
+                                 : closed_volume;
+  const double outside_budget = 0.9 * options.max_overshoot * mesh_volume;
+
   // The radius a placed sphere keeps: from the exact distance at its centre (the features can
-  // run high where several compete), grown unless a band of it would then poke out.
+  // run high where several compete), grown unless a band of it would then poke out or the
+  // overshoot budget would not hold it.
   auto exact_sphere = [&](const Vec3& c, bool grow) {
     const double d = distance.distance(c, near_distance(c) * (1.0 + 1e-9) + 1e-12 * field.h);
     const double g = grown(d);
-    return Sphere{c, grow && g > d && fits(c, g) ? g : d};
+    if (grow && g > d && fits(c, g)) {
+      const Sphere big{c, g};
+      if (ledger.volume() + ledger.added(big) <= outside_budget) {
+        ledger.add(big);
+        r.overshoot = ledger.volume() / mesh_volume;
+        return big;
+      }
+    }
+    return Sphere{c, d};
   };
 
   auto accept = [&](int c) {

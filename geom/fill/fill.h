@@ -17,13 +17,17 @@ struct FillOptions {
   double min_radius = 0.0;  ///< R_lim of Jin et al. 2017: smaller spheres are never placed
   FieldOptions field;       ///< resolution of the distance field and coverage grid
   double ridge = 0.8;       ///< medial-candidate slope threshold (see medial_candidates)
-  /// How far spheres may reach past the surface. A sphere whose centre lies d inside gets radius
-  /// d·(1 + tolerance_relative) + tolerance (units of the mesh; negative: tolerance_voxels
-  /// voxels). A small relative tolerance fills edges and corners much better for a small
-  /// overshoot, because a cap of height ε·r holds ∝ ε²r³ outside but the shell adds ∝ ε·r³
-  /// inside; it scales with each sphere, so small corner spheres poke out proportionally little.
-  /// Block of Jin et al. 2017, default: overshoot 0.5–1.0 % of the volume, stated in every fidelity
-  /// report. Set both to 0 to keep every sphere strictly inside.
+  /// The contract: the clump's volume outside the mesh stays at most this fraction of the
+  /// mesh's volume (fill --max-overshoot; 0 keeps every sphere inside). A sphere is grown past
+  /// the surface (below) only while an overshoot ledger on rows a third of a voxel apart stays
+  /// within 0.9 of it, so the midpoint-rule error of the ledger has room.
+  double max_overshoot = 0.01;
+  /// Internal detail of the contract: how far a sphere may reach past the surface. A sphere
+  /// whose centre lies d inside gets radius d·(1 + tolerance_relative) + tolerance (units of
+  /// the mesh; negative: tolerance_voxels voxels). A small relative tolerance fills edges and
+  /// corners much better for a small overshoot, because a cap of height ε·r holds ∝ ε²r³
+  /// outside but the shell adds ∝ ε·r³ inside; it scales with each sphere, so small corner
+  /// spheres poke out proportionally little.
   double tolerance = -1.0;
   double tolerance_voxels = 0.0;
   double tolerance_relative = 0.03;
@@ -43,6 +47,8 @@ struct FillResult {
   int candidates = 0;
   /// Covered fraction of the interior voxels after each sphere (same length as the clump).
   std::vector<double> coverage_curve;
+  /// The ledger's outside volume over the mesh's volume (≤ 0.9 max_overshoot).
+  double overshoot = 0.0;
   /// "spheres" (the budget), "coverage" (the target), "min-radius" (the candidates left are
   /// smaller) or "candidates" (no medial candidate left adds coverage).
   std::string stopped_by;

@@ -59,12 +59,10 @@ void register_fill(CLI::App& app) {
       ->capture_default_str();
   c->add_option("--voxel-size", o->fill.field.voxel_size,
                 "Explicit voxel size (overrides --voxels)");
-  c->add_option(
-      "--tolerance", o->fill.tolerance,
-      "Absolute reach of spheres past the surface, added to the relative one (default 0)");
-  c->add_option("--relative-tolerance", o->fill.tolerance_relative,
-                "Reach past the surface as a fraction of each sphere's inscribed radius; 0 with "
-                "--tolerance 0 keeps every sphere inside")
+  c->add_option("--max-overshoot", o->fill.max_overshoot,
+                "Largest volume the clump may put outside the mesh, as a fraction of the mesh's "
+                "volume; every fill meets it (spheres reach past the surface at point contacts "
+                "only while it holds). 0 keeps every sphere inside")
       ->capture_default_str();
   c->add_option("--max-memory", o->max_memory_gib,
                 "Refuse, before allocating, a fill estimated to need more than this many GiB "
@@ -131,9 +129,7 @@ void register_fill(CLI::App& app) {
     j["voxel"] = r.voxel;
     j["candidates"] = r.candidates;
     j["stopped_by"] = r.stopped_by;
-    j["tolerance"] =
-        o->fill.tolerance >= 0 ? o->fill.tolerance : o->fill.tolerance_voxels * r.voxel;
-    j["relative_tolerance"] = o->fill.tolerance_relative;
+    j["max_overshoot"] = o->fill.max_overshoot;
     j["seconds"] = seconds;
     nlohmann::ordered_json phases;
     phases["read"] = t_read;  // reading, welding and checking the mesh

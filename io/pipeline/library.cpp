@@ -255,7 +255,7 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
   fill["coverage"] = recipe.fill.coverage;
   fill["min_radius"] = recipe.fill.min_radius;
   fill["voxels"] = recipe.fill.field.voxels;
-  fill["relative_tolerance"] = recipe.fill.tolerance_relative;
+  fill["max_overshoot"] = recipe.fill.max_overshoot;
   double cov = 0, over = 0, spheres = 0;
   for (const auto& rec : records) {
     cov += rec["fidelity"]["covered_fraction"].get<double>();

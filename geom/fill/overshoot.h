@@ -1,0 +1,48 @@
+// The volume a clump puts outside its mesh, kept sphere by sphere on a lattice of rows, so a
+// fill can hold it under a bound (fill --max-overshoot).
+#pragma once
+
+#include "geom/mesh/mesh_index.h"
+#include "geom/sphere.h"
+
+#include <array>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace clumpkit {
+
+/// Rows along x on a (y, z) lattice of the given spacing. Each row knows the mesh's inside
+/// intervals (from the index's crossings, exact in x) and the union of the recorded spheres'
+/// chords outside them; the outside volume is the sum of those lengths times spacing² — exact
+/// along x, the 2-D midpoint rule across. A row whose crossings stay odd after nudging (it runs
+/// in a face's plane) counts as all outside, so the ledger never under-counts for it.
+class OvershootLedger {
+ public:
+  /// Rows cover `box` (the region spheres can reach); spacing > 0.
+  OvershootLedger(const MeshIndex& index, const std::array<Vec3, 2>& box, double spacing);
+  ~OvershootLedger();
+  OvershootLedger(const OvershootLedger&) = delete;
+  OvershootLedger& operator=(const OvershootLedger&) = delete;
+
+  /// Outside volume that `s` would add to the spheres recorded so far.
+  double added(const Sphere& s) const;
+  /// Records `s`.
+  void add(const Sphere& s);
+  /// Outside volume of the recorded spheres.
+  double volume() const { return volume_; }
+
+ private:
+  struct Row;
+  Row& row(int j, int k) const;
+  double visit(const Sphere& s, bool record) const;
+
+  const MeshIndex& index_;
+  Vec3 lo_;
+  double spacing_;
+  int ny_ = 0, nz_ = 0;
+  mutable std::vector<std::unique_ptr<Row>> rows_;  // made when first touched
+  double volume_ = 0.0;
+};
+
+}  // namespace clumpkit
