@@ -116,6 +116,11 @@ ShapeRecipe parse_shape_recipe(const std::string& text, const std::string& path)
       const auto* i = val.as_integer();
       if (!i || i->get() < 0) p.fail("seed", "expected a non-negative integer, got " + show(val));
       r.seed = static_cast<std::uint64_t>(i->get());
+    } else if (k == "refine_triangles") {
+      const auto* i = val.as_integer();
+      if (!i || i->get() < 0 || i->get() > 50000000)
+        p.fail(k, "expected an integer in [0, 5e7], got " + show(val));
+      r.refine_triangles = i->get();
     } else if (k == "name" || k == "description") {
       if (!val.is_string()) p.fail(k, "expected a string, got " + show(val));
       (k == "name" ? r.name : r.description) = val.as_string()->get();
@@ -160,7 +165,7 @@ ShapeRecipe parse_shape_recipe(const std::string& text, const std::string& path)
         p.fail("fill", e.what());
       }
     } else {
-      p.fail(k, "unknown key (known: seed, name, description, fraction, fill)");
+      p.fail(k, "unknown key (known: seed, name, description, refine_triangles, fraction, fill)");
     }
   }
   if (!any) p.fail("fraction", "the recipe lists no [[fraction]]");

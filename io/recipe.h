@@ -16,6 +16,9 @@ struct ShapeRecipe {
   std::string name;
   std::string description;
   std::uint64_t seed = 1;
+  /// Every generated mesh subdivided to at least this many triangles (geom/mesh/refine.h;
+  /// 0: as generated), so scan-sized meshes can be made and tested.
+  std::int64_t refine_triangles = 0;
   std::vector<FractionSpec> fractions;
   bool has_fill = false;  ///< a [fill] table was given (used by `clumpkit library`)
   FillOptions fill;
@@ -27,6 +30,7 @@ struct ShapeRecipe {
 ///
 /// Format:
 ///   seed = 2017                       # optional, default 1
+///   refine_triangles = 100000         # optional: subdivide every mesh to at least this many
 ///   name = "..."; description = "..." # optional
 ///   [[fraction]]
 ///   name = "rock 20-40 mm"; method = "block"; count = 200

@@ -14,6 +14,7 @@ namespace clumpkit::cli {
 void register_shape(CLI::App& app);
 void register_shapes(CLI::App& app);
 void register_describe(CLI::App& app);
+void register_refine(CLI::App& app);
 void register_fill(CLI::App& app);
 void register_library(CLI::App& app);
 void register_volume(CLI::App& app);

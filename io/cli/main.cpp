@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   clumpkit::cli::register_shape(app);
   clumpkit::cli::register_shapes(app);
   clumpkit::cli::register_describe(app);
+  clumpkit::cli::register_refine(app);
   clumpkit::cli::register_fill(app);
   clumpkit::cli::register_library(app);
   clumpkit::cli::register_volume(app);

@@ -5,6 +5,7 @@
 #include "geom/fill/fidelity.h"
 #include "geom/fill/fill.h"
 #include "geom/hash.h"
+#include "geom/mesh/refine.h"
 #include "geom/template/clump_template.h"
 #include "io/atomic_file.h"
 #include "io/clump_io.h"
@@ -72,7 +73,8 @@ void check_fill_memory(const ShapeRecipe& recipe, const std::vector<int>& fracti
     if (seen[fraction_of[i]]) continue;
     seen[fraction_of[i]] = 1;
     Rng rng = Rng::stream(recipe.seed, i);
-    const GeneratedShape shape = generate_shape(recipe.fractions[fraction_of[i]], rng);
+    GeneratedShape shape = generate_shape(recipe.fractions[fraction_of[i]], rng);
+    if (recipe.refine_triangles > 0) shape.mesh = refine(shape.mesh, recipe.refine_triangles);
     const double need = fill_bytes_estimate(shape.mesh, recipe.fill.field);
     if (!(need <= share))
       throw InvalidInput(
@@ -88,7 +90,8 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
                                      const fs::path& dir, const LibraryOptions& options) {
   Rng rng = Rng::stream(recipe.seed, i);
   const FractionSpec& spec = recipe.fractions[fraction];
-  const GeneratedShape shape = generate_shape(spec, rng);
+  GeneratedShape shape = generate_shape(spec, rng);
+  if (recipe.refine_triangles > 0) shape.mesh = refine(shape.mesh, recipe.refine_triangles);
   const Descriptors desc = describe(shape.mesh);
   FillOptions fill_options = recipe.fill;
   fill_options.field.max_bytes = fill_memory_share(options);

@@ -2,6 +2,7 @@
 
 #include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"
+#include "geom/mesh/refine.h"
 #include "io/atomic_file.h"
 #include "io/mesh_io.h"
 #include "io/report.h"
@@ -43,6 +44,8 @@ ShapeBatchResult run_shape_batch(const ShapeRecipe& recipe, const std::string& o
       [&](std::size_t i) {
         Rng rng = Rng::stream(recipe.seed, i);
         items[i].shape = generate_shape(recipe.fractions[items[i].fraction], rng);
+        if (recipe.refine_triangles > 0)
+          items[i].shape.mesh = refine(items[i].shape.mesh, recipe.refine_triangles);
         items[i].desc = describe(items[i].shape.mesh);
       },
       "shapes", interrupter);

@@ -94,6 +94,15 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
   cases.push_back({"fill " + in("box.stl") + " -o " + pf + ".csv", "parent_file", ""});
   cases.push_back({"fill " + in("box.stl") + " -o " + csv_out + " --min-radius -1", "-1", csv_out});
   cases.push_back({"fill " + in("box.stl") + " -o " + csv_out + " --spheres 0", "0", csv_out});
+  cases.push_back(
+      {"fill " + in("box.stl") + " -o " + csv_out + " --max-overshoot -0.5", "-0.5", csv_out});
+  // refine MESH --triangles N -o OUT
+  for (const char* f : {"missing.stl", "garbage.obj", "nan.obj", "flat.obj"})
+    cases.push_back({"refine " + in(f) + " --triangles 100 -o " + mesh_out, f, mesh_out});
+  cases.push_back(
+      {"refine " + in("box.stl") + " --triangles 0 -o " + mesh_out, "--triangles", mesh_out});
+  cases.push_back(
+      {"refine " + in("box.stl") + " --triangles 100000000 -o " + mesh_out, "5e7", mesh_out});
   // Requests that would exhaust memory are refused before allocating, with the estimate.
   cases.push_back({"fill " + in("box.stl") + " -o " + csv_out + " --voxel-size 1e-6",
                    "distance field would have", csv_out});
@@ -176,5 +185,5 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
   // The inputs are untouched.
   EXPECT_EQ(slurp(d / "rocks.toml"), std::string(kTinyRocks));
   EXPECT_TRUE(fs::is_regular_file(d / "box.stl"));
-  std::printf("bad-input matrix: %zu cases over 9 commands\n", cases.size());
+  std::printf("bad-input matrix: %zu cases over 10 commands\n", cases.size());
 }
