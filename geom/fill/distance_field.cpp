@@ -135,10 +135,7 @@ std::vector<std::uint8_t> inside_by_rows(const MeshIndex& index, const DistanceF
   tbb::parallel_for(0, f.dims[2], [&](int k) {
     for (int j = 0; j < f.dims[1]; ++j) {
       const Vec3 c = f.position(0, j, k);
-      auto xs = index.crossings_x(c.y(), c.z());
-      for (int attempt = 1; xs.size() % 2 == 1 && attempt <= 3; ++attempt)
-        xs = index.crossings_x(c.y() + 1e-4 * f.h * std::fmod(0.6180339887 * attempt, 1.0),
-                               c.z() + 1e-4 * f.h * std::fmod(0.7548776662 * attempt, 1.0));
+      const auto xs = index.even_crossings_x(c.y(), c.z(), 1e-4 * f.h);
       if (xs.size() % 2 == 1) {
         odd[std::size_t(k) * f.dims[1] + j] = 1;
         continue;
@@ -304,11 +301,9 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
     for (auto& v : layer)
       if (v == 100 + L) v = static_cast<std::uint8_t>(L);
   }
-  std::vector<std::uint8_t> band(f.d.size(), 0);
-  for (std::size_t q = 0; q < band.size(); ++q) {
-    band[q] = layer[q] != 255;
-    if (!band[q] && !in[q]) f.d[q] = static_cast<float>(-(kBand + 1) * h);  // outside, far
-  }
+  // From here `layer[q] != 255` means voxel q has its feature: the band now, deep voxels later.
+  for (std::size_t q = 0; q < layer.size(); ++q)
+    if (layer[q] == 255 && !in[q]) f.d[q] = static_cast<float>(-(kBand + 1) * h);  // outside, far
 
   // 3. The interior beyond the band. OpenVDB fast sweeping (first-order Eikonal, Zhao 2005)
   // from the band inwards gives every deep voxel an approximate depth (within about a voxel);
@@ -329,7 +324,7 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
       for (int j = 0; j < f.dims[1]; ++j)
         for (int i = 0; i < f.dims[0]; ++i) {
           const std::int64_t q = f.index(i, j, k);
-          if (band[q]) {
+          if (layer[q] != 255) {
             acc.setValueOn(openvdb::Coord(i, j, k), -f.d[q]);  // OpenVDB: negative inside
           } else if (in[q]) {
             macc.setValueOn(openvdb::Coord(i, j, k));
@@ -352,14 +347,13 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
   }
   std::stable_sort(deep.begin(), deep.end(),
                    [&](std::int64_t a, std::int64_t b) { return f.d[a] < f.d[b]; });
-  std::vector<std::uint8_t> done(band);
   const std::int64_t nx = f.dims[0], nxy = nx * f.dims[1];
   for (const std::int64_t q : deep) {
     const auto n = nearest_of_neighbours(int(q % nx), int(q / nx % f.dims[1]), int(q / nxy),
-                                         [&](std::int64_t m) { return done[m] != 0; });
+                                         [&](std::int64_t m) { return layer[m] != 255; });
     f.feature[q] = n.triangle;
     f.d[q] = static_cast<float>(n.distance);
-    done[q] = 1;
+    layer[q] = 0;
   }
   return f;
 }

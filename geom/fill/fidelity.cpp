@@ -93,11 +93,9 @@ Fidelity assess(const Mesh& mesh, const MeshIndex* index, const Clump& clump, do
       solid.clear();
       std::vector<MeshIndex::Crossing> xs;
       if (index) {
-        xs = index->crossings_x(y, z);
         // A row that grazed the surface (odd count) is cast again a hair to the side; if still
         // odd (it runs in a face's plane), it is voted on like a mesh that is not watertight.
-        for (int attempt = 1; xs.size() % 2 == 1 && attempt <= 3; ++attempt)
-          xs = index->crossings_x(y + 1e-6 * spacing * attempt, z + 1.3e-6 * spacing * attempt);
+        xs = index->even_crossings_x(y, z, 1e-6 * spacing);
         if (xs.size() % 2 == 1 && !rays) rays = std::make_unique<RayInside>(mesh);
       }
       if (index && xs.size() % 2 == 0) {

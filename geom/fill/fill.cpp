@@ -190,11 +190,9 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
   }
 
   // Pattern search around a chosen centre: 26 directions, shrinking step.
-  // A sphere that kept its inscribed radius stays so while it moves; a grown one is re-checked
-  // where it ends.
-  auto search = [&](Vec3 c, double rad, auto&& gain) {
-    double dc = near_distance(c);
-    const bool grow = rad > dc;
+  // A sphere that kept its inscribed radius (`grow` false) stays so while it moves; a grown one
+  // is re-checked where it ends.
+  auto search = [&](Vec3 c, double rad, bool grow, auto&& gain) {
     std::int64_t best = gain(Sphere{c, rad});
     for (double step = 0.5 * field.h; step > 0.2 * field.h; step *= 0.5) {
       for (int iter = 0; iter < 4; ++iter) {
@@ -211,7 +209,6 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
               if (g > best) {
                 best = g;
                 c = q;
-                dc = dq;
                 rad = rq;
                 moved = true;
               }
@@ -257,7 +254,7 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
     const bool grow = cand[c].radius > near_distance(cand[c].center);
     const Sphere found =
         options.refine
-            ? search(cand[c].center, cand[c].radius,
+            ? search(cand[c].center, cand[c].radius, grow,
                      [&](const Sphere& b) { return grid.visit(b.center, b.radius, false); })
             : Sphere{cand[c].center, cand[c].radius};
     const Sphere s = exact_sphere(found.center, grow);

@@ -54,9 +54,7 @@ OvershootLedger::Row& OvershootLedger::row(int j, int k) const {
   if (!r) {
     r = std::make_unique<Row>();
     const double y = lo_.y() + (j + 0.5) * spacing_, z = lo_.z() + (k + 0.5) * spacing_;
-    auto xs = index_.crossings_x(y, z);
-    for (int attempt = 1; xs.size() % 2 == 1 && attempt <= 3; ++attempt)
-      xs = index_.crossings_x(y + 1e-6 * spacing_ * attempt, z + 1.3e-6 * spacing_ * attempt);
+    const auto xs = index_.even_crossings_x(y, z, 1e-6 * spacing_);
     if (xs.size() % 2 == 0)  // else: no inside known, all outside (over-counts, never under)
       for (std::size_t q = 0; q + 1 < xs.size(); q += 2)
         r->inside.emplace_back(xs[q].x, xs[q + 1].x);

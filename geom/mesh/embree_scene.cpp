@@ -2,6 +2,9 @@
 
 #include "geom/errors.h"
 
+#include <cmath>
+#include <limits>
+
 namespace clumpkit {
 
 EmbreeScene::EmbreeScene(const Mesh& mesh, const Vec3& shift, bool robust) {
@@ -28,6 +31,29 @@ EmbreeScene::EmbreeScene(const Mesh& mesh, const Vec3& shift, bool robust) {
 EmbreeScene::~EmbreeScene() {
   if (scene) rtcReleaseScene(scene);
   if (device) rtcReleaseDevice(device);
+}
+
+RayHit first_hit(const EmbreeScene& s, const float origin[3], const float dir[3], float tnear) {
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  RTCRayHit rh{};
+  rh.ray.org_x = origin[0];
+  rh.ray.org_y = origin[1];
+  rh.ray.org_z = origin[2];
+  rh.ray.dir_x = dir[0];
+  rh.ray.dir_y = dir[1];
+  rh.ray.dir_z = dir[2];
+  rh.ray.tnear = tnear;
+  rh.ray.tfar = std::numeric_limits<float>::infinity();
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(s.scene, &ctx, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return RayHit{};
+  return RayHit{rh.ray.tfar, static_cast<int>(rh.hit.primID)};
+}
+
+float step_past(float t) {
+  return std::nextafter(t, std::numeric_limits<float>::infinity()) * (1.0f + 1e-6f) + 1e-7f;
 }
 
 }  // namespace clumpkit

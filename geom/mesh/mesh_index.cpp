@@ -117,30 +117,27 @@ MeshIndex::Nearest MeshIndex::nearest(const Vec3& p, double limit) const {
 std::vector<MeshIndex::Crossing> MeshIndex::crossings_x(double y, double z) const {
   const Impl& m = *impl_;
   std::vector<Crossing> xs;
-  const float oy = static_cast<float>(y - m.shift.y()), oz = static_cast<float>(z - m.shift.z());
   const float ox = static_cast<float>(m.x_start - m.shift.x());
+  const float origin[3] = {ox, static_cast<float>(y - m.shift.y()),
+                           static_cast<float>(z - m.shift.z())};
+  const float dir[3] = {1.0f, 0.0f, 0.0f};
   float tnear = 0.0f;
   for (int guard = 0; guard < 1000000; ++guard) {
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
-    RTCRayHit rh{};
-    rh.ray.org_x = ox;
-    rh.ray.org_y = oy;
-    rh.ray.org_z = oz;
-    rh.ray.dir_x = 1.0f;
-    rh.ray.tnear = tnear;
-    rh.ray.tfar = std::numeric_limits<float>::infinity();
-    rh.ray.mask = 0xFFFFFFFFu;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(m.embree->scene, &ctx, &rh);
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) break;
-    xs.push_back(Crossing{m.shift.x() + static_cast<double>(ox) + static_cast<double>(rh.ray.tfar),
-                          static_cast<int>(rh.hit.primID)});
-    // Step past this hit (a relative epsilon: the hit distance is a float), so the other
-    // triangles of an edge or vertex it went through do not count it again.
-    tnear = std::nextafter(rh.ray.tfar, std::numeric_limits<float>::infinity()) * (1.0f + 1e-6f) +
-            1e-7f;
+    const RayHit hit = first_hit(*m.embree, origin, dir, tnear);
+    if (hit.triangle < 0) break;
+    xs.push_back(
+        Crossing{m.shift.x() + static_cast<double>(ox) + static_cast<double>(hit.t), hit.triangle});
+    tnear = step_past(hit.t);
   }
+  return xs;
+}
+
+std::vector<MeshIndex::Crossing> MeshIndex::even_crossings_x(double y, double z,
+                                                             double nudge) const {
+  auto xs = crossings_x(y, z);
+  for (int attempt = 1; xs.size() % 2 == 1 && attempt <= 3; ++attempt)
+    xs = crossings_x(y + nudge * std::fmod(0.6180339887 * attempt, 1.0),
+                     z + nudge * std::fmod(0.7548776662 * attempt, 1.0));
   return xs;
 }
 

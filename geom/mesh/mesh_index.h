@@ -49,6 +49,9 @@ class MeshIndex {
     int triangle = -1;
   };
   std::vector<Crossing> crossings_x(double y, double z) const;
+  /// crossings_x, cast again up to three times while the count is odd, each time `nudge` times
+  /// a golden-ratio fraction to the side; still odd means the row runs in a face's plane.
+  std::vector<Crossing> even_crossings_x(double y, double z, double nudge) const;
 
  private:
   struct Impl;

@@ -36,29 +36,16 @@ double RayInside::vote(const Vec3& p) const {
   const Impl& m = *impl_;
   const Vec3 o = p - m.shift;
   int odd = 0;
+  const float origin[3] = {float(o.x()), float(o.y()), float(o.z())};
   for (const auto& d : m.dirs) {
+    const float dir[3] = {float(d.x()), float(d.y()), float(d.z())};
     int crossings = 0;
     float tnear = 0.0f;
     for (int guard = 0; guard < 10000; ++guard) {
-      RTCIntersectContext ctx;
-      rtcInitIntersectContext(&ctx);
-      RTCRayHit rh{};
-      rh.ray.org_x = float(o.x());
-      rh.ray.org_y = float(o.y());
-      rh.ray.org_z = float(o.z());
-      rh.ray.dir_x = float(d.x());
-      rh.ray.dir_y = float(d.y());
-      rh.ray.dir_z = float(d.z());
-      rh.ray.tnear = tnear;
-      rh.ray.tfar = std::numeric_limits<float>::infinity();
-      rh.ray.mask = 0xFFFFFFFFu;
-      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-      rtcIntersect1(m.embree->scene, &ctx, &rh);
-      if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) break;
+      const RayHit hit = first_hit(*m.embree, origin, dir, tnear);
+      if (hit.triangle < 0) break;
       ++crossings;
-      // Step past this hit: a relative epsilon, since the hit distance is a float.
-      tnear = std::nextafter(rh.ray.tfar, std::numeric_limits<float>::infinity()) * (1.0f + 1e-6f) +
-              1e-7f;
+      tnear = step_past(hit.t);
     }
     odd += crossings & 1;
   }

@@ -34,7 +34,9 @@ TEST(DistanceField, SignBandAndInteriorAgainstExactQueries) {
           const Vec3 p = f.position(i, j, k);
           const float v = f.at(i, j, k);
           const double exact = index.distance(p);
-          if (exact > 1e-6 * f.h) ASSERT_EQ(v > 0.0f, rays.inside(p)) << i << " " << j << " " << k;
+          if (exact > 1e-6 * f.h) {
+            ASSERT_EQ(v > 0.0f, rays.inside(p)) << i << " " << j << " " << k;
+          }
           if (v <= 0.0f) continue;
           ++inside;
           // Never below the truth (a distance to a real triangle), within a voxel above it, and
@@ -44,7 +46,9 @@ TEST(DistanceField, SignBandAndInteriorAgainstExactQueries) {
           const bool surface = f.at(i - 1, j, k) <= 0 || f.at(i + 1, j, k) <= 0 ||
                                f.at(i, j - 1, k) <= 0 || f.at(i, j + 1, k) <= 0 ||
                                f.at(i, j, k - 1) <= 0 || f.at(i, j, k + 1) <= 0;
-          if (surface) EXPECT_NEAR(v, exact, 1e-5 * f.h + 1e-6 * exact);
+          if (surface) {
+            EXPECT_NEAR(v, exact, 1e-5 * f.h + 1e-6 * exact);
+          }
           mean_excess += v - exact;
           // The feature distance through a point is bounded the same way.
           const Vec3 q = p + 0.37 * f.h * Vec3(1, -1, 1).normalized();
