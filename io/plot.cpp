@@ -13,20 +13,29 @@
 
 namespace clumpkit {
 
-void write_line_plot(const std::string& path, const PlotCurve& curve, const std::string& x_label,
-                     const std::string& y_label, const std::string& title) {
+void write_plot(const std::string& path, const std::vector<PlotSeries>& series,
+                const std::string& x_label, const std::string& y_label, const std::string& title) {
   double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
-  for (std::size_t k = 0; k < std::min(curve.x.size(), curve.y.size()); ++k) {
-    if (!std::isfinite(curve.x[k]) || !std::isfinite(curve.y[k])) continue;
-    x_lo = std::min(x_lo, curve.x[k]);
-    x_hi = std::max(x_hi, curve.x[k]);
-    y_lo = std::min(y_lo, curve.y[k]);
-    y_hi = std::max(y_hi, curve.y[k]);
-  }
+  for (const PlotSeries& s : series)
+    for (std::size_t k = 0; k < std::min(s.points.x.size(), s.points.y.size()); ++k) {
+      const double x = s.points.x[k], y = s.points.y[k];
+      if (!std::isfinite(x) || !std::isfinite(y)) continue;
+      x_lo = std::min(x_lo, x);
+      x_hi = std::max(x_hi, x);
+      y_lo = std::min(y_lo, y);
+      y_hi = std::max(y_hi, y);
+    }
   if (!(x_lo <= x_hi)) throw InvalidInput(path + ": nothing to plot (no finite point)");
   if (x_hi == x_lo) x_hi = x_lo + 1;
   if (y_hi == y_lo) y_hi = y_lo + 1;
+  // A margin of 5 % inside the frame, so markers and lines on the range's edge stay whole.
+  const double xm = 0.05 * (x_hi - x_lo), ym = 0.05 * (y_hi - y_lo);
+  x_lo -= xm;
+  x_hi += xm;
+  y_lo -= ym;
+  y_hi += ym;
   const int w = 800, h = 560, left = 110, right = 30, top = 50, bottom = 80;
+  // Drawn in RGB throughout (OpenCV only draws; the PNG is written as RGB).
   cv::Mat img(h, w, CV_8UC3, cv::Scalar(255, 255, 255));
   auto px = [&](double x, double y) {
     return cv::Point(
@@ -34,10 +43,11 @@ void write_line_plot(const std::string& path, const PlotCurve& curve, const std:
         h - bottom -
             static_cast<int>(std::lround((h - top - bottom) * (y - y_lo) / (y_hi - y_lo))));
   };
-  const cv::Scalar black(0, 0, 0), grey(200, 200, 200), blue(180, 70, 20);
+  const cv::Scalar black(0, 0, 0), grey(200, 200, 200);
   const int font = cv::FONT_HERSHEY_SIMPLEX;
   for (int k = 0; k <= 4; ++k) {
-    const double x = x_lo + (x_hi - x_lo) * k / 4.0, y = y_lo + (y_hi - y_lo) * k / 4.0;
+    const double x = x_lo + xm + (x_hi - x_lo - 2 * xm) * k / 4.0;
+    const double y = y_lo + ym + (y_hi - y_lo - 2 * ym) * k / 4.0;
     cv::line(img, px(x, y_lo), px(x, y_hi), grey, 1);
     cv::line(img, px(x_lo, y), px(x_hi, y), grey, 1);
     cv::putText(img, format_number(x, 3), px(x, y_lo) + cv::Point(-20, 22), font, 0.5, black, 1,
@@ -46,28 +56,85 @@ void write_line_plot(const std::string& path, const PlotCurve& curve, const std:
                 cv::LINE_AA);
   }
   cv::rectangle(img, cv::Point(left, top), cv::Point(w - right, h - bottom), black, 1);
-  cv::Point previous;
-  bool have_previous = false;
-  for (std::size_t k = 0; k < std::min(curve.x.size(), curve.y.size()); ++k) {
-    if (!std::isfinite(curve.x[k]) || !std::isfinite(curve.y[k])) {
-      have_previous = false;
-      continue;
+  for (const PlotSeries& s : series) {
+    const cv::Scalar colour(s.rgb[0], s.rgb[1], s.rgb[2]);
+    cv::Point previous;
+    bool have_previous = false;
+    for (std::size_t k = 0; k < std::min(s.points.x.size(), s.points.y.size()); ++k) {
+      if (!std::isfinite(s.points.x[k]) || !std::isfinite(s.points.y[k])) {
+        have_previous = false;
+        continue;
+      }
+      const cv::Point p = px(s.points.x[k], s.points.y[k]);
+      if (s.line && have_previous) cv::line(img, previous, p, colour, 2, cv::LINE_AA);
+      if (s.marker > 0) cv::circle(img, p, s.marker, colour, cv::FILLED, cv::LINE_AA);
+      previous = p;
+      have_previous = true;
     }
-    const cv::Point p = px(curve.x[k], curve.y[k]);
-    if (have_previous) cv::line(img, previous, p, blue, 2, cv::LINE_AA);
-    previous = p;
-    have_previous = true;
   }
-  cv::putText(img, x_label, cv::Point(left + (w - left - right) / 2 - 80, h - 25), font, 0.6, black,
-              1, cv::LINE_AA);
+  // The legend: in the corner of the frame where it hides the fewest drawn pixels (neither
+  // background nor grid), a sample of each labelled series' style.
+  std::vector<const PlotSeries*> labelled;
+  int text_w = 0;
+  for (const PlotSeries& s : series)
+    if (!s.label.empty()) {
+      labelled.push_back(&s);
+      int base = 0;
+      text_w = std::max(text_w, cv::getTextSize(s.label, font, 0.5, 1, &base).width);
+    }
+  if (!labelled.empty()) {
+    const int box_w = text_w + 52, box_h = 22 * static_cast<int>(labelled.size()) + 8;
+    cv::Rect best;
+    long best_hidden = -1;
+    for (const cv::Point corner :
+         {cv::Point(w - right - 6 - box_w, top + 6), cv::Point(left + 6, top + 6),
+          cv::Point(w - right - 6 - box_w, h - bottom - 6 - box_h),
+          cv::Point(left + 6, h - bottom - 6 - box_h)}) {
+      const cv::Rect r(corner, cv::Size(box_w, box_h));
+      long hidden = 0;
+      for (int y = r.y; y < r.y + r.height; ++y)
+        for (int x = r.x; x < r.x + r.width; ++x) {
+          const auto& p = img.at<cv::Vec3b>(y, x);
+          hidden += !(p == cv::Vec3b(255, 255, 255) || p == cv::Vec3b(200, 200, 200));
+        }
+      if (best_hidden < 0 || hidden < best_hidden) {
+        best_hidden = hidden;
+        best = r;
+      }
+    }
+    cv::rectangle(img, best, cv::Scalar(255, 255, 255), cv::FILLED);
+    cv::rectangle(img, best, cv::Scalar(160, 160, 160), 1);
+    for (std::size_t k = 0; k < labelled.size(); ++k) {
+      const PlotSeries& s = *labelled[k];
+      const cv::Scalar colour(s.rgb[0], s.rgb[1], s.rgb[2]);
+      const int x0 = best.x + 8, y = best.y + 20 + 22 * static_cast<int>(k);
+      if (s.line)
+        cv::line(img, cv::Point(x0, y - 5), cv::Point(x0 + 28, y - 5), colour, 2, cv::LINE_AA);
+      if (s.marker > 0)
+        cv::circle(img, cv::Point(x0 + 14, y - 5), s.marker, colour, cv::FILLED, cv::LINE_AA);
+      cv::putText(img, s.label, cv::Point(x0 + 40, y), font, 0.5, black, 1, cv::LINE_AA);
+    }
+  }
+  // Axis labels centred on the frame (the y label turned upright).
+  int base = 0;
+  const int xw = cv::getTextSize(x_label, font, 0.6, 1, &base).width;
+  cv::putText(img, x_label, cv::Point(std::max(4, left + (w - left - right - xw) / 2), h - 25),
+              font, 0.6, black, 1, cv::LINE_AA);
   cv::Mat label(30, h - top - bottom, CV_8UC3, cv::Scalar(255, 255, 255));
-  cv::putText(label, y_label, cv::Point(10, 21), font, 0.6, black, 1, cv::LINE_AA);
+  const int yw = cv::getTextSize(y_label, font, 0.6, 1, &base).width;
+  cv::putText(label, y_label, cv::Point(std::max(4, (label.cols - yw) / 2), 21), font, 0.6, black,
+              1, cv::LINE_AA);
   cv::rotate(label, label, cv::ROTATE_90_COUNTERCLOCKWISE);
   label.copyTo(img(cv::Rect(2, top, label.cols, label.rows)));
   cv::putText(img, title, cv::Point(left, 30), font, 0.65, black, 1, cv::LINE_AA);
-  cv::Mat rgb;
-  cv::cvtColor(img, rgb, cv::COLOR_BGR2RGB);
-  write_png(path, rgb.cols, rgb.rows, 3, rgb.ptr<std::uint8_t>(0), rgb.step);
+  write_png(path, img.cols, img.rows, 3, img.ptr<std::uint8_t>(0), img.step);
+}
+
+void write_line_plot(const std::string& path, const PlotCurve& curve, const std::string& x_label,
+                     const std::string& y_label, const std::string& title) {
+  PlotSeries s;
+  s.points = curve;
+  write_plot(path, {s}, x_label, y_label, title);
 }
 
 }  // namespace clumpkit

@@ -50,4 +50,22 @@ void write_png(const std::string& path, int width, int height, int channels,
   });
 }
 
+RgbImage read_png(const std::string& path) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&image, path.c_str()))
+    throw IoError(path + ": cannot read PNG: " + image.message);
+  image.format = PNG_FORMAT_RGB;
+  RgbImage out;
+  out.width = static_cast<int>(image.width);
+  out.height = static_cast<int>(image.height);
+  out.pixels.resize(PNG_IMAGE_SIZE(image));
+  if (!png_image_finish_read(&image, nullptr, out.pixels.data(), 0, nullptr)) {
+    const std::string why = image.message;
+    png_image_free(&image);
+    throw IoError(path + ": cannot decode PNG: " + why);
+  }
+  return out;
+}
+
 }  // namespace clumpkit

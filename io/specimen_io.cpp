@@ -5,6 +5,7 @@
 #include "geom/format.h"
 #include "io/atomic_file.h"
 #include "io/clump_io.h"
+#include "io/plot.h"
 #include "io/png.h"
 
 #include <opencv2/imgproc.hpp>
@@ -375,55 +376,27 @@ void write_calibration_csv(const std::string& path, const dem::SpecimenResult& r
 
 void write_calibration_plot(const std::string& path, const dem::SpecimenResult& result,
                             double target_relative_density) {
-  const int w = 640, h = 480, left = 70, right = 20, top = 30, bottom = 50;
-  cv::Mat img(h, w, CV_8UC3, cv::Scalar(255, 255, 255));
-  double fmax = 0, nlo = 1, nhi = 0;
-  for (const auto& p : result.calibration) {
+  PlotSeries measured, target, chosen;
+  measured.label = "porosity after compaction at friction mu";
+  measured.marker = 4;
+  double fmax = 0;
+  for (const dem::CalibrationPoint& p : result.calibration) {
+    measured.points.x.push_back(p.friction);
+    measured.points.y.push_back(p.porosity);
     fmax = std::max(fmax, p.friction);
-    nlo = std::min(nlo, p.porosity);
-    nhi = std::max(nhi, p.porosity);
   }
-  nlo = std::min(nlo, result.target_porosity);
-  nhi = std::max(nhi, result.target_porosity);
-  const double pad = std::max(0.005, 0.1 * (nhi - nlo));
-  nlo -= pad;
-  nhi += pad;
   if (!(fmax > 0)) fmax = 1;
-  auto px = [&](double mu, double n) {
-    return cv::Point(
-        left + static_cast<int>(std::lround((w - left - right) * mu / fmax)),
-        h - bottom - static_cast<int>(std::lround((h - top - bottom) * (n - nlo) / (nhi - nlo))));
-  };
-  const cv::Scalar black(0, 0, 0), grey(160, 160, 160), blue(200, 80, 20), red(30, 30, 210);
-  cv::rectangle(img, cv::Point(left, top), cv::Point(w - right, h - bottom), black, 1);
-  for (int k = 0; k <= 4; ++k) {
-    const double mu = fmax * k / 4.0, n = nlo + (nhi - nlo) * k / 4.0;
-    cv::putText(img, format_fixed(mu, 2), px(mu, nlo) + cv::Point(-14, 18),
-                cv::FONT_HERSHEY_SIMPLEX, 0.4, black);
-    cv::putText(img, format_fixed(n, 3), cv::Point(8, px(0, n).y + 4), cv::FONT_HERSHEY_SIMPLEX,
-                0.4, black);
-  }
-  cv::putText(img, "friction coefficient during compaction", cv::Point(left + 120, h - 12),
-              cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
-  cv::putText(img, "porosity n(mu) (clumpkit specimen calibration)", cv::Point(left, 20),
-              cv::FONT_HERSHEY_SIMPLEX, 0.45, black);
-  cv::line(img, px(0, result.target_porosity), px(fmax, result.target_porosity), grey, 1,
-           cv::LINE_AA);
-  const std::string label = "target Dr " + format_fixed(target_relative_density, 2) +
-                            ": n = " + format_fixed(result.target_porosity, 4) +
-                            ", mu* = " + format_fixed(result.friction_compaction, 3);
-  cv::putText(img, label, px(0, result.target_porosity) + cv::Point(8, -6),
-              cv::FONT_HERSHEY_SIMPLEX, 0.4, grey);
-  for (std::size_t k = 0; k + 1 < result.calibration.size(); ++k)
-    cv::line(img, px(result.calibration[k].friction, result.calibration[k].porosity),
-             px(result.calibration[k + 1].friction, result.calibration[k + 1].porosity), blue, 2,
-             cv::LINE_AA);
-  for (const auto& p : result.calibration)
-    cv::circle(img, px(p.friction, p.porosity), 4, blue, cv::FILLED, cv::LINE_AA);
-  cv::circle(img, px(result.friction_compaction, result.target_porosity), 6, red, 2, cv::LINE_AA);
-  cv::Mat rgb;
-  cv::cvtColor(img, rgb, cv::COLOR_BGR2RGB);
-  write_png(path, rgb.cols, rgb.rows, 3, rgb.ptr<std::uint8_t>(0), rgb.step);
+  target.points = {{0.0, fmax}, {result.target_porosity, result.target_porosity}};
+  target.label = "target Dr " + format_fixed(target_relative_density, 2) +
+                 ": n = " + format_fixed(result.target_porosity, 4);
+  target.rgb = {150, 150, 150};
+  chosen.points = {{result.friction_compaction}, {result.target_porosity}};
+  chosen.label = "chosen mu* = " + format_fixed(result.friction_compaction, 3);
+  chosen.rgb = {210, 30, 30};
+  chosen.line = false;
+  chosen.marker = 6;
+  write_plot(path, {target, measured, chosen}, "friction coefficient during compaction, mu (-)",
+             "porosity n (-)", "clumpkit specimen: calibration of porosity against friction");
 }
 
 std::vector<std::string> write_slices(const std::string& dir, const dem::SpecimenResult& result,

@@ -1,17 +1,33 @@
-// Picture of a clump against its mesh: three orthogonal views in one PNG.
+// Pictures of clumps against their meshes: one particle in four views, and a library's sheet.
 #pragma once
 
 #include "geom/mesh/mesh.h"
 #include "geom/sphere.h"
+#include "io/png.h"
 
 #include <string>
+#include <vector>
 
 namespace clumpkit {
 
-/// Writes a PNG with three panels, views along x, y and z: the mesh silhouette filled grey and
-/// each sphere's outline in red (an orthographic projection keeps spheres circles). `pixels` is
-/// the panel size. Atomic write; throws IoError naming the path.
-void write_views_png(const std::string& path, const Mesh& mesh, const Clump& clump,
-                     int pixels = 300);
+/// Writes the picture of one particle (io/render.h shading): a caption line, then four
+/// `panel`-px views in a 2 × 2 grid — front (along +y, z up), side (along −x, z up), top
+/// (along −z, y up) and oblique — all at one scale, whose width the caption states. 2·panel
+/// wide, 2·panel + 62 high. Atomic write; throws IoError naming the path.
+void write_particle_png(const std::string& path, const Mesh& mesh, const Clump& clump,
+                        const std::string& caption, int panel = 450);
+
+/// The oblique view of write_particle_png alone, `pixels` square: a contact sheet's tile.
+RgbImage render_oblique(const Mesh& mesh, const Clump& clump, int pixels);
+
+/// One tile of a contact sheet: its image (all tiles the same size) and the label under it.
+struct SheetTile {
+  std::string label;
+  RgbImage image;
+};
+
+/// Writes the tiles in rows of ⌈√n⌉ (at most `max_columns`), each labelled, under a title.
+void write_contact_sheet(const std::string& path, const std::string& title,
+                         const std::vector<SheetTile>& tiles, int max_columns = 20);
 
 }  // namespace clumpkit

@@ -17,7 +17,7 @@ void register_library(CLI::App& app) {
     std::string recipe, out;
     int threads = 0;
     double max_memory_gib = 0;  // 0: half of this machine's memory
-    bool png = false, quiet = false, json = false;
+    bool png = false, vtp = false, quiet = false, json = false;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -32,7 +32,12 @@ void register_library(CLI::App& app) {
   c->add_option("--out", o->out, "Output directory")->required();
   c->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->capture_default_str();
   c->add_flag("--png", o->png,
-              "Also write NNNNN.png: three views with mesh silhouette and sphere outlines");
+              "Also write NNNNN.png (900 px: front, side, top and oblique views, spheres shaded "
+              "and coloured under the translucent mesh) and DIR/contact_sheet.png (every "
+              "particle, oblique)");
+  c->add_flag("--vtp", o->vtp,
+              "Also write NNNNN.vtp for ParaView: the mesh as polygons, the spheres as vertices "
+              "with radius and diameter (Glyph: Sphere, Scale Array diameter, Scale Factor 1)");
   c->add_option("--max-memory", o->max_memory_gib,
                 "Refuse a particle whose fill is estimated to need more than this many GiB "
                 "divided by the threads (default: half of this machine's memory)");
@@ -45,6 +50,7 @@ void register_library(CLI::App& app) {
     ProgressBar bar("library", o->quiet);
     LibraryOptions lo;
     lo.png = o->png;
+    lo.vtp = o->vtp;
     lo.max_memory_bytes = max_memory_bytes(o->max_memory_gib);
     const auto r = run_library(recipe, o->out, lo, signal_interrupter(bar, "library"));
     bar.finish();

@@ -9,6 +9,7 @@
 #include "geom/template/clump_template.h"
 #include "io/atomic_file.h"
 #include "io/clump_io.h"
+#include "io/clump_vtp.h"
 #include "io/mesh_io.h"
 #include "io/report.h"
 #include "io/views.h"
@@ -85,6 +86,40 @@ void check_fill_memory(const ShapeRecipe& recipe, const std::vector<int>& fracti
   }
 }
 
+// The pictures and ParaView files asked for, from the particles' written files: each made only
+// if missing (a resumed run makes what it lacks), then the contact sheet. Particles in
+// parallel; every pixel is on its own ray, so the bytes do not depend on the thread count.
+void write_pictures(const fs::path& out, const std::vector<nlohmann::ordered_json>& records,
+                    const LibraryOptions& options) {
+  if (!options.png && !options.vtp) return;
+  const fs::path parts = out / "particles";
+  const int thumb = 200;
+  std::vector<SheetTile> tiles(records.size());
+  tbb::parallel_for(std::size_t(0), records.size(), [&](std::size_t i) {
+    const std::string stem = id_name(i);
+    const fs::path png = parts / (stem + ".png"), vtp = parts / (stem + ".vtp");
+    const Mesh mesh = read_mesh_raw((parts / (stem + ".stl")).string());
+    const Clump clump = read_clump((parts / (stem + ".csv")).string());
+    const auto& f = records[i]["fidelity"];
+    if (options.vtp && !fs::exists(vtp)) write_clump_vtp(vtp.string(), mesh, clump);
+    if (!options.png) return;
+    if (!fs::exists(png))
+      write_particle_png(
+          png.string(), mesh, clump,
+          "particle " + stem + " (" + records[i]["fraction"].get<std::string>() +
+              "): " + std::to_string(f["spheres"].get<int>()) + " spheres, coverage " +
+              format_fixed(f["covered_fraction"].get<double>(), 3) + ", overshoot " +
+              format_fixed(f["overshoot_fraction"].get<double>(), 4) + " of the volume");
+    tiles[i].image = render_oblique(mesh, clump, thumb);
+    tiles[i].label = stem + "  " + std::to_string(f["spheres"].get<int>()) + " sph";
+  });
+  if (options.png)
+    write_contact_sheet((out / "contact_sheet.png").string(),
+                        "clumpkit library: " + std::to_string(records.size()) +
+                            " particles, oblique views (mesh translucent, spheres coloured)",
+                        tiles);
+}
+
 // One particle, start to finish; returns its record (also written as NNNNN.json).
 nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, int fraction,
                                      const fs::path& dir, const LibraryOptions& options) {
@@ -124,7 +159,6 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
                   format_number(tpl.principal_moments[2]) + "; volume " +
                   format_number(tpl.mass.volume) + "; density factor V_mesh/V_clump " +
                   format_number(tpl.density_factor));
-  if (options.png) write_views_png((dir / (stem + ".png")).string(), shape.mesh, filled.clump);
 
   nlohmann::ordered_json rec;
   rec["id"] = i;
@@ -250,6 +284,8 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
       o << "\n";
     }
   });
+
+  write_pictures(out, records, options);
 
   nlohmann::ordered_json m = manifest_head("library", recipe);
   m["units"] = "recipe units (m); clumps are x,y,z,r in the mesh frame";

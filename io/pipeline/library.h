@@ -10,7 +10,9 @@
 namespace clumpkit {
 
 struct LibraryOptions {
-  bool png = false;  ///< also write particles/NNNNN.png (three views, mesh and sphere outlines)
+  /// Also write particles/NNNNN.png (four shaded views, io/views.h) and contact_sheet.png.
+  bool png = false;
+  bool vtp = false;  ///< also write particles/NNNNN.vtp (mesh and spheres for ParaView)
   /// Memory the particles being filled at once may share (bytes, 0: no limit): each fill gets
   /// this divided by the worker threads, and one whose estimate exceeds its share is refused
   /// before allocating (the finished particles stay for a resume).
@@ -25,8 +27,10 @@ struct LibraryResult {
   std::string out_dir;
 };
 
-/// Builds DIR/particles/NNNNN.{stl,csv,json[,png]}, then DIR/library.csv (parameters,
-/// descriptors and fidelity per particle), DIR/recipe.toml (the recipe) and DIR/manifest.json.
+/// Builds DIR/particles/NNNNN.{stl,csv,json[,png][,vtp]}, then DIR/library.csv (parameters,
+/// descriptors and fidelity per particle), DIR/recipe.toml (the recipe), DIR/manifest.json and
+/// with `png` DIR/contact_sheet.png. Pictures are made from the written files after the last
+/// fill, each only if missing, so a resumed run (or one that adds --png) makes what it lacks.
 /// Work goes to DIR.partial, renamed to DIR at the end (the rule of job.h: an existing DIR is
 /// replaced only when it is a clumpkit output). Particle i uses the random stream (seed, i) and
 /// is written atomically, its .json last, so a run killed or interrupted (Interrupted, told to
