@@ -349,8 +349,19 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
                    [&](std::int64_t a, std::int64_t b) { return f.d[a] < f.d[b]; });
   const std::int64_t nx = f.dims[0], nxy = nx * f.dims[1];
   for (const std::int64_t q : deep) {
-    const auto n = nearest_of_neighbours(int(q % nx), int(q / nx % f.dims[1]), int(q / nxy),
-                                         [&](std::int64_t m) { return layer[m] != 255; });
+    const int i = int(q % nx), j = int(q / nx % f.dims[1]), k = int(q / nxy);
+    auto n = nearest_of_neighbours(i, j, k, [&](std::int64_t m) { return layer[m] != 255; });
+    // Where triangles are smaller than a voxel the nearest one may be none of the neighbours'
+    // (their features run up to a third of a voxel high): a descent over the surface from the
+    // best of them finds it. Larger triangles are seen by the neighbours already.
+    if (n.triangle >= 0) {
+      const auto& t = mesh.triangles[n.triangle];
+      const auto& v = mesh.vertices;
+      const double edge =
+          std::max({(v[t[1]] - v[t[0]]).squaredNorm(), (v[t[2]] - v[t[1]]).squaredNorm(),
+                    (v[t[0]] - v[t[2]]).squaredNorm()});
+      if (edge < h * h) n = index.descend(f.position(i, j, k), n);
+    }
     f.feature[q] = n.triangle;
     f.d[q] = static_cast<float>(n.distance);
     layer[q] = 0;

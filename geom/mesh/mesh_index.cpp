@@ -37,6 +37,8 @@ struct MeshIndex::Impl {
   Vec3 shift = Vec3::Zero();  // Embree works in float: coordinates relative to the box centre
   double x_start = 0.0;       // rays along x start here, outside the mesh
   double slack = 0.0;         // absolute float slack of the culling radius
+  // The triangles around each vertex (CSR: ring[ring_start[v] .. ring_start[v + 1]]).
+  std::vector<int> ring_start, ring;
 };
 
 namespace {
@@ -78,6 +80,14 @@ MeshIndex::MeshIndex(const Mesh& mesh) : mesh_(mesh), impl_(std::make_unique<Imp
   // Float vertices are off by ~6e-8 of the coordinates' size: ten times that covers it.
   m.slack = 1e-6 * (extent + (bb[1] - m.shift).cwiseAbs().maxCoeff());
   m.embree = std::make_unique<EmbreeScene>(mesh, m.shift, true);
+  m.ring_start.assign(mesh.vertices.size() + 1, 0);
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) ++m.ring_start[t[k] + 1];
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) m.ring_start[v + 1] += m.ring_start[v];
+  m.ring.resize(m.ring_start.back());
+  std::vector<int> fill(m.ring_start.begin(), m.ring_start.end() - 1);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) m.ring[fill[mesh.triangles[t][k]]++] = static_cast<int>(t);
 }
 
 MeshIndex::~MeshIndex() = default;
@@ -112,6 +122,26 @@ MeshIndex::Nearest MeshIndex::nearest(const Vec3& p, double limit) const {
   rtcPointQuery(m.embree->scene, &pq, &ctx, closest_triangle, &q);
   if (q.best < 0) return Nearest{limit, -1};
   return Nearest{std::sqrt(q.best_d2), q.best};
+}
+
+MeshIndex::Nearest MeshIndex::descend(const Vec3& p, Nearest start) const {
+  const Impl& m = *impl_;
+  if (start.triangle < 0) return start;
+  // Each move strictly lowers (distance, index), so the walk ends; the guard only bounds it.
+  for (std::size_t guard = 0; guard < mesh_.triangles.size(); ++guard) {
+    const Nearest here = start;
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh_.triangles[here.triangle][k];
+      for (int r = m.ring_start[v]; r < m.ring_start[v + 1]; ++r) {
+        const int t = m.ring[r];
+        if (t == start.triangle) continue;
+        const double d = distance_to_triangle(p, t);
+        if (d < start.distance || (d == start.distance && t < start.triangle)) start = {d, t};
+      }
+    }
+    if (start.triangle == here.triangle) break;
+  }
+  return start;
 }
 
 std::vector<MeshIndex::Crossing> MeshIndex::crossings_x(double y, double z) const {

@@ -31,6 +31,13 @@ class MeshIndex {
   };
   Nearest nearest(const Vec3& p, double limit) const;
 
+  /// From `start` (a triangle and its distance to p), moves to a triangle sharing a vertex with
+  /// the current one while that is nearer to p (ties to the lower index), and returns where the
+  /// walk ends: a descent of the distance over the surface. It reaches the nearest triangle when
+  /// that lies downhill of the start (a start near it; any start for a point outside a convex
+  /// mesh); else a local minimum. A few dozen point–triangle distances per step, no tree.
+  Nearest descend(const Vec3& p, Nearest start) const;
+
   /// Distance from p to triangle t of the mesh.
   double distance_to_triangle(const Vec3& p, int t) const;
 

@@ -103,3 +103,29 @@ TEST(MeshIndex, RowsCrossABoxAtItsFacesAndAnEllipsoidAtItsChord) {
     EXPECT_LT(c[0].x, c[1].x);
   }
 }
+
+// The descent of the field's deep voxels: from the nearest triangle of a point a little away
+// (a neighbour voxel's feature), it ends at the brute-force nearest, inside an ellipsoid of
+// 20,480 triangles and outside it; from any triangle at all, outside (the sublevel sets of the
+// distance on a convex surface seen from outside are connected); never above its start.
+TEST(MeshIndex, DescentOverTheSurfaceReachesTheNearestTriangle) {
+  const Mesh m = make_ellipsoid(Vec3(2.0, 1.0, 1.0), 5);
+  const MeshIndex index(m);
+  Rng rng(17);
+  for (int s = 0; s < 300; ++s) {
+    const bool outside = s % 2 == 1;
+    const Vec3 u(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+    const Vec3 p = (outside ? 1.6 : 0.9) * Vec3(2.0 * u.x(), u.y(), u.z());
+    int which = -1;
+    const double truth = brute_distance(m, p, &which);
+    const Vec3 off(rng.uniform(-0.05, 0.05), rng.uniform(-0.05, 0.05), rng.uniform(-0.05, 0.05));
+    int start = -1;
+    brute_distance(m, p + off, &start);
+    if (outside && s % 4 == 1)
+      start = static_cast<int>(rng.uniform(0.0, double(m.triangles.size()) - 1.0));
+    const auto from = MeshIndex::Nearest{index.distance_to_triangle(p, start), start};
+    const auto end = index.descend(p, from);
+    EXPECT_NEAR(end.distance, truth, 1e-12) << s;
+    EXPECT_LE(end.distance, from.distance) << s;
+  }
+}
