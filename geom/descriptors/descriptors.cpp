@@ -233,22 +233,8 @@ std::vector<Vec2> arrangement_outline(const Mesh& mesh, const Vec3& d, const Vec
     const double s = n.dot(d);
     facing[f] = std::abs(s) <= 1e-12 * n.norm() ? 0 : (s > 0.0 ? 1 : -1);
   }
-  // Undirected edges with their triangles, grouped by sorting.
-  struct EdgeUse {
-    std::uint64_t key;
-    int face;
-  };
-  std::vector<EdgeUse> uses;
-  uses.reserve(3 * nf);
-  for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) {
-      const std::uint32_t a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
-      const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-      uses.push_back({key, f});
-    }
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
-    return x.key < y.key || (x.key == y.key && x.face < y.face);
-  });
+  // Undirected edges with their triangles, the uses of each edge adjacent.
+  const std::vector<EdgeUse> uses = edge_uses(mesh);
 
   std::vector<Vec2> proj(mesh.vertices.size());
   for (size_t i = 0; i < mesh.vertices.size(); ++i)
@@ -371,11 +357,55 @@ PrincipalFrame principal_frame(const Mesh& mesh) {
   return f;
 }
 
+namespace {
+
+// The vertices that can be corners of the mesh's convex hull: all but the flat ones, those whose
+// incident triangles share one plane (unit normals within 1e-9) and whose edges each have two
+// triangles (not on a boundary). A flat vertex lies inside the polygon of its neighbours, so in
+// their hull: dropping it leaves the hull as it was, and a subdivided or scanned-and-decimated
+// mesh's planar regions no longer feed a Delaunay triangulation thousands of coplanar points.
+std::vector<Vec3> hull_points(const Mesh& mesh) {
+  const std::size_t nv = mesh.vertices.size();
+  std::vector<Vec3> normal(nv, Vec3::Zero());
+  std::vector<std::uint8_t> flat(nv, 0), seen(nv, 0);
+  for (const auto& t : mesh.triangles) {
+    const Vec3 n = (mesh.vertices[t[1]] - mesh.vertices[t[0]])
+                       .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+    const double len = n.norm();
+    for (int k = 0; k < 3; ++k) {
+      const int v = t[k];
+      if (!(len > 0.0)) {
+        seen[v] = 1;
+        flat[v] = 0;
+      } else if (!seen[v]) {
+        seen[v] = 1;
+        flat[v] = 1;
+        normal[v] = n / len;
+      } else if ((n / len - normal[v]).norm() > 1e-9) {
+        flat[v] = 0;
+      }
+    }
+  }
+  const std::vector<EdgeUse> uses = edge_uses(mesh);
+  for (std::size_t a = 0; a < uses.size();) {
+    std::size_t b = a;
+    while (b < uses.size() && uses[b].key == uses[a].key) ++b;
+    if (b - a != 2) flat[uses[a].key >> 32] = flat[uses[a].key & 0xffffffffu] = 0;
+    a = b;
+  }
+  std::vector<Vec3> points;
+  for (std::size_t v = 0; v < nv; ++v)
+    if (!flat[v]) points.push_back(mesh.vertices[v]);
+  return points;
+}
+
+}  // namespace
+
 CaliperDimensions caliper_dimensions(const Mesh& mesh) {
   if (mesh.vertices.empty()) throw InvalidInput("caliper_dimensions: the mesh has no vertices");
   if (mesh.vertices.size() >= 4) {
     try {
-      return caliper_of_points(convex_hull(mesh.vertices).vertices);
+      return caliper_of_points(convex_hull(hull_points(mesh)).vertices);
     } catch (const InvalidInput&) {
       // Flat or collinear vertex set: fall through to all vertices.
     }
@@ -434,7 +464,7 @@ Descriptors describe(const Mesh& mesh) {
   d.sphericity = std::cbrt(kPi) * std::pow(6.0 * d.volume, 2.0 / 3.0) / d.area;
   d.equivalent_diameter = std::cbrt(6.0 * d.volume / kPi);
 
-  const Mesh hull = convex_hull(mesh.vertices);
+  const Mesh hull = convex_hull(hull_points(mesh));
   const CaliperDimensions cal = caliper_of_points(hull.vertices);
   d.L = cal.L;
   d.W = cal.W;

@@ -274,4 +274,26 @@ std::array<Vec3, 2> bounding_box(const Mesh& mesh) {
   return {lo, hi};
 }
 
+std::vector<EdgeUse> edge_uses(const Mesh& mesh) {
+  const std::size_t nv = mesh.vertices.size();
+  std::vector<std::size_t> start(nv + 1, 0);
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) ++start[std::size_t(std::min(t[k], t[(k + 1) % 3])) + 1];
+  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<EdgeUse> uses(start.back());
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
+      uses[next[std::min(a, b)]++] = {(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b),
+                                      static_cast<int>(f)};
+    }
+  auto less = [](const EdgeUse& x, const EdgeUse& y) {
+    return x.key < y.key || (x.key == y.key && x.face < y.face);
+  };
+  for (std::size_t v = 0; v < nv; ++v)
+    std::sort(uses.begin() + start[v], uses.begin() + start[v + 1], less);
+  return uses;
+}
+
 }  // namespace clumpkit

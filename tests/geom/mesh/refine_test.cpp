@@ -1,6 +1,7 @@
 // refine: the same surface with more triangles; a fill of the refined seed-000 block covers
 // what the original's does (issue 17 acceptance 1).
 #include "geom/mesh/refine.h"
+#include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"
 #include "geom/fill/fidelity.h"
 #include "geom/fill/fill.h"
@@ -48,4 +49,22 @@ TEST(Refine, RefinedSeedZeroBlockFillsToTheOriginalsCoverage) {
   // deep voxels descended to their nearest triangle).
   EXPECT_NEAR(fb.covered_fraction, fa.covered_fraction, 0.002);
   EXPECT_LE(fb.overshoot_fraction, 0.01);
+}
+
+// Refining keeps the shape, so the descriptors stay: volume, area, caliper L/W/H and convexity
+// (its hull is built from the vertices that are not flat, so the 98,000 new coplanar vertices
+// do not reach the triangulation) to rounding, on a block (some faces off its hull) and a box.
+TEST(Refine, DescriptorsOfARefinedMeshAreTheOriginals) {
+  Rng rng(3);
+  for (const Mesh& m : {make_block(BlockParams{75.1, 58.0, 49.8, 2, 0.8, 1.2}, rng),
+                        make_box(Vec3(3.0, 2.0, 1.0))}) {
+    const Descriptors a = describe(m), b = describe(refine(m, 100000));
+    EXPECT_NEAR(b.volume, a.volume, 1e-10 * a.volume);
+    EXPECT_NEAR(b.area, a.area, 1e-10 * a.area);
+    EXPECT_NEAR(b.L, a.L, 1e-10 * a.L);
+    EXPECT_NEAR(b.W, a.W, 1e-10 * a.L);
+    EXPECT_NEAR(b.H, a.H, 1e-10 * a.L);
+    EXPECT_NEAR(b.convexity, a.convexity, 1e-10);
+    EXPECT_NEAR(b.roundness.weighted, a.roundness.weighted, 1e-6);
+  }
 }
