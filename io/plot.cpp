@@ -13,6 +13,27 @@
 
 namespace clumpkit {
 
+namespace {
+
+// Round tick values in [lo, hi]: a step of 1, 2 or 5 × 10^k giving four to ten ticks. Values
+// within a millionth of a step of zero are zero (no "-1e-17" labels).
+std::vector<double> round_ticks(double lo, double hi) {
+  const double raw = (hi - lo) / 5.0;
+  const double mag = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = mag;
+  for (const double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * mag >= raw) {
+      step = m * mag;
+      break;
+    }
+  std::vector<double> ticks;
+  for (double k = std::ceil(lo / step); k * step <= hi + 1e-9 * step; k += 1.0)
+    ticks.push_back(std::abs(k) < 0.5 ? 0.0 : k * step);
+  return ticks;
+}
+
+}  // namespace
+
 void write_plot(const std::string& path, const std::vector<PlotSeries>& series,
                 const std::string& x_label, const std::string& y_label, const std::string& title) {
   double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
@@ -45,15 +66,21 @@ void write_plot(const std::string& path, const std::vector<PlotSeries>& series,
   };
   const cv::Scalar black(0, 0, 0), grey(200, 200, 200);
   const int font = cv::FONT_HERSHEY_SIMPLEX;
-  for (int k = 0; k <= 4; ++k) {
-    const double x = x_lo + xm + (x_hi - x_lo - 2 * xm) * k / 4.0;
-    const double y = y_lo + ym + (y_hi - y_lo - 2 * ym) * k / 4.0;
-    cv::line(img, px(x, y_lo), px(x, y_hi), grey, 1);
-    cv::line(img, px(x_lo, y), px(x_hi, y), grey, 1);
-    cv::putText(img, format_number(x, 3), px(x, y_lo) + cv::Point(-20, 22), font, 0.5, black, 1,
-                cv::LINE_AA);
-    cv::putText(img, format_number(y, 3), cv::Point(36, px(x_lo, y).y + 5), font, 0.5, black, 1,
-                cv::LINE_AA);
+  // Ticks at round values (1, 2 or 5 × 10^k apart, four to ten of them), labelled centred.
+  for (const double t : round_ticks(x_lo, x_hi)) {
+    cv::line(img, px(t, y_lo), px(t, y_hi), grey, 1);
+    const std::string text = format_number(t, 4);
+    int base = 0;
+    const int tw = cv::getTextSize(text, font, 0.5, 1, &base).width;
+    cv::putText(img, text, px(t, y_lo) + cv::Point(-tw / 2, 22), font, 0.5, black, 1, cv::LINE_AA);
+  }
+  for (const double t : round_ticks(y_lo, y_hi)) {
+    cv::line(img, px(x_lo, t), px(x_hi, t), grey, 1);
+    const std::string text = format_number(t, 4);
+    int base = 0;
+    const int tw = cv::getTextSize(text, font, 0.5, 1, &base).width;
+    cv::putText(img, text, cv::Point(std::max(34, left - 8 - tw), px(x_lo, t).y + 5), font, 0.5,
+                black, 1, cv::LINE_AA);
   }
   cv::rectangle(img, cv::Point(left, top), cv::Point(w - right, h - bottom), black, 1);
   for (const PlotSeries& s : series) {
