@@ -324,7 +324,7 @@ PrincipalFrame principal_frame(const Mesh& mesh) {
   rel.reserve(mesh.vertices.size());
   for (const auto& p : mesh.vertices) rel.push_back(p - f.centroid);
 
-  Eigen::SelfAdjointEigenSolver<Mat3> es(solid_inertia(mesh));
+  Eigen::SelfAdjointEigenSolver<Mat3> es(solid_inertia(mesh, f.centroid));
   if (es.info() != Eigen::Success)
     throw NumericError("principal_frame: eigen-decomposition of the inertia tensor failed");
   const Vec3 lam = es.eigenvalues();  // ascending

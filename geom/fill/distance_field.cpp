@@ -217,6 +217,10 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
   // slabs run in parallel, and the result, the nearest triangle with ties to the lower index,
   // does not depend on the bound).
   constexpr int kBand = 2;
+  // Triangles smaller than a voxel (by the mean edge, √(2·area/n) for a mesh of n triangles):
+  // then a voxel's nearest triangle may be none of its neighbours', and walks over the surface
+  // are worth their cost.
+  const bool small_triangles = std::sqrt(2.0 * surface_area(mesh) / mesh.triangles.size()) < h;
   std::vector<std::uint8_t> layer(f.d.size(), 255);
   auto differs = [&](int i, int j, int k) {
     const std::uint8_t v = in[f.index(i, j, k)];
@@ -237,13 +241,19 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
         }
         layer[q] = 0;
         const Vec3 p = f.position(i, j, k);
-        double bound = 1.01 * h;
+        MeshIndex::Nearest known{1.01 * h, -1};
         for (int b = std::max(0, j - 1); b <= std::min(f.dims[1] - 1, j + 1); ++b)
           for (int a = std::max(0, i - 1); a <= std::min(f.dims[0] - 1, i + 1); ++a) {
             const int t = f.feature[f.index(a, b, k)];
-            if (t >= 0) bound = std::min(bound, index.distance_to_triangle(p, t));
+            if (t < 0) continue;
+            const double d = index.distance_to_triangle(p, t);
+            if (d < known.distance) known = {d, t};
           }
-        auto n = index.nearest(p, bound * (1.0 + 1e-9) + 1e-12 * h);
+        // Where triangles are small, a descent from the best known one tightens the bound to
+        // about the answer, so the search visits a handful of triangles instead of a voxel's
+        // worth.
+        if (known.triangle >= 0 && small_triangles) known = index.descend(p, known);
+        auto n = index.nearest(p, known.distance * (1.0 + 1e-9) + 1e-12 * h);
         if (n.triangle < 0) n = index.nearest(p, std::numeric_limits<double>::infinity());
         f.feature[q] = n.triangle;
         f.d[q] = static_cast<float>(in[q] ? n.distance : -n.distance);

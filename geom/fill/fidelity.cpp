@@ -138,8 +138,9 @@ Fidelity assess(const Mesh& mesh, const MeshIndex* index, const Clump& clump, do
   r.clump_volume = u.mass.volume;
   r.overshoot_fraction = std::max(0.0, (ball - both) * cell) / r.mesh_volume;
   r.covered_fraction = (r.clump_volume - (ball - both) * cell) / r.mesh_volume;
-  r.centroid_offset = (u.mass.centroid - solid_centroid(mesh)).norm();
-  const Vec3 lm = Eigen::SelfAdjointEigenSolver<Mat3>(solid_inertia(mesh)).eigenvalues();
+  const Vec3 centroid = solid_centroid(mesh);
+  r.centroid_offset = (u.mass.centroid - centroid).norm();
+  const Vec3 lm = Eigen::SelfAdjointEigenSolver<Mat3>(solid_inertia(mesh, centroid)).eigenvalues();
   const Vec3 lc = Eigen::SelfAdjointEigenSolver<Mat3>(u.mass.inertia).eigenvalues();
   for (int q = 0; q < 3; ++q)
     r.inertia_error = std::max(r.inertia_error, std::abs(lc[q] - lm[q]) / lm[q]);

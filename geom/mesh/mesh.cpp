@@ -50,9 +50,14 @@ Moments moments_about(const Mesh& mesh, const Vec3& origin) {
     const Vec3 s = a + b + c;
     m.volume += v;
     m.first += v * s / 4.0;
-    m.second +=
-        v / 20.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
+    // The upper triangle only (the same sums, term for term), mirrored below at the end.
+    const double w = v / 20.0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = i; j < 3; ++j)
+        m.second(i, j) += w * (a[i] * a[j] + b[i] * b[j] + c[i] * c[j] + s[i] * s[j]);
   }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < i; ++j) m.second(i, j) = m.second(j, i);
   return m;
 }
 
@@ -71,7 +76,10 @@ Vec3 solid_centroid(const Mesh& mesh) {
 }
 
 Mat3 solid_inertia(const Mesh& mesh) {
-  const Vec3 c = solid_centroid(mesh);
+  return solid_inertia(mesh, solid_centroid(mesh));
+}
+
+Mat3 solid_inertia(const Mesh& mesh, const Vec3& c) {
   const Moments m = moments_about(mesh, c);
   // Inertia from the covariance: I = tr(C) δ - C.
   return m.second.trace() * Mat3::Identity() - m.second;

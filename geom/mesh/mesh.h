@@ -42,6 +42,8 @@ Vec3 solid_centroid(const Mesh& mesh);
 /// Second moment tensor of the enclosed solid about its centroid, unit density:
 /// inertia tensor I = ∫(r²δ - r rᵀ) dV. Exact for the polyhedron (tetrahedral decomposition).
 Mat3 solid_inertia(const Mesh& mesh);
+/// The same about a centroid already known (solid_centroid(mesh)): one pass over the mesh less.
+Mat3 solid_inertia(const Mesh& mesh, const Vec3& centroid);
 
 /// Checks closedness, manifoldness, orientation consistency and degeneracy by edge counting.
 MeshCheck check_mesh(const Mesh& mesh);
