@@ -55,4 +55,17 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   if (ec) fail("cannot rename the temporary file into place: " + ec.message());
 }
 
+void remove_stray_temporaries(const std::string& dir) {
+  std::error_code ec;
+  std::vector<fs::path> stray;
+  for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::end(it);
+       it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() > 1 && name[0] == '.' && name.find(".tmp-") != std::string::npos &&
+        it->is_regular_file(ec))
+      stray.push_back(it->path());
+  }
+  for (const fs::path& p : stray) fs::remove(p, ec);
+}
+
 }  // namespace clumpkit

@@ -15,4 +15,9 @@ namespace clumpkit {
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& fill,
                            bool binary = true);
 
+/// Removes, anywhere under `dir`, the temporary files write_file_atomically leaves behind when
+/// a process is killed mid-write (".NAME.tmp-PID-N"): a resumed job's work directory must hold
+/// only finished files, or the stray ones would be published with it. A missing dir is fine.
+void remove_stray_temporaries(const std::string& dir);
+
 }  // namespace clumpkit

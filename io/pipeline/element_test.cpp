@@ -338,7 +338,10 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
       }
     }
   }
-  if (!saved) begin_staging(out_dir);  // afresh: an empty DIR.partial
+  if (!saved)
+    begin_staging(out_dir);  // afresh: an empty DIR.partial
+  else
+    remove_stray_temporaries(out.string());  // a killed run's half-written files
   dem::World world = saved ? std::move(*resumed_world) : dem::World(o);
   dem::ElementTestState state = saved ? *saved : dem::ElementTestState{};
   if (!saved) {

@@ -210,6 +210,7 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
   std::error_code ec;
   if (fs::exists(out) && !(fs::exists(stamp) && slurp(stamp) == recipe.text))
     fs::remove_all(out, ec);
+  remove_stray_temporaries(out.string());  // a killed run's half-written files
   fs::create_directories(parts, ec);
   if (ec) throw IoError(out.string() + ": cannot create directory: " + ec.message());
   write_file_atomically(stamp.string(), [&](std::ostream& o) { o << recipe.text; });

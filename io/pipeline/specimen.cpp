@@ -149,6 +149,7 @@ SpecimenJobResult run_specimen(const SpecimenRecipe& recipe, const std::string& 
   }
   const fs::path staging = out_dir + ".partial";
   if (!options.resume) fs::remove_all(staging);
+  remove_stray_temporaries(staging.string());  // a killed run's half-written files
   fs::create_directories(staging);
 
   try {

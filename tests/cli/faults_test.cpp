@@ -37,6 +37,37 @@ TEST(CliFaults, LibraryRedoesAParticleRecordThatFailsItsChecksum) {
     EXPECT_EQ(slurp(d / "lib" / f), slurp(d / "clean" / f)) << f;
 }
 
+// A run killed mid-write leaves a half-written temporary beside its target (".NAME.tmp-PID-N");
+// the resumed library removes them, so the published directory holds exactly a clean run's
+// files. (Found as a rare failure of Cli.LibraryDeterministicAndResumable under load.)
+TEST(CliFaults, LibraryResumeDropsHalfWrittenTemporaries) {
+  const fs::path d = scratch();
+  write(d / "rocks.toml", kTinyRocks);
+  const std::string run = "library --quiet --recipe " + (d / "rocks.toml").string() + " --out ";
+  Result r = run_cli(run + (d / "clean").string(), d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  r = run_cli(run + (d / "lib").string(), d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  fs::rename(d / "lib", d / "lib.partial");
+  fs::remove(d / "lib.partial" / "library.csv");
+  fs::remove(d / "lib.partial" / "particles" / "00003.json");
+  write(d / "lib.partial" / "particles" / ".00003.json.tmp-4242-7", "{\"id\": 3, \"fra");
+  write(d / "lib.partial" / ".library.csv.tmp-4242-9", "id,fraction\n0,");
+  r = run_cli(run + (d / "lib").string(), d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  std::size_t files = 0;
+  for (const auto& e : fs::recursive_directory_iterator(d / "lib")) {
+    if (!e.is_regular_file()) continue;
+    ++files;
+    EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+    const fs::path rel = fs::relative(e.path(), d / "lib");
+    EXPECT_EQ(slurp(e.path()), slurp(d / "clean" / rel)) << rel;
+  }
+  std::size_t clean = 0;
+  for (const auto& e : fs::recursive_directory_iterator(d / "clean")) clean += e.is_regular_file();
+  EXPECT_EQ(files, clean);
+}
+
 // A specimen stage record with one changed byte is refused on --resume, naming the file; the
 // run is stopped by SIGTERM as soon as that record exists.
 TEST(CliFaults, SpecimenRefusesAStageRecordThatFailsItsChecksum) {
