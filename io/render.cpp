@@ -34,24 +34,12 @@ struct Hit {
 };
 
 Hit intersect(RTCScene scene, const float o[3], const float d[3]) {
-  RTCIntersectContext ctx;
-  rtcInitIntersectContext(&ctx);
-  RTCRayHit rh{};
-  rh.ray.org_x = o[0];
-  rh.ray.org_y = o[1];
-  rh.ray.org_z = o[2];
-  rh.ray.dir_x = d[0];
-  rh.ray.dir_y = d[1];
-  rh.ray.dir_z = d[2];
-  rh.ray.tfar = std::numeric_limits<float>::infinity();
-  rh.ray.mask = 0xFFFFFFFFu;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene, &ctx, &rh);
+  const RayHit r = first_hit(scene, o, d, 0.0f);
   Hit h;
-  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return h;
-  h.t = rh.ray.tfar;
-  h.id = static_cast<int>(rh.hit.primID);
-  h.normal = Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+  if (r.triangle < 0) return h;
+  h.t = r.t;
+  h.id = r.triangle;
+  h.normal = Vec3(r.normal[0], r.normal[1], r.normal[2]);
   const double n = h.normal.norm();
   h.normal = n > 0 ? Vec3(h.normal / n) : Vec3(Vec3::UnitZ());
   return h;

@@ -33,7 +33,7 @@ EmbreeScene::~EmbreeScene() {
   if (device) rtcReleaseDevice(device);
 }
 
-RayHit first_hit(const EmbreeScene& s, const float origin[3], const float dir[3], float tnear) {
+RayHit first_hit(RTCScene scene, const float origin[3], const float dir[3], float tnear) {
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
   RTCRayHit rh{};
@@ -47,9 +47,10 @@ RayHit first_hit(const EmbreeScene& s, const float origin[3], const float dir[3]
   rh.ray.tfar = std::numeric_limits<float>::infinity();
   rh.ray.mask = 0xFFFFFFFFu;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(s.scene, &ctx, &rh);
+  rtcIntersect1(scene, &ctx, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return RayHit{};
-  return RayHit{rh.ray.tfar, static_cast<int>(rh.hit.primID)};
+  return RayHit{
+      rh.ray.tfar, static_cast<int>(rh.hit.primID), {rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z}};
 }
 
 float step_past(float t) {

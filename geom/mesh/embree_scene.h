@@ -20,14 +20,17 @@ struct EmbreeScene {
   RTCScene scene = nullptr;
 };
 
-/// One hit along a ray: the distance along `dir` and the triangle, or triangle -1 for none.
+/// One hit along a ray: the distance along `dir`, the primitive (triangle, or sphere of a point
+/// scene; -1 for none) and Embree's geometric normal there (not normalized).
 struct RayHit {
   float t = 0.0f;
   int triangle = -1;
+  float normal[3] = {0.0f, 0.0f, 0.0f};
 };
 
-/// The first hit of the ray `origin + t dir` with t ≥ `tnear` (shifted float coordinates).
-RayHit first_hit(const EmbreeScene& s, const float origin[3], const float dir[3], float tnear);
+/// The first hit in `scene` of the ray `origin + t dir` with t ≥ `tnear` (the scene's float
+/// coordinates).
+RayHit first_hit(RTCScene scene, const float origin[3], const float dir[3], float tnear);
 
 /// The tnear that steps past a hit at `t`: a relative epsilon, since the hit distance is a
 /// float, so the other triangles of an edge or vertex the ray went through do not count again.

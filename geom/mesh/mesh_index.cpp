@@ -153,7 +153,7 @@ std::vector<MeshIndex::Crossing> MeshIndex::crossings_x(double y, double z) cons
   const float dir[3] = {1.0f, 0.0f, 0.0f};
   float tnear = 0.0f;
   for (int guard = 0; guard < 1000000; ++guard) {
-    const RayHit hit = first_hit(*m.embree, origin, dir, tnear);
+    const RayHit hit = first_hit(m.embree->scene, origin, dir, tnear);
     if (hit.triangle < 0) break;
     xs.push_back(
         Crossing{m.shift.x() + static_cast<double>(ox) + static_cast<double>(hit.t), hit.triangle});

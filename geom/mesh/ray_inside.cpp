@@ -42,7 +42,7 @@ double RayInside::vote(const Vec3& p) const {
     int crossings = 0;
     float tnear = 0.0f;
     for (int guard = 0; guard < 10000; ++guard) {
-      const RayHit hit = first_hit(*m.embree, origin, dir, tnear);
+      const RayHit hit = first_hit(m.embree->scene, origin, dir, tnear);
       if (hit.triangle < 0) break;
       ++crossings;
       tnear = step_past(hit.t);

@@ -11,23 +11,33 @@ using namespace cli_test;
 
 // A library particle record with one changed byte, left in DIR.partial by an interrupted run, is
 // redone (one warning line naming it) and the library ends byte-identical to a clean run.
-TEST(CliFaults, LibraryRedoesAParticleRecordThatFailsItsChecksum) {
-  const fs::path d = scratch();
+namespace {
+
+// The tiny rock library built twice in d: clean/ and lib.partial/ (a finished run renamed to
+// stand for what a killed one leaves). Returns the command, less its output directory.
+std::string clean_and_partial_library(const fs::path& d) {
   write(d / "rocks.toml", kTinyRocks);
   const std::string run = "library --quiet --recipe " + (d / "rocks.toml").string() + " --out ";
-  Result r = run_cli(run + (d / "clean").string(), d);
-  ASSERT_EQ(r.rc, 0) << r.err;
-  r = run_cli(run + (d / "lib").string(), d);
-  ASSERT_EQ(r.rc, 0) << r.err;
-  // What a killed run leaves: the finished particles in lib.partial.
+  for (const char* out : {"clean", "lib"}) {
+    const Result r = run_cli(run + (d / out).string(), d);
+    EXPECT_EQ(r.rc, 0) << r.err;
+  }
   fs::rename(d / "lib", d / "lib.partial");
+  return run;
+}
+
+}  // namespace
+
+TEST(CliFaults, LibraryRedoesAParticleRecordThatFailsItsChecksum) {
+  const fs::path d = scratch();
+  const std::string run = clean_and_partial_library(d);
   const fs::path rec = d / "lib.partial" / "particles" / "00002.json";
   std::string text = slurp(rec);
   const std::size_t at = text.find("\"volume\": ") + 11;  // a digit of a descriptor
   ASSERT_NE(at, std::string::npos + 11);
   text[at] = text[at] == '1' ? '2' : '1';
   write(rec, text);
-  r = run_cli(run + (d / "lib").string(), d);
+  const Result r = run_cli(run + (d / "lib").string(), d);
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_NE(r.err.find("particles/00002.json was damaged (checksum): particle redone"),
             std::string::npos)
@@ -42,18 +52,12 @@ TEST(CliFaults, LibraryRedoesAParticleRecordThatFailsItsChecksum) {
 // files. (Found as a rare failure of Cli.LibraryDeterministicAndResumable under load.)
 TEST(CliFaults, LibraryResumeDropsHalfWrittenTemporaries) {
   const fs::path d = scratch();
-  write(d / "rocks.toml", kTinyRocks);
-  const std::string run = "library --quiet --recipe " + (d / "rocks.toml").string() + " --out ";
-  Result r = run_cli(run + (d / "clean").string(), d);
-  ASSERT_EQ(r.rc, 0) << r.err;
-  r = run_cli(run + (d / "lib").string(), d);
-  ASSERT_EQ(r.rc, 0) << r.err;
-  fs::rename(d / "lib", d / "lib.partial");
+  const std::string run = clean_and_partial_library(d);
   fs::remove(d / "lib.partial" / "library.csv");
   fs::remove(d / "lib.partial" / "particles" / "00003.json");
   write(d / "lib.partial" / "particles" / ".00003.json.tmp-4242-7", "{\"id\": 3, \"fra");
   write(d / "lib.partial" / ".library.csv.tmp-4242-9", "id,fraction\n0,");
-  r = run_cli(run + (d / "lib").string(), d);
+  const Result r = run_cli(run + (d / "lib").string(), d);
   ASSERT_EQ(r.rc, 0) << r.err;
   std::size_t files = 0;
   for (const auto& e : fs::recursive_directory_iterator(d / "lib")) {
