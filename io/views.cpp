@@ -46,7 +46,7 @@ std::string length_text(double metres) {
 }  // namespace
 
 void write_particle_png(const std::string& path, const Mesh& mesh, const Clump& clump,
-                        const std::string& caption, int panel) {
+                        const std::string& caption, int panel, bool metres) {
   const ClumpRenderer renderer(mesh, clump);
   const int header = 62;
   // Everything here is RGB (OpenCV only draws; colours are given as RGB triples).
@@ -72,7 +72,9 @@ void write_particle_png(const std::string& path, const Mesh& mesh, const Clump& 
            cv::Scalar(170, 170, 170), 1);
   put_text(canvas, caption, 10, 24, 0.62, 2 * panel - 10);
   put_text(canvas,
-           "each view " + length_text(renderer.frame_width()) +
+           "each view " +
+               (metres ? length_text(renderer.frame_width())
+                       : format_number(renderer.frame_width(), 3) + " mesh units") +
                " across; spheres lit and darker with depth under the translucent mesh; red: "
                "sphere caps outside the mesh",
            10, 50, 0.5, 2 * panel - 10);

@@ -14,8 +14,10 @@ namespace clumpkit {
 /// `panel`-px views in a 2 × 2 grid — front (along +y, z up), side (along −x, z up), top
 /// (along −z, y up) and oblique — all at one scale, whose width the caption states. 2·panel
 /// wide, 2·panel + 62 high. Atomic write; throws IoError naming the path.
+/// `metres`: the mesh is in metres (a library), so the scale is written in m, mm or µm; else
+/// in the mesh's own units (`fill` keeps them).
 void write_particle_png(const std::string& path, const Mesh& mesh, const Clump& clump,
-                        const std::string& caption, int panel = 450);
+                        const std::string& caption, int panel = 450, bool metres = true);
 
 /// The oblique view of write_particle_png alone, `pixels` square: a contact sheet's tile.
 RgbImage render_oblique(const Mesh& mesh, const Clump& clump, int pixels);

@@ -4,13 +4,16 @@
 #include "geom/fill/fidelity.h"
 #include "io/cli/common.h"
 #include "io/clump_io.h"
+#include "io/clump_vtp.h"
 #include "io/mesh_io.h"
 #include "io/report.h"
+#include "io/views.h"
 
 #include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -35,7 +38,7 @@ nlohmann::ordered_json fidelity_json(const Fidelity& f) {
 
 void register_fill(CLI::App& app) {
   struct Opts {
-    std::string mesh, out;
+    std::string mesh, out, png, vtp;
     FillOptions fill;
     int spheres = -1;
     double max_memory_gib = 0;  // 0: half of this machine's memory
@@ -70,6 +73,12 @@ void register_fill(CLI::App& app) {
   c->add_flag("--allow-open", o->allow_open,
               "Accept a mesh that is not watertight: inside/outside by Embree ray-parity voting "
               "(the report says so; volumes are then approximate)");
+  c->add_option("--png", o->png,
+                "Also write this picture (900 px: front, side, top and oblique views, the spheres "
+                "lit and coloured under the translucent mesh, caps outside it red)");
+  c->add_option("--vtp", o->vtp,
+                "Also write mesh and spheres for ParaView here (Glyph: Sphere, Scale Array "
+                "diameter, Scale Factor 1)");
   c->add_flag("--json", o->json, "Print the fidelity report as JSON on stdout");
   c->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
@@ -79,6 +88,23 @@ void register_fill(CLI::App& app) {
     o->fill.field.max_bytes = max_memory_bytes(o->max_memory_gib);
     validate(o->fill);
     check_not_input(o->out, "--output", o->mesh);
+    // Every output's folder must exist before the work, so a failure leaves no partial output.
+    for (const auto& [option, path] :
+         {std::pair<const char*, const std::string&>{"--output", o->out},
+          {"--png", o->png},
+          {"--vtp", o->vtp}}) {
+      if (path.empty()) continue;
+      if (std::string(option) != "--output") {
+        check_not_input(path, option, o->mesh);
+        if (path == o->out || (!o->png.empty() && o->png == o->vtp))
+          throw InvalidInput(std::string(option) + " " + path +
+                             ": names another output of this run; choose distinct files");
+      }
+      const auto dir = std::filesystem::path(path).parent_path();
+      if (!dir.empty() && !std::filesystem::is_directory(dir))
+        throw InvalidInput(std::string(option) + " " + path + ": folder " + dir.string() +
+                           " does not exist");
+    }
     MeshReadReport report;
     Mesh mesh;
     std::string inside_outside = "ray parity along the grid rows (watertight mesh)";
@@ -122,6 +148,14 @@ void register_fill(CLI::App& app) {
     write_clump(o->out, r.clump,
                 "clumpkit fill " + o->mesh + "\nspheres " + std::to_string(r.clump.spheres.size()) +
                     ", covered fraction " + format_number(f.covered_fraction));
+    if (!o->vtp.empty()) write_clump_vtp(o->vtp, mesh, r.clump);
+    if (!o->png.empty())
+      write_particle_png(o->png, mesh, r.clump,
+                         std::filesystem::path(o->mesh).filename().string() + ": " +
+                             std::to_string(f.spheres) + " spheres, coverage " +
+                             format_fixed(f.covered_fraction, 3) + ", overshoot " +
+                             format_fixed(f.overshoot_fraction, 4) + " of the volume",
+                         450, false);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     nlohmann::ordered_json j = fidelity_json(f);

@@ -263,10 +263,24 @@ TEST(Cli, FillWritesClumpAndReport) {
   ASSERT_EQ(
       run_cli("shape block --L 75.1 --W 58.0 --H 49.8 --seed 1 -o " + (d / "b.stl").string(), d).rc,
       0);
-  const Result r = run_cli(
-      "fill " + (d / "b.stl").string() + " -o " + (d / "c.csv").string() + " --spheres 47 --json",
-      d);
+  const Result r = run_cli("fill " + (d / "b.stl").string() + " -o " + (d / "c.csv").string() +
+                               " --spheres 47 --json --png " + (d / "c.png").string() + " --vtp " +
+                               (d / "c.vtp").string(),
+                           d);
   ASSERT_EQ(r.rc, 0) << r.err;
+  // The picture: 900 × 962, something drawn in the middle of each of its four views.
+  const auto im = clumpkit::read_png((d / "c.png").string());
+  ASSERT_EQ(im.width, 900);
+  ASSERT_EQ(im.height, 962);
+  for (int v = 0; v < 4; ++v) {
+    long drawn = 0;
+    const int x0 = (v % 2) * 450, y0 = 62 + (v / 2) * 450;
+    for (int y = y0 + 175; y < y0 + 275; ++y)
+      for (int x = x0 + 175; x < x0 + 275; ++x) drawn += im.at(x, y)[0] != 255;
+    EXPECT_GT(drawn, 5000) << "view " << v;
+  }
+  const std::string vtp = slurp(d / "c.vtp");
+  EXPECT_NE(vtp.find("NumberOfVerts=\"47\" NumberOfPolys=\"48\""), std::string::npos);
   const auto j = nlohmann::json::parse(r.out);
   for (const char* k :
        {"spheres", "mesh_volume", "clump_volume", "covered_fraction", "overshoot_fraction",
@@ -294,7 +308,19 @@ TEST(Cli, FillBadInput) {
   expect_one_line_error(run_cli("fill " + (d / "open.obj").string() + out, d), "open.obj");
   write(d / "empty.stl", "");
   expect_one_line_error(run_cli("fill " + (d / "empty.stl").string() + out, d), "empty.stl");
+  // Pictures and ParaView files: their folder must exist, and no output may name another.
+  expect_one_line_error(
+      run_cli("fill " + (d / "b.stl").string() + out + " --png " + (d / "no" / "c.png").string(),
+              d),
+      "--png");
+  expect_one_line_error(
+      run_cli("fill " + (d / "b.stl").string() + out + " --vtp " + (d / "c.csv").string(), d),
+      "--vtp");
+  expect_one_line_error(
+      run_cli("fill " + (d / "b.stl").string() + out + " --png " + (d / "b.stl").string(), d),
+      "--png");
   EXPECT_FALSE(fs::exists(d / "c.csv"));
+  EXPECT_FALSE(fs::exists(d / "no"));
 }
 
 // `clumpkit library` is byte-identical for 1 and 2 threads, and a killed run resumes to
