@@ -117,7 +117,8 @@ void write_plot(const std::string& path, const std::vector<PlotSeries>& series,
          {cv::Point(w - right - 6 - box_w, top + 6), cv::Point(left + 6, top + 6),
           cv::Point(w - right - 6 - box_w, h - bottom - 6 - box_h),
           cv::Point(left + 6, h - bottom - 6 - box_h)}) {
-      const cv::Rect r(corner, cv::Size(box_w, box_h));
+      // Clipped to the image: a very long label must not take the box outside it.
+      const cv::Rect r = cv::Rect(corner, cv::Size(box_w, box_h)) & cv::Rect(0, 0, w, h);
       long hidden = 0;
       for (int y = r.y; y < r.y + r.height; ++y)
         for (int x = r.x; x < r.x + r.width; ++x) {

@@ -144,6 +144,10 @@ TEST(Render, PlotsHaveLabelledAxesAndTheirSeries) {
   EXPECT_GT(y_ink, 200);
   EXPECT_GT(x_ink, 200);
   EXPECT_GT(red, 60);  // the marker: a disc of radius 6
+  // A label longer than the frame is wide: the legend is clipped to the image, nothing more.
+  a.label = std::string(150, 'x');
+  write_plot((d / "long.png").string(), {a}, "x", "y", "t");
+  EXPECT_EQ(read_png((d / "long.png").string()).width, 800);
   PlotSeries nan;
   nan.points = {{NAN}, {1.0}};
   EXPECT_THROW(write_plot((d / "n.png").string(), {nan}, "x", "y", "t"), InvalidInput);
