@@ -47,7 +47,11 @@ std::string length_text(double metres) {
 
 void write_particle_png(const std::string& path, const Mesh& mesh, const Clump& clump,
                         const std::string& caption, int panel, bool metres) {
-  const ClumpRenderer renderer(mesh, clump);
+  write_particle_png(path, ClumpRenderer(mesh, clump), caption, panel, metres);
+}
+
+void write_particle_png(const std::string& path, const ClumpRenderer& renderer,
+                        const std::string& caption, int panel, bool metres) {
   const int header = 62;
   // Everything here is RGB (OpenCV only draws; colours are given as RGB triples).
   cv::Mat canvas(2 * panel + header, 2 * panel, CV_8UC3, cv::Scalar(255, 255, 255));
@@ -82,7 +86,11 @@ void write_particle_png(const std::string& path, const Mesh& mesh, const Clump& 
 }
 
 RgbImage render_oblique(const Mesh& mesh, const Clump& clump, int pixels) {
-  return ClumpRenderer(mesh, clump).render(kOblique, Vec3(0, 0, 1), pixels);
+  return render_oblique(ClumpRenderer(mesh, clump), pixels);
+}
+
+RgbImage render_oblique(const ClumpRenderer& renderer, int pixels) {
+  return renderer.render(kOblique, Vec3(0, 0, 1), pixels);
 }
 
 void write_contact_sheet(const std::string& path, const std::string& title,

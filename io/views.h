@@ -4,6 +4,7 @@
 #include "geom/mesh/mesh.h"
 #include "geom/sphere.h"
 #include "io/png.h"
+#include "io/render.h"
 
 #include <string>
 #include <vector>
@@ -18,9 +19,13 @@ namespace clumpkit {
 /// in the mesh's own units (`fill` keeps them).
 void write_particle_png(const std::string& path, const Mesh& mesh, const Clump& clump,
                         const std::string& caption, int panel = 450, bool metres = true);
+/// The same from a renderer already built (its Embree scenes serve several pictures).
+void write_particle_png(const std::string& path, const ClumpRenderer& renderer,
+                        const std::string& caption, int panel = 450, bool metres = true);
 
 /// The oblique view of write_particle_png alone, `pixels` square: a contact sheet's tile.
 RgbImage render_oblique(const Mesh& mesh, const Clump& clump, int pixels);
+RgbImage render_oblique(const ClumpRenderer& renderer, int pixels);
 
 /// One tile of a contact sheet: its image (all tiles the same size) and the label under it.
 struct SheetTile {

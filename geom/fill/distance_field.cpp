@@ -266,12 +266,17 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
   auto nearest_of_neighbours = [&](int i, int j, int k, auto&& use) {
     const Vec3 p = f.position(i, j, k);
     MeshIndex::Nearest best{std::numeric_limits<double>::infinity(), -1};
+    // Neighbours mostly share a few triangles: each is measured once (the answer, the nearest
+    // with ties to the lower index, does not depend on the order).
+    int seen[27];
+    int n_seen = 0;
     for (int c = std::max(0, k - 1); c <= std::min(f.dims[2] - 1, k + 1); ++c)
       for (int b = std::max(0, j - 1); b <= std::min(f.dims[1] - 1, j + 1); ++b)
         for (int a = std::max(0, i - 1); a <= std::min(f.dims[0] - 1, i + 1); ++a) {
           const std::int64_t n = f.index(a, b, c);
           const int t = f.feature[n];
-          if (t < 0 || t == best.triangle || !use(n)) continue;
+          if (t < 0 || std::find(seen, seen + n_seen, t) != seen + n_seen || !use(n)) continue;
+          seen[n_seen++] = t;
           const double d = index.distance_to_triangle(p, t);
           if (d < best.distance || (d == best.distance && t < best.triangle)) best = {d, t};
         }

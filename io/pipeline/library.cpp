@@ -103,14 +103,15 @@ void write_pictures(const fs::path& out, const std::vector<nlohmann::ordered_jso
     const auto& f = records[i]["fidelity"];
     if (options.vtp && !fs::exists(vtp)) write_clump_vtp(vtp.string(), mesh, clump);
     if (!options.png) return;
+    const ClumpRenderer renderer(mesh, clump);  // one set of Embree scenes for both pictures
     if (!fs::exists(png))
       write_particle_png(
-          png.string(), mesh, clump,
+          png.string(), renderer,
           "particle " + stem + " (" + records[i]["fraction"].get<std::string>() +
               "): " + std::to_string(f["spheres"].get<int>()) + " spheres, coverage " +
               format_fixed(f["covered_fraction"].get<double>(), 3) + ", overshoot " +
               format_fixed(f["overshoot_fraction"].get<double>(), 4) + " of the volume");
-    tiles[i].image = render_oblique(mesh, clump, thumb);
+    tiles[i].image = render_oblique(renderer, thumb);
     tiles[i].label = stem + "  " + std::to_string(f["spheres"].get<int>()) + " sph";
   });
   if (options.png)

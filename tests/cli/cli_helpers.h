@@ -268,4 +268,41 @@ inline std::vector<std::vector<double>> dump_rows(const fs::path& path) {
   return rows;
 }
 
+// A library of 8 blocks and 4 grains at 20 spheres: small enough for an end-to-end run.
+inline constexpr const char* kLibraryRecipe = R"(seed = 11
+[[fraction]]
+name = "blocks"
+method = "block"
+count = 8
+W = { uniform = [0.02, 0.04] }
+L_over_H = { lognormal = { mu = 0.47, sigma = 0.25, min = 1.0, max = 3.5 } }
+W_split = { uniform = [0.3, 0.7] }
+
+[[fraction]]
+name = "grains"
+method = "hull"
+count = 4
+diameter = 0.01
+roundness = [1.1, 1.3]
+
+[fill]
+spheres = 20
+voxels = 24
+)";
+
+// Every regular file under `a` is in `b` with the same bytes, and `b` has no others.
+inline void expect_same_tree(const fs::path& a, const fs::path& b) {
+  int files = 0;
+  for (const auto& e : fs::recursive_directory_iterator(a)) {
+    if (!e.is_regular_file()) continue;
+    const fs::path rel = fs::relative(e.path(), a);
+    ASSERT_TRUE(fs::exists(b / rel)) << rel;
+    EXPECT_EQ(slurp(e.path()), slurp(b / rel)) << rel;
+    ++files;
+  }
+  int other = 0;
+  for (const auto& e : fs::recursive_directory_iterator(b)) other += e.is_regular_file();
+  EXPECT_EQ(files, other);
+}
+
 }  // namespace cli_test

@@ -5,6 +5,7 @@
 #include "io/plot.h"
 #include "io/png.h"
 #include "io/views.h"
+#include "tests/image_checks.h"
 
 #include <gtest/gtest.h>
 
@@ -15,17 +16,10 @@ namespace clumpkit {
 namespace {
 
 namespace fs = std::filesystem;
-
-bool white(const RgbImage& im, int x, int y) {
-  const std::uint8_t* p = im.at(x, y);
-  return p[0] == 255 && p[1] == 255 && p[2] == 255;
-}
+using test::drawn_pixels;
 
 double drawn_fraction(const RgbImage& im) {
-  long n = 0;
-  for (int y = 0; y < im.height; ++y)
-    for (int x = 0; x < im.width; ++x) n += !white(im, x, y);
-  return double(n) / (double(im.width) * im.height);
+  return double(drawn_pixels(im, 0, 0, im.width, im.height)) / (double(im.width) * im.height);
 }
 
 // Pixels tinted red: a sphere cap outside the mesh (red well above green and blue).
@@ -96,16 +90,20 @@ TEST(Render, ParticlePictureAndContactSheetHaveTheirSizesAndDrawings) {
   ASSERT_EQ(p.width, 900);
   ASSERT_EQ(p.height, 962);
   for (int v = 0; v < 4; ++v) {
-    long drawn = 0;
     const int x0 = (v % 2) * 450, y0 = 62 + (v / 2) * 450;
     // The middle half of the panel: away from its label.
-    for (int y = y0 + 112; y < y0 + 338; ++y)
-      for (int x = x0 + 112; x < x0 + 338; ++x) drawn += !white(p, x, y);
-    EXPECT_GT(drawn, 226 * 226 / 10) << "panel " << v;
+    EXPECT_GT(drawn_pixels(p, x0 + 112, y0 + 112, x0 + 338, y0 + 338), 226 * 226 / 10)
+        << "panel " << v;
   }
+  // One renderer serves the picture and the tile (library --png): the same bytes as each
+  // made from mesh and clump.
+  const ClumpRenderer renderer(box, clump);
+  write_particle_png((d / "q.png").string(), renderer, "test particle", 450);
+  EXPECT_EQ(read_png((d / "q.png").string()).pixels, p.pixels);
+  const RgbImage tile = render_oblique(box, clump, 200);
+  EXPECT_EQ(render_oblique(renderer, 200).pixels, tile.pixels);
   std::vector<SheetTile> tiles;
-  for (int i = 0; i < 7; ++i)
-    tiles.push_back({"tile " + std::to_string(i), render_oblique(box, clump, 200)});
+  for (int i = 0; i < 7; ++i) tiles.push_back({"tile " + std::to_string(i), tile});
   write_contact_sheet((d / "s.png").string(), "sheet", tiles);
   const RgbImage s = read_png((d / "s.png").string());
   EXPECT_EQ(s.width, 800);            // 3 columns of 200 px, widened to 800
@@ -135,15 +133,9 @@ TEST(Render, PlotsHaveLabelledAxesAndTheirSeries) {
   const RgbImage im = read_png((d / "p.png").string());
   ASSERT_EQ(im.width, 800);
   ASSERT_EQ(im.height, 560);
-  long y_ink = 0, x_ink = 0, red = 0;
-  for (int y = 50; y < 480; ++y)
-    for (int x = 0; x < 32; ++x) y_ink += !white(im, x, y);
-  for (int y = 515; y < 545; ++y)
-    for (int x = 110; x < 770; ++x) x_ink += !white(im, x, y);
-  red = red_pixels(im);
-  EXPECT_GT(y_ink, 200);
-  EXPECT_GT(x_ink, 200);
-  EXPECT_GT(red, 60);  // the marker: a disc of radius 6
+  EXPECT_GT(drawn_pixels(im, 0, 50, 32, 480), 200);      // the y label's strip
+  EXPECT_GT(drawn_pixels(im, 110, 515, 770, 545), 200);  // the x label under the axis
+  EXPECT_GT(red_pixels(im), 60);                         // the marker: a disc of radius 6
   // A label longer than the frame is wide: the legend is clipped to the image, nothing more.
   a.label = std::string(150, 'x');
   write_plot((d / "long.png").string(), {a}, "x", "y", "t");
