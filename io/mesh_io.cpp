@@ -21,6 +21,7 @@
 #include <fstream>
 #include <sstream>
 #include <string_view>
+#include <vector>
 
 namespace clumpkit {
 
@@ -66,13 +67,19 @@ T load_le(const char* p) {
   return v;
 }
 
+// Stores `v` little-endian at `b`, the byte order of binary STL and PLY.
 template <class T>
-void store_le(std::ostream& os, T v) {
-  char b[sizeof(T)];
+void store_le(char* b, T v) {
   std::memcpy(b, &v, sizeof(T));
 #if __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
   std::reverse(b, b + sizeof(T));
 #endif
+}
+
+template <class T>
+void store_le(std::ostream& os, T v) {
+  char b[sizeof(T)];
+  store_le(b, v);
   os.write(b, sizeof(T));
 }
 
@@ -471,15 +478,27 @@ void write_stl_binary(std::ostream& os, const Mesh& mesh) {
   char header[80] = "binary STL written by clumpkit";
   os.write(header, sizeof header);
   store_le<uint32_t>(os, static_cast<uint32_t>(mesh.triangles.size()));
+  // Records of 50 bytes gathered in blocks: one stream write per block, not 13 per triangle
+  // (a scan-sized mesh has 10^5–10^6 of them).
+  constexpr std::size_t kRecord = 50, kBlock = 1024;
+  std::vector<char> block(kRecord * kBlock);
+  std::size_t used = 0;
   for (const auto& t : mesh.triangles) {
     const Vec3& a = mesh.vertices[t[0]];
     const Vec3& b = mesh.vertices[t[1]];
     const Vec3& c = mesh.vertices[t[2]];
     const Vec3 n = (b - a).cross(c - a).normalized();  // zero vector for a degenerate triangle
+    char* r = block.data() + used;
     for (const Vec3* v : {&n, &a, &b, &c})
-      for (int k = 0; k < 3; ++k) store_le<float>(os, static_cast<float>((*v)[k]));
-    store_le<uint16_t>(os, 0);
+      for (int k = 0; k < 3; ++k, r += 4) store_le<float>(r, static_cast<float>((*v)[k]));
+    store_le<uint16_t>(r, 0);
+    used += kRecord;
+    if (used == block.size()) {
+      os.write(block.data(), std::streamsize(used));
+      used = 0;
+    }
   }
+  os.write(block.data(), std::streamsize(used));
 }
 
 void write_stl_ascii(std::ostream& os, const Mesh& mesh) {

@@ -393,9 +393,39 @@ std::vector<Vec3> hull_points(const Mesh& mesh) {
     if (b - a != 2) flat[uses[a].key >> 32] = flat[uses[a].key & 0xffffffffu] = 0;
     a = b;
   }
+  // A crease vertex strictly between two of its neighbours on a line is no corner either (a
+  // subdivided edge's points): dropped when within 1e-12 of the box diagonal of the line, which
+  // moves the hull by at most that much. Neighbours from the edges, in compressed rows.
+  std::vector<int> start(nv + 1, 0), next;
+  for (std::size_t a = 0; a < uses.size(); ++a)
+    if (a == 0 || uses[a].key != uses[a - 1].key) {
+      ++start[(uses[a].key >> 32) + 1];
+      ++start[(uses[a].key & 0xffffffffu) + 1];
+    }
+  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<int> ring(static_cast<std::size_t>(start[nv]));
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (std::size_t a = 0; a < uses.size(); ++a)
+    if (a == 0 || uses[a].key != uses[a - 1].key) {
+      const int lo = int(uses[a].key >> 32), hi = int(uses[a].key & 0xffffffffu);
+      ring[std::size_t(fill[lo]++)] = hi;
+      ring[std::size_t(fill[hi]++)] = lo;
+    }
+  const auto box = bounding_box(mesh);
+  const double tol = 1e-12 * (box[1] - box[0]).norm();
+  auto between_neighbours = [&](std::size_t v) {
+    const Vec3& p = mesh.vertices[v];
+    for (int x = start[v]; x < start[v + 1]; ++x)
+      for (int y = x + 1; y < start[v + 1]; ++y) {
+        const Vec3 u = mesh.vertices[std::size_t(ring[std::size_t(x)])] - p;
+        const Vec3 w = mesh.vertices[std::size_t(ring[std::size_t(y)])] - p;
+        if (u.dot(w) < 0.0 && u.cross(w).norm() <= tol * (w - u).norm()) return true;
+      }
+    return false;
+  };
   std::vector<Vec3> points;
   for (std::size_t v = 0; v < nv; ++v)
-    if (!flat[v]) points.push_back(mesh.vertices[v]);
+    if (!flat[v] && !between_neighbours(v)) points.push_back(mesh.vertices[v]);
   return points;
 }
 

@@ -2,13 +2,20 @@
 
 #include "geom/errors.h"
 
+#include <tbb/task_arena.h>
+
 #include <cmath>
 #include <limits>
 
 namespace clumpkit {
 
 EmbreeScene::EmbreeScene(const Mesh& mesh, const Vec3& shift, bool robust) {
-  device = rtcNewDevice("threads=1");
+  // No "threads=N" in the device's configuration: with TBB tasking Embree enforces it by a
+  // process-wide tbb::global_control while the device lives, which held every parallel loop of
+  // the program (the distance field, the renderer) to one thread. The build runs in an arena of
+  // one thread instead, so the tree, and the hit reported where two triangles tie, are the same
+  // whatever the thread count.
+  device = rtcNewDevice(nullptr);
   if (!device) throw NumericError("Embree: cannot create a device");
   scene = rtcNewScene(device);
   if (robust) rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
@@ -25,7 +32,7 @@ EmbreeScene::EmbreeScene(const Mesh& mesh, const Vec3& shift, bool robust) {
   rtcCommitGeometry(geom);
   rtcAttachGeometry(scene, geom);
   rtcReleaseGeometry(geom);
-  rtcCommitScene(scene);
+  tbb::task_arena(1).execute([&] { rtcCommitScene(scene); });
 }
 
 EmbreeScene::~EmbreeScene() {

@@ -128,18 +128,29 @@ MeshIndex::Nearest MeshIndex::descend(const Vec3& p, Nearest start) const {
   const Impl& m = *impl_;
   if (start.triangle < 0) return start;
   // Each move strictly lowers (distance, index), so the walk ends; the guard only bounds it.
+  // Each triangle is measured once a step, and the ring of a vertex the previous triangle had
+  // is skipped: all of it was measured then and none beat where the walk now stands.
+  std::array<int, 3> previous{-1, -1, -1};
   for (std::size_t guard = 0; guard < mesh_.triangles.size(); ++guard) {
     const Nearest here = start;
+    const std::array<int, 3> corners = mesh_.triangles[here.triangle];
     for (int k = 0; k < 3; ++k) {
-      const int v = mesh_.triangles[here.triangle][k];
+      const int v = corners[k];
+      if (v == previous[0] || v == previous[1] || v == previous[2]) continue;
       for (int r = m.ring_start[v]; r < m.ring_start[v + 1]; ++r) {
         const int t = m.ring[r];
         if (t == start.triangle) continue;
+        const auto& u = mesh_.triangles[t];
+        bool measured = false;  // in the ring of an earlier corner
+        for (int j = 0; j < k; ++j)
+          measured |= u[0] == corners[j] || u[1] == corners[j] || u[2] == corners[j];
+        if (measured) continue;
         const double d = distance_to_triangle(p, t);
         if (d < start.distance || (d == start.distance && t < start.triangle)) start = {d, t};
       }
     }
     if (start.triangle == here.triangle) break;
+    previous = corners;
   }
   return start;
 }

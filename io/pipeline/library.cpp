@@ -131,6 +131,10 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
   const Descriptors desc = describe(shape.mesh);
   FillOptions fill_options = recipe.fill;
   fill_options.field.max_bytes = fill_memory_share(options);
+  // The voxel the field would derive from the principal extents, which describe() has just
+  // computed (the same number: the moments of a scan-sized mesh are not free).
+  if (!(fill_options.field.voxel_size > 0.0) && !fill_options.field.vote_sign)
+    fill_options.field.voxel_size = desc.axes(0) / fill_options.field.voxels;
   validate(fill_options);
   // One search tree serves the field, the fill and the fidelity (generated meshes are closed).
   const MeshIndex index(shape.mesh);

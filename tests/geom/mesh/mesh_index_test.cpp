@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <tbb/global_control.h>
+
 #include <cmath>
 #include <limits>
 
@@ -128,4 +130,17 @@ TEST(MeshIndex, DescentOverTheSurfaceReachesTheNearestTriangle) {
     EXPECT_NEAR(end.distance, truth, 1e-12) << s;
     EXPECT_LE(end.distance, from.distance) << s;
   }
+}
+
+// Embree enforces a device's "threads=N" by a process-wide tbb::global_control; an index must
+// not hold the program's parallel loops to one thread while it lives.
+TEST(MeshIndex, LeavesTheProcessParallelismAsItWas) {
+  const auto parallelism = [] {
+    return tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+  };
+  const std::size_t before = parallelism();
+  const Mesh m = make_ellipsoid(Vec3(2.0, 1.0, 1.0), 3);
+  const MeshIndex index(m);
+  EXPECT_EQ(parallelism(), before);
+  EXPECT_NEAR(index.distance(Vec3::Zero()), 1.0, 0.05);
 }
