@@ -393,10 +393,11 @@ std::vector<Vec3> hull_points(const Mesh& mesh) {
     if (b - a != 2) flat[uses[a].key >> 32] = flat[uses[a].key & 0xffffffffu] = 0;
     a = b;
   }
-  // A crease vertex strictly between two of its neighbours on a line is no corner either (a
-  // subdivided edge's points): dropped when within 1e-12 of the box diagonal of the line, which
-  // moves the hull by at most that much. Neighbours from the edges, in compressed rows.
-  std::vector<int> start(nv + 1, 0), next;
+  // A crease vertex between two of its neighbours on a line is no corner either (a subdivided
+  // edge's points): dropped when it lies within 1e-12 of the box diagonal of the line through
+  // them, which moves the hull by at most that much. Neighbours from the edges, in compressed
+  // rows.
+  std::vector<int> start(nv + 1, 0);
   for (std::size_t a = 0; a < uses.size(); ++a)
     if (a == 0 || uses[a].key != uses[a - 1].key) {
       ++start[(uses[a].key >> 32) + 1];
@@ -404,12 +405,12 @@ std::vector<Vec3> hull_points(const Mesh& mesh) {
     }
   for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
   std::vector<int> ring(static_cast<std::size_t>(start[nv]));
-  std::vector<int> fill(start.begin(), start.end() - 1);
+  std::vector<int> cursor(start.begin(), start.end() - 1);
   for (std::size_t a = 0; a < uses.size(); ++a)
     if (a == 0 || uses[a].key != uses[a - 1].key) {
       const int lo = int(uses[a].key >> 32), hi = int(uses[a].key & 0xffffffffu);
-      ring[std::size_t(fill[lo]++)] = hi;
-      ring[std::size_t(fill[hi]++)] = lo;
+      ring[std::size_t(cursor[lo]++)] = hi;
+      ring[std::size_t(cursor[hi]++)] = lo;
     }
   const auto box = bounding_box(mesh);
   const double tol = 1e-12 * (box[1] - box[0]).norm();
