@@ -386,11 +386,15 @@ std::vector<Vec3> hull_points(const Mesh& mesh) {
       }
     }
   }
+  // Each edge once (its uses are adjacent); one not used by exactly two triangles is a boundary.
   const std::vector<EdgeUse> uses = edge_uses(mesh);
+  std::vector<std::array<int, 2>> edges;
   for (std::size_t a = 0; a < uses.size();) {
     std::size_t b = a;
     while (b < uses.size() && uses[b].key == uses[a].key) ++b;
-    if (b - a != 2) flat[uses[a].key >> 32] = flat[uses[a].key & 0xffffffffu] = 0;
+    const int lo = int(uses[a].key >> 32), hi = int(uses[a].key & 0xffffffffu);
+    if (b - a != 2) flat[lo] = flat[hi] = 0;
+    edges.push_back({lo, hi});
     a = b;
   }
   // A crease vertex between two of its neighbours on a line is no corner either (a subdivided
@@ -398,20 +402,17 @@ std::vector<Vec3> hull_points(const Mesh& mesh) {
   // them, which moves the hull by at most that much. Neighbours from the edges, in compressed
   // rows.
   std::vector<int> start(nv + 1, 0);
-  for (std::size_t a = 0; a < uses.size(); ++a)
-    if (a == 0 || uses[a].key != uses[a - 1].key) {
-      ++start[(uses[a].key >> 32) + 1];
-      ++start[(uses[a].key & 0xffffffffu) + 1];
-    }
+  for (const auto& e : edges) {
+    ++start[e[0] + 1];
+    ++start[e[1] + 1];
+  }
   for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
   std::vector<int> ring(static_cast<std::size_t>(start[nv]));
   std::vector<int> cursor(start.begin(), start.end() - 1);
-  for (std::size_t a = 0; a < uses.size(); ++a)
-    if (a == 0 || uses[a].key != uses[a - 1].key) {
-      const int lo = int(uses[a].key >> 32), hi = int(uses[a].key & 0xffffffffu);
-      ring[std::size_t(cursor[lo]++)] = hi;
-      ring[std::size_t(cursor[hi]++)] = lo;
-    }
+  for (const auto& e : edges) {
+    ring[std::size_t(cursor[e[0]]++)] = e[1];
+    ring[std::size_t(cursor[e[1]]++)] = e[0];
+  }
   const auto box = bounding_box(mesh);
   const double tol = 1e-12 * (box[1] - box[0]).norm();
   auto between_neighbours = [&](std::size_t v) {
