@@ -1,7 +1,8 @@
 // Seed 004's Table 1 at CI size (issue 16 acceptance 3, its CI variant): 10 and 20 mm spheres in
 // cubes of 12 diameters (~2,000 spheres; 8 gave porosity 0.42 with loose wall layers), the
-// bundled recipes with their lengths and rates scaled; in the `quick` label, outside the
-// sanitizer pass. The full table (10/30/60 mm, 16 diameters) is tests/bench/table1.sh.
+// bundled recipes with their lengths and rates scaled, #2 prepared to #1's tested porosity as
+// in the bench; in the `quick` label, outside the sanitizer pass. The full table (10/30/60 mm,
+// 16 diameters) is tests/bench/table1.sh.
 #include "../cli_helpers.h"
 
 #include <gtest/gtest.h>
@@ -33,10 +34,13 @@ std::string num(double v) {
   return s;
 }
 
-// The bundled Table 1 specimen with diameter d (m) and seed.
-void make_specimen(const fs::path& dir, const std::string& name, double d, int seed) {
+// The bundled Table 1 specimen with diameter d (m) and seed, prepared at `porosity` (< 0: the
+// recipe's).
+void make_specimen(const fs::path& dir, const std::string& name, double d, int seed,
+                   double porosity = -1) {
   std::string t = slurp(kRecipes / "elastic-scaling-specimen.toml");
   t = replace_line(t, "seed", std::to_string(seed));
+  if (porosity > 0) t = replace_line(t, "porosity", num(porosity));
   const std::string side = num(kSide * d);
   t = replace_line(t, "size", "[" + side + ", " + side + ", " + side + "]");
   t = replace_line(t, "sieves", "[" + num(1.01 * d) + ", " + num(0.99 * d) + "]");
@@ -65,19 +69,48 @@ nlohmann::json run_case(const fs::path& dir, const std::string& name, const std:
   return nlohmann::json::parse(slurp(dir / name / "report.json"));
 }
 
+// Seed 004's specimens have the same void ratio when tested: a specimen of diameter d under
+// `law` prepared at the porosity (secant search, as tests/bench/table1.sh) whose tested porosity
+// is `target` within 3e-4; returns its report.json.
+nlohmann::json matched_case(const fs::path& dir, const std::string& name, double d, int seed,
+                            const std::string& law, double lambda, double target) {
+  double prepared = 0.40, slope = 0.8, last_prepared = 0, last_tested = 0;
+  for (int attempt = 1;; ++attempt) {
+    const std::string specimen = "s" + name;
+    fs::remove_all(dir / specimen);
+    fs::remove_all(dir / name);
+    make_specimen(dir, specimen, d, seed, prepared);
+    const nlohmann::json rep = run_case(dir, name, specimen, law, lambda);
+    const double tested = rep["porosity"].get<double>();
+    if (std::abs(tested - target) <= 3e-4 || attempt == 4) {
+      EXPECT_NEAR(tested, target, 3e-4) << name << " prepared at " << prepared;
+      return rep;
+    }
+    if (attempt > 1 && prepared != last_prepared) {
+      const double s = (tested - last_tested) / (prepared - last_prepared);
+      if (s > 0.2 && s < 2) slope = s;
+    }
+    last_prepared = prepared, last_tested = tested;
+    prepared += (target - tested) / slope;
+  }
+}
+
 }  // namespace
 
 TEST(CliQuickTable1, ConstantStiffnessHalvesTheModulusAtTwiceTheSizeAndScaledStiffnessKeepsIt) {
   const fs::path d = scratch();
   const auto t0 = std::chrono::steady_clock::now();
   ASSERT_NO_FATAL_FAILURE(make_specimen(d, "s10", 0.010, 1));
-  ASSERT_NO_FATAL_FAILURE(make_specimen(d, "s20", 0.020, 2));
   const Result scaled = run_cli(
       "specimen-scale " + (d / "s10").string() + " --factor 2 --out " + (d / "s10x2").string(), d);
   ASSERT_EQ(scaled.rc, 0) << scaled.err;
   const auto e1 = run_case(d, "t1", "s10", "none", 1);
   const auto e1l = run_case(d, "t1l", "s10", "linear", 1);
-  const auto e2 = run_case(d, "t2", "s20", "none", 2);
+  const auto e2 = matched_case(d, "t2", 0.020, 2, "none", 2, e1["porosity"].get<double>());
+  // Under kn ∝ d the consolidation compacts every size alike, so #4 is the recipe's preparation
+  // (at 16 diameters the bench's search never needs a second try for it; at 12 its tested
+  // porosity scatters by a few 1e-4, and a re-prepared packing is another realisation).
+  ASSERT_NO_FATAL_FAILURE(make_specimen(d, "s20", 0.020, 2));
   const auto e4 = run_case(d, "t4", "s20", "linear", 2);
   const auto e6 = run_case(d, "t6", "s10x2", "linear", 2);
   const double seconds =
@@ -95,10 +128,11 @@ TEST(CliQuickTable1, ConstantStiffnessHalvesTheModulusAtTwiceTheSizeAndScaledSti
   }
   // zones.md §3: at a fixed fabric the modulus goes as kn/d, so constant kn at twice the size
   // gives at least half the modulus; the packing is not a fixed fabric, though: at 5 MPa its
-  // contacts are relatively twice as soft (κ = kn/(p·d) 800 against 1,600), overlap more and
-  // gain contacts (Z 5.54 against 5.15), so it measures 0.71–0.73 (seeds 1/2 and 8/7; at 30 mm
-  // 0.477 = 1.43 × 1/3, at 16 diameters 0.348 and, at 60 mm, 0.225 = 1.35 × 1/6:
-  // tests/bench/RESULTS.md). Bounds: softer than #1 by 15 %, not softer than fixed fabric.
+  // contacts are relatively twice as soft (κ = kn/(p·d) 800 against 1,600), so at the same
+  // tested porosity it holds more contacts (and, prepared alike, it would be tested denser: 0.71
+  // there). Measured 0.674 (seeds 1/2) in these 12-diameter cubes; in the bench's 16-diameter
+  // ones, mean of 7 replicates, 1.10 × 1/3 at 30 mm and 1.11 × 1/6 at 60 mm
+  // (tests/bench/RESULTS.md). Bounds: softer than #1 by 15 %, not softer than fixed fabric.
   EXPECT_GT(young(e2) / young(e1), 0.5);
   EXPECT_LT(young(e2) / young(e1), 0.85);
   // kn ∝ d: the same modulus from an independent packing (Table 1: within 7 %) ...
