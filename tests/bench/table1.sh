@@ -10,10 +10,10 @@
 # 267). So every independent packing (#2–#5) is prepared at the porosity that gives #1's tested
 # porosity within TOL (3e-4): a secant search on the preparation porosity, each try a whole test.
 # #6, #7 are #1's specimen scaled (eqs. 1–3), so they match by construction. Realisations of
-# ~4,700 spheres scatter by a few per cent, so REPS replicates (default 3, seeds 3r-2, 3r-1, 3r
-# for 10, 30, 60 mm) are run and the ratios are those of the mean moduli over every replicate
-# found in OUT: FIRST=4 REPS=6 adds replicates 4–6 to an earlier run (two such commands with
-# disjoint ranges can run side by side, one per core).
+# ~4,700 spheres scatter by a few per cent, so REPS replicates (default 3; RESULTS.md has 7;
+# seeds 3r-2, 3r-1, 3r for 10, 30, 60 mm) are run and the ratios are those of the mean moduli
+# over every replicate found in OUT: FIRST=4 REPS=6 adds replicates 4–6 to an earlier run (two
+# such commands with disjoint ranges can run side by side, one per core).
 # SIDE sets the cube edge in diameters (default 16, as the recipe); POROSITY the first
 # preparation porosity (default the recipe's); MATCH=0 prepares every case at POROSITY (the
 # protocol before 2026-11-24). Needs build/io/clumpkit (scripts/build).
