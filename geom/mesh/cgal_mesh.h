@@ -7,7 +7,8 @@
 
 namespace clumpkit {
 
-/// Convex hull of a point set as an outward-oriented triangle mesh (CGAL convex_hull_3).
+/// Convex hull of a point set as an outward-oriented triangle mesh (the hull facets of a CGAL
+/// Triangulation_3 of the points; exact predicates). Coplanar hull points are all kept.
 /// Throws InvalidInput if the points span less than three dimensions.
 Mesh convex_hull(const std::vector<Vec3>& points);
 
