@@ -347,8 +347,21 @@ PrincipalFrame principal_frame(const Mesh& mesh) {
 
   Vec3 ext;
   for (int j = 0; j < 3; ++j) ext(j) = extent_along(rel, axes.col(j));
+  // S ≤ I ≤ L by extent. Extents equal to rounding (the polyhedra of E = F = 1 are stretched to
+  // three equal ones) are ordered by moment of inertia, largest first (the mass spreads farthest
+  // about that axis: mass-wise it is the shortest), else the labels, and the per-view roundness
+  // with them, would swap under any rotation or retriangulation of the mesh. Equal moments too:
+  // the order the frame was built in. An insertion sort: three items, and a comparator with
+  // tolerances need not be a strict weak order.
+  const double tie = 1e-9 * ext.maxCoeff();
+  auto before = [&](int a, int b) {
+    if (std::abs(ext(a) - ext(b)) > tie) return ext(a) < ext(b);
+    if (std::abs(lam(a) - lam(b)) > tol) return lam(a) > lam(b);
+    return a < b;
+  };
   std::array<int, 3> order{0, 1, 2};
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return ext(a) < ext(b); });
+  for (int i = 1; i < 3; ++i)
+    for (int j = i; j > 0 && before(order[j], order[j - 1]); --j) std::swap(order[j], order[j - 1]);
   for (int j = 0; j < 3; ++j) {
     f.axes.col(j) = canonical_sign(axes.col(order[j]).normalized());
     f.extents(j) = ext(order[j]);
