@@ -362,9 +362,13 @@ PrincipalFrame principal_frame(const Mesh& mesh) {
   std::array<int, 3> order{0, 1, 2};
   for (int i = 1; i < 3; ++i)
     for (int j = i; j > 0 && before(order[j], order[j - 1]); --j) std::swap(order[j], order[j - 1]);
+  // The extents themselves stay sorted, so S ≤ I ≤ L holds exactly and S is the smallest (the
+  // fill's voxel size): within a tie the axis they are attached to differs by under 1e-9 of L.
+  Vec3 sorted = ext;
+  std::sort(sorted.data(), sorted.data() + 3);
   for (int j = 0; j < 3; ++j) {
     f.axes.col(j) = canonical_sign(axes.col(order[j]).normalized());
-    f.extents(j) = ext(order[j]);
+    f.extents(j) = sorted(j);
   }
   if (f.axes.determinant() < 0.0) f.axes.col(0) = -f.axes.col(0);
   return f;

@@ -19,6 +19,8 @@ namespace clumpkit {
 /// for an isotropic tensor (cube, sphere) those of the smallest box among candidates with one
 /// axis along a face normal (up to 32 normals, largest total face area first). A box therefore
 /// keeps its edge directions and a cube has extents (1, 1, 1) in any orientation.
+/// Extents within 1e-9 of L of each other are a tie: their axes are ordered by moment of inertia,
+/// largest first, so the labels do not depend on the mesh's orientation or triangulation.
 struct PrincipalFrame {
   Vec3 centroid = Vec3::Zero();
   Mat3 axes = Mat3::Identity();
