@@ -15,6 +15,7 @@
 #include <CGAL/spatial_sort.h>
 
 #include <algorithm>
+#include <numeric>
 
 namespace clumpkit {
 
@@ -88,7 +89,7 @@ Mesh convex_hull(const std::vector<Vec3>& points) {
   cgal_points.reserve(sorted.size());
   for (const auto& p : sorted) cgal_points.emplace_back(p.x(), p.y(), p.z());
   std::vector<std::size_t> order(sorted.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::iota(order.begin(), order.end(), std::size_t(0));
   using SortTraits =
       CGAL::Spatial_sort_traits_adapter_3<K, CGAL::Pointer_property_map<Point>::type>;
   CGAL::spatial_sort(order.begin(), order.end(), SortTraits(CGAL::make_property_map(cgal_points)));

@@ -63,8 +63,7 @@ TEST(ConvexHull, CubeWithInteriorAndFacePointsHasTheCubeVolumeWhateverTheOrder) 
   shuffled.insert(shuffled.end(), points.begin(), points.begin() + 40);
   Rng rng(11);
   for (std::size_t i = shuffled.size() - 1; i > 0; --i)
-    std::swap(shuffled[i],
-              shuffled[std::min(i, static_cast<std::size_t>(rng.uniform() * (i + 1)))]);
+    std::swap(shuffled[i], shuffled[rng.below(i + 1)]);
   const Mesh again = convex_hull(shuffled);
   EXPECT_EQ(again.vertices, hull.vertices);
   EXPECT_EQ(again.triangles, hull.triangles);
