@@ -1,5 +1,5 @@
 // Gravity-free test specimens at a target porosity: homogeneous compression of a loose random
-// packing in a rigid cuboid or cylinder (the preparation of element-test specimens, zones.md §4).
+// packing in a rigid cuboid or cylinder (the preparation of element-test specimens).
 #pragma once
 
 #include "dem/contact.h"

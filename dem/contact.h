@@ -13,7 +13,7 @@ namespace clumpkit::dem {
 /// How contact stiffness depends on particle size.
 enum class StiffnessScaling {
   none,   ///< every contact has kn and ks
-  linear  ///< kn ∝ d (zones.md §3, Thakur et al. 2015): see pair_stiffness_factor
+  linear  ///< kn ∝ d (CTGU 2017; Thakur et al. 2016): see pair_stiffness_factor
 };
 
 /// Contact parameters (SI). Defaults follow Jin et al. 2017 §4.1 (kn = ks = 1e6 N/m, μ = 0.8).
@@ -35,7 +35,7 @@ struct ContactParams {
 /// (every sphere of a clump has its body's d): 1 without scaling; with linear scaling the two
 /// particle springs k_i = 2·kn_ref·d_i/d_ref in series, kn_ij = 2·(kn_ref/d_ref)·d_i·d_j /
 /// (d_i + d_j), so f = 2·d_i·d_j / ((d_i + d_j)·d_ref) (equal sizes: d/d_ref). Written so that
-/// scaling both diameters by a power of two scales f exactly (zones.md §3 similarity).
+/// scaling both diameters by a power of two scales f exactly (the similarity copy, dem/scale.h).
 inline double pair_stiffness_factor(const ContactParams& p, double d_i, double d_j) {
   if (p.scaling == StiffnessScaling::none) return 1.0;
   return (2.0 * d_i) * d_j / ((d_i + d_j) * p.d_ref);

@@ -1,4 +1,4 @@
-// Similarity copy of a DEM world at length scale λ (seed 004 eqs. 1–3; zones.md §3).
+// Similarity copy of a DEM world at length scale λ (CTGU 2017 eqs. 1–3).
 #pragma once
 
 #include "dem/world.h"

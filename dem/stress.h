@@ -25,8 +25,8 @@ double wall_contact_stiffness(const World& world, int wall);
 /// Love–Weber average stress (Pa, compression positive, symmetrised):
 /// σ = −(1/V) Σ_b Σ_c sym((x_c − x_b) ⊗ f_c) over the bodies b whose centroid x_b satisfies
 /// `inside`, for every contact c of b (pairs and walls) at point x_c with force f_c on b. For a
-/// body in equilibrium this is Σ_c f ⊗ l over its contacts' branch vectors (Love 1927; Weber
-/// 1966; Christoffersen et al. 1981). V the region's volume (m³).
+/// body in equilibrium this is Σ_c f ⊗ l over its contacts' branch vectors (Love 1927;
+/// Weber 1966; Christoffersen et al. 1981). V the region's volume (m³).
 Mat3 love_weber_stress(const World& world, const std::function<bool(const Vec3&)>& inside,
                        double volume);
 

@@ -42,7 +42,7 @@ struct SpecimenRecipe {
   double soil_density = 2700.0, rock_density = 2870.0;  ///< [kg/m³]
   double kn = 1e6, ks = 1e6, friction = 0.8;            ///< contact law, N/m
   /// contact.stiffness_scaling = "linear": kn and ks are the values at diameter d_ref and each
-  /// contact's stiffness scales with its bodies' diameters (seed 004; dem/contact.h).
+  /// contact's stiffness scales with its bodies' diameters (CTGU 2017; dem/contact.h).
   bool linear_scaling = false;
   double d_ref = 0.0;  ///< m
   /// Viscous normal damping ratio β and PFC local damping α of the preparation (defaults of

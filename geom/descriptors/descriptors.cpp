@@ -380,7 +380,7 @@ namespace {
 // incident triangles share one plane (unit normals within 1e-9) and whose edges each have two
 // triangles (not on a boundary). A flat vertex lies inside the polygon of its neighbours, so in
 // their hull: dropping it leaves the hull as it was, and a subdivided or scanned-and-decimated
-// mesh's planar regions no longer feed a Delaunay triangulation thousands of coplanar points.
+// mesh's planar regions no longer feed the hull's triangulation thousands of coplanar points.
 std::vector<Vec3> hull_points(const Mesh& mesh) {
   const std::size_t nv = mesh.vertices.size();
   std::vector<Vec3> normal(nv, Vec3::Zero());

@@ -34,7 +34,7 @@ PrincipalFrame principal_frame(const Mesh& mesh);
 /// L, W, H as measured with a caliper (Jin et al. 2017 §1.1): L the largest dimension (diameter of
 /// the vertex set), W the largest dimension in the plane perpendicular to L, H the largest
 /// dimension perpendicular to both L and W. Computed on the vertices (exact for polyhedra):
-///  - L = max pairwise distance of the convex-hull vertices (O(h²), h hull vertices);
+///  - L = max pairwise distance of the convex-hull vertices (farthest_pair.h: exact, pruned);
 ///  - W = max pairwise distance of the hull vertices projected on the plane ⟂ dir_L
 ///    (the 2-D diameter of that projection), dir_W = direction of that pair in the plane;
 ///  - H = extent of the vertices along dir_H = dir_L × dir_W (so H ≤ W ≤ L).

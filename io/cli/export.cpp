@@ -57,9 +57,9 @@ void register_export(CLI::App& app) {
                 "Library or clump CSV: what the file's numbers are, m (default) or mm; exports "
                 "are SI");
   c->add_option("--mass", o->options.source.mass,
-                "Library or clump CSV: clump (default: density x V_clump) or mesh (seed 000 "
-                "§2.2's mass equivalence: density x V_mesh, moments scaled alike; a clump CSV "
-                "needs its mesh STEM.stl beside it)");
+                "Library or clump CSV: clump (default: density x V_clump) or mesh (Jin et al. "
+                "2017 §2.2's mass equivalence: density x V_mesh, moments scaled alike; a clump "
+                "CSV needs its mesh STEM.stl beside it)");
   c->add_flag("--json", o->json, "Print format, bodies, spheres, files and run as JSON");
   c->callback([o] {
     o->options.lammps.oedometer = o->test == "oedometer";

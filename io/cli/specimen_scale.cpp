@@ -16,7 +16,7 @@ void register_specimen_scale(CLI::App& app) {
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
       "specimen-scale",
-      "Copy of a specimen at length scale λ (seed 004 eqs. 1-3: x -> λx, r -> λr, the same "
+      "Copy of a specimen at length scale λ (CTGU 2017 eqs. 1-3: x -> λx, r -> λr, the same "
       "fabric): masses λ³ (same density), moments λ⁵, the container and report lengths λ, and "
       "the contact stiffnesses λ·kn, λ·ks, so that `clumpkit test` on the copy gives the same "
       "stresses at the same strains (on the time axis t -> λt). Writes specimen.csv, "

@@ -17,8 +17,8 @@ namespace clumpkit {
 struct TemplateSourceOptions {
   double density = NAN;     ///< kg/m³; required for a library or clump CSV
   std::string length_unit;  ///< "m" (default) or "mm": what the file's numbers are
-  /// "clump" (default: density × V_clump) or "mesh": seed 000 §2.2's mass equivalence, the body
-  /// weighs density × V_mesh and its moments scale by the same V_mesh/V_clump.
+  /// "clump" (default: density × V_clump) or "mesh": Jin et al. 2017 §2.2's mass equivalence,
+  /// the body weighs density × V_mesh and its moments scale by the same V_mesh/V_clump.
   std::string mass;
 };
 

@@ -302,9 +302,9 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
     vol_sum += b.volume;
   }
   const double d_mean = d_sum / double(rows.size()), density = rho_sum / vol_sum;
-  o.skin = 0.2 * r_min;  // a length of the specimen, not an absolute one (zones.md §3)
-  // Inertial number I = ε̇·d·sqrt(ρ/p): quasi-static below 1e-3, dense flow above 1e-2 (GDR
-  // MiDi 2004). Refused before anything is written unless the user asks for a dynamic test.
+  o.skin = 0.2 * r_min;  // relative to the specimen, so a scaled copy runs alike
+  // Inertial number I = ε̇·d·sqrt(ρ/p): quasi-static below 1e-3, dense flow above 1e-2
+  // (GDR MiDi 2004). Refused before anything is written unless the user asks for a dynamic test.
   const double inertial =
       recipe.settings.strain_rate * d_mean * std::sqrt(density / recipe.settings.confining);
   if (inertial > 1e-2 && !options.allow_dynamic)

@@ -2,7 +2,7 @@
 # Issue 16 acceptance 2: independent random packings of uniform d and 3d (~5,000 spheres,
 # 3 seeds) at the same porosity, isotropic compression 100 -> 400 kPa: the tangent bulk modulus
 # with size-scaled (linear) and constant (none) contact stiffness, and against the affine
-# estimate K = φ·Z·kn/(3π·d) (zones.md §3).
+# estimate K = φ·Z·kn/(3π·d) (fixed fabric).
 #   tests/bench/modulus_equality.sh [OUT]   (default /tmp/clumpkit-modulus; ~20 min on one core)
 # SIDE (cube edge in diameters, default 16), POROSITY (default 0.40), SEEDS (default "1 2 3").
 set -euo pipefail

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Seed 004 Table 1 (issue 16 acceptance 3): seven small-strain triaxial tests at 5 MPa of
+# CTGU 2017 Table 1 (issue 16 acceptance 3): seven small-strain triaxial tests at 5 MPa of
 # specimens of 10, 30 and 60 mm spheres with constant or size-scaled contact stiffness, and the
 # ratios of their Young's moduli (E at ε_a = 1e-4) to case #1's.
 #   tests/bench/table1.sh [OUT]   (default /tmp/clumpkit-table1; about 30 minutes on one core)
 #
-# The seed's specimens have "the same void ratio" (zones.md §1). The void ratio that matters is
+# CTGU 2017's specimens have "the same void ratio". The void ratio that matters is
 # the tested one, at 5 MPa: under constant kn a 60 mm packing is compressed by the consolidation
 # to 0.391 from a preparation that leaves a 10 mm one at 0.398 (κ = kn/(p·d) falls from 1,600 to
 # 267). So every independent packing (#2–#5) is prepared at the porosity that gives #1's tested

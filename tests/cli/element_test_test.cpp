@@ -118,7 +118,7 @@ TEST(CliElementTest, IsotropicAndOedometerGiveModuliWithTheOedometerStiffer) {
 }
 
 TEST(CliElementTest, SpecimenScaledByTwoTestsTheSameBitForBit) {
-  // Seed 004 eqs. 1–3 through the CLI (issue 16 acceptance 1): `specimen-scale --factor 2`, then
+  // CTGU 2017 eqs. 1–3 through the CLI (issue 16 acceptance 1): `specimen-scale --factor 2`, then
   // the same triaxial at half the strain rate (ε̇/λ): every strain and stress of the curve is the
   // same bits — no absolute length hides in the reader, the cell, the servo, the time step or
   // the skin.
@@ -179,7 +179,7 @@ TEST(CliElementTest, BundledTestRecipeParses) {
 
 TEST(CliElementTest, CompressedCuboidAndItsScaledCopyTestTheSameBitForBit) {
   // A gravity-free cuboid specimen (preparation.method = "compression", ~570 spheres of 10 mm in
-  // an 8 d cube at n = 0.40, kn ∝ d) tested in a cuboid cell at seed 004's 5 MPa, and its copy
+  // an 8 d cube at n = 0.40, kn ∝ d) tested in a cuboid cell at CTGU 2017's 5 MPa, and its copy
   // at λ = 2 (specimen-scale: the recorded linear law keeps kn_ref, the diameters double the
   // stiffness) tested at half the strain rate: the same curve, bit for bit.
   const fs::path d = scratch();
@@ -251,7 +251,7 @@ d_ref = 0.01
   EXPECT_TRUE(rep["consolidated"].get<bool>());
   EXPECT_EQ(rep["contact"]["stiffness_scaling"], "linear");
   // The cuboid cell holds σ3 = 5 MPa on its four lateral walls; Young's modulus is of the order
-  // of the affine estimate (zones.md §3: K_V ≈ 0.33·kn/d = 2.6 GPa, E of order 1 GPa).
+  // of the affine estimate (K_V ≈ 0.33·kn/d = 2.6 GPa, E of order 1 GPa).
   const auto rows = curve_rows(d / "a" / "curve.csv");
   ASSERT_GT(rows.size(), 10u);
   for (const auto& row : rows) EXPECT_NEAR(row[4], 5e6, 0.01 * 5e6);

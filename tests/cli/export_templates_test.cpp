@@ -1,5 +1,5 @@
 // `clumpkit export` of a clump library or one clump CSV: exact masses from --density and the
-// union of the spheres, units, seed 000's mass equivalence, LAMMPS molecule templates.
+// union of the spheres, units, Jin et al. 2017's mass equivalence, LAMMPS molecule templates.
 #include "cli_helpers.h"
 
 #include <gtest/gtest.h>
@@ -101,8 +101,8 @@ TEST(CliExportTemplates, ClumpCsvMassIsDensityTimesTheExactUnion) {
 }
 
 // A library: every body's mass and moments are density × the library's exact clump volume and
-// unit-density moments; --mass mesh makes the mass density × V_mesh (seed 000 §2.2), for the
-// library and for one of its template CSVs (its mesh lies beside it).
+// unit-density moments; --mass mesh makes the mass density × V_mesh (Jin et al. 2017 §2.2), for
+// the library and for one of its template CSVs (its mesh lies beside it).
 TEST(CliExportTemplates, LibraryAndTemplateMassesAndMeshEquivalence) {
   const fs::path d = scratch();
   ASSERT_NO_FATAL_FAILURE(build_tiny_library(d));

@@ -98,6 +98,30 @@ TEST(CliFaults, SpecimenRefusesAStageRecordThatFailsItsChecksum) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// SIGTERM once the first stage is recorded, then --resume: the same bytes as a run never
+// stopped (the shared tiny specimen). The short sibling, for the sanitizer pass, of
+// Cli.SpecimenSameForAnyThreadCountAndAfterAKill (label long).
+TEST(CliFaults, SpecimenStoppedAfterItsFirstStageResumesToTheSameBytes) {
+  const fs::path d = scratch();
+  const fs::path recipe = tiny_specimen_recipe(d);
+  const fs::path out = d / "spec",
+                 record = d / "spec.partial" / "checkpoints" / "calibration-0.done";
+  const std::string start = std::string(CLUMPKIT_BINARY) + " specimen --quiet --recipe " +
+                            recipe.string() + " --out " + out.string();
+  const std::string script =
+      "(" + start + " >/dev/null 2>&1 & pid=$!; for i in $(seq 6000); do [ -e " + record.string() +
+      " ] && break; sleep 0.01; done; kill -TERM $pid; wait $pid)";
+  std::system(("bash -c '" + script + "'").c_str());
+  ASSERT_TRUE(fs::exists(record)) << "the run ended before its first stage record";
+  ASSERT_FALSE(fs::exists(out));
+  const Result r = run_cli(
+      "specimen --quiet --resume --recipe " + recipe.string() + " --out " + out.string(), d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const fs::path whole = shared_tiny_specimen();
+  for (const char* f : {"specimen.csv", "calibration.csv"})
+    EXPECT_EQ(slurp(out / f), slurp(whole / f)) << f;
+}
+
 // A library stopped by SIGTERM at a random time, then run again with the same command, ends
 // byte-identical to a run never stopped (twice, at times drawn afresh on every test run).
 TEST(CliFaults, LibraryStoppedAtRandomTimesEndsByteIdentical) {

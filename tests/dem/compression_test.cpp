@@ -16,9 +16,9 @@ namespace {
 
 // About 570 spheres of d = 10 mm ± 1 % in an 8 d cube at n = 0.40, compressed from 1.25 times
 // the size at 2e-5 strain per step (12,000 steps) to keep the test short.
-CompressionSpec small_spec(double lambda = 1.0) {
+CompressionSpec small_spec(double lambda = 1.0, double edge = 0.08) {
   CompressionSpec s;
-  s.size = Vec3::Constant(0.08 * lambda);
+  s.size = Vec3::Constant(edge * lambda);
   s.porosity = 0.40;
   s.classes = {{0.0099 * lambda, 0.0101 * lambda, 100.0, false}};
   s.soil_density = 2650;
@@ -88,7 +88,7 @@ TEST(DemCompression, ReachesTheTargetPorosityWithoutGradientAndIsThreadIndepende
 }
 
 TEST(DemCompression, ACopyAtTwiceTheSizeIsTheSameSpecimenScaledExactly) {
-  // Seed 004 eqs. 1–3 through the preparation: sizes ×2 with kn ∝ d (linear law, same kn_ref
+  // CTGU 2017 eqs. 1–3 through the preparation: sizes ×2 with kn ∝ d (linear law, same kn_ref
   // and d_ref) and every length of the algorithm relative to the specimen's, so the copy's
   // positions are 2× the original's bit for bit, and its stresses equal.
   const CompressionResult a = build(small_spec(1.0), 2);
@@ -116,4 +116,24 @@ TEST(DemCompression, BadSpecsAreRefused) {
   s.shape = CompressionSpec::Shape::cylinder;  // size must be (diameter, diameter, height)
   s.size = Vec3(0.08, 0.06, 0.08);
   EXPECT_THROW(compress_specimen(s), InvalidInput);
+}
+
+TEST(DemCompression, FiveDiameterCubeIsExactForAnyThreadsAndAtTwiceTheSize) {
+  // The two tests above on a 5 d cube (about 140 spheres) in one, for the sanitizer pass (they
+  // are labelled long there): exact porosity, the same bytes on 2 threads, a copy at λ = 2.
+  const CompressionResult a = build(small_spec(1.0, 0.05), 1);
+  const CompressionResult b = build(small_spec(1.0, 0.05), 2);
+  const CompressionResult c = build(small_spec(2.0, 0.05), 2);
+  ASSERT_GT(a.world.bodies().size(), 100u);
+  EXPECT_NEAR(a.porosity, 0.40, 1e-12);
+  EXPECT_GT(a.mean_stress, 0.0);
+  ASSERT_EQ(b.world.bodies().size(), a.world.bodies().size());
+  ASSERT_EQ(c.world.bodies().size(), a.world.bodies().size());
+  for (std::size_t k = 0; k < a.world.bodies().size(); ++k) {
+    ASSERT_EQ(b.world.bodies()[k].position, a.world.bodies()[k].position) << "body " << k;
+    ASSERT_EQ(c.world.bodies()[k].position, 2.0 * a.world.bodies()[k].position) << "body " << k;
+  }
+  EXPECT_EQ(b.mean_stress, a.mean_stress);
+  EXPECT_EQ(c.mean_stress, a.mean_stress);
+  EXPECT_EQ(c.relax_steps, a.relax_steps);
 }

@@ -156,3 +156,17 @@ TEST(DemGolden, SettlingPackingSortedEvery1000Steps) {
   EXPECT_EQ(one, run(w, 2000, 2)) << "thread count changed the bits";
   EXPECT_EQ(hex(one), "0xdaf2bff1c15015c2") << "golden hash of the sorted settled packing changed";
 }
+
+// The sorted settling packing in small (4 layers of the same container: a quarter of the bodies,
+// 27,000 steps): the dense-contact kernels, sorting and the 2-thread split in seconds,
+// for the sanitizer pass, which leaves the two above out (label long, tests/long_tests.cmake).
+TEST(DemGolden, SmallSettlingPackingSorted) {
+  World w = spheres(1.02, 4);
+  w.options().timestep = 1e-5;
+  w.options().sort_every = 1000;
+  w.step(25000);
+  ASSERT_GT(w.contacts().size(), w.bodies().size());
+  const std::uint64_t one = run(w, 2000, 1);
+  EXPECT_EQ(one, run(w, 2000, 2)) << "thread count changed the bits";
+  EXPECT_EQ(hex(one), "0x0b67d93277e00698") << "golden hash of the small sorted packing changed";
+}

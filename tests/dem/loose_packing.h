@@ -16,7 +16,7 @@ namespace clumpkit::dem::test {
 /// spacing 2.2·r0, the box one spacing wider than the lattice; gravity off, μ = 0.5, local
 /// damping 0.3. Everything of length is multiplied by `lambda` (radii, positions, skin), kn by
 /// `lambda` unless linear scaling does it through the diameters, dt by `lambda`; so a run at λ
-/// is the run at 1 seen at a λ-times larger scale (zones.md §3).
+/// is the run at 1 seen at a λ-times larger scale (CTGU 2017 eqs. 1–3).
 struct LoosePacking {
   World world;
   CuboidCell cell;

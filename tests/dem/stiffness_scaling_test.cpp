@@ -1,5 +1,5 @@
 // Size-scaled contact stiffness (issue 16): the series rule, and exact similarity of a scaled
-// packing (zones.md §3, experiment Z1): a hidden absolute length anywhere in the engine breaks it.
+// packing (CTGU 2017 eqs. 1–3): a hidden absolute length anywhere in the engine breaks it.
 #include "dem/contact.h"
 #include "dem/scale.h"
 #include "dem/stress.h"
@@ -24,10 +24,10 @@ TEST(DemStiffnessScaling, SeriesRuleOfSizes) {
   EXPECT_EQ(wall_stiffness_factor(p, 0.03), 1.0);
   p.scaling = StiffnessScaling::linear;
   p.d_ref = 0.01;
-  // Equal sizes: kn_ref·d/d_ref (seed 004 Table 1: 30 mm → 2.4e8, 60 mm → 4.8e8).
+  // Equal sizes: kn_ref·d/d_ref (CTGU 2017 Table 1: 30 mm → 2.4e8, 60 mm → 4.8e8).
   EXPECT_NEAR(p.kn * pair_stiffness_factor(p, 0.03, 0.03), 2.4e8, 1e-6);
   EXPECT_NEAR(p.kn * pair_stiffness_factor(p, 0.06, 0.06), 4.8e8, 1e-6);
-  // Two particle springs 2·kn_ref·d/d_ref in series (zones.md §3: 6–18 mm at 5e5 → 7.5e5).
+  // Two particle springs 2·kn_ref·d/d_ref in series (6 and 18 mm, 5e5 at 6 mm → 7.5e5).
   ContactParams q = p;
   q.kn = 5e5;
   q.d_ref = 0.006;

@@ -1,5 +1,5 @@
-// Seed 004's Table 1 at CI size (issue 16 acceptance 3, its CI variant): 10 and 20 mm spheres in
-// cubes of 12 diameters (~2,000 spheres; 8 gave porosity 0.42 with loose wall layers), the
+// CTGU 2017's Table 1 at CI size (issue 16 acceptance 3, its CI variant): 10 and 20 mm spheres
+// in cubes of 12 diameters (~2,000 spheres; 8 gave porosity 0.42 with loose wall layers), the
 // bundled recipes with their lengths and rates scaled, #2 prepared to #1's tested porosity as
 // in the bench; in the `quick` label, outside the sanitizer pass. The full table (10/30/60 mm,
 // 16 diameters) is tests/bench/table1.sh.
@@ -69,7 +69,7 @@ nlohmann::json run_case(const fs::path& dir, const std::string& name, const std:
   return nlohmann::json::parse(slurp(dir / name / "report.json"));
 }
 
-// Seed 004's specimens have the same void ratio when tested: a specimen of diameter d under
+// CTGU 2017's specimens have the same void ratio when tested: a specimen of diameter d under
 // `law` prepared at the porosity (secant search, as tests/bench/table1.sh) whose tested porosity
 // is `target` within 3e-4; returns its report.json.
 nlohmann::json matched_case(const fs::path& dir, const std::string& name, double d, int seed,
@@ -126,7 +126,7 @@ TEST(CliQuickTable1, ConstantStiffnessHalvesTheModulusAtTwiceTheSizeAndScaledSti
     EXPECT_TRUE((*r)["consolidated"].get<bool>());
     EXPECT_GT(young(*r), 0.0);
   }
-  // zones.md §3: at a fixed fabric the modulus goes as kn/d, so constant kn at twice the size
+  // At a fixed fabric the modulus goes as kn/d (affine estimate), so constant kn at twice the size
   // gives at least half the modulus; the packing is not a fixed fabric, though: at 5 MPa its
   // contacts are relatively twice as soft (κ = kn/(p·d) 800 against 1,600), so at the same
   // tested porosity it holds more contacts (and, prepared alike, it would be tested denser: 0.71

@@ -220,7 +220,7 @@ TEST(DescriptorsFixtures, LocalMeshesAreClosedAndOutward) {
   EXPECT_NEAR(signed_volume(ring_mesh()), 8.0, 1e-12);
 }
 
-// ---- Sphericity (oracles.md, shape descriptors) ----
+// ---- Sphericity (closed-form shape descriptors) ----
 
 TEST(Descriptors, SphericityOfCube) {
   EXPECT_NEAR(describe(box_mesh(1, 1, 1)).sphericity, 0.805995977008, 1e-9);

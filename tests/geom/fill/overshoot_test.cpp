@@ -1,7 +1,7 @@
 // The overshoot contract (fill --max-overshoot): the ledger against analytic sphere caps, and
-// every fill of the seed-000 block and the 2:1:1 ellipsoid from 10 to 500 spheres kept under its
-// bound, measured independently of the fill: points of a fine lattice in the spheres' outer
-// shells classified by a 7-ray vote.
+// every fill of the Jin et al. 2017 block and the 2:1:1 ellipsoid from 10 to 500 spheres kept
+// under its bound, measured independently of the fill: points of a fine lattice in the spheres'
+// outer shells classified by a 7-ray vote.
 #include "geom/fill/overshoot.h"
 #include "geom/fill/fill.h"
 #include "geom/mesh/mesh_index.h"

@@ -1,5 +1,5 @@
-// refine: the same surface with more triangles; a fill of the refined seed-000 block covers
-// what the original's does (issue 17 acceptance 1).
+// refine: the same surface with more triangles; a fill of the refined Jin et al. 2017 block
+// covers what the original's does (issue 17 acceptance 1).
 #include "geom/mesh/refine.h"
 #include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"

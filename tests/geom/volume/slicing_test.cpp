@@ -92,7 +92,8 @@ void expect_moments_near(const SliceMoments& got, const SliceMoments& want, doub
   EXPECT_NEAR(got.mxy, want.mxy, tol);
 }
 
-// Seeded uniform in [a, b) from raw 53-bit output (no std:: distributions, see design.md).
+// Seeded uniform in [a, b) from raw 53-bit output (no std:: distributions: their output differs
+// between standard libraries).
 struct Uniform {
   std::mt19937_64 gen;
   explicit Uniform(std::uint64_t seed) : gen(seed) {}
@@ -174,7 +175,7 @@ TEST(UnionOfDisks, RandomDisksMatchStripReference) {
   }
 }
 
-// ---- union_properties_by_slicing: oracles C1–C11 (docs/oracles.md) ----
+// ---- union_properties_by_slicing: closed-form oracles C1–C11 (as in union_of_balls_test) ----
 
 struct Oracle {
   const char* id;

@@ -32,7 +32,7 @@ double ball_area(double r) {
   return 4.0 * kPi * r * r;
 }
 
-// One row of docs/oracles.md (C1–C11): volume, centroid, principal inertia (axis-aligned,
+// One closed-form oracle (C1–C11): volume, centroid, principal inertia (axis-aligned,
 // off-diagonal terms zero), and where known in closed form the boundary area.
 struct Oracle {
   std::string id;

@@ -1,0 +1,34 @@
+# Read by ctest after the discovered GoogleTest cases (tests/CMakeLists.txt): the tests that take
+# over a minute under AddressSanitizer get the label `long`. scripts/test runs them in the Release
+# pass only; under the sanitizers (ctest -LE "quick|long") the test named after each covers the
+# same code path in seconds. Costs under ASan + UBSan on 2 cores: tests/sanitize/CTestCostData.txt.
+set(clumpkit_long_tests
+  # 2 builds of the tiny specimen, a SIGKILL and a SIGINT with resumes (412 s under ASan) ->
+  # CliFaults.SpecimenStoppedAfterItsFirstStageResumesToTheSameBytes (stopped and resumed),
+  # DemPhysics.ResultsAreBitIdenticalForOneAndTwoThreads (thread count)
+  Cli.SpecimenSameForAnyThreadCountAndAfterAKill
+  # element tests through the CLI (140-280 s each) -> DemElementTest.* (the same drive on a
+  # small compressed cube, 1 and 2 threads) and CliElementTest.BundledTestRecipeParses (the job
+  # on the tiny specimen, to 0.2 % strain)
+  CliElementTest.TriaxialHasAPeakAndTheSameBytesForOneAndTwoThreads
+  CliElementTest.IsotropicAndOedometerGiveModuliWithTheOedometerStiffer
+  CliElementTest.CompressedCuboidAndItsScaledCopyTestTheSameBitForBit
+  CliElementTest.SpecimenScaledByTwoTestsTheSameBitForBit
+  # similarity of compressed packings (100-200 s) -> DemStiffnessScaling.ScaledCopyMidRun...
+  DemStiffnessScaling.PackingScaledByPowersOfTwoIsBitwiseSimilar
+  DemStiffnessScaling.PackingScaledByThreeIsSimilarWithinRounding
+  # gravity deposition of 150 spheres to equilibrium (166 s) ->
+  # Deposition.ThirtySpheresSettleBitIdenticalForThreads
+  Deposition.SettlesInsideTheCylinderToARandomPackBitIdenticalForThreads
+  # golden hashes of a settling pack, unsorted and sorted (150 s each) ->
+  # DemGolden.SmallSettlingPackingSorted (4 layers instead of 16), FallingSpheres, FallingClumps
+  DemGolden.SettlingPacking
+  DemGolden.SettlingPackingSortedEvery1000Steps
+  # compression of 570 spheres (80 s each) ->
+  # DemCompression.FiveDiameterCubeIsExactForAnyThreadsAndAtTwiceTheSize
+  DemCompression.ReachesTheTargetPorosityWithoutGradientAndIsThreadIndependent
+  DemCompression.ACopyAtTwiceTheSizeIsTheSameSpecimenScaledExactly
+)
+foreach(t IN LISTS clumpkit_long_tests)
+  set_tests_properties(${t} PROPERTIES LABELS long)
+endforeach()
