@@ -1,7 +1,7 @@
 // Checks on rendered pictures shared by the io and end-to-end tests: ink in a region.
 #pragma once
 
-#include "io/png.h"
+#include "io/formats/png.h"
 
 namespace clumpkit::test {
 

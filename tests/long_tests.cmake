@@ -14,6 +14,10 @@ set(clumpkit_long_tests
   CliElementTest.IsotropicAndOedometerGiveModuliWithTheOedometerStiffer
   CliElementTest.CompressedCuboidAndItsScaledCopyTestTheSameBitForBit
   CliElementTest.SpecimenScaledByTwoTestsTheSameBitForBit
+  # `test oedometer --save-consolidated` on the tiny specimen, then LAMMPS on it (110 s) ->
+  # CliElementTest.BundledTestRecipeParses (--save-consolidated),
+  # CliImport.LammpsRoundTripKeepsTheMeasurements (export, LAMMPS, import)
+  CliImport.LammpsOedometerFromTheSavedConsolidatedStateHasClumpkitsModulus
   # similarity of compressed packings (100-200 s) -> DemStiffnessScaling.ScaledCopyMidRun...
   DemStiffnessScaling.PackingScaledByPowersOfTwoIsBitwiseSimilar
   DemStiffnessScaling.PackingScaledByThreeIsSimilarWithinRounding

@@ -99,11 +99,4 @@ void warning(const std::string& message) {
   std::fprintf(stderr, "clumpkit: warning: %s\n", message.c_str());
 }
 
-void check_not_input(const std::string& out, const std::string& option, const std::string& in) {
-  std::error_code ec;  // hard links are the same file too
-  if (std::filesystem::equivalent(out, in, ec) || lies_within(out, in))
-    throw InvalidInput(option + " " + out + " is the input " + in +
-                       ", which would be overwritten: choose another output");
-}
-
 }  // namespace clumpkit::cli

@@ -67,8 +67,4 @@ double max_memory_bytes(double gib);
 /// Writes one warning line "clumpkit: warning: ..." to stderr (the command still succeeds).
 void warning(const std::string& message);
 
-/// Throws InvalidInput when the output file `out` (given as `option`) is the input file `in`
-/// (the same file, whatever the spelling of its path), so an input is never overwritten.
-void check_not_input(const std::string& out, const std::string& option, const std::string& in);
-
 }  // namespace clumpkit::cli

@@ -1,8 +1,8 @@
 // `clumpkit describe MESH`: shape descriptors of a closed mesh.
 #include "geom/descriptors/descriptors.h"
 #include "io/cli/common.h"
-#include "io/mesh_io.h"
-#include "io/report.h"
+#include "io/formats/mesh_io.h"
+#include "io/reports/report.h"
 
 #include <cstdio>
 #include <iostream>

@@ -2,6 +2,7 @@
 #include "io/pipeline/export.h"
 #include "geom/errors.h"
 #include "io/cli/common.h"
+#include "io/export/formats.h"
 
 #include <nlohmann/json.hpp>
 
@@ -19,23 +20,17 @@ void register_export(CLI::App& app) {
     ExportOptions options;
   };
   auto o = std::make_shared<Opts>();
-  auto* c = app.add_subcommand(
-      "export",
+  std::string about =
       "A specimen directory (from `clumpkit specimen`), a clump library (from `clumpkit "
       "library`: its templates) or one clump CSV into a DEM engine, with clumpkit's exact "
       "mass properties forced on the engine. A library or clump is laid out one body per "
       "template on a grid in a container made for it; for lammps it also gets molecule "
-      "templates (clump_NNNNN.mol, molecules.csv) and in.deposit (fix deposit ... mol). "
-      "lammps: data.specimen, bodies.infile (fix "
-      "rigid/small infile), bodies_map.csv and in.clumpkit (gravity settle in the container; "
-      "runs unchanged with mpirun -np N). liggghts: templates.liggghts (use_density: exact mass "
-      "and "
-      "inertia), one insertion per body, soil.liggghts, bodies_map.csv and in.clumpkit. yade: "
-      "sphere files, specimen_bodies.txt, "
-      "bodies_map.csv and run_clumpkit.py (yade -n -x). pfc: clumpkit.p3dat (PFC 7 syntax, "
-      "templates of unit density) and bodies_map.csv. vtk: specimen.vtp and glyph_clumpkit.py. "
-      "Written in DIR.partial, renamed at the end.");
-  c->add_option("FORMAT", o->format, "lammps, liggghts, yade, pfc or vtk")->required();
+      "templates (clump_NNNNN.mol, molecules.csv) and in.deposit (fix deposit ... mol).";
+  for (const ExportFormat& f : export_formats())
+    about += std::string(" ") + f.name + ": " + f.files + ".";
+  about += " Written in DIR.partial, renamed at the end.";
+  auto* c = app.add_subcommand("export", about);
+  c->add_option("FORMAT", o->format, export_format_names(" or "))->required();
   c->add_option("SRC", o->source, "Specimen directory, library directory or clump CSV")->required();
   c->add_option("--out", o->out, "Output directory")->required();
   c->add_option("--test", o->test,

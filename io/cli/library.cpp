@@ -1,7 +1,7 @@
 // `clumpkit library --recipe R.toml --out DIR`: shapes + sphere fill + fidelity per particle.
 #include "io/pipeline/library.h"
 #include "io/cli/common.h"
-#include "io/recipe.h"
+#include "io/recipes/recipe.h"
 
 #include <nlohmann/json.hpp>
 

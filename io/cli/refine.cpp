@@ -2,8 +2,9 @@
 #include "geom/mesh/refine.h"
 #include "geom/errors.h"
 #include "io/cli/common.h"
-#include "io/mesh_io.h"
-#include "io/report.h"
+#include "io/formats/mesh_io.h"
+#include "io/pipeline/job.h"
+#include "io/reports/report.h"
 
 #include <cstdio>
 #include <memory>

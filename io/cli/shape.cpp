@@ -6,8 +6,8 @@
 #include "geom/shapes/polyhedron.h"
 #include "geom/shapes/primitives.h"
 #include "io/cli/common.h"
-#include "io/mesh_io.h"
-#include "io/report.h"
+#include "io/formats/mesh_io.h"
+#include "io/reports/report.h"
 
 #include <cstdio>
 #include <iostream>

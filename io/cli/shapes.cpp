@@ -1,7 +1,7 @@
 // `clumpkit shapes --recipe R.toml --out DIR`: a shape library from a recipe.
 #include "io/pipeline/shapes.h"
 #include "io/cli/common.h"
-#include "io/recipe.h"
+#include "io/recipes/recipe.h"
 
 #include <nlohmann/json.hpp>
 

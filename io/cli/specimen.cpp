@@ -1,7 +1,7 @@
 // `clumpkit specimen --recipe R.toml --out DIR`: a DEM specimen at a target relative density.
 #include "io/pipeline/specimen.h"
 #include "io/cli/common.h"
-#include "io/specimen_recipe.h"
+#include "io/recipes/specimen_recipe.h"
 
 #include <nlohmann/json.hpp>
 

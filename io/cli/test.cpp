@@ -2,7 +2,7 @@
 #include "geom/format.h"
 #include "io/cli/common.h"
 #include "io/pipeline/element_test.h"
-#include "io/test_recipe.h"
+#include "io/recipes/test_recipe.h"
 
 #include <nlohmann/json.hpp>
 

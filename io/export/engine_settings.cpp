@@ -2,7 +2,7 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
-#include "io/atomic_file.h"
+#include "io/base/atomic_file.h"
 
 #include <algorithm>
 #include <cmath>

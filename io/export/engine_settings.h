@@ -2,8 +2,8 @@
 // specimen's sizes, and bodies in their own frame.
 #pragma once
 
-#include "dem/contact.h"
-#include "io/specimen_io.h"
+#include "dem/core/contact.h"
+#include "io/formats/specimen_csv.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,12 +1,13 @@
 #include "io/export/export_source.h"
 
-#include "dem/deposition.h"
+#include "dem/specimen/deposition.h"
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "geom/mesh/mesh.h"
 #include "geom/template/clump_template.h"
-#include "io/clump_io.h"
-#include "io/mesh_io.h"
+#include "io/formats/clump_io.h"
+#include "io/formats/library_table.h"
+#include "io/formats/mesh_io.h"
 #include "io/pipeline/job.h"
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 // clump's pose refitted to its atoms.
 #pragma once
 
-#include "io/specimen_io.h"
+#include "io/formats/specimen_csv.h"
 
 #include <string>
 #include <vector>

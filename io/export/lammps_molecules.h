@@ -3,7 +3,7 @@
 #pragma once
 
 #include "io/export/engine_settings.h"
-#include "io/specimen_io.h"
+#include "io/formats/specimen_csv.h"
 
 #include <string>
 #include <vector>

@@ -1,6 +1,7 @@
 #include "io/export/vtk.h"
 
-#include "io/atomic_file.h"
+#include "io/base/atomic_file.h"
+#include "io/formats/specimen_vtp.h"
 
 #include <filesystem>
 

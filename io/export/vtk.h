@@ -2,7 +2,7 @@
 // glyphs it into true-size spheres (python3-vtk9 or ParaView's pvpython).
 #pragma once
 
-#include "io/specimen_io.h"
+#include "io/formats/specimen_csv.h"
 
 #include <string>
 #include <vector>

@@ -1,15 +1,16 @@
 #include "io/pipeline/element_test.h"
 
-#include "dem/stress.h"
-#include "dem/timestep.h"
+#include "dem/core/timestep.h"
+#include "dem/measure/stress.h"
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "geom/hash.h"
-#include "io/atomic_file.h"
-#include "io/checkpoint.h"
+#include "io/base/atomic_file.h"
+#include "io/base/text.h"
+#include "io/formats/checkpoint.h"
+#include "io/formats/specimen_csv.h"
 #include "io/pipeline/job.h"
-#include "io/plot.h"
-#include "io/specimen_io.h"
+#include "io/reports/plot.h"
 
 #include <algorithm>
 #include <chrono>
@@ -167,7 +168,7 @@ std::optional<dem::ElementTestState> read_state(const fs::path& path,
     return std::nullopt;
   }
   try {
-    nlohmann::json j = nlohmann::json::parse(read_file_bytes(path.string()));
+    nlohmann::json j = nlohmann::json::parse(read_file(path.string()));
     const std::string stored = j.value("checksum", std::string());
     j.erase("checksum");
     if (stored != fnv1a_hex(j.dump())) {
@@ -179,7 +180,7 @@ std::optional<dem::ElementTestState> read_state(const fs::path& path,
       return std::nullopt;
     }
     if (!fs::exists(checkpoint) ||
-        j.at("checkpoint").get<std::string>() != fnv1a_hex(read_file_bytes(checkpoint.string()))) {
+        j.at("checkpoint").get<std::string>() != fnv1a_hex(read_file(checkpoint.string()))) {
       why = checkpoint.string() + " is not the checkpoint " + path.string() + " was saved with";
       return std::nullopt;
     }
@@ -280,33 +281,26 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
   Fnv1a fp;
   fp.add(std::string_view(kind_name(kind)));
   fp.add(std::string_view(recipe.text));
-  fp.add(std::string_view(read_file_bytes((src / "specimen.csv").string())));
-  fp.add(std::string_view(read_file_bytes(report_path)));
+  fp.add(std::string_view(read_file((src / "specimen.csv").string())));
+  fp.add(std::string_view(read_file(report_path)));
   fp.add(std::string_view(CLUMPKIT_VERSION));
   const std::string fingerprint = fp.hex();
 
-  dem::WorldOptions o;
-  o.gravity = Vec3::Zero();  // element tests: stress far above the specimen's weight
-  o.sort_every = 1000;       // spatial order for locality (as LAMMPS)
-  o.contact = contact_law(spec_report, report_path, recipe);
-  double d_sum = 0, r_min = std::numeric_limits<double>::max(), z_lo = 1e300, z_hi = -1e300;
-  double rho_sum = 0, vol_sum = 0;
+  std::vector<dem::Body> bodies;
+  bodies.reserve(rows.size());
+  double z_lo = 1e300, z_hi = -1e300;
   for (const SpecimenBody& b : rows) {
+    bodies.push_back(dem_body(b));
     for (const Sphere& s : b.spheres) {
-      r_min = std::min(r_min, s.radius);
       z_lo = std::min(z_lo, s.center.z() - s.radius);
       z_hi = std::max(z_hi, s.center.z() + s.radius);
     }
-    d_sum += std::cbrt(6.0 * b.volume / M_PI);
-    rho_sum += b.mass;
-    vol_sum += b.volume;
   }
-  const double d_mean = d_sum / double(rows.size()), density = rho_sum / vol_sum;
-  o.skin = 0.2 * r_min;  // relative to the specimen, so a scaled copy runs alike
-  // Inertial number I = ε̇·d·sqrt(ρ/p): quasi-static below 1e-3, dense flow above 1e-2
-  // (GDR MiDi 2004). Refused before anything is written unless the user asks for a dynamic test.
+  const dem::WorldOptions o =
+      dem::element_test_world_options(bodies, contact_law(spec_report, report_path, recipe));
+  // Refused before anything is written unless the user asks for a dynamic test.
   const double inertial =
-      recipe.settings.strain_rate * d_mean * std::sqrt(density / recipe.settings.confining);
+      dem::inertial_number(bodies, recipe.settings.strain_rate, recipe.settings.confining);
   if (inertial > 1e-2 && !options.allow_dynamic)
     throw InvalidInput(recipe.path +
                        ": test.strain_rate: " + format_number(recipe.settings.strain_rate) +
@@ -345,7 +339,7 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
   dem::World world = saved ? std::move(*resumed_world) : dem::World(o);
   dem::ElementTestState state = saved ? *saved : dem::ElementTestState{};
   if (!saved) {
-    for (const SpecimenBody& b : rows) world.add_body(dem_body(b));
+    for (dem::Body& b : bodies) world.add_body(std::move(b));
     cell = test_cell(world, spec_report, report_path, z_lo, z_hi);
 
     world.options().timestep = recipe.timestep_safety * dem::critical_timestep(world);
@@ -358,7 +352,7 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
     // writes leaves a pair that does not match, which a resume refuses (and starts afresh).
     save_checkpoint(ckpt.string(), world);
     nlohmann::json j = state_json(state, cell, fingerprint);
-    j["checkpoint"] = fnv1a_hex(read_file_bytes(ckpt.string()));
+    j["checkpoint"] = fnv1a_hex(read_file(ckpt.string()));
     j["checksum"] = fnv1a_hex(j.dump());
     write_file_atomically(state_path.string(), [&](std::ostream& f) { f << j.dump() << "\n"; });
   };

@@ -2,9 +2,9 @@
 // servo-controlled cell, written as curve.csv, curve.png, report.json and manifest.json.
 #pragma once
 
-#include "dem/element_test.h"
+#include "dem/lab/element_test.h"
 #include "geom/progress.h"
-#include "io/test_recipe.h"
+#include "io/recipes/test_recipe.h"
 
 #include <nlohmann/json.hpp>
 
@@ -47,8 +47,8 @@ struct ElementTestJobResult {
   std::string afresh_reason;
 };
 
-/// Work goes to DIR.partial: test.ckpt (the world, io/checkpoint.h) and test-state.json (where
-/// the test is, its curve so far, a fingerprint of its inputs and a checksum), saved every
+/// Work goes to DIR.partial: test.ckpt (the world, io/formats/checkpoint.h) and test-state.json
+/// (where the test is, its curve so far, a fingerprint of its inputs and a checksum), saved every
 /// checkpoint_seconds and when the interrupter asks to stop (then Interrupted is thrown, saying
 /// to --resume). A resumed test ends with the same bytes as one never stopped.
 ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string& specimen_dir,

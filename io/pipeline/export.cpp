@@ -2,14 +2,9 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
-#include "io/atomic_file.h"
+#include "io/base/atomic_file.h"
 #include "io/export/export_source.h"
-#include "io/export/lammps.h"
-#include "io/export/lammps_molecules.h"
-#include "io/export/liggghts.h"
-#include "io/export/pfc.h"
-#include "io/export/vtk.h"
-#include "io/export/yade.h"
+#include "io/export/formats.h"
 #include "io/pipeline/job.h"
 
 #include <nlohmann/json.hpp>
@@ -25,10 +20,10 @@ namespace fs = std::filesystem;
 
 ExportResult run_export(const std::string& format, const std::string& source,
                         const std::string& out_dir, const ExportOptions& options) {
-  const std::vector<std::string> formats = {"lammps", "liggghts", "yade", "pfc", "vtk"};
-  if (std::find(formats.begin(), formats.end(), format) == formats.end())
-    throw InvalidInput("export: unknown format '" + format +
-                       "' (one of lammps, liggghts, yade, pfc, vtk)");
+  const ExportFormat* engine = find_export_format(format);
+  if (!engine)
+    throw InvalidInput("export: unknown format '" + format + "' (one of " + export_format_names() +
+                       ")");
   if (options.lammps.oedometer && format != "lammps")
     throw InvalidInput("export: --test oedometer is only available for lammps, not " + format);
   if (options.lammps.oedometer &&
@@ -73,28 +68,9 @@ ExportResult run_export(const std::string& format, const std::string& source,
   result.bodies = bodies.size();
   for (const SpecimenBody& b : bodies) result.spheres += b.spheres.size();
   try {
-    std::vector<std::string> written;
-    if (format == "lammps") {
-      written = write_lammps_export(bodies, settings, staging.string(), options.lammps);
-      if (src.templates) {
-        const std::vector<std::string> mol =
-            write_lammps_molecules(bodies, settings, staging.string());
-        written.insert(written.end(), mol.begin(), mol.end());
-      }
-      result.run = lammps_run_command(1);
-    } else if (format == "liggghts") {
-      written = write_liggghts_export(bodies, settings, staging.string());
-      result.run = liggghts_run_command();
-    } else if (format == "yade") {
-      written = write_yade_export(bodies, settings, staging.string());
-      result.run = yade_run_command();
-    } else if (format == "pfc") {
-      written = write_pfc_export(bodies, settings, staging.string());
-      result.run = pfc_run_command();
-    } else {
-      written = write_vtk_export(bodies, staging.string());
-      result.run = vtk_run_command();
-    }
+    const std::vector<std::string> written =
+        engine->write(src, bodies, staging.string(), options.lammps);
+    result.run = engine->run();
     const nlohmann::json& manifest = src.manifest;
     nlohmann::ordered_json m =
         manifest.is_object()

@@ -24,8 +24,8 @@ struct ExportOptions {
 
 /// Exports `source` (a specimen directory, a library directory or one clump CSV:
 /// read_export_source) in `format` into `out_dir` (written in DIR.partial and renamed at the
-/// end, the rule of job.h), with a manifest.json naming the source. Formats: "lammps",
-/// "liggghts", "yade", "pfc", "vtk" (io/export/*.h); a library or clump CSV also gets LAMMPS
+/// end, the rule of job.h), with a manifest.json naming the source. Formats: export_formats()
+/// (io/export/formats.h: lammps, liggghts, yade, pfc, vtk); a library or clump CSV also gets LAMMPS
 /// molecule templates (io/export/lammps_molecules.h). Throws InvalidInput for an unknown format,
 /// a bad option or a bad source (naming it), before anything is written.
 ExportResult run_export(const std::string& format, const std::string& source,

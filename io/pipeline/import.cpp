@@ -1,13 +1,15 @@
 #include "io/pipeline/import.h"
 
-#include "dem/specimen.h"
+#include "dem/specimen/specimen.h"
 #include "geom/errors.h"
-#include "io/atomic_file.h"
+#include "io/base/atomic_file.h"
 #include "io/export/engine_settings.h"
 #include "io/export/lammps_import.h"
+#include "io/formats/specimen_csv.h"
+#include "io/formats/specimen_vtp.h"
 #include "io/pipeline/job.h"
-#include "io/plot.h"
-#include "io/specimen_io.h"
+#include "io/reports/plot.h"
+#include "io/reports/specimen_report.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,7 +1,8 @@
 #include "io/pipeline/job.h"
 
 #include "geom/errors.h"
-#include "io/report.h"
+#include "io/base/text.h"
+#include "io/reports/report.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -38,6 +39,13 @@ void check_output_spares(const std::string& dir, const std::string& input,
   if (lies_within(input, dir))
     throw InvalidInput("--out " + dir + " would replace " + what + " " + input +
                        ": choose another --out");
+}
+
+void check_not_input(const std::string& out, const std::string& option, const std::string& in) {
+  std::error_code ec;  // hard links are the same file too
+  if (fs::equivalent(out, in, ec) || lies_within(out, in))
+    throw InvalidInput(option + " " + out + " is the input " + in +
+                       ", which would be overwritten: choose another output");
 }
 
 void publish_directory(const std::string& staging, const std::string& dir) {
@@ -123,21 +131,12 @@ void for_each_particle(const ShapeRecipe& recipe, const std::vector<int>& fracti
 }
 
 nlohmann::json read_json_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw IoError(path + ": cannot open");
+  const std::string text = read_file(path, "JSON file");
   try {
-    return nlohmann::json::parse(in);
+    return nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {
     throw InvalidInput(path + ": not valid JSON (" + e.what() + ")");
   }
-}
-
-std::string read_file_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(path + ": cannot open");
-  std::stringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
 }
 
 std::string begin_staging(const std::string& dir) {

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "geom/progress.h"
-#include "io/recipe.h"
+#include "io/recipes/recipe.h"
 
 #include <nlohmann/json.hpp>
 
@@ -28,9 +28,6 @@ void for_each_particle(const ShapeRecipe& recipe, const std::vector<int>& fracti
 /// A JSON file of a clumpkit output (report.json, manifest.json). Throws IoError when it cannot
 /// be opened and InvalidInput naming it when it is not JSON.
 nlohmann::json read_json_file(const std::string& path);
-
-/// The bytes of a file. Throws IoError naming it when it cannot be opened.
-std::string read_file_bytes(const std::string& path);
 
 /// Fraction index of every particle of the recipe, in id order.
 std::vector<int> particle_fractions(const ShapeRecipe& recipe);
@@ -63,6 +60,10 @@ bool lies_within(const std::string& path, const std::string& dir);
 /// (the same path, whatever its spelling, or a file or directory inside it); `what` names the
 /// input in the message (e.g. "the source").
 void check_output_spares(const std::string& dir, const std::string& input, const std::string& what);
+
+/// Throws InvalidInput when the output file `out` (given as `option`) is the input `in` (the
+/// same path, whatever its spelling, or a hard link to it) or lies inside it.
+void check_not_input(const std::string& out, const std::string& option, const std::string& in);
 
 /// Starts a job that resumes nothing: checks `dir` (check_output_directory), empties and creates
 /// DIR.partial and returns its path. Throws IoError when it cannot be created.

@@ -7,12 +7,14 @@
 #include "geom/hash.h"
 #include "geom/mesh/refine.h"
 #include "geom/template/clump_template.h"
-#include "io/atomic_file.h"
-#include "io/clump_io.h"
-#include "io/clump_vtp.h"
-#include "io/mesh_io.h"
-#include "io/report.h"
-#include "io/views.h"
+#include "io/base/atomic_file.h"
+#include "io/base/text.h"
+#include "io/formats/clump_io.h"
+#include "io/formats/clump_vtp.h"
+#include "io/formats/library_table.h"
+#include "io/formats/mesh_io.h"
+#include "io/reports/report.h"
+#include "io/reports/views.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -27,26 +29,6 @@ namespace fs = std::filesystem;
 namespace clumpkit {
 
 namespace {
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-const std::vector<std::string>& fidelity_columns() {
-  static const std::vector<std::string> c = {"spheres",
-                                             "clump_volume",
-                                             "covered_fraction",
-                                             "overshoot_fraction",
-                                             "surface_mean_distance",
-                                             "surface_max_distance",
-                                             "centroid_offset",
-                                             "inertia_error",
-                                             "overshoot_depth_max"};
-  return c;
-}
 
 // A particle record's checksum: FNV-1a 64 of its compact JSON without the field. A record
 // changed on disk (a flipped byte, an edit) no longer matches and is redone, never reused.
@@ -180,7 +162,8 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
                        fid.overshoot_fraction, fid.surface_mean_distance, fid.surface_max_distance,
                        fid.centroid_offset,    fid.inertia_error,         fid.overshoot_depth_max};
   auto& f = rec["fidelity"] = nlohmann::ordered_json::object();
-  for (std::size_t k = 0; k < fidelity_columns().size(); ++k) f[fidelity_columns()[k]] = fv[k];
+  for (std::size_t k = 0; k < library_fidelity_columns().size(); ++k)
+    f[library_fidelity_columns()[k]] = fv[k];
   f["clump_volume_method"] = fid.clump_volume_method;
   auto& t = rec["template"] = nlohmann::ordered_json::object();
   t["volume"] = tpl.mass.volume;
@@ -213,7 +196,7 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
   const fs::path out = out_dir + ".partial", parts = out / "particles";
   const fs::path stamp = out / "recipe.toml";
   std::error_code ec;
-  if (fs::exists(out) && !(fs::exists(stamp) && slurp(stamp) == recipe.text))
+  if (fs::exists(out) && !(fs::exists(stamp) && read_file(stamp.string()) == recipe.text))
     fs::remove_all(out, ec);
   remove_stray_temporaries(out.string());  // a killed run's half-written files
   fs::create_directories(parts, ec);
@@ -233,7 +216,7 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
     // A record that does not parse or fails its checksum (atomic writes cannot leave one, but
     // disks and users can) is redone and reported, never used.
     try {
-      nlohmann::ordered_json r = nlohmann::ordered_json::parse(slurp(rec));
+      nlohmann::ordered_json r = nlohmann::ordered_json::parse(read_file(rec.string()));
       const std::string stored = r.value("checksum", std::string());
       r.erase("checksum");
       if (stored == record_checksum(r)) {
@@ -259,37 +242,7 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
                       " for a rerun");
   }
 
-  // Parameter columns: union over particles, first-appearance order.
-  std::vector<std::string> params;
-  for (const auto& rec : records)
-    for (const auto& [k, v] : rec["parameters"].items())
-      if (std::find(params.begin(), params.end(), k) == params.end()) params.push_back(k);
-  write_file_atomically((out / "library.csv").string(), [&](std::ostream& o) {
-    o << "id,fraction,method,mesh,clump,attempts";
-    for (const auto& p : params) o << ",p_" << p;
-    for (const auto& c : descriptor_csv_columns()) o << "," << c;
-    for (const auto& c : fidelity_columns()) o << "," << c;
-    o << ",density_factor,I1,I2,I3,qw,qx,qy,qz,cx,cy,cz\n";
-    for (std::size_t i = 0; i < total; ++i) {
-      const auto& rec = records[i];
-      o << i << "," << csv_escape(rec["fraction"].get<std::string>()) << ","
-        << rec["method"].get<std::string>() << ",particles/" << id_name(i) << ".stl,particles/"
-        << id_name(i) << ".csv," << rec["attempts"].get<int>();
-      for (const auto& p : params) {
-        o << ",";
-        if (rec["parameters"].contains(p)) o << format_number(rec["parameters"][p].get<double>());
-      }
-      for (const auto& c : descriptor_csv_columns())
-        o << "," << format_number(rec["descriptors"][c].get<double>());
-      for (const auto& c : fidelity_columns())
-        o << "," << format_number(rec["fidelity"][c].get<double>());
-      const auto& t = rec["template"];
-      o << "," << format_number(t["density_factor"].get<double>());
-      for (const char* k : {"principal_moments", "orientation_wxyz", "centroid"})
-        for (const auto& v : t[k]) o << "," << format_number(v.get<double>());
-      o << "\n";
-    }
-  });
+  write_library_table((out / "library.csv").string(), records);
 
   write_pictures(out, records, options);
 

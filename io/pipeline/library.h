@@ -2,7 +2,7 @@
 #pragma once
 
 #include "io/pipeline/shapes.h"
-#include "io/recipe.h"
+#include "io/recipes/recipe.h"
 
 #include <string>
 #include <vector>
@@ -10,7 +10,7 @@
 namespace clumpkit {
 
 struct LibraryOptions {
-  /// Also write particles/NNNNN.png (four shaded views, io/views.h) and contact_sheet.png.
+  /// Also write particles/NNNNN.png (four shaded views, io/reports/views.h) and contact_sheet.png.
   bool png = false;
   bool vtp = false;  ///< also write particles/NNNNN.vtp (mesh and spheres for ParaView)
   /// Memory the particles being filled at once may share (bytes, 0: no limit): each fill gets

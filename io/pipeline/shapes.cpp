@@ -3,9 +3,9 @@
 #include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"
 #include "geom/mesh/refine.h"
-#include "io/atomic_file.h"
-#include "io/mesh_io.h"
-#include "io/report.h"
+#include "io/base/atomic_file.h"
+#include "io/formats/mesh_io.h"
+#include "io/reports/report.h"
 
 #include <tbb/parallel_for.h>
 #include <nlohmann/json.hpp>

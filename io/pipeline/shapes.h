@@ -2,7 +2,7 @@
 #pragma once
 
 #include "io/pipeline/job.h"
-#include "io/recipe.h"
+#include "io/recipes/recipe.h"
 
 #include <functional>
 #include <string>

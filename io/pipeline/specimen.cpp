@@ -2,12 +2,16 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
-#include "io/atomic_file.h"
+#include "io/base/atomic_file.h"
+#include "io/formats/library_table.h"
+#include "io/formats/specimen_csv.h"
+#include "io/formats/specimen_vtp.h"
 #include "io/pipeline/job.h"
 #include "io/pipeline/library.h"
 #include "io/pipeline/stage_files.h"
-#include "io/recipe.h"
-#include "io/specimen_io.h"
+#include "io/recipes/recipe.h"
+#include "io/recipes/specimen_spec.h"
+#include "io/reports/specimen_report.h"
 
 #include <cmath>
 #include <filesystem>

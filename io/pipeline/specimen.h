@@ -2,9 +2,9 @@
 // of `clumpkit specimen` in DIR, written in DIR.partial and renamed at the end.
 #pragma once
 
-#include "dem/specimen.h"
+#include "dem/specimen/specimen.h"
 #include "geom/progress.h"
-#include "io/specimen_recipe.h"
+#include "io/recipes/specimen_recipe.h"
 
 #include <nlohmann/json.hpp>
 

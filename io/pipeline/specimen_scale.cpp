@@ -2,9 +2,11 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
-#include "io/atomic_file.h"
+#include "io/base/atomic_file.h"
+#include "io/base/text.h"
+#include "io/formats/specimen_csv.h"
+#include "io/formats/specimen_vtp.h"
 #include "io/pipeline/job.h"
-#include "io/specimen_io.h"
 
 #include <cmath>
 #include <filesystem>
@@ -23,7 +25,7 @@ nlohmann::ordered_json run_specimen_scale(const std::string& specimen_dir, doubl
   const std::string report_path = (src / "report.json").string();
   std::vector<SpecimenBody> rows = read_specimen_csv((src / "specimen.csv").string());
   read_json_file(report_path);  // refuses a missing or malformed report, naming it
-  nlohmann::ordered_json rep = nlohmann::ordered_json::parse(read_file_bytes(report_path));
+  nlohmann::ordered_json rep = nlohmann::ordered_json::parse(read_file(report_path));
   if (!rep.is_object()) throw InvalidInput(report_path + ": not a JSON object");
 
   const double l2 = factor * factor, l3 = l2 * factor;

@@ -2,8 +2,9 @@
 
 #include "geom/errors.h"
 #include "geom/hash.h"
-#include "io/atomic_file.h"
-#include "io/checkpoint.h"
+#include "io/base/atomic_file.h"
+#include "io/base/text.h"
+#include "io/formats/checkpoint.h"
 
 #include <filesystem>
 #include <fstream>
@@ -45,9 +46,7 @@ void write_stage_record(const std::string& path, const dem::StageRecord& record)
 }
 
 dem::StageRecord read_stage_record(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(path + ": cannot read the stage record");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string bytes = read_file(path, "stage record");
   const std::size_t last = bytes.rfind("checksum ");
   if (last == std::string::npos || (last > 0 && bytes[last - 1] != '\n'))
     throw InvalidInput(path + ": stage record has no checksum line (corrupt or truncated)");

@@ -2,7 +2,7 @@
 // fingerprint, binary checkpoints for running stages and saved worlds, all written atomically.
 #pragma once
 
-#include "dem/stage_store.h"
+#include "dem/run/stage_store.h"
 
 #include <string>
 
@@ -12,7 +12,7 @@ namespace clumpkit {
 ///   spec.fingerprint      the build's fingerprint (a record),
 ///   STAGE.done            a finished stage's record: "key value" lines, then "checksum HEX"
 ///                         (FNV-1a 64 of the lines before it),
-///   STAGE.world           the world a finished stage ended with (io/checkpoint.h format),
+///   STAGE.world           the world a finished stage ended with (io/formats/checkpoint.h format),
 ///   STAGE.ckpt            the latest checkpoint of a running stage.
 /// With `resume`, open() accepts the directory only if its fingerprint is the build's (else
 /// InvalidInput naming both) and finished()/running() return what is there; a record whose

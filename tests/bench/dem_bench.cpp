@@ -24,10 +24,10 @@
 //   --sort 1000 by default; 0 times the unsorted orders only.
 //   FILE: output of run.sh (SUMMARY lines), for the ratio column. Env CLUMPKIT_DEM_BENCH_FULL=1
 //   is --full.
-#include "dem/state_hash.h"
-#include "dem/world.h"
+#include "dem/core/state_hash.h"
+#include "dem/core/world.h"
 #include "geom/random.h"
-#include "io/checkpoint.h"
+#include "io/formats/checkpoint.h"
 
 #include <tbb/global_control.h>
 #include <Eigen/Eigenvalues>

@@ -1,9 +1,9 @@
 // End-to-end tests of the clumpkit binary: outputs, determinism, exit codes and error lines.
 #include "cli_helpers.h"
 
-#include "io/clump_io.h"
-#include "io/mesh_io.h"
-#include "io/png.h"
+#include "io/formats/clump_io.h"
+#include "io/formats/mesh_io.h"
+#include "io/formats/png.h"
 
 #include <gtest/gtest.h>
 

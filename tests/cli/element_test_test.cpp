@@ -161,7 +161,7 @@ TEST(CliElementTest, SpecimenScaledByTwoTestsTheSameBitForBit) {
 
 TEST(CliElementTest, BundledTestRecipeParses) {
   // The bundled recipe against the tiny specimen, cut short by the recipe's own keys: it parses
-  // and runs (its full length is for the quick specimen).
+  // and runs (its full length is for the quick specimen), and saves its consolidated state.
   const fs::path d = scratch();
   ASSERT_NO_FATAL_FAILURE(build_tiny_specimen(d));
   std::string text =
@@ -170,11 +170,16 @@ TEST(CliElementTest, BundledTestRecipeParses) {
   text.replace(text.find("max_axial_strain = 0.2"), 22, "max_axial_strain = 0.002");
   write(d / "quick.toml", text);
   const Result r =
-      run_cli("test triaxial --quiet --specimen " + (d / "spec").string() + " --recipe " +
-                  (d / "quick.toml").string() + " --out " + (d / "tri").string(),
+      run_cli("test triaxial --quiet --save-consolidated --specimen " + (d / "spec").string() +
+                  " --recipe " + (d / "quick.toml").string() + " --out " + (d / "tri").string(),
               d);
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_TRUE(fs::exists(d / "tri" / "manifest.json"));
+  // The consolidated state, as a specimen the exports read (the sanitizer pass's check of
+  // --save-consolidated; CliImport.LammpsOedometerFromTheSavedConsolidatedState... runs it in
+  // LAMMPS, label long).
+  for (const char* f : {"specimen.csv", "report.json", "manifest.json"})
+    EXPECT_TRUE(fs::exists(d / "tri" / "consolidated" / f)) << f;
 }
 
 TEST(CliElementTest, CompressedCuboidAndItsScaledCopyTestTheSameBitForBit) {

@@ -1,7 +1,7 @@
 // `clumpkit export` to Yade, PFC and ParaView/VTK: each engine's files read back (by the real
 // engine where Debian has it, by a parser for PFC) against the specimen.
 #include "cli_helpers.h"
-#include "io/specimen_io.h"
+#include "io/formats/specimen_csv.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // `clumpkit export`: LAMMPS runs of the exported deck and the bad-input contract.
 #include "cli_helpers.h"
-#include "io/specimen_io.h"
+#include "io/formats/specimen_csv.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // End-to-end tests of the library's pictures and ParaView files (library --png --vtp).
 #include "cli_helpers.h"
 
-#include "io/clump_io.h"
-#include "io/mesh_io.h"
-#include "io/png.h"
+#include "io/formats/clump_io.h"
+#include "io/formats/mesh_io.h"
+#include "io/formats/png.h"
 #include "tests/image_checks.h"
 
 #include <gtest/gtest.h>

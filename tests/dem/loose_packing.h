@@ -1,11 +1,11 @@
-// Test fixture: a loose cubic lattice of spheres in a six-wall cuboid cell, copyable at scale λ.
+// Test fixture: a loose cubic lattice of spheres in a cuboid test cell, copyable at scale λ.
 #pragma once
 
-#include "dem/body.h"
-#include "dem/contact.h"
-#include "dem/cuboid_cell.h"
-#include "dem/timestep.h"
-#include "dem/world.h"
+#include "dem/core/body.h"
+#include "dem/core/contact.h"
+#include "dem/core/timestep.h"
+#include "dem/core/world.h"
+#include "dem/lab/cell.h"
 #include "geom/random.h"
 
 #include <cmath>
@@ -19,7 +19,7 @@ namespace clumpkit::dem::test {
 /// is the run at 1 seen at a λ-times larger scale (CTGU 2017 eqs. 1–3).
 struct LoosePacking {
   World world;
-  CuboidCell cell;
+  TestCell cell;
   double dt = 0;
 };
 
@@ -51,7 +51,8 @@ inline LoosePacking loose_packing(int nx, int ny, int nz, double lambda, bool li
         const Vec3 x = (Vec3(i + 1, j + 1, k + 1) + jitter) * spacing;
         p.world.add_body(make_sphere_body(x * lambda, r * lambda, density));
       }
-  p.cell = add_cuboid_walls(p.world, Vec3::Zero(), Vec3(nx + 1, ny + 1, nz + 1) * spacing * lambda);
+  p.cell =
+      add_cuboid_test_cell(p.world, Vec3::Zero(), Vec3(nx + 1, ny + 1, nz + 1) * spacing * lambda);
   // The step of the unscaled packing (0.2·sqrt(m_min/k_max), k_max the stiffest wall contact
   // of either law), times λ: a power of two keeps it exact.
   const double m_min = density * 4.0 / 3.0 * 3.14159265358979323846 * std::pow(0.8 * r0, 3);

@@ -3,7 +3,7 @@
 // so the fuzzer reaches the decoding of every field behind the checksum.
 #include "fuzz_input.h"
 #include "geom/hash.h"
-#include "io/checkpoint.h"
+#include "io/formats/checkpoint.h"
 
 #include <string>
 

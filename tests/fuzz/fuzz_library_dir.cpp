@@ -2,7 +2,7 @@
 // (the input is split at the first line "====": library.csv before, particles/00000.template.csv
 // after; other ids have no file).
 #include "fuzz_input.h"
-#include "io/specimen_io.h"
+#include "io/formats/library_table.h"
 
 #include <filesystem>
 

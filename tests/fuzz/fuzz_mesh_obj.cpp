@@ -1,6 +1,6 @@
 // Fuzzes the OBJ reader (read_mesh: parse, then the watertightness and orientation checks).
 #include "fuzz_input.h"
-#include "io/mesh_io.h"
+#include "io/formats/mesh_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string path = fuzz::as_file(data, size, "mesh.obj");

@@ -1,6 +1,6 @@
 // Fuzzes the shape/library recipe reader (TOML, every method's fields).
 #include "fuzz_input.h"
-#include "io/recipe.h"
+#include "io/recipes/recipe.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

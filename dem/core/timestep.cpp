@@ -1,0 +1,48 @@
+#include "dem/core/timestep.h"
+
+#include "geom/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace clumpkit::dem {
+
+double critical_timestep(double mass, double stiffness) {
+  if (!(mass > 0.0) || !std::isfinite(mass))
+    throw InvalidInput("critical time step: mass must be positive, got " + std::to_string(mass));
+  if (!(stiffness > 0.0) || !std::isfinite(stiffness))
+    throw InvalidInput("critical time step: stiffness must be positive, got " +
+                       std::to_string(stiffness));
+  return std::sqrt(mass / stiffness);
+}
+
+double body_critical_timestep(const Body& body, double kn, double ks) {
+  double dt = critical_timestep(body.mass, kn);
+  if (body.rotation_locked) return dt;
+  const double k = std::max(kn, ks);
+  for (int a = 0; a < 3; ++a) {
+    double arm = 0.0;
+    for (const Sphere& s : body.spheres) {
+      Vec3 off = s.center;
+      off[a] = 0.0;
+      arm = std::max(arm, off.norm() + s.radius);
+    }
+    dt = std::min(dt, critical_timestep(body.moments[a], k * arm * arm));
+  }
+  return dt;
+}
+
+double critical_timestep(const World& world) {
+  const ContactParams& p = world.options().contact;
+  double dt = std::numeric_limits<double>::infinity();
+  // With size-scaled stiffness a body's stiffest contact is with a wall (the series limit).
+  for (const Body& b : world.bodies()) {
+    const double f = wall_stiffness_factor(p, b.diameter);
+    dt = std::min(dt, body_critical_timestep(b, p.kn * f, p.ks * f));
+  }
+  return dt;
+}
+
+}  // namespace clumpkit::dem

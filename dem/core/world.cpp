@@ -1,0 +1,319 @@
+#include "dem/core/world.h"
+
+#include "dem/core/parallel.h"
+#include "dem/core/timestep.h"
+#include "dem/core/world_step_cache.h"
+#include "geom/errors.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace clumpkit::dem {
+
+namespace detail {
+StepCacheHolder::StepCacheHolder() : cache_(std::make_unique<StepCache>()) {}
+StepCacheHolder::~StepCacheHolder() = default;
+StepCacheHolder::StepCacheHolder(const StepCacheHolder& other)
+    : cache_(std::make_unique<StepCache>(other.get())) {}
+StepCacheHolder& StepCacheHolder::operator=(const StepCacheHolder& other) {
+  if (this != &other) cache_ = std::make_unique<StepCache>(other.get());
+  return *this;
+}
+StepCacheHolder::StepCacheHolder(StepCacheHolder&& other) noexcept = default;
+StepCacheHolder& StepCacheHolder::operator=(StepCacheHolder&& other) noexcept = default;
+StepCache& StepCacheHolder::get() const {
+  if (!cache_) cache_ = std::make_unique<StepCache>();
+  return *cache_;
+}
+}  // namespace detail
+
+using namespace detail;
+
+World::World(WorldOptions options) : options_(options) {
+  if (!(options_.timestep > 0.0) || !std::isfinite(options_.timestep))
+    throw InvalidInput("DEM world: timestep must be positive, got " +
+                       std::to_string(options_.timestep));
+  if (!(options_.skin >= 0.0) || !std::isfinite(options_.skin))
+    throw InvalidInput("DEM world: skin must be non-negative, got " +
+                       std::to_string(options_.skin));
+  if (options_.sort_every < 0)
+    throw InvalidInput("DEM world: sort_every must be non-negative, got " +
+                       std::to_string(options_.sort_every));
+  if (!(options_.near_skin_fraction > 0.0 && options_.near_skin_fraction <= 1.0))
+    throw InvalidInput("DEM world: near_skin_fraction must be in (0, 1], got " +
+                       std::to_string(options_.near_skin_fraction));
+  validate(options_.contact);
+  body_first_sphere_.push_back(0);
+}
+
+int World::add_body(Body body) {
+  StepCache& sc = cache_.get();
+  if (body.spheres.empty()) throw InvalidInput("DEM world: body has no spheres");
+  if (!(body.mass > 0.0) || !(body.moments.minCoeff() > 0.0))
+    throw InvalidInput("DEM world: body mass and moments must be positive");
+  if (body.diameter <= 0.0) {
+    // A plain sphere's own diameter, exactly (no cube root): scaled copies stay exact.
+    if (body.spheres.size() == 1 && body.spheres[0].center.isZero(0.0))
+      body.diameter = 2.0 * body.spheres[0].radius;
+    else if (body.volume > 0.0)
+      body.diameter = std::cbrt(6.0 * body.volume / 3.14159265358979323846);
+  }
+  if (options_.contact.scaling != StiffnessScaling::none &&
+      (!(body.diameter > 0.0) || !std::isfinite(body.diameter)))
+    throw InvalidInput(
+        "DEM world: size-scaled stiffness needs each body's diameter (give it or a volume)");
+  const int index = static_cast<int>(bodies_.size());
+  for (const Sphere& s : body.spheres) {
+    sphere_body_.push_back(index);
+    sphere_local_.push_back(s.center);
+    sphere_radius_.push_back(s.radius);
+  }
+  body_first_sphere_.push_back(static_cast<int>(sphere_body_.size()));
+  body.orientation.normalize();
+  bodies_.push_back(std::move(body));
+  sphere_world_.resize(sphere_body_.size());
+  dirty_ = true;
+  sc.pairs_valid_ = sc.walls_valid_ = false;
+  return index;
+}
+
+int World::add_wall(const Wall& wall) {
+  StepCache& sc = cache_.get();
+  walls_.push_back(wall);
+  sc.walls_valid_ = false;
+  return static_cast<int>(walls_.size()) - 1;
+}
+
+void World::update_sphere_positions() {
+  parallel_items(sphere_body_.size(), [&](std::size_t k) {
+    const Body& b = bodies_[sphere_body_[k]];
+    sphere_world_[k] = b.position + b.orientation * sphere_local_[k];
+  });
+}
+
+// Sphere world positions and the Verlet-list test (a sphere moved more than sqrt(near_limit_)
+// since the last filter) in one parallel pass.
+bool World::update_positions_and_check() {
+  const std::size_t n = sphere_body_.size();
+  const bool have_reference = !dirty_ && sphere_at_filter_.size() == n;
+  const double limit = near_limit_;
+  std::atomic<bool> moved{false};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      bool far = false;
+                      for (std::size_t k = r.begin(); k != r.end(); ++k) {
+                        const Body& b = bodies_[sphere_body_[k]];
+                        const Vec3& local = sphere_local_[k];
+                        // q·0 is exactly +0 (Eigen's formula), so a centred sphere skips it.
+                        const Vec3 x = local.isZero(0.0) ? Vec3(b.position + Vec3::Zero())
+                                                         : Vec3(b.position + b.orientation * local);
+                        sphere_world_[k] = x;
+                        if (have_reference && (x - sphere_at_filter_[k]).squaredNorm() > limit)
+                          far = true;
+                      }
+                      if (far) moved.store(true, std::memory_order_relaxed);
+                    });
+  return !have_reference || moved.load();
+}
+
+// The skin list (dem/core/neighbour_search.h): pairs of different bodies closer than
+// r_i + r_j + skin at the current positions, which become the build positions.
+void World::build_neighbours() {
+  StepCache& sc = cache_.get();
+  ++builds_;
+  dirty_ = false;
+  sphere_at_build_ = sphere_world_;
+  find_skin_pairs(sphere_world_, sphere_radius_, sphere_body_, options_.skin, sc.grid_,
+                  neighbours_);
+}
+
+// Called once a sphere has moved more than sqrt(near_limit_) since the last filter (or there is
+// none). Let D be the largest displacement since the last build: the skin list still holds every
+// pair that can touch while each sphere stays within skin/2 − D of where it is now, so when that
+// leaves room for a fair step the near list is filtered again from it (a linear pass), else the
+// grid search runs. Filtering at near skin s and allowing moves of min(s/2, skin/2 − D) keeps
+// both lists complete, with as many builds as the one-list scheme when spheres move steadily.
+// Returns true after a grid build (the wall candidates follow the build positions).
+bool World::refresh_neighbours() {
+  const std::size_t n = sphere_world_.size();
+  const double skin = options_.skin;
+  const double near = options_.near_skin_fraction * skin;
+  double left = -1.0;  // how far every sphere may still move before neighbours_ expires
+  if (!dirty_ && sphere_at_build_.size() == n) {
+    const double moved2 = tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, n, 1024), 0.0,
+        [&](const tbb::blocked_range<std::size_t>& r, double m) {
+          for (std::size_t k = r.begin(); k != r.end(); ++k)
+            m = std::max(m, (sphere_world_[k] - sphere_at_build_[k]).squaredNorm());
+          return m;
+        },
+        [](double a, double b) { return std::max(a, b); });
+    // A relative margin keeps the rounding of this bound on the safe side.
+    left = (0.5 * skin - std::sqrt(moved2)) * (1.0 - 1e-9);
+  }
+  const bool build = !(left >= 0.25 * near);
+  if (build) {
+    build_neighbours();
+    left = 0.5 * skin;
+  }
+  sphere_at_filter_ = sphere_world_;
+  const double allowed = std::min(0.5 * near, left);
+  near_limit_ = allowed * allowed;
+  near_valid_ = false;
+  return build;
+}
+
+// The near list: pairs of neighbours_ closer than r_i + r_j + near skin at sphere_at_filter_.
+void World::filter_candidates() {
+  StepCache& sc = cache_.get();
+  ++filters_;
+  filter_pairs(neighbours_, sphere_at_filter_, sphere_radius_,
+               options_.near_skin_fraction * options_.skin, sc.filter_keep_, candidates_);
+  near_valid_ = true;
+}
+
+void World::step(int count) {
+  StepCache& sc = cache_.get();
+  // Bodies may have been edited since the last call: refresh everything derived from them once.
+  load_bodies();
+  sc.positions_fresh_ = false;
+  for (int s = 0; s < count; ++s) {
+    if (options_.sort_every > 0 && steps_ % options_.sort_every == 0) {
+      // The sort reads and renumbers the persistent state: bring it up to date first.
+      store_bodies();
+      if (sc.pairs_valid_) export_pairs();
+      if (sc.walls_valid_) export_walls();
+      if (sort_bodies()) {
+        load_bodies();
+        sc.positions_fresh_ = false;
+      }
+    }
+    bool walls_stale = !sc.walls_valid_;
+    const bool moved = sc.positions_fresh_ ? sc.moved_ : update_positions_and_check();
+    if (moved || !near_valid_) {
+      // New candidates: the history travels through contacts_ (and wall_contacts_ after a build).
+      if (sc.pairs_valid_) export_pairs();
+      sc.pairs_valid_ = false;
+      if (moved && refresh_neighbours()) {
+        if (sc.walls_valid_) export_walls();
+        sc.walls_valid_ = false;
+        walls_stale = true;
+      }
+      filter_candidates();
+    }
+    if (!sc.pairs_valid_) {
+      derive_pair_index();
+      import_pairs();
+      sc.pairs_valid_ = true;
+    }
+    if (walls_stale || walls_moved()) {
+      if (sc.walls_valid_) export_walls();
+      build_wall_candidates();
+      import_walls();
+      sc.walls_valid_ = true;
+    }
+    // Contacts report their geometry as of the last step; earlier steps need not write it.
+    sc.record_geometry_ = s + 1 == count;
+    compute_forces();
+    integrate();
+    time_ += options_.timestep;
+    ++steps_;
+  }
+  store_bodies();
+  if (sc.pairs_valid_) export_pairs();
+  if (sc.walls_valid_) export_walls();
+  if (!sc.positions_fresh_) update_sphere_positions();  // integrate() already set them otherwise
+}
+
+World::ListState World::list_state() const {
+  ListState s;
+  s.steps = steps_;
+  s.time = time_;
+  s.builds = builds_;
+  s.filters = filters_;
+  s.stale = dirty_;
+  s.build_positions = sphere_at_build_;
+  s.skin_pairs = neighbours_;
+  s.filter_positions = sphere_at_filter_;
+  s.near_limit = near_limit_;
+  return s;
+}
+
+void World::restore(ListState lists, std::vector<PairContact> contacts,
+                    std::vector<WallContact> wall_contacts) {
+  const int n = sphere_count();
+  const int nw = static_cast<int>(walls_.size());
+  auto positions = [&](const std::vector<Vec3>& x, const char* what) {
+    if (!x.empty() && x.size() != static_cast<std::size_t>(n))
+      throw InvalidInput(std::string("DEM world: ") + what + " positions for " +
+                         std::to_string(x.size()) + " spheres, the world has " + std::to_string(n));
+  };
+  positions(lists.build_positions, "neighbour-list");
+  positions(lists.filter_positions, "near-list");
+  auto pair_ok = [&](int i, int j) { return i >= 0 && j > i && j < n; };
+  for (const auto& [i, j] : lists.skin_pairs)
+    if (!pair_ok(i, j)) throw InvalidInput("DEM world: neighbour pair outside the world");
+  for (const PairContact& c : contacts)
+    if (!pair_ok(c.i, c.j)) throw InvalidInput("DEM world: contact between unknown spheres");
+  for (const WallContact& c : wall_contacts)
+    if (c.sphere < 0 || c.sphere >= n || c.wall < 0 || c.wall >= nw)
+      throw InvalidInput("DEM world: wall contact of an unknown sphere or wall");
+  if (!(lists.near_limit >= 0.0)) throw InvalidInput("DEM world: negative near-list limit");
+  steps_ = lists.steps;
+  time_ = lists.time;
+  builds_ = lists.builds;
+  filters_ = lists.filters;
+  dirty_ = lists.stale;
+  sphere_at_build_ = std::move(lists.build_positions);
+  neighbours_ = std::move(lists.skin_pairs);
+  sphere_at_filter_ = std::move(lists.filter_positions);
+  near_limit_ = lists.near_limit;
+  near_valid_ = false;  // filtered from the restored lists at the next step
+  contacts_ = std::move(contacts);
+  wall_contacts_ = std::move(wall_contacts);
+  StepCache& sc = cache_.get();
+  sc.pairs_valid_ = sc.walls_valid_ = false;
+  update_sphere_positions();
+}
+
+void World::rescale_friction(double new_friction) {
+  StepCache& sc = cache_.get();
+  if (!(new_friction >= 0.0) || !std::isfinite(new_friction))
+    throw InvalidInput("DEM world: friction must be non-negative, got " +
+                       std::to_string(new_friction));
+  options_.contact.friction = new_friction;
+  for (PairContact& c : contacts_) dem::rescale_friction(c.state, new_friction);
+  for (WallContact& c : wall_contacts_) {
+    const double own = walls_[c.wall].friction;  // a wall with its own μ keeps it
+    dem::rescale_friction(c.state, own >= 0.0 ? own : new_friction);
+  }
+  sc.pairs_valid_ = sc.walls_valid_ = false;  // the slots take the new states from the lists
+}
+
+double kinetic_energy(const World& world) {
+  double e = 0.0;
+  for (const Body& b : world.bodies()) e += b.kinetic_energy();
+  return e;
+}
+
+double mean_unbalanced_force_ratio(const World& world) {
+  double unbalanced = 0.0;
+  for (const Body& b : world.bodies()) unbalanced += b.force.norm();
+  double contact = 0.0;
+  std::size_t n = 0;
+  for (const PairContact& c : world.contacts()) contact += c.state.force().norm(), ++n;
+  for (const WallContact& c : world.wall_contacts()) contact += c.state.force().norm(), ++n;
+  if (world.bodies().empty() || unbalanced == 0.0) return 0.0;
+  if (n == 0 || contact == 0.0) return std::numeric_limits<double>::infinity();
+  return (unbalanced / static_cast<double>(world.bodies().size())) /
+         (contact / static_cast<double>(n));
+}
+
+}  // namespace clumpkit::dem

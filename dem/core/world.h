@@ -1,0 +1,214 @@
+// The lean DEM world: bodies, walls, neighbour grid with Verlet skin, contacts with history,
+// gravity and a deterministic leapfrog integrator with quaternion rotation.
+#pragma once
+
+#include "dem/core/body.h"
+#include "dem/core/contact.h"
+#include "dem/core/neighbour_search.h"
+#include "dem/core/wall.h"
+
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace clumpkit::dem {
+
+namespace detail {
+struct StepCache;
+/// Owns a World's step caches (defined in dem/core/world.cpp, so the header shows none of them):
+/// copied with the world; a moved-from world gets empty caches, which the next step rebuilds
+/// from the persistent state (as after loading a checkpoint).
+class StepCacheHolder {
+ public:
+  StepCacheHolder();
+  ~StepCacheHolder();
+  StepCacheHolder(const StepCacheHolder& other);
+  StepCacheHolder& operator=(const StepCacheHolder& other);
+  StepCacheHolder(StepCacheHolder&& other) noexcept;
+  StepCacheHolder& operator=(StepCacheHolder&& other) noexcept;
+  StepCache& get() const;
+
+ private:
+  mutable std::unique_ptr<StepCache> cache_;
+};
+}  // namespace detail
+
+/// World settings (SI).
+struct WorldOptions {
+  Vec3 gravity = Vec3(0.0, 0.0, -9.81);  ///< m/s²
+  double timestep = 1e-5;                ///< s
+  /// Verlet skin (m): candidate pairs are those closer than r_i + r_j + skin; the list is
+  /// rebuilt once any sphere has moved more than skin/2 since the last build.
+  double skin = 1e-3;
+  /// Two-level Verlet list: the contact pass scans only the skin-list pairs closer than
+  /// r_i + r_j + near_skin_fraction·skin, filtered again from the skin list (no grid search)
+  /// once a sphere has moved near_skin_fraction·skin/2. In (0, 1]; 1 = one list. Like the skin,
+  /// a performance setting only: results do not depend on it.
+  double near_skin_fraction = 0.125;
+  /// Spatial sorting for memory locality (as LAMMPS's atom_modify sort, every 1,000 steps): at
+  /// the start of each step whose index steps() is a multiple of sort_every, the world reorders
+  /// its bodies by sort_bodies(). 0 = never. Bodies change their indices when it does, so a
+  /// caller that keeps body indices across steps leaves it off (the World's default); the
+  /// drivers of dem/ (deposition, compression, element tests) turn it on. The order is part
+  /// of the state (bodies() holds it), so results stay the same for any thread count and a
+  /// checkpoint resumes to the same bytes; they differ from an unsorted run in rounding (sums
+  /// in another order).
+  int sort_every = 0;
+  ContactParams contact;
+};
+
+/// A contact between sphere `i` and sphere `j` (global sphere indices, i < j, different bodies);
+/// the normal points from i to j, so j receives state.force().
+struct PairContact {
+  int i = 0;
+  int j = 0;
+  ContactState state;
+};
+
+/// A contact between sphere `sphere` and wall `wall`; the normal points from the wall to the
+/// sphere, which receives state.force().
+struct WallContact {
+  int sphere = 0;
+  int wall = 0;
+  ContactState state;
+};
+
+/// Deterministic DEM world. Each step (leapfrog, velocities at half steps, as in PFC):
+///  1. sphere world positions from the bodies; neighbour list rebuilt if needed;
+///  2. contact forces at x_n with the velocities v_{n−1/2}, contacts in sorted (i, j) order,
+///     then (sphere, wall) order; each body sums its own contacts in that order;
+///  3. F_n = gravity + contacts (stored in Body::force), PFC local damping if set;
+///  4. v_{n+1/2} = v_{n−1/2} + F/m·dt, x_{n+1} = x_n + v_{n+1/2}·dt;
+///     L_{n+1/2} = L_{n−1/2} + T·dt (world angular momentum, so a free body keeps L exactly),
+///     q_{n+1} = exp(ω·dt/2 ⊗) q_n with ω = R I⁻¹ Rᵀ L taken at the midpoint orientation
+///     (explicit midpoint with two corrector passes; Euler's equations in the body frame are
+///     implied by ω(q, L)), ω stored at q_{n+1}.
+/// Parallel loops (TBB) only write per-item slots; every sum runs in a fixed order, so results
+/// are bit-identical for any thread count.
+class World {
+ public:
+  explicit World(WorldOptions options = {});
+
+  /// Adds a body and returns its index. Throws InvalidInput for a body without spheres or with
+  /// non-positive mass or moments.
+  int add_body(Body body);
+  /// Adds a wall and returns its index.
+  int add_wall(const Wall& wall);
+
+  /// Bodies may be edited between steps (positions, velocities, orientations).
+  std::vector<Body>& bodies() { return bodies_; }
+  const std::vector<Body>& bodies() const { return bodies_; }
+  std::vector<Wall>& walls() { return walls_; }
+  const std::vector<Wall>& walls() const { return walls_; }
+  WorldOptions& options() { return options_; }
+  const WorldOptions& options() const { return options_; }
+
+  /// Advances `count` steps of options().timestep.
+  void step(int count = 1);
+
+  /// Reorders the bodies by the bin of their centroid — cubic bins of the largest sphere
+  /// diameter counted from the lowest centroid, x fastest, then y, then z (LAMMPS's order), ties
+  /// in the current order — renumbering spheres, contacts and wall contacts with them (the
+  /// contact histories travel along). Lengths are those of the specimen, so a copy scaled by a
+  /// power of two sorts the same. Returns false, changing nothing, when the order stays.
+  bool sort_bodies();
+
+  /// Sets μ for later steps and clamps every stored shear force to μ_new·Fn (rescale_friction),
+  /// keeping the history.
+  void rescale_friction(double new_friction);
+
+  const std::vector<PairContact>& contacts() const { return contacts_; }
+  const std::vector<WallContact>& wall_contacts() const { return wall_contacts_; }
+  /// Body owning global sphere `sphere` (spheres are numbered body by body, in insertion order).
+  int sphere_body(int sphere) const { return sphere_body_[sphere]; }
+  int sphere_count() const { return static_cast<int>(sphere_body_.size()); }
+  double time() const { return time_; }
+  std::int64_t steps() const { return steps_; }
+  /// Number of neighbour-list builds (grid searches) so far (for tests of the Verlet skin).
+  std::int64_t neighbour_builds() const { return builds_; }
+  /// Number of near-list filters so far, builds included (for tests of near_skin_fraction).
+  std::int64_t near_filters() const { return filters_; }
+
+  /// What the next steps depend on besides options, bodies, walls and contact lists: the clock
+  /// and the two-level Verlet list. Checkpoints save it, so a resumed run takes the same steps.
+  struct ListState {
+    std::int64_t steps = 0;
+    double time = 0.0;
+    std::int64_t builds = 0, filters = 0;
+    bool stale = true;                            ///< no skin list yet: the next step builds one
+    std::vector<Vec3> build_positions;            ///< sphere positions at the last grid search
+    std::vector<std::pair<int, int>> skin_pairs;  ///< the skin list, sorted (i, j)
+    std::vector<Vec3> filter_positions;           ///< sphere positions at the last near filter
+    double near_limit = 0.0;                      ///< squared move allowed before the next filter
+  };
+  ListState list_state() const;
+  /// Restores a state saved with list_state() and the contact lists, into a world holding the
+  /// same options, bodies and walls; the near list is filtered again at the next step. Throws
+  /// InvalidInput for position lists of the wrong size or pairs and contacts naming spheres or
+  /// walls the world does not have.
+  void restore(ListState lists, std::vector<PairContact> contacts,
+               std::vector<WallContact> wall_contacts);
+
+ private:
+  void update_sphere_positions();
+  bool refresh_neighbours();
+  void build_neighbours();
+  void filter_candidates();
+  void compute_forces();
+  void integrate();
+  // Fast path (world.cpp): per-candidate contact slots mirror contacts_ / wall_contacts_ during
+  // step(); they are rebuilt from those lists whenever marked stale.
+  bool update_positions_and_check();
+  void derive_pair_index();
+  void export_pairs();
+  void import_pairs();
+  bool walls_moved() const;
+  void build_wall_candidates();
+  void export_walls();
+  void import_walls();
+
+  WorldOptions options_;
+  std::vector<Body> bodies_;
+  std::vector<Wall> walls_;
+  // Global sphere arrays.
+  std::vector<int> sphere_body_;
+  std::vector<Vec3> sphere_local_;  // body frame
+  std::vector<double> sphere_radius_;
+  std::vector<Vec3> sphere_world_;
+  // Two-level Verlet list. The skin list neighbours_ holds the pairs closer than
+  // r_i + r_j + skin at sphere_at_build_ (grid search); the near list candidates_ those of
+  // neighbours_ closer than r_i + r_j + near_skin_fraction·skin at sphere_at_filter_. The contact
+  // slots follow candidates_. Both lists hold every touching pair while no sphere has moved more
+  // than sqrt(near_limit_) from sphere_at_filter_ (refresh_neighbours sets it).
+  std::vector<Vec3> sphere_at_build_;
+  std::vector<std::pair<int, int>> neighbours_;  // sorted (i, j)
+  std::vector<Vec3> sphere_at_filter_;
+  double near_limit_ = 0.0;                      // squared displacement
+  std::vector<std::pair<int, int>> candidates_;  // sorted (i, j)
+  bool near_valid_ = false;                      // candidates_ filtered for sphere_at_filter_
+  std::int64_t filters_ = 0;
+  bool dirty_ = true;
+  std::vector<PairContact> contacts_;       // sorted (i, j)
+  std::vector<WallContact> wall_contacts_;  // sorted (sphere, wall)
+  double time_ = 0.0;
+  std::int64_t steps_ = 0;
+  std::int64_t builds_ = 0;
+
+  // Derived state of the fast path (never saved): the step caches of dem/core/world.cpp.
+  std::vector<int> body_first_sphere_;  // per body, then the sphere count
+  detail::StepCacheHolder cache_;
+  void load_bodies();
+  void store_bodies();
+  void update_damping();
+};
+
+/// Total kinetic energy Σ ½·m·|v|² + ½·ω·L (J) (velocities at the half step).
+double kinetic_energy(const World& world);
+
+/// Mean unbalanced-force ratio (PFC "mechanical ratio"): mean over bodies of |F_net| divided by
+/// the mean magnitude of the contact forces (pair and wall), from the last step. 0 when nothing
+/// acts; +∞ when bodies feel a net force but no contact exists (free fall).
+double mean_unbalanced_force_ratio(const World& world);
+
+}  // namespace clumpkit::dem

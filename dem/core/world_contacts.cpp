@@ -1,0 +1,299 @@
+// The contact pass of dem::World: the near-list index and its contact slots, wall candidates,
+// and the pair and wall contact forces of a step.
+#include "dem/core/parallel.h"
+#include "dem/core/world.h"
+#include "dem/core/world_step_cache.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace clumpkit::dem {
+
+using namespace detail;
+
+namespace {
+
+// v + ω × (p − x) and (p − x) × f written per component: Eigen's code for these expressions
+// stores two scalars and reloads them as one packed pair, which defeats store forwarding and
+// cost a third of the contact kernel (perf). Same formulas, same bits.
+inline Vec3 point_velocity(const Vec3& v, const Vec3& w, const Vec3& p, const Vec3& x) {
+  const double rx = p.x() - x.x(), ry = p.y() - x.y(), rz = p.z() - x.z();
+  return Vec3(v.x() + (w.y() * rz - w.z() * ry), v.y() + (w.z() * rx - w.x() * rz),
+              v.z() + (w.x() * ry - w.y() * rx));
+}
+
+}  // namespace
+
+// Index of the candidate list: per sphere its candidates as i (a range of candidates_) and as j
+// (down_), per body every candidate it takes part in, in candidate order — the order in which
+// the serial sum of the reference implementation added them — and empty slots.
+void World::derive_pair_index() {
+  StepCache& sc = cache_.get();
+  const std::size_t n = sphere_body_.size();
+  const std::size_t m = candidates_.size();
+  sc.cand_begin_.assign(n + 1, 0);
+  sc.down_begin_.assign(n + 1, 0);
+  for (const auto& [i, j] : candidates_) ++sc.cand_begin_[i + 1], ++sc.down_begin_[j + 1];
+  for (std::size_t s = 0; s < n; ++s) {
+    sc.cand_begin_[s + 1] += sc.cand_begin_[s];
+    sc.down_begin_[s + 1] += sc.down_begin_[s];
+  }
+  sc.down_.resize(m);
+  sc.scratch_.assign(sc.down_begin_.begin(), sc.down_begin_.end() - 1);
+  for (std::size_t k = 0; k < m; ++k) sc.down_[sc.scratch_[candidates_[k].second]++] = k;
+
+  const std::size_t nb = bodies_.size();
+  sc.body_begin_.assign(nb + 1, 0);
+  for (std::size_t b = 0; b < nb; ++b) {
+    std::size_t count = 0;
+    for (int s = body_first_sphere_[b]; s < body_first_sphere_[b + 1]; ++s)
+      count +=
+          (sc.cand_begin_[s + 1] - sc.cand_begin_[s]) + (sc.down_begin_[s + 1] - sc.down_begin_[s]);
+    sc.body_begin_[b + 1] = sc.body_begin_[b] + count;
+  }
+  sc.body_items_.resize(sc.body_begin_[nb]);
+  parallel_items(nb, [&](std::size_t b) {
+    std::size_t out = sc.body_begin_[b];
+    for (int s = body_first_sphere_[b]; s < body_first_sphere_[b + 1]; ++s) {
+      for (std::size_t d = sc.down_begin_[s]; d < sc.down_begin_[s + 1]; ++d)
+        sc.body_items_[out++] = 2 * static_cast<std::uint64_t>(sc.down_[d]) + 1;  // holds j: +f
+      for (std::size_t k = sc.cand_begin_[s]; k < sc.cand_begin_[s + 1]; ++k)
+        sc.body_items_[out++] = 2 * static_cast<std::uint64_t>(k);  // holds i: −f
+    }
+    // One sphere: (i', s) with i' < s precede (s, j), already in order. A clump: sort.
+    if (body_first_sphere_[b + 1] - body_first_sphere_[b] > 1)
+      std::sort(sc.body_items_.begin() + static_cast<std::ptrdiff_t>(sc.body_begin_[b]),
+                sc.body_items_.begin() + static_cast<std::ptrdiff_t>(sc.body_begin_[b + 1]));
+  });
+  sc.slot_out_.assign(m, SlotOut{Vec3::Zero(), Vec3::Zero()});
+  sc.slot_force_.resize(m);
+  sc.slot_geometry_.resize(m);
+  sc.slot_active_.assign(m, 0);
+  sc.slot_damping_.resize(m);
+  sc.slot_stiffness_.resize(m);
+  sc.damping_valid_ = false;
+}
+
+// The dashpot and stiffness factor of every candidate pair from the bodies' current (packed)
+// masses and diameters.
+void World::update_damping() {
+  StepCache& sc = cache_.get();
+  const ContactParams& p = options_.contact;
+  const bool scaled = p.scaling != StiffnessScaling::none;
+  parallel_items(candidates_.size(), [&](std::size_t k) {
+    const int a = sphere_body_[candidates_[k].first], b = sphere_body_[candidates_[k].second];
+    const double ma = sc.kinematics_[a].mass, mb = sc.kinematics_[b].mass;
+    if (scaled) {
+      const double f = pair_stiffness_factor(p, sc.body_diameter_[a], sc.body_diameter_[b]);
+      sc.slot_stiffness_[k] = f;
+      sc.slot_damping_[k] = normal_dashpot(ma * mb / (ma + mb), scaled_stiffness(p, f));
+    } else {
+      sc.slot_damping_[k] = normal_dashpot(ma * mb / (ma + mb), p);
+    }
+  });
+  sc.damping_valid_ = true;
+}
+
+void World::import_pairs() {
+  StepCache& sc = cache_.get();
+  const int n = sphere_count();
+  parallel_items(contacts_.size(), [&](std::size_t c) {
+    const PairContact& pc = contacts_[c];
+    if (pc.i < 0 || pc.i >= n) return;
+    const auto first = candidates_.begin() + static_cast<std::ptrdiff_t>(sc.cand_begin_[pc.i]);
+    const auto last = candidates_.begin() + static_cast<std::ptrdiff_t>(sc.cand_begin_[pc.i + 1]);
+    const auto it = std::lower_bound(first, last, std::make_pair(pc.i, pc.j));
+    if (it == last || it->second != pc.j) return;  // no longer a candidate: history dropped
+    const auto k = static_cast<std::size_t>(it - candidates_.begin());
+    sc.slot_force_[k] = SlotForce{pc.state.shear, pc.state.normal_force};
+    sc.slot_geometry_[k] = SlotGeometry{pc.state.normal, pc.state.point, pc.state.overlap};
+    sc.slot_active_[k] = 1;
+    // The wrenches are written by the next contact pass (every active slot is refreshed there).
+  });
+}
+
+void World::export_pairs() {
+  StepCache& sc = cache_.get();
+  contacts_.clear();
+  for (std::size_t k = 0; k < candidates_.size(); ++k) {
+    if (!sc.slot_active_[k]) continue;
+    PairContact& c = contacts_.emplace_back();
+    c.i = candidates_[k].first;
+    c.j = candidates_[k].second;
+    const SlotGeometry& g = sc.slot_geometry_[k];
+    c.state.normal = g.normal;
+    c.state.point = g.point;
+    c.state.overlap = g.overlap;
+    c.state.normal_force = sc.slot_force_[k].normal_force;
+    c.state.shear = sc.slot_force_[k].shear;
+  }
+}
+
+// Wall candidates: (sphere, wall) pairs with a gap below the skin at the spheres' build positions.
+// A sphere moves at most skin/2 before the next build and a wall at most skin/2 before
+// walls_moved() asks for new candidates, so every touching pair is a candidate.
+bool World::walls_moved() const {
+  StepCache& sc = cache_.get();
+  if (walls_.size() != sc.walls_at_build_.size()) return true;
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    const Wall& a = walls_[w];
+    const Wall& b = sc.walls_at_build_[w];
+    if (a.kind != b.kind || a.normal != b.normal) return true;
+    if (a.kind == Wall::Kind::cylinder) {
+      if (a.point.x() != b.point.x() || a.point.y() != b.point.y()) return true;
+      // A servo-driven radius, like a plane, may move half the skin before new candidates.
+      if (!(std::abs(a.radius - b.radius) <= 0.5 * options_.skin)) return true;
+    } else if (!(std::abs((a.point - b.point).dot(a.normal)) <= 0.5 * options_.skin)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+void World::build_wall_candidates() {
+  StepCache& sc = cache_.get();
+  const std::size_t n = sphere_body_.size();
+  const std::size_t nw = walls_.size();
+  sc.walls_at_build_ = walls_;
+  const double skin = options_.skin;
+  auto candidate = [&](std::size_t s, std::size_t w) {
+    const Wall& wall = walls_[w];
+    const Vec3& x = sphere_at_build_[s];
+    const double r = sphere_radius_[s];
+    const double slack = 1e-9 * (skin + r) + 1e-12 * (x.norm() + wall.point.norm() + wall.radius);
+    const WallHit hit = wall_hit(wall, x, r);
+    return wall.kind == Wall::Kind::cylinder && !hit.touching && hit.overlap == 0.0
+               ? true  // centre on the axis (no normal): keep it
+               : hit.overlap > -(skin + slack);
+  };
+  sc.scratch_.assign(n + 1, 0);
+  parallel_items(n, [&](std::size_t s) {
+    std::size_t count = 0;
+    for (std::size_t w = 0; w < nw; ++w) count += candidate(s, w) ? 1 : 0;
+    sc.scratch_[s + 1] = count;
+  });
+  for (std::size_t s = 0; s < n; ++s) sc.scratch_[s + 1] += sc.scratch_[s];
+  sc.wall_cand_.resize(sc.scratch_[n]);
+  parallel_items(n, [&](std::size_t s) {
+    std::size_t k = sc.scratch_[s];
+    for (std::size_t w = 0; w < nw; ++w)
+      if (candidate(s, w)) sc.wall_cand_[k++] = {static_cast<int>(s), static_cast<int>(w)};
+  });
+  const std::size_t nb = bodies_.size();
+  sc.body_wall_begin_.resize(nb + 1);
+  for (std::size_t b = 0; b <= nb; ++b) sc.body_wall_begin_[b] = sc.scratch_[body_first_sphere_[b]];
+  sc.wall_slot_state_.resize(sc.wall_cand_.size());
+  sc.wall_slot_active_.assign(sc.wall_cand_.size(), 0);
+}
+
+void World::import_walls() {
+  StepCache& sc = cache_.get();
+  parallel_items(wall_contacts_.size(), [&](std::size_t c) {
+    const WallContact& wc = wall_contacts_[c];
+    const auto it = std::lower_bound(sc.wall_cand_.begin(), sc.wall_cand_.end(),
+                                     std::make_pair(wc.sphere, wc.wall));
+    if (it == sc.wall_cand_.end() || *it != std::make_pair(wc.sphere, wc.wall)) return;
+    const auto k = static_cast<std::size_t>(it - sc.wall_cand_.begin());
+    sc.wall_slot_state_[k] = wc.state;
+    sc.wall_slot_active_[k] = 1;
+  });
+}
+
+void World::export_walls() {
+  StepCache& sc = cache_.get();
+  wall_contacts_.clear();
+  for (std::size_t k = 0; k < sc.wall_cand_.size(); ++k) {
+    if (!sc.wall_slot_active_[k]) continue;
+    WallContact& c = wall_contacts_.emplace_back();
+    c.sphere = sc.wall_cand_[k].first;
+    c.wall = sc.wall_cand_[k].second;
+    c.state = sc.wall_slot_state_[k];
+  }
+}
+
+void World::compute_forces() {
+  StepCache& sc = cache_.get();
+  const double dt = options_.timestep;
+  const ContactParams& p = options_.contact;
+  const bool scaled = p.scaling != StiffnessScaling::none;
+  if (!sc.damping_valid_) update_damping();
+
+  // Pair contacts, one slot per candidate: a touching pair keeps its shear history when it
+  // touched at the last step too, else it starts from a fresh state. Each touching pair writes
+  // its force and contact point into its slot and marks both bodies touched; a pair that stops
+  // touching zeroes its slot.
+  const std::size_t ncand = candidates_.size();
+  parallel_items(ncand, [&](std::size_t k) {
+    // The partner j is far from i in memory for a mixed packing: fetch a few candidates ahead.
+    constexpr std::size_t kAhead = 6;
+    if (k + kAhead < ncand) {
+      const int ahead = candidates_[k + kAhead].second;
+      __builtin_prefetch(&sphere_world_[ahead]);
+      __builtin_prefetch(&sc.kinematics_[sphere_body_[ahead]]);
+    }
+    const auto [i, j] = candidates_[k];
+    auto release = [&] {
+      if (!sc.slot_active_[k]) return;
+      sc.slot_active_[k] = 0;
+      sc.slot_out_[k] = SlotOut{Vec3::Zero(), Vec3::Zero()};
+    };
+    const Vec3 d = sphere_world_[j] - sphere_world_[i];
+    const double touch = sphere_radius_[i] + sphere_radius_[j];
+    const double d2 = d.squaredNorm();
+    if (d2 > touch * touch * (1.0 + 1e-9)) return release();  // clearly apart: no square root
+    const double dist = std::sqrt(d2);                        // = d.norm()
+    const double delta = touch - dist;
+    if (!(delta > 0.0)) return release();
+    SlotForce& state = sc.slot_force_[k];
+    if (!sc.slot_active_[k]) state = SlotForce{Vec3::Zero(), 0.0};
+    sc.slot_active_[k] = 1;
+    const Kinematics& a = sc.kinematics_[sphere_body_[i]];
+    const Kinematics& b = sc.kinematics_[sphere_body_[j]];
+    const Vec3 n = dist > 0.0 ? Vec3(d / dist) : Vec3(Vec3::UnitZ());
+    const Vec3 point = sphere_world_[i] + (sphere_radius_[i] - 0.5 * delta) * n;
+    const Vec3 va = point_velocity(a.velocity, a.angular_velocity, point, a.position);
+    const Vec3 vb = point_velocity(b.velocity, b.angular_velocity, point, b.position);
+    if (scaled)
+      update_contact_force(state.shear, state.normal_force, n, delta, vb - va, sc.slot_damping_[k],
+                           scaled_stiffness(p, sc.slot_stiffness_[k]), dt);
+    else
+      update_contact_force(state.shear, state.normal_force, n, delta, vb - va, sc.slot_damping_[k],
+                           p, dt);
+    if (sc.record_geometry_) sc.slot_geometry_[k] = SlotGeometry{n, point, delta};
+    const Vec3 f = state.normal_force * n + state.shear;  // ContactState::force()
+    // Body of j receives +f, body of i −f (sum_wrench forms the torques).
+    sc.slot_out_[k] = SlotOut{f, point};
+    // Several threads may mark the same body: relaxed atomic stores of the same value.
+    __atomic_store_n(&sc.body_touched_[sphere_body_[i]], std::uint8_t{1}, __ATOMIC_RELAXED);
+    __atomic_store_n(&sc.body_touched_[sphere_body_[j]], std::uint8_t{1}, __ATOMIC_RELAXED);
+  });
+
+  // Wall contacts, one slot per wall candidate, likewise.
+  parallel_items(sc.wall_cand_.size(), [&](std::size_t k) {
+    const auto [s, w] = sc.wall_cand_[k];
+    const WallHit hit = wall_hit(walls_[w], sphere_world_[s], sphere_radius_[s]);
+    if (!hit.touching) {
+      sc.wall_slot_active_[k] = 0;
+      return;
+    }
+    ContactState& state = sc.wall_slot_state_[k];
+    if (!sc.wall_slot_active_[k]) state = ContactState();
+    sc.wall_slot_active_[k] = 1;
+    const Kinematics& b = sc.kinematics_[sphere_body_[s]];
+    const Vec3 vb = b.velocity + b.angular_velocity.cross(hit.point - b.position);
+    const Wall& wall = walls_[w];
+    // A growing cylinder's surface moves along −normal (outward) at radial_velocity.
+    const Vec3 vw = wall.kind == Wall::Kind::plane ? wall.velocity
+                    : wall.radial_velocity != 0.0  ? Vec3(-wall.radial_velocity * hit.normal)
+                                                   : Vec3(Vec3::Zero());
+    const int body = sphere_body_[s];
+    ContactParams q =
+        scaled ? scaled_stiffness(p, wall_stiffness_factor(p, sc.body_diameter_[body])) : p;
+    if (wall.friction >= 0.0) q.friction = wall.friction;
+    update_contact(state, hit.normal, hit.overlap, hit.point, vb - vw, b.mass, q, dt);
+  });
+
+  // The sums per body are made by integrate(), in the same pass that advances the body.
+}
+
+}  // namespace clumpkit::dem

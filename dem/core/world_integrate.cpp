@@ -1,0 +1,154 @@
+// Integration of dem::World: the packed body state, each body's wrench summed in a fixed order,
+// and the step of every body (dem/core/integrator.h) with its spheres' positions and the skin
+// check.
+#include "dem/core/integrator.h"
+#include "dem/core/parallel.h"
+#include "dem/core/world.h"
+#include "dem/core/world_step_cache.h"
+
+#include <atomic>
+#include <cmath>
+
+namespace clumpkit::dem {
+
+using namespace detail;
+
+namespace {
+
+inline Vec3 moment(const Vec3& p, const Vec3& x, const Vec3& f) {
+  const double rx = p.x() - x.x(), ry = p.y() - x.y(), rz = p.z() - x.z();
+  return Vec3(ry * f.z() - rz * f.y(), rz * f.x() - rx * f.z(), rx * f.y() - ry * f.x());
+}
+
+}  // namespace
+
+// bodies_ -> packed state, at the start of step(count): the caller may have edited anything.
+void World::load_bodies() {
+  StepCache& sc = cache_.get();
+  const std::size_t nb = bodies_.size();
+  sc.kinematics_.resize(nb);
+  sc.body_wrench_.resize(nb);
+  sc.rotation_.resize(nb);
+  sc.body_touched_.assign(nb, 0);
+  sc.body_diameter_.resize(nb);
+  parallel_items(nb, [&](std::size_t k) {
+    const Body& b = bodies_[k];
+    sc.body_diameter_[k] = b.diameter;
+    sc.kinematics_[k] = Kinematics{b.position, b.velocity, b.angular_velocity, b.mass};
+    sc.body_wrench_[k] = Wrench{b.force, b.torque};
+    Spin spin = Spin::general;
+    if (b.rotation_locked)
+      spin = Spin::locked;
+    else if (b.moments.x() == b.moments.y() && b.moments.y() == b.moments.z())
+      spin = b.spheres.size() == 1 && b.spheres[0].center.isZero(0.0) ? Spin::plain_sphere
+                                                                      : Spin::isotropic;
+    sc.rotation_[k] = Rotation{b.orientation, b.moments, spin};
+  });
+  sc.damping_valid_ = false;  // masses may have changed
+}
+
+// Packed state -> bodies_, at the end of step(count).
+void World::store_bodies() {
+  StepCache& sc = cache_.get();
+  parallel_items(bodies_.size(), [&](std::size_t k) {
+    Body& b = bodies_[k];
+    b.position = sc.kinematics_[k].position;
+    b.velocity = sc.kinematics_[k].velocity;
+    b.angular_velocity = sc.kinematics_[k].angular_velocity;
+    b.orientation = sc.rotation_[k].orientation;
+    b.force = sc.body_wrench_[k].force;
+    b.torque = sc.body_wrench_[k].torque;
+  });
+}
+
+// Net wrench on body k: gravity, then its pair contacts in (i, j) order, then its wall contacts
+// in (sphere, wall) order — a fixed order, whatever the thread count (see body_touched_).
+static inline Wrench sum_wrench(const StepCache& sc, const Vec3& gravity, std::size_t k) {
+  const Kinematics& b = sc.kinematics_[k];
+  Vec3 force = b.mass * gravity;
+  Vec3 torque = Vec3::Zero();
+  if (sc.body_touched_[k]) {
+    for (std::size_t e = sc.body_begin_[k]; e < sc.body_begin_[k + 1]; ++e) {
+      const std::uint64_t item = sc.body_items_[e];
+      const SlotOut& out = sc.slot_out_[item >> 1];
+      // ±1 times a value is its exact negation or itself, as the unary minus (branch free).
+      const double sign = item & 1 ? 1.0 : -1.0;
+      force += sign * out.force;
+      torque += sign * moment(out.point, b.position, out.force);
+    }
+  }
+  for (std::size_t c = sc.body_wall_begin_[k]; c < sc.body_wall_begin_[k + 1]; ++c) {
+    if (!sc.wall_slot_active_[c]) continue;
+    const ContactState& s = sc.wall_slot_state_[c];
+    const Vec3 f = s.force();
+    force += f;
+    torque += (s.point - b.position).cross(f);
+  }
+  return Wrench{force, torque};
+}
+
+void World::integrate() {
+  StepCache& sc = cache_.get();
+  const double dt = options_.timestep;
+  const double alpha = options_.contact.local_damping;
+  const bool have_reference = !dirty_ && sphere_at_filter_.size() == sphere_world_.size();
+  const double limit = near_limit_;
+  std::atomic<bool> moved{false};
+  // What every body shares: the leapfrog translation and the damped torque (dem/core/integrator.h
+  // holds the integration itself).
+  auto translate = [&](Kinematics& b, const Wrench& wrench) {
+    const Vec3 f = alpha == 0.0 ? wrench.force : local_damping(wrench.force, b.velocity, alpha);
+    leapfrog_translate(b.position, b.velocity, f, b.mass, dt);
+  };
+  auto damped_torque = [&](const Kinematics& b, const Wrench& wrench) {
+    return alpha == 0.0 ? wrench.torque : local_damping(wrench.torque, b.angular_velocity, alpha);
+  };
+  // Every body but a plain sphere (kept out of line so the loop below stays small).
+  auto advance = [&](Kinematics & b, const Wrench& wrench, Rotation& r) __attribute__((noinline)) {
+    translate(b, wrench);
+    if (r.spin == Spin::locked) return;
+    rotate_rigid_body(r.orientation, b.angular_velocity, r.moments, damped_torque(b, wrench), dt,
+                      r.spin == Spin::isotropic);
+  };
+  // One pass per body: sum its wrench, advance it, then refresh its spheres' world positions
+  // and the Verlet-skin check, so a step makes one pass over the bodies and their spheres.
+  parallel_items(bodies_.size(), [&](std::size_t k) {
+    const Wrench wrench = sum_wrench(sc, options_.gravity, k);
+    sc.body_touched_[k] = 0;  // for the next step's contact pass
+    sc.body_wrench_[k] = wrench;
+    Kinematics& b = sc.kinematics_[k];
+    Rotation& r = sc.rotation_[k];
+    bool far = false;
+    const int first = body_first_sphere_[k], last = body_first_sphere_[k + 1];
+    if (r.spin == Spin::plain_sphere) {
+      // A plain sphere centred on its body origin looks the same in every orientation, so its
+      // orientation is not integrated (as LAMMPS nve/sphere): no sine, cosine or normalisation.
+      translate(b, wrench);
+      spin_isotropic(b.angular_velocity, damped_torque(b, wrench), r.moments.x(), dt);
+      const Vec3 x = b.position + Vec3::Zero();  // the general formula's bits for a centred sphere
+      sphere_world_[first] = x;
+      far = have_reference && (x - sphere_at_filter_[first]).squaredNorm() > limit;
+    } else {
+      advance(b, wrench, r);
+      for (int i = first; i < last; ++i) {
+        const Vec3& local = sphere_local_[i];
+        // q·0 is exactly +0 (Eigen's formula), so a centred sphere skips it.
+        const Vec3 x = local.isZero(0.0) ? Vec3(b.position + Vec3::Zero())
+                                         : Vec3(b.position + r.orientation * local);
+        sphere_world_[i] = x;
+        if (have_reference && (x - sphere_at_filter_[i]).squaredNorm() > limit) far = true;
+      }
+    }
+    if (far) moved.store(true, std::memory_order_relaxed);
+  });
+  sc.positions_fresh_ = true;
+  sc.moved_ = !have_reference || moved.load();
+  for (Wall& w : walls_) {
+    if (w.kind == Wall::Kind::plane)
+      w.point += w.velocity * dt;
+    else if (w.radial_velocity != 0.0)
+      w.radius += w.radial_velocity * dt;
+  }
+}
+
+}  // namespace clumpkit::dem

@@ -1,0 +1,109 @@
+// The step caches of dem::World, shared by its three source files (world.cpp: lists and the
+// step loop; world_contacts.cpp: the contact pass; world_integrate.cpp: sums and integration).
+// Internal to dem: nothing outside the World includes it.
+#pragma once
+
+#include "dem/core/world.h"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace clumpkit::dem {
+
+namespace detail {
+
+// The packed records of step(count) (see StepCache).
+struct Kinematics {  // the translational and spin state of a body: what the contact kernels read
+  Vec3 position, velocity, angular_velocity;
+  double mass;
+};
+
+struct Wrench {  // a force and a torque
+  Vec3 force, torque;
+};
+
+enum class Spin : std::uint8_t {
+  plain_sphere,  // isotropic, one sphere on the origin: orientation not integrated
+  isotropic,     // Ixx = Iyy = Izz: ω = L/I directly
+  general,       // midpoint quaternion integration
+  locked         // rotation_locked: translation only
+};
+
+struct Rotation {  // what the integrator reads of a body's rotation
+  Eigen::Quaterniond orientation;
+  Vec3 moments;
+  Spin spin;
+};
+
+struct SlotOut {
+  Vec3 force, point;
+};
+
+struct SlotForce {
+  Vec3 shear;
+  double normal_force;
+};
+
+struct SlotGeometry {
+  Vec3 normal, point;
+  double overlap;
+};
+
+}  // namespace detail
+
+// What World::step derives from the persistent state and keeps between calls: the index of the
+// near list, per-candidate contact slots, wall candidates and the packed body state. Never saved:
+// every part is rebuilt from the persistent state when marked stale (a fresh cache is all stale).
+namespace detail {
+struct StepCache {
+  NeighbourGrid grid_;                     // scratch of build_neighbours
+  std::vector<std::size_t> cand_begin_;    // first candidate (i, ·) per sphere i
+  std::vector<std::size_t> down_begin_;    // per sphere j: range in down_
+  std::vector<std::size_t> down_;          // candidates (·, j) grouped by j, in order
+  std::vector<std::size_t> body_begin_;    // per body: range in body_items_
+  std::vector<std::uint64_t> body_items_;  // 2·candidate + (1 when the body holds j)
+  // During step(count) the bodies' state lives in these packed arrays (loaded from bodies_ when
+  // the call begins, stored back when it ends), so the per-step passes stream small records
+  // instead of whole Body objects with their sphere vectors.
+  std::vector<Kinematics> kinematics_;  // per body
+  std::vector<Wrench> body_wrench_;     // per body: gravity + contacts of the last step
+  std::vector<Rotation> rotation_;      // per body
+  // Per candidate: the force on the body of j and its point of application, written by the
+  // contact kernel in candidate order (zero while not touching); each body gathers its items
+  // (body_items_) and forms ±force and the torque about its own centroid.
+  std::vector<SlotOut> slot_out_;
+  // Per body: one of its pairs touched in this step's contact pass (else its items are all zero
+  // and the sum skips them: the sums start from gravity and +0 and never reach −0, so adding ±0
+  // would change no bit). A per-body test, predictable both in free fall and in a packing.
+  std::vector<std::uint8_t> body_touched_;
+  // Per candidate: the normal dashpot 2·β·sqrt(m_eff·kn) (update_contact's formula), computed
+  // when the candidates or the masses change instead of at every contact and step.
+  std::vector<double> slot_damping_;
+  // Per candidate: the factor on kn and ks of the size rule (pair_stiffness_factor), computed
+  // with the dashpot; per body its diameter (packed by load_bodies). Unused without scaling.
+  std::vector<double> slot_stiffness_;
+  std::vector<double> body_diameter_;
+  bool damping_valid_ = false;
+  // Per candidate, the contact state in two parts: what the contact law carries from step to
+  // step (read and written every step), and the geometry (normal, point, overlap), which only
+  // the contact lists report, so it is written on the last step of step(count) alone.
+  std::vector<SlotForce> slot_force_;
+  std::vector<SlotGeometry> slot_geometry_;
+  bool record_geometry_ = true;                 // this step's contact pass writes slot_geometry_
+  std::vector<std::uint8_t> slot_active_;       // per candidate: touching at the last step
+  std::vector<std::pair<int, int>> wall_cand_;  // sorted (sphere, wall)
+  std::vector<ContactState> wall_slot_state_;   // per wall candidate
+  std::vector<std::uint8_t> wall_slot_active_;  // per wall candidate
+  std::vector<std::size_t> body_wall_begin_;    // per body: range in wall_cand_
+  std::vector<Wall> walls_at_build_;            // walls when wall_cand_ was built
+  std::vector<std::size_t> scratch_;            // counts / offsets
+  std::vector<std::uint8_t> filter_keep_;       // scratch of filter_candidates
+  bool positions_fresh_ = false;  // sphere_world_ and moved_ set by integrate this call
+  bool moved_ = true;             // a sphere moved more than sqrt(near_limit_) since the filter
+  bool pairs_valid_ = false;      // slots mirror contacts_ for the current candidates_
+  bool walls_valid_ = false;      // wall slots mirror wall_contacts_ for the current wall_cand_
+};
+}  // namespace detail
+
+}  // namespace clumpkit::dem

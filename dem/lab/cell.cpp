@@ -1,0 +1,181 @@
+#include "dem/lab/cell.h"
+
+#include "dem/measure/stress.h"
+#include "geom/errors.h"
+
+#include <array>
+#include <cmath>
+
+namespace clumpkit::dem {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+int add_frictionless(World& world, Wall wall) {
+  wall.friction = 0.0;
+  return world.add_wall(wall);
+}
+
+// Lateral extents: cuboid x and y lengths; cylinder the diameter twice.
+std::array<double, 2> lateral_extents(const World& world, const TestCell& cell) {
+  if (cell.shape == TestCell::Shape::cylinder) {
+    const double d = 2.0 * world.walls()[cell.lateral[0]].radius;
+    return {d, d};
+  }
+  return {world.walls()[cell.lateral[1]].point.x() - world.walls()[cell.lateral[0]].point.x(),
+          world.walls()[cell.lateral[3]].point.y() - world.walls()[cell.lateral[2]].point.y()};
+}
+
+double axial_area(const World& world, const TestCell& cell) {
+  if (cell.shape == TestCell::Shape::cylinder) {
+    const double r = world.walls()[cell.lateral[0]].radius;
+    return kPi * r * r;
+  }
+  const auto e = lateral_extents(world, cell);
+  return e[0] * e[1];
+}
+
+// Area of lateral wall k of the cell.
+double lateral_area(const World& world, const TestCell& cell, std::size_t k) {
+  const double h = cell_height(world, cell);
+  if (cell.shape == TestCell::Shape::cylinder)
+    return 2.0 * kPi * world.walls()[cell.lateral[0]].radius * h;
+  const auto e = lateral_extents(world, cell);
+  return (k < 2 ? e[1] : e[0]) * h;  // x walls span y, y walls span x
+}
+
+void servo(World& world, int wall, double area, double target, const ServoGain& gain) {
+  set_wall_speed(world, wall,
+                 servo_speed(wall_stress(world, wall, area), target, area,
+                             wall_contact_stiffness(world, wall), world.options().timestep, gain));
+}
+
+}  // namespace
+
+TestCell add_cuboid_test_cell(World& world, const Vec3& lo, const Vec3& hi) {
+  if (!((hi - lo).minCoeff() > 0.0) || !(hi - lo).allFinite())
+    throw InvalidInput("test cell: the box must have positive, finite edges");
+  TestCell c;
+  c.shape = TestCell::Shape::cuboid;
+  for (int a = 0; a < 2; ++a) {
+    c.lateral.push_back(add_frictionless(world, Wall::plane(lo, Vec3::Unit(a))));
+    c.lateral.push_back(add_frictionless(world, Wall::plane(hi, -Vec3::Unit(a))));
+  }
+  c.bottom = add_frictionless(world, Wall::plane(lo, Vec3::UnitZ()));
+  c.top = add_frictionless(world, Wall::plane(hi, -Vec3::UnitZ()));
+  return c;
+}
+
+TestCell add_cylinder_test_cell(World& world, double radius, double z_lo, double z_hi) {
+  if (!(radius > 0.0) || !(z_hi > z_lo) || !std::isfinite(radius) || !std::isfinite(z_hi - z_lo))
+    throw InvalidInput("test cell: the cylinder must have a positive radius and height");
+  TestCell c;
+  c.shape = TestCell::Shape::cylinder;
+  c.lateral.push_back(add_frictionless(world, Wall::cylinder(0.0, 0.0, radius)));
+  c.bottom = add_frictionless(world, Wall::plane(Vec3(0, 0, z_lo), Vec3::UnitZ()));
+  c.top = add_frictionless(world, Wall::plane(Vec3(0, 0, z_hi), -Vec3::UnitZ()));
+  return c;
+}
+
+double cell_height(const World& world, const TestCell& cell) {
+  return world.walls()[cell.top].point.z() - world.walls()[cell.bottom].point.z();
+}
+
+double cell_volume(const World& world, const TestCell& cell) {
+  return axial_area(world, cell) * cell_height(world, cell);
+}
+
+double axial_stress(const World& world, const TestCell& cell) {
+  const double a = axial_area(world, cell);
+  return 0.5 * (wall_stress(world, cell.bottom, a) + wall_stress(world, cell.top, a));
+}
+
+double lateral_stress(const World& world, const TestCell& cell) {
+  double s = 0;
+  for (std::size_t k = 0; k < cell.lateral.size(); ++k)
+    s += wall_stress(world, cell.lateral[k], lateral_area(world, cell, k));
+  return s / static_cast<double>(cell.lateral.size());
+}
+
+void drive_cell(World& world, const TestCell& cell, const Control& axial, const Control& lateral,
+                const ServoGain& gain, int steps) {
+  using Mode = Control::Mode;
+  const double a = axial_area(world, cell);
+  switch (axial.mode) {
+    case Mode::stress:
+      servo(world, cell.bottom, a, axial.stress, gain);
+      servo(world, cell.top, a, axial.stress, gain);
+      break;
+    case Mode::velocity:
+      set_wall_speed(world, cell.bottom, 0.0);
+      set_wall_speed(world, cell.top, axial.speed);
+      break;
+    case Mode::fixed:
+      set_wall_speed(world, cell.bottom, 0.0);
+      set_wall_speed(world, cell.top, 0.0);
+      break;
+  }
+  for (std::size_t k = 0; k < cell.lateral.size(); ++k) {
+    if (lateral.mode == Mode::stress)
+      servo(world, cell.lateral[k], lateral_area(world, cell, k), lateral.stress, gain);
+    else if (lateral.mode == Mode::fixed)
+      set_wall_speed(world, cell.lateral[k], 0.0);
+    else
+      throw InvalidInput("test cell: lateral walls are stress-controlled or fixed");
+  }
+  world.step(steps);
+}
+
+std::vector<int> cell_walls(const TestCell& cell) {
+  std::vector<int> w = cell.lateral;
+  w.push_back(cell.bottom);
+  w.push_back(cell.top);
+  return w;
+}
+
+Vec3 cell_lengths(const World& world, const TestCell& cell) {
+  const auto e = lateral_extents(world, cell);
+  return Vec3(e[0], e[1], cell_height(world, cell));
+}
+
+Vec3 cell_axis_stress(const World& world, const TestCell& cell) {
+  if (cell.shape != TestCell::Shape::cuboid)
+    throw InvalidInput("test cell: stress per axis needs a cuboid cell");
+  const Vec3 l = cell_lengths(world, cell);
+  Vec3 s;
+  for (int a = 0; a < 2; ++a) {
+    const double area = l[1 - a] * l[2];  // x walls span y and z, y walls x and z
+    s[a] = 0.5 * (wall_stress(world, cell.lateral[2 * a], area) +
+                  wall_stress(world, cell.lateral[2 * a + 1], area));
+  }
+  s[2] = axial_stress(world, cell);
+  return s;
+}
+
+Mat3 cell_love_weber_stress(const World& world, const TestCell& cell) {
+  const double z_lo = world.walls()[cell.bottom].point.z(),
+               z_hi = world.walls()[cell.top].point.z();
+  if (cell.shape == TestCell::Shape::cylinder) {
+    const Wall& side = world.walls()[cell.lateral[0]];
+    return love_weber_stress(
+        world,
+        [&](const Vec3& x) {
+          const double dx = x.x() - side.point.x(), dy = x.y() - side.point.y();
+          return dx * dx + dy * dy <= side.radius * side.radius && x.z() >= z_lo && x.z() <= z_hi;
+        },
+        cell_volume(world, cell));
+  }
+  const Vec3 lo(world.walls()[cell.lateral[0]].point.x(), world.walls()[cell.lateral[2]].point.y(),
+                z_lo);
+  const Vec3 hi(world.walls()[cell.lateral[1]].point.x(), world.walls()[cell.lateral[3]].point.y(),
+                z_hi);
+  return love_weber_stress(
+      world,
+      [&](const Vec3& x) {
+        return (x.array() >= lo.array()).all() && (x.array() <= hi.array()).all();
+      },
+      (hi - lo).prod());
+}
+
+}  // namespace clumpkit::dem

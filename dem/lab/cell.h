@@ -1,0 +1,66 @@
+// The cell of the element tests: rigid frictionless walls around a cuboid or a vertical
+// cylinder, its size and stresses, and one step of its stress or velocity control.
+#pragma once
+
+#include "dem/core/world.h"
+#include "dem/lab/servo.h"
+
+#include <vector>
+
+namespace clumpkit::dem {
+
+/// The rigid frictionless walls that hold a test specimen. Cuboid: six planes, −x, +x, −y, +y
+/// (lateral) then −z, +z (platens). Cylinder: one vertical cylinder (lateral) then the platens.
+struct TestCell {
+  enum class Shape { cuboid, cylinder };
+  Shape shape = Shape::cuboid;
+  std::vector<int> lateral;  ///< lateral wall indices
+  int bottom = -1, top = -1;
+};
+
+/// Adds the frictionless walls of a cuboid [lo, hi] or of a vertical cylinder of `radius` about
+/// the z-axis between z_lo and z_hi.
+TestCell add_cuboid_test_cell(World& world, const Vec3& lo, const Vec3& hi);
+TestCell add_cylinder_test_cell(World& world, double radius, double z_lo, double z_hi);
+
+/// Current size of the cell: height between the platens (m), lateral extents (cuboid: x and y
+/// lengths; cylinder: both the diameter), volume (m³).
+double cell_height(const World& world, const TestCell& cell);
+double cell_volume(const World& world, const TestCell& cell);
+
+/// Axial stress (mean of the two platens) and lateral stress (mean over the lateral walls, each
+/// over its current area), Pa, compression positive.
+double axial_stress(const World& world, const TestCell& cell);
+double lateral_stress(const World& world, const TestCell& cell);
+
+/// How the platens or the lateral walls move during a stage.
+struct Control {
+  enum class Mode { stress, velocity, fixed };
+  Mode mode = Mode::fixed;
+  double stress = 0;  ///< stress mode: target (Pa)
+  double speed = 0;   ///< velocity mode: closing speed of the top platen (m/s; bottom stays)
+};
+
+/// One step: walls under stress control get their servo speed, the top platen under velocity
+/// control closes in at its speed, fixed walls stay; then the world steps `steps` times.
+void drive_cell(World& world, const TestCell& cell, const Control& axial, const Control& lateral,
+                const ServoGain& gain, int steps = 1);
+
+/// Every wall of the cell: the lateral ones, then the bottom and top platens (cuboid: −x, +x,
+/// −y, +y, −z, +z).
+std::vector<int> cell_walls(const TestCell& cell);
+
+/// Current extents (m): cuboid x and y lengths and the height; cylinder the diameter twice and
+/// the height.
+Vec3 cell_lengths(const World& world, const TestCell& cell);
+
+/// Cuboid: the stress on each axis (Pa, compression positive), the mean of the two opposite
+/// walls' normal stresses, each over the current area of its face. Throws InvalidInput for a
+/// cylinder (use axial_stress and lateral_stress).
+Vec3 cell_axis_stress(const World& world, const TestCell& cell);
+
+/// Love–Weber stress (dem/measure/stress.h) of the bodies whose centroid lies inside the cell,
+/// over the cell's volume.
+Mat3 cell_love_weber_stress(const World& world, const TestCell& cell);
+
+}  // namespace clumpkit::dem

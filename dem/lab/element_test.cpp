@@ -1,0 +1,208 @@
+#include "dem/lab/element_test.h"
+
+#include "dem/measure/stress.h"
+#include "geom/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace clumpkit::dem {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+WorldOptions element_test_world_options(const std::vector<Body>& bodies,
+                                        const ContactParams& contact) {
+  if (bodies.empty()) throw InvalidInput("element test: the specimen has no bodies");
+  WorldOptions o;
+  o.gravity = Vec3::Zero();
+  o.sort_every = 1000;
+  o.contact = contact;
+  double r_min = std::numeric_limits<double>::max();
+  for (const Body& b : bodies)
+    for (const Sphere& s : b.spheres) r_min = std::min(r_min, s.radius);
+  o.skin = 0.2 * r_min;
+  return o;
+}
+
+double inertial_number(const std::vector<Body>& bodies, double strain_rate, double confining) {
+  double d_sum = 0, mass = 0, volume = 0;
+  for (const Body& b : bodies) {
+    d_sum += std::cbrt(6.0 * b.volume / M_PI);
+    mass += b.mass;
+    volume += b.volume;
+  }
+  const double d_mean = d_sum / double(bodies.size()), density = mass / volume;
+  return strain_rate * d_mean * std::sqrt(density / confining);
+}
+
+ElementTestResult run_element_test(World& world, const TestCell& cell, const ElementTestSettings& s,
+                                   const std::function<bool()>& stop) {
+  ElementTestState state;
+  return run_element_test(world, cell, s, state, stop);
+}
+
+ElementTestResult run_element_test(World& world, const TestCell& cell, const ElementTestSettings& s,
+                                   ElementTestState& state, const std::function<bool()>& stop) {
+  using Mode = Control::Mode;
+  using Phase = ElementTestState::Phase;
+  auto positive = [](double v, const char* what) {
+    if (!(v > 0.0) || !std::isfinite(v))
+      throw InvalidInput(std::string("element test: ") + what + " must be positive, got " +
+                         std::to_string(v));
+  };
+  positive(s.confining, "confining stress");
+  positive(s.strain_rate, "strain rate");
+  if (s.kind != TestKind::triaxial && !(s.final_stress > s.confining))
+    throw InvalidInput("element test: final stress must exceed the confining stress");
+  if (s.kind == TestKind::triaxial) positive(s.max_axial_strain, "maximum axial strain");
+  if (s.record_every < 1) throw InvalidInput("element test: record_every must be at least 1");
+
+  ElementTestState& st = state;
+  if (st.phase == Phase::start) {
+    st.test_friction = s.friction >= 0.0 ? s.friction : world.options().contact.friction;
+    world.rescale_friction(s.consolidation_friction >= 0.0 ? s.consolidation_friction
+                                                           : st.test_friction);
+    st.start_height = cell_height(world, cell);
+    st.solid_volume = 0;
+    for (const Body& b : world.bodies()) st.solid_volume += b.volume;
+    st.phase = Phase::consolidation;
+  }
+  const double dt = world.options().timestep;
+  ServoGain gain = s.gain;
+  // Default speed limit: a millionth of the height per step, or ten times the platen's speed.
+  if (s.servo_strain_rate > 0.0)
+    gain.max_speed = s.servo_strain_rate * st.start_height;
+  else if (!(gain.max_speed > 0.0))
+    gain.max_speed = std::max(1e-6 * st.start_height / dt, 10.0 * s.strain_rate * st.start_height);
+  auto result = [&](bool stopped) {
+    ElementTestResult r;
+    r.consolidation_steps = st.consolidation_steps;
+    r.consolidated = st.consolidated;
+    r.curve = st.curve;
+    r.solid_volume = st.solid_volume;
+    r.stopped = stopped;
+    return r;
+  };
+
+  // 1. Isotropic consolidation to the confining stress.
+  if (st.phase == Phase::consolidation) {
+    const Control confine{Mode::stress, s.confining, 0.0};
+    constexpr int kCheck = 100;
+    while (st.consolidation_steps < s.max_consolidation_steps) {
+      drive_cell(world, cell, confine, confine, gain, 1);
+      if (++st.consolidation_steps % kCheck != 0) continue;
+      const double ea = std::abs(axial_stress(world, cell) / s.confining - 1.0);
+      const double el = std::abs(lateral_stress(world, cell) / s.confining - 1.0);
+      if (ea <= s.consolidation_tolerance && el <= s.consolidation_tolerance &&
+          mean_unbalanced_force_ratio(world) <= s.consolidation_unbalanced) {
+        st.consolidated = true;
+        break;
+      }
+      if (stop && st.consolidation_steps % (kCheck * 10) == 0 && stop()) return result(true);
+    }
+    st.height0 = cell_height(world, cell);
+    st.volume0 = cell_volume(world, cell);
+    if (world.options().contact.friction != st.test_friction)
+      world.rescale_friction(st.test_friction);
+    st.phase = Phase::loading;
+  }
+
+  // 2. Loading, from the consolidated state.
+  const double h0 = st.height0, v0 = st.volume0;
+  auto row = [&](long long step) {
+    CurveRow c;
+    c.step = step;
+    c.axial_strain = (h0 - cell_height(world, cell)) / h0;
+    const double v = cell_volume(world, cell);
+    c.volumetric_strain = (v0 - v) / v0;
+    c.axial_stress = axial_stress(world, cell);
+    c.lateral_stress = lateral_stress(world, cell);
+    c.p = (c.axial_stress + 2.0 * c.lateral_stress) / 3.0;
+    c.q = c.axial_stress - c.lateral_stress;
+    c.porosity = 1.0 - st.solid_volume / v;
+    c.coordination = coordination_number(world);
+    c.unbalanced = mean_unbalanced_force_ratio(world);
+    return c;
+  };
+  if (st.phase == Phase::loading) {
+    if (st.curve.empty()) {
+      st.curve.push_back(row(0));
+      // Asked once at the consolidated state too: a caller may save it (or stop there).
+      if (stop && stop()) return result(true);
+    }
+    const double rate =
+        s.stress_rate > 0.0 ? s.stress_rate : 20.0 * s.confining * s.strain_rate;  // Pa/s
+    const double platen_speed = s.strain_rate * h0;
+    // A bound on the loading steps: the planned duration four times over.
+    double duration = 0;
+    if (s.kind == TestKind::isotropic) duration = (s.final_stress - s.confining) / rate;
+    if (s.kind == TestKind::oedometer) duration = 0.5 / s.strain_rate;
+    if (s.kind == TestKind::triaxial) duration = s.max_axial_strain / s.strain_rate;
+    const long long max_steps = static_cast<long long>(std::ceil(4.0 * duration / dt)) + 1000;
+    long long& step = st.loading_steps;
+    while (step < max_steps) {
+      for (int k = 0; k < s.record_every; ++k, ++step) {
+        Control axial, lateral;
+        switch (s.kind) {
+          case TestKind::isotropic: {
+            const double target = std::min(s.final_stress, s.confining + rate * dt * double(step));
+            axial = lateral = Control{Mode::stress, target, 0.0};
+            break;
+          }
+          case TestKind::oedometer:
+            axial = Control{Mode::velocity, 0.0, platen_speed};
+            lateral = Control{Mode::fixed, 0.0, 0.0};
+            break;
+          case TestKind::triaxial:
+            axial = Control{Mode::velocity, 0.0, platen_speed};
+            lateral = Control{Mode::stress, s.confining, 0.0};
+            break;
+        }
+        drive_cell(world, cell, axial, lateral, gain, 1);
+      }
+      const CurveRow c = row(step);
+      st.curve.push_back(c);
+      bool done = false;
+      if (s.kind == TestKind::isotropic)
+        done = c.p >= s.final_stress * (1.0 - s.consolidation_tolerance);
+      if (s.kind == TestKind::oedometer) done = c.axial_stress >= s.final_stress;
+      if (s.kind == TestKind::triaxial) done = c.axial_strain >= s.max_axial_strain;
+      if (done) break;
+      if (stop && stop()) return result(true);
+    }
+    for (int w : cell.lateral) set_wall_speed(world, w, 0.0);
+    set_wall_speed(world, cell.bottom, 0.0);
+    set_wall_speed(world, cell.top, 0.0);
+    st.phase = Phase::done;
+  }
+  return result(false);
+}
+
+double tangent_modulus(const std::vector<CurveRow>& curve, double (*stress)(const CurveRow&),
+                       double (*strain)(const CurveRow&), double lo, double hi) {
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (const CurveRow& c : curve) {
+    const double y = stress(c), x = strain(c);
+    if (!(y >= lo && y <= hi)) continue;
+    n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+  }
+  if (n < 3) return std::numeric_limits<double>::quiet_NaN();
+  const double den = n * sxx - sx * sx;
+  if (!(den > 0)) return std::numeric_limits<double>::quiet_NaN();
+  return (n * sxy - sx * sy) / den;
+}
+
+double friction_angle(const CurveRow& row) {
+  const double sum = row.axial_stress + row.lateral_stress;
+  if (!(sum > 0)) return std::numeric_limits<double>::quiet_NaN();
+  return std::asin(std::clamp((row.axial_stress - row.lateral_stress) / sum, -1.0, 1.0)) * 180.0 /
+         kPi;
+}
+
+}  // namespace clumpkit::dem

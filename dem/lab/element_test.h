@@ -1,0 +1,118 @@
+// Element tests on a DEM specimen in a servo-controlled cell (dem/lab/cell.h): isotropic,
+// oedometer, triaxial.
+#pragma once
+
+#include "dem/core/world.h"
+#include "dem/lab/cell.h"
+#include "dem/lab/servo.h"
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace clumpkit::dem {
+
+/// The world options of an element test on `bodies` (SI): gravity off (the test's stresses are
+/// far above the specimen's weight), spatial sorting every 1,000 steps (as LAMMPS), the Verlet
+/// skin 0.2·r_min of the smallest sphere (a length of the specimen, so a scaled copy runs
+/// alike) and the specimen's `contact` law. Throws InvalidInput for no bodies.
+WorldOptions element_test_world_options(const std::vector<Body>& bodies,
+                                        const ContactParams& contact);
+
+/// Inertial number I = ε̇·d·sqrt(ρ/p) of a test at `strain_rate` (1/s) and `confining` stress (Pa)
+/// on `bodies`, d their mean volume-equivalent diameter and ρ their total mass over their total
+/// volume: quasi-static below 1e-3, dense flow above 1e-2 (GDR MiDi 2004).
+double inertial_number(const std::vector<Body>& bodies, double strain_rate, double confining);
+
+/// Which element test.
+enum class TestKind { isotropic, oedometer, triaxial };
+
+/// Parameters of run_element_test (SI).
+struct ElementTestSettings {
+  TestKind kind = TestKind::triaxial;
+  double confining = 100e3;  ///< consolidation stress, and the lateral stress of a triaxial
+  /// isotropic: stress at the end of loading; oedometer: axial stress at the end (Pa).
+  double final_stress = 400e3;
+  double strain_rate = 0.05;      ///< axial strain rate of oedometer and triaxial (1/s)
+  double stress_rate = 0.0;       ///< isotropic loading rate (Pa/s); 0: confining·strain_rate·20
+  double max_axial_strain = 0.2;  ///< triaxial end
+  double friction = -1;           ///< μ of the test (negative: the world's)
+  /// μ during the consolidation (negative: the test's). 0 consolidates a frictionless packing
+  /// to its densest state at the confining stress, whatever its preparation (a protocol that
+  /// makes specimens of different sizes and laws comparable); the test's μ applies from the
+  /// start of loading.
+  double consolidation_friction = -1;
+  double consolidation_tolerance = 0.005;  ///< relative stress error at equilibrium
+  double consolidation_unbalanced = 1e-3;  ///< unbalanced-force ratio at equilibrium
+  long long max_consolidation_steps = 3'000'000;
+  ServoGain gain;  ///< max_speed 0: 10 × the platen speed, or height/1000 per 1,000 steps
+  /// Speed limit of every servo-driven wall as a strain rate of the cell (1/s; 0: gain's). Set
+  /// ÷ λ for specimens λ times larger, it keeps the consolidation's inertial number the same
+  /// whatever the time step (the default limit is per step, and the step of a constant-kn
+  /// specimen grows as λ^1.5).
+  double servo_strain_rate = 0.0;
+  int record_every = 200;  ///< steps between curve rows
+};
+
+/// One row of the curve. Strains and stresses compression positive; strains from the start of
+/// loading (the end of consolidation).
+struct CurveRow {
+  long long step = 0;
+  double axial_strain = 0, volumetric_strain = 0;
+  double axial_stress = 0, lateral_stress = 0, p = 0, q = 0;
+  double porosity = 0, coordination = 0, unbalanced = 0;
+};
+
+/// Where a test is: everything besides the world that its later steps depend on, so a test
+/// stopped between two records (or consolidation checks) and saved with its world continues to
+/// the same bytes.
+struct ElementTestState {
+  enum class Phase { start, consolidation, loading, done };
+  Phase phase = Phase::start;
+  long long consolidation_steps = 0;
+  bool consolidated = false;  ///< equilibrium reached within max_consolidation_steps
+  long long loading_steps = 0;
+  double start_height = 0;          ///< cell height when the test began (m): the speed limit
+  double height0 = 0, volume0 = 0;  ///< at the end of consolidation: the strains' origin
+  double solid_volume = 0;          ///< Σ body volumes (m³)
+  double test_friction = 0;         ///< μ of the loading
+  std::vector<CurveRow> curve;
+};
+
+/// What a test produced.
+struct ElementTestResult {
+  long long consolidation_steps = 0;
+  bool consolidated = false;  ///< equilibrium reached within max_consolidation_steps
+  std::vector<CurveRow> curve;
+  double solid_volume = 0;  ///< Σ body volumes (m³)
+  bool stopped = false;     ///< ended early by the stop callback
+};
+
+/// Consolidates the specimen in `cell` isotropically to the confining stress (servo on every
+/// wall, gravity as the world has it), then loads it: isotropic — all walls follow a stress ramp
+/// to final_stress; oedometer — lateral walls fixed, top platen at strain_rate until
+/// final_stress; triaxial — lateral stress held by servo, top platen at strain_rate to
+/// max_axial_strain. `stop` is asked every 1,000 consolidation steps, at the consolidated state
+/// (state.phase loading, one curve row) and every record; it ends the test early when true.
+/// Deterministic: the same world and settings give the same curve for any thread count.
+ElementTestResult run_element_test(World& world, const TestCell& cell,
+                                   const ElementTestSettings& settings,
+                                   const std::function<bool()>& stop = {});
+
+/// The same, continuing from `state` (a fresh one starts the test) and leaving in it where the
+/// test stopped: Phase::done at the end, else the phase to continue with the saved world.
+ElementTestResult run_element_test(World& world, const TestCell& cell,
+                                   const ElementTestSettings& settings, ElementTestState& state,
+                                   const std::function<bool()>& stop = {});
+
+/// Tangent modulus dy/dx of the least-squares line through the rows whose `x_of` (stress) lies
+/// in [lo, hi]: the bulk modulus (p against ε_v) or the constrained modulus (σ_a against ε_a).
+/// NaN with fewer than 3 rows there.
+double tangent_modulus(const std::vector<CurveRow>& curve, double (*stress)(const CurveRow&),
+                       double (*strain)(const CurveRow&), double lo, double hi);
+
+/// Mobilised friction angle (degrees) of a triaxial row: asin((σ_a − σ_r)/(σ_a + σ_r)).
+double friction_angle(const CurveRow& row);
+
+}  // namespace clumpkit::dem

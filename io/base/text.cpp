@@ -1,0 +1,58 @@
+#include "io/base/text.h"
+
+#include "geom/errors.h"
+
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace clumpkit {
+
+namespace fs = std::filesystem;
+
+std::string read_file(const std::string& path, const std::string& what) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st)) throw IoError(path + ": file not found");
+  if (fs::is_directory(st)) throw IoError(path + ": is a directory, not a " + what);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(path + ": cannot open " + what + ": " + std::strerror(errno));
+  std::ostringstream buf;
+  buf << in.rdbuf();
+  if (in.bad()) throw IoError(path + ": read failed");
+  return std::move(buf).str();
+}
+
+std::vector<std::string> split_csv(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  std::string cell;
+  while (std::getline(ss, cell, ',')) out.push_back(cell);
+  return out;
+}
+
+namespace {
+
+template <class T>
+std::optional<T> whole(std::string_view s) {
+  if (s.size() > 1 && s[0] == '+' && s[1] != '-') s.remove_prefix(1);
+  T v{};
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size() || s.empty()) return std::nullopt;
+  return v;
+}
+
+}  // namespace
+
+std::optional<double> to_number(std::string_view token) {
+  return whole<double>(token);
+}
+
+std::optional<long long> to_integer(std::string_view token) {
+  return whole<long long>(token);
+}
+
+}  // namespace clumpkit

@@ -1,0 +1,36 @@
+// Binary checkpoints of a DEM World that continue bit-identically after loading.
+#pragma once
+
+#include "dem/core/world.h"
+#include "dem/run/stage_store.h"
+
+#include <cstdint>
+#include <string>
+
+namespace clumpkit {
+
+/// Current checkpoint format version (bumped on any layout change, or a change in what a
+/// stored word means: 4 = run_until's height reference is the one after the window test;
+/// 6 = the sort interval, WorldOptions::sort_every).
+inline constexpr std::uint32_t kCheckpointVersion = 6;
+
+/// Writes `world` and `info` to `path`: magic "CLUMPKITCKPT", version, then little-endian
+/// integers and raw IEEE-754 doubles — options (gravity, timestep, skin, near-skin fraction,
+/// sort interval, contact parameters), step count, time, every body (spheres, mass, moments,
+/// position, velocity, orientation, angular velocity, force, torque, rotation lock, volume, kind,
+/// template id, scale), walls (moving planes
+/// with their current point), pair and wall contacts with their full state (shear history
+/// included), the neighbour lists (build positions and pairs, filter positions and limit) and a
+/// trailing FNV-1a 64 checksum.
+/// Written atomically (write_file_atomically), so a reader never sees a partial file.
+/// Throws IoError when the file cannot be written.
+void save_checkpoint(const std::string& path, const dem::World& world,
+                     const dem::CheckpointInfo& info = {});
+
+/// Reads a checkpoint written by save_checkpoint into a new world whose later steps are
+/// bit-identical to those of the saved one; fills `info` when given. Throws IoError when the
+/// file cannot be opened, and InvalidInput naming the file for a wrong magic or version, a
+/// truncated or over-long file, a checksum mismatch or inconsistent content.
+dem::World load_checkpoint(const std::string& path, dem::CheckpointInfo* info = nullptr);
+
+}  // namespace clumpkit

@@ -1,0 +1,40 @@
+#include "io/formats/specimen_vtp.h"
+
+#include "geom/format.h"
+#include "io/base/atomic_file.h"
+
+namespace clumpkit {
+
+void write_specimen_vtp(const std::string& path, const std::vector<SpecimenBody>& bodies) {
+  write_file_atomically(path, [&](std::ostream& o) {
+    std::size_t n = 0;
+    for (const SpecimenBody& b : bodies) n += b.spheres.size();
+    o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
+         "byte_order=\"LittleEndian\">\n<PolyData>\n<Piece NumberOfPoints=\""
+      << n << "\" NumberOfVerts=\"" << n << "\">\n<Points>\n"
+      << "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (const SpecimenBody& b : bodies)
+      for (const Sphere& s : b.spheres)
+        o << format_number(s.center.x()) << " " << format_number(s.center.y()) << " "
+          << format_number(s.center.z()) << "\n";
+    o << "</DataArray>\n</Points>\n<PointData Scalars=\"radius\">\n"
+      << "<DataArray type=\"Float64\" Name=\"radius\" format=\"ascii\">\n";
+    for (const SpecimenBody& b : bodies)
+      for (const Sphere& s : b.spheres) o << format_number(s.radius) << "\n";
+    o << "</DataArray>\n<DataArray type=\"Int32\" Name=\"body\" format=\"ascii\">\n";
+    for (const SpecimenBody& b : bodies)
+      for (std::size_t s = 0; s < b.spheres.size(); ++s) o << b.id << "\n";
+    o << "</DataArray>\n<DataArray type=\"Int32\" Name=\"kind\" format=\"ascii\">\n";
+    for (const SpecimenBody& b : bodies)
+      for (std::size_t s = 0; s < b.spheres.size(); ++s)
+        o << (b.kind == dem::BodyKind::rock ? 1 : 0) << "\n";
+    o << "</DataArray>\n</PointData>\n<Verts>\n"
+      << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    for (std::size_t k = 0; k < n; ++k) o << k << "\n";
+    o << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+    for (std::size_t k = 0; k < n; ++k) o << k + 1 << "\n";
+    o << "</DataArray>\n</Verts>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  });
+}
+
+}  // namespace clumpkit

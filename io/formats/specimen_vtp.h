@@ -1,0 +1,16 @@
+// specimen.vtp: the spheres of a specimen for ParaView (VTK XML PolyData).
+#pragma once
+
+#include "io/formats/specimen_csv.h"
+
+#include <string>
+#include <vector>
+
+namespace clumpkit {
+
+/// specimen.vtp: VTK XML PolyData, one point per sphere with point data radius, body (the id of
+/// specimen.csv, from 1) and kind (0 soil, 1 rock); in ParaView use a Glyph filter (sphere, scale
+/// by radius, factor 2).
+void write_specimen_vtp(const std::string& path, const std::vector<SpecimenBody>& bodies);
+
+}  // namespace clumpkit

@@ -1,0 +1,131 @@
+#include "io/pipeline/fill.h"
+
+#include "geom/errors.h"
+#include "geom/format.h"
+#include "geom/mesh/mesh_index.h"
+#include "io/formats/clump_io.h"
+#include "io/formats/clump_vtp.h"
+#include "io/formats/mesh_io.h"
+#include "io/pipeline/job.h"
+#include "io/reports/views.h"
+
+#include <chrono>
+#include <filesystem>
+#include <utility>
+
+namespace clumpkit {
+
+nlohmann::ordered_json fidelity_json(const Fidelity& f) {
+  nlohmann::ordered_json j;
+  j["spheres"] = f.spheres;
+  j["mesh_volume"] = f.mesh_volume;
+  j["mesh_volume_method"] = f.mesh_volume_method;
+  j["clump_volume"] = f.clump_volume;
+  j["clump_volume_method"] = f.clump_volume_method;
+  j["covered_fraction"] = f.covered_fraction;
+  j["overshoot_fraction"] = f.overshoot_fraction;
+  j["surface_mean_distance"] = f.surface_mean_distance;
+  j["surface_max_distance"] = f.surface_max_distance;
+  j["centroid_offset"] = f.centroid_offset;
+  j["inertia_error"] = f.inertia_error;
+  j["overshoot_depth_max"] = f.overshoot_depth_max;
+  return j;
+}
+
+FillJobResult run_fill_job(const FillJobOptions& options,
+                           const std::function<void(const std::string&)>& note,
+                           const std::function<void(const std::string&)>& warn) {
+  const auto t0 = std::chrono::steady_clock::now();
+  FillOptions fo = options.fill;
+  validate(fo);
+  check_not_input(options.out, "--output", options.mesh);
+  // Every output's folder must exist before the work, so a failure leaves no partial output.
+  for (const auto& [option, path] :
+       {std::pair<const char*, const std::string&>{"--output", options.out},
+        {"--png", options.png},
+        {"--vtp", options.vtp}}) {
+    if (path.empty()) continue;
+    if (std::string(option) != "--output") {
+      check_not_input(path, option, options.mesh);
+      if (path == options.out || (!options.png.empty() && options.png == options.vtp))
+        throw InvalidInput(std::string(option) + " " + path +
+                           ": names another output of this run; choose distinct files");
+    }
+    const auto dir = std::filesystem::path(path).parent_path();
+    if (!dir.empty() && !std::filesystem::is_directory(dir))
+      throw InvalidInput(std::string(option) + " " + path + ": folder " + dir.string() +
+                         " does not exist");
+  }
+  MeshReadReport report;
+  Mesh mesh;
+  std::string inside_outside = "ray parity along the grid rows (watertight mesh)";
+  try {
+    mesh = read_mesh(options.mesh, &report);
+  } catch (const InvalidInput& e) {
+    if (!options.allow_open) throw;
+    mesh = read_mesh_raw(options.mesh);  // still throws for unreadable files
+    if (mesh.triangles.empty()) throw;
+    fo.field.vote_sign = true;
+    inside_outside = "Embree ray-parity voting (mesh not watertight)";
+    note(std::string(e.what()) + "; deciding inside/outside by ray-parity voting");
+  }
+  if (report.reoriented)
+    note(options.mesh + ": triangles were not consistently outward; re-oriented");
+  // Phase times, so a user sees what grows with the triangle count (reading, indexing) apart
+  // from what should not (field, fill).
+  auto since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
+  const double t_read = since(t0);
+  auto t = std::chrono::steady_clock::now();
+  const MeshIndex index(mesh);
+  const double t_index = since(t);
+  t = std::chrono::steady_clock::now();
+  const DistanceField field = make_distance_field(index, fo.field);
+  const double t_field = since(t);
+  t = std::chrono::steady_clock::now();
+  FillJobResult out;
+  const FillResult& r = out.fill = fill(index, field, fo);
+  const double t_fill = since(t);
+  if (r.clump.spheres.empty())
+    throw InvalidInput(options.mesh + ": no sphere fits with --min-radius " +
+                       format_number(fo.min_radius));
+  if (fo.spheres > 0 && static_cast<int>(r.clump.spheres.size()) < fo.spheres)
+    warn("the budget of " + std::to_string(fo.spheres) + " spheres was not reached: " +
+         std::to_string(r.clump.spheres.size()) + " placed, stopped by " + r.stopped_by +
+         (r.stopped_by == "candidates" ? " (no medial candidate left adds coverage)" : ""));
+  t = std::chrono::steady_clock::now();
+  const Fidelity& f = out.fidelity = fo.field.vote_sign ? assess_fidelity(mesh, r.clump, r.voxel)
+                                                        : assess_fidelity(index, r.clump, r.voxel);
+  const double t_fidelity = since(t);
+  write_clump(options.out, r.clump,
+              "clumpkit fill " + options.mesh + "\nspheres " +
+                  std::to_string(r.clump.spheres.size()) + ", covered fraction " +
+                  format_number(f.covered_fraction));
+  if (!options.vtp.empty()) write_clump_vtp(options.vtp, mesh, r.clump);
+  if (!options.png.empty())
+    write_particle_png(options.png, mesh, r.clump,
+                       std::filesystem::path(options.mesh).filename().string() + ": " +
+                           std::to_string(f.spheres) + " spheres, coverage " +
+                           format_fixed(f.covered_fraction, 3) + ", overshoot " +
+                           format_fixed(f.overshoot_fraction, 4) + " of the volume",
+                       450, false);
+  nlohmann::ordered_json& j = out.report = fidelity_json(f);
+  j["inside_outside"] = inside_outside;
+  j["voxel"] = r.voxel;
+  j["candidates"] = r.candidates;
+  j["stopped_by"] = r.stopped_by;
+  j["max_overshoot"] = fo.max_overshoot;
+  j["seconds"] = since(t0);
+  nlohmann::ordered_json phases;
+  phases["read"] = t_read;  // reading, welding and checking the mesh
+  phases["index"] = t_index;
+  phases["field"] = t_field;
+  phases["fill"] = t_fill;
+  phases["fidelity"] = t_fidelity;
+  j["seconds_by_phase"] = phases;
+  j["triangles"] = mesh.triangles.size();
+  return out;
+}
+
+}  // namespace clumpkit

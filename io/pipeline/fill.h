@@ -1,0 +1,48 @@
+// The job of `clumpkit fill`: one mesh read, filled with a clump of spheres, its fidelity
+// assessed, and the clump written (with a picture and a ParaView file when asked).
+#pragma once
+
+#include "geom/fill/fidelity.h"
+#include "geom/fill/fill.h"
+
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <string>
+
+namespace clumpkit {
+
+/// What the fill job reads and writes. Lengths in the mesh's units.
+struct FillJobOptions {
+  std::string mesh;  ///< closed mesh (STL, OBJ, PLY)
+  std::string out;   ///< clump CSV to write
+  std::string png;   ///< four-view picture to write ("": none)
+  std::string vtp;   ///< mesh and spheres for ParaView ("": none)
+  FillOptions fill;  ///< the stop rules, the field and the overshoot contract
+  /// Accept a mesh that is not watertight: inside/outside by Embree ray-parity voting.
+  bool allow_open = false;
+};
+
+/// What the fill job did.
+struct FillJobResult {
+  FillResult fill;
+  Fidelity fidelity;
+  /// The report of `fill --json`: the fidelity, inside_outside, voxel, candidates, stopped_by,
+  /// max_overshoot, seconds, seconds_by_phase (read, index, field, fill, fidelity), triangles.
+  nlohmann::ordered_json report;
+};
+
+/// Reads the mesh, fills it (geom/fill/fill.h), assesses the clump (geom/fill/fidelity.h) and
+/// writes the outputs. Every output's folder is checked, and no output may be the input or
+/// another output, before the work starts, so a refusal leaves nothing behind. `note` hears
+/// what the user should know about the input (a re-oriented mesh, ray voting), `warn` a sphere
+/// budget that was not reached. Throws InvalidInput for bad options or a mesh no sphere fits,
+/// and what read_mesh throws.
+FillJobResult run_fill_job(const FillJobOptions& options,
+                           const std::function<void(const std::string&)>& note,
+                           const std::function<void(const std::string&)>& warn);
+
+/// The fidelity record as JSON (the keys of Fidelity).
+nlohmann::ordered_json fidelity_json(const Fidelity& f);
+
+}  // namespace clumpkit

@@ -1,0 +1,180 @@
+#include "io/recipes/recipe.h"
+
+#include "geom/errors.h"
+#include "io/base/text.h"
+#include "io/recipes/toml_fields.h"
+
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace clumpkit {
+
+namespace {
+
+std::string show(const toml::node& n) {
+  return toml_show(n);
+}
+
+struct Parser : TomlFields {
+  Distribution distribution(const toml::node& n, const std::string& field) const {
+    if (n.is_number()) return constant(number(n, field));
+    const auto* t = n.as_table();
+    if (!t || t->size() != 1)
+      fail(field,
+           "expected a number or one of {uniform|integers|normal|lognormal = ...}, got " + show(n));
+    const auto first = t->begin();
+    const std::string k(first->first.str());
+    const toml::node& val = first->second;
+    Distribution d;
+    if (k == "uniform" || k == "integers") {
+      d.kind = k == "uniform" ? Distribution::Kind::Uniform : Distribution::Kind::Integers;
+      std::tie(d.a, d.b) = pair(val, field + "." + k);
+    } else if (k == "normal" || k == "lognormal") {
+      d.kind = k == "normal" ? Distribution::Kind::Normal : Distribution::Kind::Lognormal;
+      const auto* p = val.as_table();
+      if (!p)
+        fail(field + "." + k,
+             "expected { mu = .., sigma = .., min = .., max = .. }, got " + show(val));
+      bool mu = false, sigma = false;
+      for (const auto& [pk, pv] : *p) {
+        const std::string name(pk.str());
+        const std::string f = field + "." + k + "." + name;
+        if (name == "mu") {
+          d.a = number(pv, f);
+          mu = true;
+        } else if (name == "sigma") {
+          d.b = number(pv, f);
+          sigma = true;
+        } else if (name == "min") {
+          d.min = number(pv, f);
+        } else if (name == "max") {
+          d.max = number(pv, f);
+        } else {
+          fail(f, "unknown key (known: mu, sigma, min, max)");
+        }
+      }
+      if (!mu || !sigma) fail(field + "." + k, "needs both mu and sigma");
+    } else {
+      fail(field + "." + k, "unknown distribution (known: uniform, integers, normal, lognormal)");
+    }
+    return d;
+  }
+
+  FractionSpec fraction(const toml::table& t, const std::string& prefix) const {
+    FractionSpec f;
+    for (const auto& [key, val] : t) {
+      const std::string k(key.str());
+      const std::string field = prefix + "." + k;
+      if (k == "name") {
+        if (!val.is_string()) fail(field, "expected a string, got " + show(val));
+        f.name = val.as_string()->get();
+      } else if (k == "method") {
+        if (!val.is_string()) fail(field, "expected a string, got " + show(val));
+        f.method = val.as_string()->get();
+      } else if (k == "count") {
+        const auto* i = val.as_integer();
+        if (!i) fail(field, "expected an integer, got " + show(val));
+        if (i->get() < 0 || i->get() > 10000000)
+          fail(field, "must be in [0, 10000000], got " + show(val));
+        f.count = static_cast<int>(i->get());
+      } else if (k == "roundness") {
+        const auto [lo, hi] = pair(val, field);
+        f.params["roundness_min"] = constant(lo);
+        f.params["roundness_max"] = constant(hi);
+        if (lo > hi) fail(field, "low exceeds high, got " + show(val));
+      } else {
+        f.params[k] = distribution(val, field);
+      }
+    }
+    if (f.method.empty())
+      fail(prefix + ".method", "missing (one of block, hull, polyhedron, ellipsoid)");
+    if (!t.contains("count")) fail(prefix + ".count", "missing");
+    if (f.name.empty()) f.name = f.method;
+    try {
+      validate(f, prefix);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(file + ": " + e.what());
+    }
+    return f;
+  }
+};
+
+}  // namespace
+
+ShapeRecipe parse_shape_recipe(const std::string& text, const std::string& path) {
+  Parser p{{path}};
+  const toml::table root = parse_toml(text, path);
+  ShapeRecipe r;
+  r.path = path;
+  r.text = text;
+  bool any = false;
+  for (const auto& [key, val] : root) {
+    const std::string k(key.str());
+    if (k == "seed") {
+      const auto* i = val.as_integer();
+      if (!i || i->get() < 0) p.fail("seed", "expected a non-negative integer, got " + show(val));
+      r.seed = static_cast<std::uint64_t>(i->get());
+    } else if (k == "refine_triangles") {
+      const auto* i = val.as_integer();
+      if (!i || i->get() < 0 || i->get() > 50000000)
+        p.fail(k, "expected an integer in [0, 5e7], got " + show(val));
+      r.refine_triangles = i->get();
+    } else if (k == "name" || k == "description") {
+      if (!val.is_string()) p.fail(k, "expected a string, got " + show(val));
+      (k == "name" ? r.name : r.description) = val.as_string()->get();
+    } else if (k == "fraction") {
+      const auto* arr = val.as_array();
+      if (!arr || !arr->is_array_of_tables()) p.fail(k, "expected [[fraction]] tables");
+      int i = 0;
+      for (const auto& f : *arr) {
+        r.fractions.push_back(p.fraction(*f.as_table(), "fraction[" + std::to_string(i++) + "]"));
+        any = true;
+      }
+    } else if (k == "fill") {
+      const auto* t = val.as_table();
+      if (!t) p.fail(k, "expected a [fill] table");
+      r.has_fill = true;
+      for (const auto& [fk, fv] : *t) {
+        const std::string name(fk.str());
+        const std::string field = "fill." + name;
+        if (name == "spheres") {
+          const auto* i = fv.as_integer();
+          if (!i || i->get() < 1) p.fail(field, "expected an integer >= 1, got " + show(fv));
+          r.fill.spheres = static_cast<int>(i->get());
+        } else if (name == "voxels") {
+          const auto* i = fv.as_integer();
+          if (!i || i->get() < 4 || i->get() > 2000)
+            p.fail(field, "expected an integer in [4, 2000], got " + show(fv));
+          r.fill.field.voxels = static_cast<int>(i->get());
+        } else if (name == "coverage") {
+          r.fill.coverage = p.number(fv, field);
+        } else if (name == "min_radius") {
+          r.fill.min_radius = p.number(fv, field);
+        } else if (name == "max_overshoot") {
+          r.fill.max_overshoot = p.number(fv, field);
+        } else {
+          p.fail(field,
+                 "unknown key (known: spheres, coverage, min_radius, voxels, max_overshoot)");
+        }
+      }
+      try {
+        validate(r.fill);
+      } catch (const InvalidInput& e) {
+        p.fail("fill", e.what());
+      }
+    } else {
+      p.fail(k, "unknown key (known: seed, name, description, refine_triangles, fraction, fill)");
+    }
+  }
+  if (!any) p.fail("fraction", "the recipe lists no [[fraction]]");
+  return r;
+}
+
+ShapeRecipe read_shape_recipe(const std::string& path) {
+  return parse_shape_recipe(read_file(path, "recipe file"), path);
+}
+
+}  // namespace clumpkit

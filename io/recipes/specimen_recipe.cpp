@@ -1,0 +1,308 @@
+#include "io/recipes/specimen_recipe.h"
+
+#include "geom/errors.h"
+#include "io/base/text.h"
+#include "io/recipes/toml_fields.h"
+#include "io/reports/report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace clumpkit {
+
+namespace {
+
+std::vector<double> numbers(const TomlFields& f, const toml::node& n, const std::string& field) {
+  const auto* a = n.as_array();
+  if (!a || a->empty()) f.fail(field, "expected a non-empty array of numbers, got " + toml_show(n));
+  std::vector<double> v;
+  for (std::size_t i = 0; i < a->size(); ++i)
+    v.push_back(f.number(*a->get(i), field + "[" + std::to_string(i) + "]"));
+  return v;
+}
+
+double positive(const TomlFields& f, const toml::node& n, const std::string& field) {
+  const double x = f.number(n, field);
+  if (!(x > 0.0)) f.fail(field, "must be positive, got " + toml_show(n));
+  return x;
+}
+
+}  // namespace
+
+SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string& path) {
+  const TomlFields f{path};
+  const toml::table root = parse_toml(text, path);
+  SpecimenRecipe r;
+  r.path = path;
+  r.text = text;
+  bool have_gradation = false;
+  std::vector<std::string> deposition_keys;  // keys that only the deposition method uses
+  bool have_diameter = false, have_size = false;
+  for (const auto& [key, val] : root) {
+    const std::string k(key.str());
+    if (k == "target_relative_density" || k == "layers" || k == "calibration_frictions")
+      deposition_keys.push_back(k);
+    if (k == "seed") {
+      const long long s = f.integer(val, k);
+      if (s < 0) f.fail(k, "must be non-negative, got " + toml_show(val));
+      r.seed = static_cast<std::uint64_t>(s);
+    } else if (k == "name" || k == "description") {
+      f.string(val, k);
+    } else if (k == "container") {
+      for (const auto& [ck, cv] : f.table(val, k)) {
+        const std::string c(ck.str()), field = "container." + c;
+        if (c == "diameter") {
+          r.container_diameter = positive(f, cv, field);
+          have_diameter = true;
+        } else if (c == "height") {
+          r.container_height = positive(f, cv, field);
+          have_diameter = true;
+        } else if (c == "shape") {
+          const std::string shape = f.string(cv, field);
+          if (shape != "cylinder" && shape != "cuboid")
+            f.fail(field, "expected \"cylinder\" or \"cuboid\", got " + toml_show(cv));
+          r.cuboid = shape == "cuboid";
+        } else if (c == "size") {
+          const std::vector<double> v = numbers(f, cv, field);
+          if (v.size() != 3) f.fail(field, "expected [x, y, z] edges, got " + toml_show(cv));
+          for (int a = 0; a < 3; ++a) {
+            if (!(v[a] > 0)) f.fail(field, "edges must be positive, got " + toml_show(cv));
+            r.container_size[a] = v[a];
+          }
+          have_size = true;
+        } else {
+          f.fail(field, "unknown key (known: shape, diameter, height, size)");
+        }
+      }
+    } else if (k == "preparation") {
+      for (const auto& [pk, pv] : f.table(val, k)) {
+        const std::string c(pk.str()), field = "preparation." + c;
+        if (c == "method") {
+          const std::string m = f.string(pv, field);
+          if (m != "deposition" && m != "compression")
+            f.fail(field, "expected \"deposition\" or \"compression\", got " + toml_show(pv));
+          r.compression = m == "compression";
+        } else if (c == "porosity") {
+          r.compression_porosity = f.number(pv, field);
+          if (!(r.compression_porosity > 0.2 && r.compression_porosity < 0.9))
+            f.fail(field, "must be in (0.2, 0.9), got " + toml_show(pv));
+        } else if (c == "friction") {
+          r.compression_friction = f.number(pv, field);
+          if (!(r.compression_friction >= 0 && r.compression_friction <= 10))
+            f.fail(field, "must be in [0, 10], got " + toml_show(pv));
+        } else {
+          f.fail(field, "unknown key (known: method, porosity, friction)");
+        }
+      }
+    } else if (k == "gradation") {
+      have_gradation = true;
+      for (const auto& [gk, gv] : f.table(val, k)) {
+        const std::string g(gk.str()), field = "gradation." + g;
+        if (g == "sieves")
+          r.sieves = numbers(f, gv, field);
+        else if (g == "passing")
+          r.passing = numbers(f, gv, field);
+        else
+          f.fail(field, "unknown key (known: sieves, passing)");
+      }
+    } else if (k == "soil_rock_threshold") {
+      r.soil_rock_threshold = positive(f, val, k);
+    } else if (k == "rock_mass_fraction") {
+      r.rock_mass_fraction = f.number(val, k);
+      if (r.rock_mass_fraction < 0 || r.rock_mass_fraction > 1)
+        f.fail(k, "must be in [0, 1], got " + toml_show(val));
+    } else if (k == "fines") {
+      for (const auto& [fk, fv] : f.table(val, k)) {
+        const std::string g(fk.str()), field = "fines." + g;
+        if (g == "below")
+          r.fines_below = positive(f, fv, field);
+        else if (g == "replace_with")
+          std::tie(r.fines_min, r.fines_max) = f.pair(fv, field);
+        else
+          f.fail(field, "unknown key (known: below, replace_with)");
+      }
+      if (!(r.fines_min > 0 && r.fines_min < r.fines_max))
+        f.fail("fines.replace_with", "expected 0 < low < high, got [" + format_number(r.fines_min) +
+                                         ", " + format_number(r.fines_max) + "]");
+    } else if (k == "rock") {
+      for (const auto& [rk, rv] : f.table(val, k)) {
+        const std::string g(rk.str()), field = "rock." + g;
+        if (g == "library")
+          r.library = f.string(rv, field);
+        else if (g == "recipe")
+          r.library_recipe = f.string(rv, field);
+        else
+          f.fail(field, "unknown key (known: library, recipe)");
+      }
+    } else if (k == "density") {
+      for (const auto& [dk, dv] : f.table(val, k)) {
+        const std::string g(dk.str()), field = "density." + g;
+        if (g == "soil")
+          r.soil_density = positive(f, dv, field);
+        else if (g == "rock")
+          r.rock_density = positive(f, dv, field);
+        else
+          f.fail(field, "unknown key (known: soil, rock)");
+      }
+    } else if (k == "contact") {
+      for (const auto& [ck, cv] : f.table(val, k)) {
+        const std::string g(ck.str()), field = "contact." + g;
+        if (g == "kn") {
+          r.kn = positive(f, cv, field);
+        } else if (g == "ks") {
+          r.ks = positive(f, cv, field);
+        } else if (g == "friction") {
+          r.friction = f.number(cv, field);
+          if (r.friction < 0) f.fail(field, "must not be negative, got " + toml_show(cv));
+        } else if (g == "damping_ratio") {
+          r.damping_ratio = f.number(cv, field);
+          if (!(r.damping_ratio >= 0 && r.damping_ratio < 1))
+            f.fail(field, "must be in [0, 1), got " + toml_show(cv));
+        } else if (g == "local_damping") {
+          r.local_damping = f.number(cv, field);
+          if (!(r.local_damping >= 0 && r.local_damping < 1))
+            f.fail(field, "must be in [0, 1), got " + toml_show(cv));
+        } else if (g == "stiffness_scaling") {
+          const std::string m = f.string(cv, field);
+          if (m != "none" && m != "linear")
+            f.fail(field, "expected \"none\" or \"linear\", got " + toml_show(cv));
+          r.linear_scaling = m == "linear";
+        } else if (g == "d_ref") {
+          r.d_ref = positive(f, cv, field);
+        } else {
+          f.fail(field,
+                 "unknown key (known: kn, ks, friction, damping_ratio, local_damping, "
+                 "stiffness_scaling, d_ref)");
+        }
+      }
+    } else if (k == "target_relative_density") {
+      r.target_relative_density = f.number(val, k);
+      if (r.target_relative_density < 0 || r.target_relative_density > 1)
+        f.fail(k, "must be in [0, 1], got " + toml_show(val));
+    } else if (k == "layers") {
+      const long long n = f.integer(val, k);
+      if (n < 1 || n > 100) f.fail(k, "must be in [1, 100], got " + toml_show(val));
+      r.layers = static_cast<int>(n);
+    } else if (k == "calibration_frictions") {
+      r.calibration_frictions = numbers(f, val, k);
+    } else {
+      f.fail(
+          k,
+          "unknown key (known: seed, name, description, container, gradation, soil_rock_threshold, "
+          "rock_mass_fraction, fines, rock, density, contact, preparation, "
+          "target_relative_density, layers, calibration_frictions)");
+    }
+  }
+
+  // The preparation and its container.
+  if (r.linear_scaling && !(r.d_ref > 0))
+    f.fail("contact.d_ref",
+           "needed by stiffness_scaling = \"linear\" (the diameter at which kn "
+           "and ks hold)");
+  if (r.cuboid && !r.compression)
+    f.fail("container.shape",
+           "a cuboid needs preparation.method = \"compression\" (deposition "
+           "builds cylinders)");
+  if (r.cuboid && have_diameter)
+    f.fail("container", "a cuboid has size = [x, y, z], not diameter or height");
+  if (!r.cuboid && have_size)
+    f.fail("container.size", "is for shape = \"cuboid\" (a cylinder has diameter and height)");
+  if (r.compression && !deposition_keys.empty())
+    f.fail(deposition_keys.front(), "applies to preparation.method = \"deposition\" only");
+
+  // Gradation: sieves descending, passing descending from exactly 100.
+  if (!have_gradation) f.fail("gradation", "missing (sieves = [...], passing = [...])");
+  if (r.sieves.size() != r.passing.size() || r.sieves.size() < 2)
+    f.fail("gradation", "sieves and passing need the same length, at least 2, got " +
+                            std::to_string(r.sieves.size()) + " and " +
+                            std::to_string(r.passing.size()));
+  for (std::size_t i = 0; i < r.sieves.size(); ++i) {
+    if (!(r.sieves[i] > 0))
+      f.fail("gradation.sieves[" + std::to_string(i) + "]",
+             "must be positive, got " + format_number(r.sieves[i]));
+    if (i > 0 && !(r.sieves[i] < r.sieves[i - 1]))
+      f.fail("gradation.sieves[" + std::to_string(i) + "]",
+             "sieves must decrease, got " + format_number(r.sieves[i]) + " after " +
+                 format_number(r.sieves[i - 1]));
+    if (i > 0 && r.passing[i] > r.passing[i - 1])
+      f.fail("gradation.passing[" + std::to_string(i) + "]",
+             "percent passing must not increase, got " + format_number(r.passing[i]) + " after " +
+                 format_number(r.passing[i - 1]));
+    if (r.passing[i] < 0)
+      f.fail("gradation.passing[" + std::to_string(i) + "]", "must not be negative");
+  }
+  if (std::abs(r.passing.front() - 100.0) > 1e-9)
+    f.fail("gradation.passing[0]",
+           "the class percentages must sum to 100 (100 % passing the largest sieve), got " +
+               format_number(r.passing.front()));
+  r.classes.clear();
+  for (std::size_t i = 0; i + 1 < r.sieves.size(); ++i)
+    r.classes.push_back(SizeClass{r.sieves[i + 1], r.sieves[i], r.passing[i] - r.passing[i + 1]});
+  if (r.passing.back() > 0)  // what passes the finest sieve: a class down to zero... kept as fines
+    r.classes.push_back(SizeClass{0.0, r.sieves.back(), r.passing.back()});
+
+  // Rock share implied by the gradation must match the stated rock fraction.
+  double rock = 0.0;
+  for (const auto& c : r.classes)
+    if (c.min >= r.soil_rock_threshold - 1e-12) rock += c.percent;
+  if (std::abs(rock / 100.0 - r.rock_mass_fraction) > 0.005)
+    f.fail("rock_mass_fraction", "the gradation gives " + format_number(rock) +
+                                     " % above the threshold " +
+                                     format_number(r.soil_rock_threshold) + " m, got " +
+                                     format_number(100 * r.rock_mass_fraction) + " %");
+  const double narrowest = r.cuboid
+                               ? *std::min_element(r.container_size.begin(), r.container_size.end())
+                               : std::min(r.container_diameter, r.container_height);
+  if (r.compression) {
+    if (4 * r.sieves.front() > narrowest)
+      f.fail(r.cuboid ? "container.size" : "container.diameter",
+             "must be at least four largest particles (" + format_number(r.sieves.front()) +
+                 " m) across, got " + format_number(narrowest));
+  } else if (2 * r.sieves.front() >= r.container_diameter)
+    f.fail("container.diameter", "not wider than twice the largest particle (" +
+                                     format_number(r.sieves.front()) + " m), got " +
+                                     format_number(r.container_diameter));
+  // Porosity is measured one largest sieve size away from floor, top and wall, in each layer
+  // too: a layer must be thicker than two of them, the container wider than two more.
+  if (!r.compression && 2 * r.sieves.front() >= r.container_height / r.layers)
+    f.fail("container.height", "a layer (" + format_number(r.container_height / r.layers) +
+                                   " m) must be thicker than twice the largest particle (" +
+                                   format_number(r.sieves.front()) + " m), got " +
+                                   format_number(r.container_height));
+  if (r.calibration_frictions.size() < 6)
+    f.fail("calibration_frictions", "need the two end points and at least four in between, got " +
+                                        std::to_string(r.calibration_frictions.size()) + " values");
+  for (double mu : r.calibration_frictions)
+    if (mu < 0)
+      f.fail("calibration_frictions", "friction must not be negative, got " + format_number(mu));
+
+  // The rock library: an existing `clumpkit library` directory, or a recipe to make one.
+  const fs::path base = fs::path(path).parent_path();
+  if (rock > 0) {
+    if (r.library.empty() == r.library_recipe.empty())
+      f.fail("rock", "give exactly one of library (a directory from `clumpkit library`) or recipe");
+    if (!r.library.empty()) {
+      const fs::path lib = base / r.library;
+      // manifest.json; library.json in libraries written by earlier builds of clumpkit 0.1.
+      if (!fs::exists(lib / "manifest.json") && !fs::exists(lib / "library.json"))
+        f.fail("rock.library", "no clump library (manifest.json) at " + lib.string());
+      r.library = lib.string();
+    } else {
+      const fs::path rec = base / r.library_recipe;
+      if (!fs::exists(rec)) f.fail("rock.recipe", "file not found: " + rec.string());
+      r.library_recipe = rec.string();
+    }
+  }
+  return r;
+}
+
+SpecimenRecipe read_specimen_recipe(const std::string& path) {
+  return parse_specimen_recipe(read_file(path, "recipe file"), path);
+}
+
+}  // namespace clumpkit

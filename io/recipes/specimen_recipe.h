@@ -1,0 +1,67 @@
+// Specimen recipes (TOML): container, gradation, rock library, materials, contact law and the
+// target relative density of a DEM specimen (Jin et al. 2017 §4).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace clumpkit {
+
+/// One sieve class of the gradation, by mass.
+struct SizeClass {
+  double min = 0.0, max = 0.0;  ///< sieve sizes [m]
+  double percent = 0.0;         ///< mass percent of the whole sample in this class
+};
+
+/// Everything `clumpkit specimen` needs, SI units. Defaults are the values of Jin et al. 2017.
+struct SpecimenRecipe {
+  std::string path, text;
+  std::uint64_t seed = 1;
+  /// [container] shape: "cylinder" (diameter, height) or "cuboid" (size = edges x, y, z; only
+  /// with preparation.method = "compression").
+  bool cuboid = false;
+  double container_diameter = 0.3, container_height = 0.6;  ///< cylinder [m]
+  std::array<double, 3> container_size{0.1, 0.1, 0.1};      ///< cuboid edges [m]
+  /// [preparation] method: "deposition" (under gravity, quasi-vibration calibration, layers:
+  /// Jin et al. 2017) or "compression" (gravity off: homogeneous compression of a loose random
+  /// packing to `porosity` at `friction`, dem/specimen/compression.h — specimens for element
+  /// tests).
+  bool compression = false;
+  double compression_porosity = 0.37, compression_friction = 0.0;
+  std::vector<double> sieves;         ///< sieve sizes [m], descending
+  std::vector<double> passing;        ///< percent passing each sieve, descending, first = 100
+  std::vector<SizeClass> classes;     ///< derived from sieves and passing
+  double soil_rock_threshold = 0.02;  ///< particles above are rock clumps, below soil spheres [m]
+  double rock_mass_fraction = 0.4;    ///< rock mass / total mass, 40 % in Jin et al. 2017
+  double fines_below = 0.005;         ///< soil finer than this ...
+  double fines_min = 0.005, fines_max = 0.010;  ///< ... is replaced by the same mass in this range
+  std::string library;                          ///< directory made by `clumpkit library`, or
+  std::string
+      library_recipe;  ///< a shapes recipe with [fill] to build one (paths relative to the recipe)
+  double soil_density = 2700.0, rock_density = 2870.0;  ///< [kg/m³]
+  double kn = 1e6, ks = 1e6, friction = 0.8;            ///< contact law, N/m
+  /// contact.stiffness_scaling = "linear": kn and ks are the values at diameter d_ref and each
+  /// contact's stiffness scales with its bodies' diameters (CTGU 2017; dem/core/contact.h).
+  bool linear_scaling = false;
+  double d_ref = 0.0;  ///< m
+  /// Viscous normal damping ratio β and PFC local damping α of the preparation (defaults of
+  /// dem::deposition_contact()).
+  double damping_ratio = 0.5, local_damping = 0.1;
+  double target_relative_density = 0.5;
+  int layers = 3;
+  /// Friction values of the quasi-vibration calibration (deposition at the largest gives
+  /// n_max, compaction at 0 gives n_min; at least four in between).
+  std::vector<double> calibration_frictions = {0.0, 0.05, 0.1, 0.2, 0.4, 0.8};
+};
+
+/// Reads and validates a specimen recipe before anything is simulated: unknown keys, NaN,
+/// target relative density outside [0, 1], a gradation whose passing percentages do not start at
+/// 100 or do not decrease, a rock fraction that contradicts the gradation, a container narrower
+/// than the largest particle, a missing library. Each gives InvalidInput "FILE: FIELD: what,
+/// got VALUE" (IoError for an unreadable recipe).
+SpecimenRecipe read_specimen_recipe(const std::string& path);
+SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string& path);
+
+}  // namespace clumpkit

@@ -1,0 +1,39 @@
+// Element-test recipes (`clumpkit test`): loading, rates and the contact law, read from TOML.
+#pragma once
+
+#include "dem/core/contact.h"
+#include "dem/lab/element_test.h"
+
+#include <optional>
+#include <string>
+
+namespace clumpkit {
+
+/// A test recipe. [test]: confining (Pa), final_stress (Pa; isotropic and oedometer),
+/// strain_rate (1/s), stress_rate (Pa/s, isotropic; default 20·confining·strain_rate),
+/// max_axial_strain (triaxial, default 0.2), critical_fraction (the last fraction of the curve
+/// averaged for the critical angle, default 0.1), friction (μ during the test; default the
+/// specimen's), consolidation_friction (μ while consolidating; default friction), servo_strain_rate
+/// (speed limit of the servo walls as a strain rate, 1/s; default 1e-6 of the height per step or 10
+/// × the platen's), record_every (steps), timestep_safety (fraction of the critical step, default
+/// 0.2), modulus_range ([lo, hi] Pa, default [confining, final_stress] or [p0, 4 p0]). [contact]
+/// (optional, overrides the specimen's law): stiffness_scaling ("none" | "linear"), kn_ref (N/m),
+/// d_ref (m), ks_over_kn, damping_ratio (default 0: no viscous damping in a quasi-static test),
+/// local_damping (default the specimen's).
+struct TestRecipe {
+  std::string path, text;
+  dem::ElementTestSettings settings;
+  double critical_fraction = 0.1;
+  double timestep_safety = 0.2;
+  std::optional<std::pair<double, double>> modulus_range;
+  // [contact] overrides: unset fields keep the specimen's values.
+  std::optional<dem::StiffnessScaling> scaling;
+  std::optional<double> kn_ref, d_ref, ks_over_kn, damping_ratio, local_damping;
+};
+
+/// Parses a test recipe; throws InvalidInput naming the file, the field and the value for an
+/// unknown key, a wrong type or a value out of range, and IoError for a missing file.
+TestRecipe parse_test_recipe(const std::string& text, const std::string& path);
+TestRecipe read_test_recipe(const std::string& path);
+
+}  // namespace clumpkit

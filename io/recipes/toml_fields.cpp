@@ -1,0 +1,74 @@
+#include "io/recipes/toml_fields.h"
+
+#include "geom/errors.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace clumpkit {
+
+std::string toml_show(const toml::node& n) {
+  std::ostringstream s;
+  if (auto v = n.as_floating_point()) {
+    s.precision(10);
+    s << v->get();
+  } else if (n.is_table()) {
+    s << *n.as_table();
+  } else if (n.is_array()) {
+    s << *n.as_array();
+  } else {
+    n.visit([&](const auto& v) { s << v; });
+  }
+  return s.str();
+}
+
+void TomlFields::fail(const std::string& field, const std::string& why) const {
+  throw InvalidInput(file + ": " + field + ": " + why);
+}
+
+double TomlFields::number(const toml::node& n, const std::string& field) const {
+  double x = 0.0;
+  if (auto i = n.as_integer())
+    x = static_cast<double>(i->get());
+  else if (auto f = n.as_floating_point())
+    x = f->get();
+  else
+    fail(field, "expected a number, got " + toml_show(n));
+  if (!std::isfinite(x)) fail(field, "must be finite, got " + toml_show(n));
+  return x;
+}
+
+std::pair<double, double> TomlFields::pair(const toml::node& n, const std::string& field) const {
+  const auto* a = n.as_array();
+  if (!a || a->size() != 2) fail(field, "expected [low, high], got " + toml_show(n));
+  return {number(*a->get(0), field), number(*a->get(1), field)};
+}
+
+long long TomlFields::integer(const toml::node& n, const std::string& field) const {
+  const auto* i = n.as_integer();
+  if (!i) fail(field, "expected an integer, got " + toml_show(n));
+  return i->get();
+}
+
+std::string TomlFields::string(const toml::node& n, const std::string& field) const {
+  const auto* s = n.as_string();
+  if (!s) fail(field, "expected a string, got " + toml_show(n));
+  return s->get();
+}
+
+const toml::table& TomlFields::table(const toml::node& n, const std::string& field) const {
+  const auto* t = n.as_table();
+  if (!t) fail(field, "expected a table, got " + toml_show(n));
+  return *t;
+}
+
+toml::table parse_toml(const std::string& text, const std::string& path) {
+  try {
+    return toml::parse(text, path);
+  } catch (const toml::parse_error& e) {
+    throw InvalidInput(path + ":" + std::to_string(e.source().begin.line) +
+                       ": TOML syntax error: " + std::string(e.description()));
+  }
+}
+
+}  // namespace clumpkit

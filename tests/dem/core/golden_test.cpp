@@ -1,0 +1,172 @@
+// Golden state hashes: pin the bits of short falling-spheres, falling-clumps and settling runs,
+// so a change that alters the engine's arithmetic fails here instead of being compared by hand.
+//
+// Re-baselining: a change that alters bits on purpose (a new contact law, another summation
+// order, template mass properties) replaces the constants below in the same commit and says
+// why in its message. Any other failure here is a regression.
+#include "dem/core/state_hash.h"
+#include "dem/core/world.h"
+#include "geom/random.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+using namespace clumpkit;
+using namespace clumpkit::dem;
+
+namespace {
+
+constexpr double kD = 0.010;  // sphere diameter (m)
+
+WorldOptions options() {
+  WorldOptions o;
+  o.timestep = 5e-6;
+  o.skin = 0.002;
+  o.contact.kn = 1e6;
+  o.contact.ks = 1e6;
+  o.contact.friction = 0.5;
+  o.contact.damping_ratio = 0.3;
+  o.contact.local_damping = 0.1;
+  return o;
+}
+
+// A floor and a cylinder of radius 0.06 m; lattice points of spacing a inside r < 0.06 − a/2,
+// z in [a/2, a/2 + layers·a], in lattice order.
+World container() {
+  World w(options());
+  w.add_wall(Wall::plane(Vec3::Zero(), Vec3::UnitZ()));
+  w.add_wall(Wall::cylinder(0.0, 0.0, 0.06));
+  return w;
+}
+
+std::vector<Vec3> lattice(double a, int layers) {
+  std::vector<Vec3> out;
+  const double rc = 0.06 - 0.6 * a;
+  for (int k = 0; k < layers; ++k)
+    for (int j = -8; j <= 8; ++j)
+      for (int i = -8; i <= 8; ++i) {
+        const Vec3 p(i * a, j * a, (k + 0.5) * a + 0.001);
+        if (p.x() * p.x() + p.y() * p.y() < rc * rc) out.push_back(p);
+      }
+  return out;
+}
+
+Vec3 jitter(Rng& rng, double speed) {
+  return Vec3(rng.uniform(-speed, speed), rng.uniform(-speed, speed), rng.uniform(-speed, speed));
+}
+
+World spheres(double spacing, int layers) {
+  World w = container();
+  Rng rng(11);
+  for (const Vec3& p : lattice(spacing * kD, layers)) {
+    Body b = make_sphere_body(p, 0.5 * kD * rng.uniform(0.8, 1.0), 2700.0);
+    b.velocity = jitter(rng, 0.05);
+    w.add_body(std::move(b));
+  }
+  return w;
+}
+
+// A fixed four-sphere clump in its principal frame with fixed mass properties (the engine's bits
+// only, not the mass-property computation, are pinned here).
+Body clump_prototype() {
+  Body b;
+  b.spheres = {{Vec3(-0.006, 0.0, 0.0), 0.004},
+               {Vec3(0.005, 0.001, 0.0), 0.0045},
+               {Vec3(0.0, -0.002, 0.003), 0.0035},
+               {Vec3(0.001, 0.002, -0.002), 0.003}};
+  b.mass = 1.1e-3;
+  b.moments = Vec3(1.2e-8, 2.3e-8, 2.6e-8);
+  return b;
+}
+
+World falling_clumps() {
+  World w = container();
+  Rng rng(12);
+  const Body proto = clump_prototype();
+  for (const Vec3& p : lattice(2.2 * kD, 8)) {
+    Body b = proto;
+    b.position = p;
+    Eigen::Quaterniond q(rng.normal(), rng.normal(), rng.normal(), rng.normal());
+    b.orientation = q.normalized();
+    b.velocity = jitter(rng, 0.05);
+    b.angular_velocity = jitter(rng, 5.0);
+    w.add_body(std::move(b));
+  }
+  return w;
+}
+
+std::string hex(std::uint64_t h) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "0x%016" PRIx64, h);
+  return buf;
+}
+
+std::uint64_t run(World w, int steps, int threads) {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+  w.step(steps);
+  return state_hash(w);
+}
+
+}  // namespace
+
+TEST(DemGolden, FallingSpheres) {
+  const World w = spheres(1.2, 20);
+  ASSERT_GT(w.sphere_count(), 1000);
+  const std::uint64_t one = run(w, 3000, 1);
+  EXPECT_EQ(one, run(w, 3000, 2)) << "thread count changed the bits";
+  EXPECT_EQ(hex(one), "0xe569e55e0e76812c") << "golden hash of the falling spheres changed";
+}
+
+TEST(DemGolden, FallingClumps) {
+  const World w = falling_clumps();
+  ASSERT_GT(w.bodies().size(), 100u);
+  const std::uint64_t one = run(w, 3000, 1);
+  EXPECT_EQ(one, run(w, 3000, 2)) << "thread count changed the bits";
+  EXPECT_EQ(hex(one), "0x2c8f7b9e2b917e5f") << "golden hash of the falling clumps changed";
+}
+
+// Dropped onto the floor and left to settle: a dense packing with thousands of sliding and
+// rolling contacts, the regime of specimen building.
+TEST(DemGolden, SettlingPacking) {
+  World w = spheres(1.02, 16);
+  w.options().timestep = 1e-5;
+  w.step(40000);
+  ASSERT_GT(w.contacts().size(), w.bodies().size());  // a packing, not a cloud
+  const std::uint64_t one = run(w, 2000, 1);
+  EXPECT_EQ(one, run(w, 2000, 2)) << "thread count changed the bits";
+  EXPECT_EQ(hex(one), "0x740d161ce94e6979") << "golden hash of the settled packing changed";
+}
+
+// The same packing sorted spatially every 1,000 steps, as the specimen, compression and element
+// test drivers run it (WorldOptions::sort_every): the bodies are summed in another order, so its
+// bits are its own.
+TEST(DemGolden, SettlingPackingSortedEvery1000Steps) {
+  World w = spheres(1.02, 16);
+  w.options().timestep = 1e-5;
+  w.options().sort_every = 1000;
+  w.step(40000);
+  ASSERT_GT(w.contacts().size(), w.bodies().size());
+  const std::uint64_t one = run(w, 2000, 1);
+  EXPECT_EQ(one, run(w, 2000, 2)) << "thread count changed the bits";
+  EXPECT_EQ(hex(one), "0xdaf2bff1c15015c2") << "golden hash of the sorted settled packing changed";
+}
+
+// The sorted settling packing in small (4 layers of the same container: a quarter of the bodies,
+// 27,000 steps): the dense-contact kernels, sorting and the 2-thread split in seconds,
+// for the sanitizer pass, which leaves the two above out (label long, tests/long_tests.cmake).
+TEST(DemGolden, SmallSettlingPackingSorted) {
+  World w = spheres(1.02, 4);
+  w.options().timestep = 1e-5;
+  w.options().sort_every = 1000;
+  w.step(25000);
+  ASSERT_GT(w.contacts().size(), w.bodies().size());
+  const std::uint64_t one = run(w, 2000, 1);
+  EXPECT_EQ(one, run(w, 2000, 2)) << "thread count changed the bits";
+  EXPECT_EQ(hex(one), "0x0b67d93277e00698") << "golden hash of the small sorted packing changed";
+}

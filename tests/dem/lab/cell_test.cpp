@@ -1,0 +1,75 @@
+// The test cell (dem/lab/cell.h) under servo control: a servo wall holds its target stress at
+// equilibrium, and the Love–Weber stress of the settled packing equals the walls' stress.
+#include "dem/lab/cell.h"
+#include "dem/measure/stress.h"
+#include "geom/errors.h"
+#include "tests/dem/loose_packing.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+using namespace clumpkit;
+using namespace clumpkit::dem;
+
+TEST(DemServo, SpeedClosesTheErrorAgainstTheContactStiffness) {
+  ServoGain g;
+  g.relaxation = 0.5;
+  g.max_speed = 1.0;
+  // Under-stressed by 1 kPa on 1 m² against 1e6 N/m in a 1e-4 s step: move in 0.5·1e3/1e6 m
+  // in that step, 5 m/s, clamped to 1.
+  EXPECT_DOUBLE_EQ(servo_speed(99e3, 100e3, 1.0, 1e6, 1e-4, g), 1.0);
+  EXPECT_DOUBLE_EQ(servo_speed(99.99e3, 100e3, 1.0, 1e6, 1e-4, g), 0.05);
+  EXPECT_DOUBLE_EQ(servo_speed(100.01e3, 100e3, 1.0, 1e6, 1e-4, g), -0.05);
+  EXPECT_DOUBLE_EQ(servo_speed(0, 100e3, 1.0, 0.0, 1e-4, g), 1.0);  // no contact: close in
+  g.relaxation = 0;
+  EXPECT_THROW(servo_speed(0, 1, 1, 1, 1, g), InvalidInput);
+}
+
+TEST(DemServo, SettledIsotropicPackingHoldsItsTargetAndLoveWeberMatchesTheWalls) {
+  test::LoosePacking p = test::loose_packing(10, 10, 10, 1.0, true);
+  // Every wall under a stress servo (drive_cell, as the consolidation of an element test) until
+  // every wall is within 0.5 % of the target and the unbalanced-force ratio below 1e-3.
+  const double target = 100e3;
+  const Control confine{Control::Mode::stress, target, 0.0};
+  ServoGain gain;
+  gain.max_speed = 0.2;
+  const std::vector<int> walls = cell_walls(p.cell);
+  const auto wall_stresses = [&] {
+    const Vec3 l = cell_lengths(p.world, p.cell);
+    std::vector<double> s;
+    for (int a = 0; a < 3; ++a)
+      for (int side = 0; side < 2; ++side)
+        s.push_back(wall_stress(p.world, walls[2 * a + side], l[(a + 1) % 3] * l[(a + 2) % 3]));
+    return s;
+  };
+  long long steps = 0;
+  bool reached = false;
+  while (!reached && steps < 2'000'000) {
+    for (int k = 0; k < 100; ++k) drive_cell(p.world, p.cell, confine, confine, gain, 1);
+    steps += 100;
+    reached = mean_unbalanced_force_ratio(p.world) <= 1e-3;
+    for (double s : wall_stresses()) reached = reached && std::abs(s / target - 1.0) <= 0.005;
+  }
+  const Vec3 stress = cell_axis_stress(p.world, p.cell);
+  std::printf(
+      "consolidated in %lld steps: wall stress %.1f %.1f %.1f Pa, unbalanced %.2e, Z %.2f\n", steps,
+      stress.x(), stress.y(), stress.z(), mean_unbalanced_force_ratio(p.world),
+      coordination_number(p.world));
+  ASSERT_TRUE(reached);
+  // Every wall, not only each axis' mean, within 1 % of the target.
+  for (double s : wall_stresses()) EXPECT_NEAR(s, target, 1e3);
+  EXPECT_NEAR(lateral_stress(p.world, p.cell), target, 1e3);
+  EXPECT_NEAR(axial_stress(p.world, p.cell), target, 1e3);
+  // Love–Weber over the cell: the diagonal equals the wall stress within 2 % and the mean
+  // stress is the target. (The off-diagonal need not vanish: the walls' normal pressures are not
+  // uniform, and their moments give the average a shear part of ~1 %.)
+  const Mat3 lw = cell_love_weber_stress(p.world, p.cell);
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(lw(a, a) / stress[a], 1.0, 0.02);
+  EXPECT_NEAR(mean_stress(lw), 100e3, 2e3);
+  EXPECT_NEAR((lw - lw.transpose()).norm(), 0.0, 1e-9);  // symmetrised
+  std::printf("Love-Weber diagonal %.1f %.1f %.1f Pa, off-diagonal max %.1f Pa\n", lw(0, 0),
+              lw(1, 1), lw(2, 2), (lw - Mat3(lw.diagonal().asDiagonal())).cwiseAbs().maxCoeff());
+}

@@ -1,0 +1,138 @@
+// Element tests of dem/lab/element_test.h on a small compressed cube (about 130 spheres): a
+// triaxial and an isotropic test, each the same bytes for 1 and 2 threads. The CLI's element tests
+// run the same drive on the tiny specimen (tests/cli/element_test_test.cpp, label long); these are
+// their short siblings in the sanitizer pass.
+#include "dem/lab/element_test.h"
+
+#include "dem/core/timestep.h"
+#include "dem/specimen/compression.h"
+#include "geom/errors.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace clumpkit;
+using namespace clumpkit::dem;
+
+namespace {
+
+// A 5 d cube of 10 mm spheres at n = 0.42 (the compression tests' specimen, smaller and looser),
+// kn ∝ d.
+const CompressionResult& cube() {
+  static const CompressionResult c = [] {
+    CompressionSpec s;
+    s.size = Vec3::Constant(0.05);
+    s.porosity = 0.42;
+    s.classes = {{0.0099, 0.0101, 100.0, false}};
+    s.contact.kn = 8e7;
+    s.contact.ks = 8e5;
+    s.contact.friction = 0.5;
+    s.contact.local_damping = 0.7;  // as specimens have it: equilibrium in few steps
+    s.contact.scaling = StiffnessScaling::linear;
+    s.contact.d_ref = 0.01;
+    s.loose_factor = 1.25;
+    s.strain_per_step = 2e-5;
+    s.relax_max_steps = 2000;
+    s.seed = 7;
+    return compress_specimen(s);
+  }();
+  return c;
+}
+
+// The cube's bodies in a fresh world with the element-test options inside a cuboid test cell, as
+// the test job sets it up (0.2 of the critical step).
+struct Setup {
+  World world;
+  TestCell cell;
+};
+
+Setup setup() {
+  const CompressionResult& c = cube();
+  Setup s{World(element_test_world_options(c.world.bodies(), c.world.options().contact)), {}};
+  for (const Body& b : c.world.bodies()) s.world.add_body(b);
+  s.cell = add_cuboid_test_cell(s.world, c.lo, c.hi);
+  s.world.options().timestep = 0.2 * critical_timestep(s.world);
+  return s;
+}
+
+std::vector<CurveRow> run(const ElementTestSettings& settings, int threads) {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+  Setup s = setup();
+  const ElementTestResult r = run_element_test(s.world, s.cell, settings);
+  EXPECT_TRUE(r.consolidated);
+  return r.curve;
+}
+
+void expect_same_bytes(const std::vector<CurveRow>& a, const std::vector<CurveRow>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].step, b[k].step);
+    for (const auto field : {&CurveRow::axial_strain, &CurveRow::volumetric_strain,
+                             &CurveRow::axial_stress, &CurveRow::lateral_stress,
+                             &CurveRow::porosity, &CurveRow::coordination, &CurveRow::unbalanced})
+      EXPECT_EQ(std::memcmp(&(a[k].*field), &(b[k].*field), sizeof(double)), 0) << "row " << k;
+  }
+}
+
+}  // namespace
+
+TEST(DemElementTest, TriaxialLoadsAboveTheConfiningStressSameBytesForOneAndTwoThreads) {
+  ElementTestSettings t;
+  t.kind = TestKind::triaxial;
+  t.confining = cube().mean_stress;  // consolidated where it was built
+  t.strain_rate = 2.0;
+  t.max_axial_strain = 0.004;
+  t.record_every = 500;
+  t.consolidation_tolerance = 0.05;  // a short consolidation: the curve's start is what it is
+  t.consolidation_unbalanced = 2e-2;
+  t.max_consolidation_steps = 60000;
+  const std::vector<CurveRow> one = run(t, 1);
+  ASSERT_GE(one.size(), 3u);
+  // Consolidated to the confining stress, then sheared: q grows, σ_r stays held.
+  EXPECT_NEAR(one.front().axial_stress / t.confining, 1.0, 0.02);
+  EXPECT_NEAR(one.front().lateral_stress / t.confining, 1.0, 0.02);
+  EXPECT_EQ(one.front().axial_strain, 0.0);
+  EXPECT_GE(one.back().axial_strain, 0.99 * t.max_axial_strain);
+  EXPECT_GT(one.back().q, 0.03 * t.confining);  // q/p ≈ 0.075 at 0.4 % (measured)
+  EXPECT_GT(one.back().q, one[1].q);
+  EXPECT_NEAR(one.back().lateral_stress / t.confining, 1.0, 0.1);
+  EXPECT_GT(one.back().coordination, 3.0);
+  expect_same_bytes(one, run(t, 2));
+}
+
+TEST(DemElementTest, IsotropicReachesItsFinalStressSameBytesForOneAndTwoThreads) {
+  ElementTestSettings t;
+  t.kind = TestKind::isotropic;
+  t.confining = cube().mean_stress;  // consolidated where it was built
+  t.final_stress = 2 * t.confining;
+  t.stress_rate = 1e11;
+  t.record_every = 500;
+  t.consolidation_tolerance = 0.05;  // a short consolidation: the curve's start is what it is
+  t.consolidation_unbalanced = 2e-2;
+  t.max_consolidation_steps = 60000;
+  const std::vector<CurveRow> one = run(t, 1);
+  ASSERT_GE(one.size(), 3u);
+  EXPECT_NEAR(one.back().p / t.final_stress, 1.0, 0.05);
+  EXPECT_GT(one.back().volumetric_strain, 0.0);  // compressed further
+  EXPECT_LT(one.back().porosity, one.front().porosity);
+  expect_same_bytes(one, run(t, 2));
+}
+
+TEST(DemElementTest, WorldOptionsAndInertialNumberOfASpecimen) {
+  const CompressionResult& c = cube();
+  const std::vector<Body>& bodies = c.world.bodies();
+  const WorldOptions o = element_test_world_options(bodies, c.world.options().contact);
+  EXPECT_EQ(o.gravity, Vec3::Zero());
+  EXPECT_EQ(o.sort_every, 1000);
+  double r_min = 1;
+  for (const Body& b : bodies) r_min = std::min(r_min, b.spheres[0].radius);
+  EXPECT_EQ(o.skin, 0.2 * r_min);
+  EXPECT_EQ(o.contact.kn, c.world.options().contact.kn);
+  // Equal spheres of d ≈ 10 mm, ρ = 2650: I = ε̇·d·sqrt(ρ/p) within the 1 % size spread.
+  EXPECT_NEAR(inertial_number(bodies, 0.5, 1e5), 0.5 * 0.01 * std::sqrt(2650 / 1e5), 1e-6);
+  EXPECT_THROW(element_test_world_options({}, c.world.options().contact), InvalidInput);
+}

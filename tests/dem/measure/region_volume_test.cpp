@@ -1,0 +1,95 @@
+// Exact sphere–region volumes, porosity and coordination number of a region (dem/measure/
+// region_volume.h).
+#include "dem/measure/region_volume.h"
+
+#include "dem/core/world.h"
+#include "geom/errors.h"
+#include "geom/volume/union_of_balls.h"
+
+#include <gtest/gtest.h>
+
+namespace clumpkit::dem {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Body ball(const Vec3& c, double r) {
+  Body b;
+  b.spheres = {{Vec3::Zero(), r}};
+  b.position = c;
+  b.mass = 1;
+  b.moments = Vec3::Ones();
+  b.volume = 4.0 / 3.0 * kPi * r * r * r;
+  return b;
+}
+
+TEST(RegionVolume, SphereInsideCutByPlaneAndOutside) {
+  const CylinderRegion region{0.5, 0.0, 1.0};
+  const double r = 0.1, v = 4.0 / 3.0 * kPi * r * r * r;
+  EXPECT_DOUBLE_EQ(body_region_volume(ball(Vec3(0, 0, 0.5), r), v, region), v);
+  EXPECT_EQ(body_region_volume(ball(Vec3(0, 0, 1.2), r), v, region), 0.0);
+  // Cut through the centre by the top plane: half. Below the floor z = 0 a cap of height h,
+  // πh²(3r − h)/3, is cut off.
+  EXPECT_NEAR(body_region_volume(ball(Vec3(0.1, 0, 1.0), r), v, region), 0.5 * v, 1e-9 * v);
+  const double h = 0.04;
+  EXPECT_NEAR(body_region_volume(ball(Vec3(0, 0.2, r - h), r), v, region),
+              v - kPi * h * h * (3 * r - h) / 3, 1e-9 * v);
+}
+
+TEST(RegionVolume, ComplementaryRegionsAddUpForACutClump) {
+  // A three-sphere clump straddling the region's side wall and a horizontal plane: the parts in
+  // complementary regions add up to the exact union volume.
+  Body c;
+  c.spheres = {
+      {Vec3(-0.05, 0, 0), 0.08}, {Vec3(0.05, 0.02, 0), 0.07}, {Vec3(0, -0.04, 0.05), 0.06}};
+  c.mass = 1;
+  c.moments = Vec3::Ones();
+  c.position = Vec3(0.48, 0.0, 0.5);
+  c.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
+  const double v = union_properties(Clump{c.spheres}).mass.volume;
+  const double lower = body_region_volume(c, v, {0.5, 0.0, 0.5});
+  const double upper = body_region_volume(c, v, {0.5, 0.5, 1.0});
+  const double wide = body_region_volume(c, v, {2.0, 0.0, 1.0});
+  EXPECT_NEAR(wide, v, 1e-12 * v);
+  EXPECT_GT(lower, 0.1 * v);
+  EXPECT_GT(upper, 0.1 * v);
+  EXPECT_LT(lower + upper, v);  // part of it lies outside r = 0.5
+  // Outside the cylinder r < 0.5 but inside r < 2: a ring. Ring = wide − (lower + upper).
+  const double outer_ring = wide - lower - upper;
+  EXPECT_GT(outer_ring, 0.05 * v);
+  // The same body moved to the axis lies wholly inside: its exact volume.
+  c.position = Vec3(0, 0, 0.5);
+  EXPECT_DOUBLE_EQ(body_region_volume(c, v, {0.5, 0.0, 1.0}), v);
+  // Halves by the plane z = 0.5 through a clump centred there, mirrored in z: a sphere pair
+  // symmetric about the plane gives equal halves.
+  Body s;
+  s.spheres = {{Vec3(0, 0, 0.03), 0.05}, {Vec3(0, 0, -0.03), 0.05}};
+  s.mass = 1;
+  s.moments = Vec3::Ones();
+  s.position = Vec3(0.1, 0.1, 0.5);
+  const double vs = union_properties(Clump{s.spheres}).mass.volume;
+  EXPECT_NEAR(body_region_volume(s, vs, {0.5, 0.0, 0.5}), 0.5 * vs, 1e-9 * vs);
+}
+
+TEST(RegionVolume, PorosityAndCoordinationOfASimpleWorld) {
+  World world;
+  const double r = 0.01;
+  // Three balls in a row touching with a small overlap, inside a region; one far away.
+  world.add_body(ball(Vec3(0, 0, 0.05), r));
+  world.add_body(ball(Vec3(0.0199, 0, 0.05), r));
+  world.add_body(ball(Vec3(0.0398, 0, 0.05), r));
+  world.add_body(ball(Vec3(0.3, 0.3, 0.05), r));
+  world.options().gravity = Vec3::Zero();
+  world.step(1);
+  const auto volumes = body_volumes(world);
+  const double v = 4.0 / 3.0 * kPi * r * r * r;
+  for (double x : volumes) EXPECT_DOUBLE_EQ(x, v);
+  const CylinderRegion region{0.1, 0.0, 0.1};
+  EXPECT_NEAR(region_porosity(world, volumes, region), 1.0 - 3 * v / region.volume(), 1e-12);
+  // Middle ball touches two, the ends one each: mean 4/3.
+  EXPECT_NEAR(coordination_number(world, region), 4.0 / 3.0, 1e-15);
+  EXPECT_THROW(region_porosity(world, volumes, {0.1, 0.1, 0.1}), InvalidInput);
+}
+
+}  // namespace
+}  // namespace clumpkit::dem

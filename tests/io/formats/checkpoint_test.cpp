@@ -1,0 +1,345 @@
+// Checkpoint round trips continue bit-identically; corrupt files are rejected; run_until resumes
+// from checkpoints to the same bytes.
+#include "io/formats/checkpoint.h"
+#include "dem/core/timestep.h"
+#include "dem/core/world.h"
+#include "dem/measure/region_volume.h"
+#include "dem/run/run.h"
+#include "geom/errors.h"
+#include "geom/random.h"
+#include "tests/dem/deposition_world.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <string>
+
+namespace clumpkit::dem {
+namespace {
+
+using test::make_deposition;
+
+std::string temp_path(const std::string& name) {
+  return (std::filesystem::path(::testing::TempDir()) / ("clumpkit_ckpt_" + name)).string();
+}
+
+std::string read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+void write_bytes(const std::string& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+template <class T>
+bool same_bits(const T& a, const T& b) {
+  return std::memcmp(&a, &b, sizeof(T)) == 0;
+}
+
+// Bit-for-bit comparison of everything that drives later steps.
+void expect_identical(const World& a, const World& b) {
+  EXPECT_EQ(a.steps(), b.steps());
+  EXPECT_TRUE(same_bits(a.time(), b.time()));
+  EXPECT_EQ(a.neighbour_builds(), b.neighbour_builds());
+  ASSERT_EQ(a.bodies().size(), b.bodies().size());
+  int differing = 0;
+  for (std::size_t k = 0; k < a.bodies().size(); ++k) {
+    const Body& x = a.bodies()[k];
+    const Body& y = b.bodies()[k];
+    const bool same = same_bits(x.position, y.position) && same_bits(x.velocity, y.velocity) &&
+                      same_bits(x.orientation.coeffs(), y.orientation.coeffs()) &&
+                      same_bits(x.angular_velocity, y.angular_velocity) &&
+                      same_bits(x.force, y.force) && same_bits(x.torque, y.torque);
+    differing += same ? 0 : 1;
+  }
+  EXPECT_EQ(differing, 0) << "bodies whose state differs in some bit";
+  ASSERT_EQ(a.contacts().size(), b.contacts().size());
+  for (std::size_t k = 0; k < a.contacts().size(); ++k) {
+    const PairContact& x = a.contacts()[k];
+    const PairContact& y = b.contacts()[k];
+    ASSERT_EQ(x.i, y.i);
+    ASSERT_EQ(x.j, y.j);
+    EXPECT_TRUE(same_bits(x.state.shear, y.state.shear)) << "contact " << k;
+    EXPECT_TRUE(same_bits(x.state.normal_force, y.state.normal_force)) << "contact " << k;
+  }
+  ASSERT_EQ(a.wall_contacts().size(), b.wall_contacts().size());
+  for (std::size_t k = 0; k < a.wall_contacts().size(); ++k) {
+    const WallContact& x = a.wall_contacts()[k];
+    const WallContact& y = b.wall_contacts()[k];
+    ASSERT_EQ(x.sphere, y.sphere);
+    ASSERT_EQ(x.wall, y.wall);
+    EXPECT_TRUE(same_bits(x.state.shear, y.state.shear)) << "wall contact " << k;
+  }
+  ASSERT_EQ(a.walls().size(), b.walls().size());
+  for (std::size_t k = 0; k < a.walls().size(); ++k) {
+    EXPECT_TRUE(same_bits(a.walls()[k].point, b.walls()[k].point)) << "wall " << k;
+    EXPECT_TRUE(same_bits(a.walls()[k].radius, b.walls()[k].radius)) << "wall " << k;
+  }
+}
+
+bool any_shear(const World& w) {
+  for (const PairContact& c : w.contacts())
+    if (c.state.shear.squaredNorm() > 0.0) return true;
+  return false;
+}
+
+TEST(DemCheckpoint, HalfRunCheckpointLoadContinuesBitIdentically) {
+  constexpr int kSteps = 4000;
+  World straight = make_deposition(160);
+  straight.step(kSteps);
+
+  World first = make_deposition(160);
+  first.step(kSteps / 2);
+  ASSERT_FALSE(first.contacts().empty());
+  ASSERT_FALSE(first.wall_contacts().empty());
+  ASSERT_TRUE(any_shear(first)) << "the test needs shear history at the checkpoint";
+  const std::string path = temp_path("half.ckpt");
+  CheckpointInfo info;
+  info.stage = "deposition";
+  info.random_state = {1ULL, 0xdeadbeefULL, ~0ULL, 1ULL << 63};
+  save_checkpoint(path, first, info);
+  EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+
+  CheckpointInfo loaded_info;
+  World resumed = load_checkpoint(path, &loaded_info);
+  EXPECT_EQ(loaded_info.stage, "deposition");
+  EXPECT_EQ(loaded_info.random_state, info.random_state);
+  expect_identical(first, resumed);  // includes the last step's forces and contacts
+  EXPECT_TRUE(same_bits(mean_unbalanced_force_ratio(first), mean_unbalanced_force_ratio(resumed)));
+
+  resumed.step(kSteps / 2);
+  expect_identical(straight, resumed);
+  std::filesystem::remove(path);
+}
+
+TEST(DemCheckpoint, SizeScaledLawAndServoWallsContinueBitIdentically) {
+  constexpr int kSteps = 6000;
+  World straight = make_deposition(160, true, true);
+  straight.step(kSteps);
+  World first = make_deposition(160, true, true);
+  first.step(kSteps / 2);
+  ASSERT_FALSE(first.wall_contacts().empty());
+  const std::string path = temp_path("scaled.ckpt");
+  save_checkpoint(path, first);
+  World resumed = load_checkpoint(path);
+  EXPECT_EQ(resumed.options().contact.scaling, StiffnessScaling::linear);
+  EXPECT_EQ(resumed.options().contact.d_ref, 0.01);
+  EXPECT_EQ(resumed.walls()[0].friction, 0.0);
+  EXPECT_EQ(resumed.walls()[1].radial_velocity, -0.01);
+  for (std::size_t k = 0; k < first.bodies().size(); ++k)
+    EXPECT_TRUE(same_bits(first.bodies()[k].diameter, resumed.bodies()[k].diameter));
+  resumed.step(kSteps / 2);
+  expect_identical(straight, resumed);
+  EXPECT_LT(straight.walls()[1].radius, 0.05);  // the cylinder did close in
+  std::filesystem::remove(path);
+}
+
+// A world that sorts its bodies (WorldOptions::sort_every) saves them in its current order and
+// its interval: the resumed run sorts at the same steps, to the same bits.
+TEST(DemCheckpoint, SortingWorldContinuesBitIdentically) {
+  constexpr int kSteps = 4000;
+  World straight = make_deposition(160);
+  straight.options().sort_every = 700;
+  straight.step(kSteps);
+  World first = make_deposition(160);
+  first.options().sort_every = 700;
+  first.step(kSteps / 2);
+  const std::string path = temp_path("sorting.ckpt");
+  save_checkpoint(path, first);
+  World resumed = load_checkpoint(path);
+  EXPECT_EQ(resumed.options().sort_every, 700);
+  expect_identical(first, resumed);
+  resumed.step(kSteps / 2);
+  expect_identical(straight, resumed);
+  // The sorts did reorder the bodies (the lattice was laid y fastest, the sort puts x fastest):
+  // radii, drawn at random, differ from those of the unsorted run at the same index.
+  World unsorted = make_deposition(160);
+  unsorted.step(kSteps);
+  int differ = 0;
+  for (std::size_t k = 0; k < straight.bodies().size(); ++k)
+    differ += straight.bodies()[k].mass != unsorted.bodies()[k].mass;
+  EXPECT_GT(differ, 50);
+  std::filesystem::remove(path);
+}
+
+TEST(DemCheckpoint, SaveLoadSaveIsByteIdentical) {
+  World world = make_deposition(160);
+  world.step(2000);
+  ASSERT_TRUE(any_shear(world));
+  const std::string a = temp_path("a.ckpt"), b = temp_path("b.ckpt");
+  save_checkpoint(a, world, {"stage two", {5, 6, 7, 8}});
+  CheckpointInfo info;
+  const World loaded = load_checkpoint(a, &info);
+  save_checkpoint(b, loaded, info);
+  EXPECT_EQ(read_bytes(a), read_bytes(b));
+  EXPECT_EQ(read_bytes(a).substr(0, 12), "CLUMPKITCKPT");
+  std::filesystem::remove(a);
+  std::filesystem::remove(b);
+}
+
+// Expects load_checkpoint(path) to throw InvalidInput whose message names the file.
+void expect_rejected(const std::string& path, const std::string& why) {
+  try {
+    load_checkpoint(path);
+    ADD_FAILURE() << why << ": no exception";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << why << ": " << e.what();
+  }
+}
+
+TEST(DemCheckpoint, TruncatedOrCorruptFileThrowsInvalidInputNamingTheFile) {
+  World world = make_deposition(40);
+  world.step(300);
+  const std::string good = temp_path("good.ckpt"), bad = temp_path("bad.ckpt");
+  save_checkpoint(good, world);
+  const std::string bytes = read_bytes(good);
+  ASSERT_GT(bytes.size(), 100u);
+
+  for (std::size_t size : {std::size_t(0), std::size_t(5), std::size_t(12), std::size_t(16),
+                           std::size_t(30), bytes.size() / 2, bytes.size() - 1}) {
+    write_bytes(bad, bytes.substr(0, size));
+    expect_rejected(bad, "truncated to " + std::to_string(size));
+  }
+  write_bytes(bad, bytes + "x");
+  expect_rejected(bad, "one extra byte");
+
+  for (std::size_t at :
+       {std::size_t(0), std::size_t(12), std::size_t(40), bytes.size() / 2, bytes.size() - 3}) {
+    std::string corrupt = bytes;
+    corrupt[at] = static_cast<char>(corrupt[at] ^ 0x20);
+    write_bytes(bad, corrupt);
+    expect_rejected(bad, "byte flipped at " + std::to_string(at));
+  }
+  std::string other_version = bytes;
+  other_version[12] = 99;
+  write_bytes(bad, other_version);
+  try {
+    load_checkpoint(bad);
+    ADD_FAILURE() << "version 99 accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("version 99"), std::string::npos) << e.what();
+  }
+
+  EXPECT_THROW(load_checkpoint(temp_path("missing.ckpt")), IoError);
+  EXPECT_THROW(save_checkpoint(temp_path("no_such_dir/x.ckpt"), world), IoError);
+  std::filesystem::remove(good);
+  std::filesystem::remove(bad);
+}
+
+// Periodic wall-clock checkpoints leave the run unchanged, and a run killed after a
+// checkpoint resumes from it to the same end state.
+TEST(DemRun, PeriodicCheckpointsDoNotChangeTheResultAndResumeIdentically) {
+  constexpr long kSteps = 2000;
+  World plain = make_deposition(60);
+  RunLimits limits;
+  limits.max_steps = kSteps;
+  run_until(plain, limits);
+
+  const std::string path = temp_path("periodic.ckpt");
+  World checked = make_deposition(60);
+  RunLimits with_checkpoints = limits;
+  with_checkpoints.checkpoint = [&](const World& w, const RunState&) {
+    CheckpointInfo stage;
+    stage.stage = "deposition";
+    save_checkpoint(path, w, stage);
+  };
+  with_checkpoints.checkpoint_every_seconds = 1e-9;  // after every chunk
+  struct Killed {};
+  EXPECT_THROW(run_until(checked, with_checkpoints,
+                         [&](std::string_view, double) -> bool {
+                           if (checked.steps() == 1300) throw Killed{};
+                           return false;
+                         }),
+               Killed);
+  CheckpointInfo info;
+  World resumed = load_checkpoint(path, &info);
+  EXPECT_EQ(info.stage, "deposition");
+  // The kill came from the interrupter at step 1300, which precedes that chunk's checkpoint
+  // (rules and interrupter first, then the checkpoint): the last one is at 1200.
+  EXPECT_EQ(resumed.steps(), 1200);
+  RunLimits rest = with_checkpoints;
+  rest.max_steps = kSteps - resumed.steps();
+  EXPECT_EQ(run_until(resumed, rest).steps, kSteps - 1200);
+  expect_identical(plain, resumed);
+  std::filesystem::remove(path);
+}
+
+// An interrupter that asks to stop ends the run with a checkpoint of that very step, and the
+// run resumed from it ends where the uninterrupted one does.
+TEST(DemRun, InterruptedRunCheckpointsAndResumesIdentically) {
+  constexpr long kSteps = 1500;
+  World plain = make_deposition(40);
+  RunLimits limits;
+  limits.max_steps = kSteps;
+  run_until(plain, limits);
+
+  World stopped = make_deposition(40);
+  std::optional<World> saved;
+  RunLimits with_checkpoint = limits;
+  with_checkpoint.checkpoint = [&](const World& w, const RunState&) { saved = w; };
+  const RunOutcome out = run_until(stopped, with_checkpoint, [&](std::string_view, double f) {
+    return f >= 0.4;  // at step 600
+  });
+  EXPECT_EQ(out.stopped_by, "interrupted");
+  EXPECT_EQ(out.steps, 600);
+  ASSERT_TRUE(saved.has_value());
+  EXPECT_EQ(saved->steps(), 600u);
+  RunLimits rest = limits;
+  rest.max_steps = kSteps - out.steps;
+  EXPECT_EQ(run_until(*saved, rest).stopped_by, "step_cap");
+  expect_identical(plain, *saved);
+}
+
+// The settled-height rule stops a settling pack at a window boundary once its column height
+// holds still, and a run resumed from a checkpoint with the saved reference stops at the same
+// step as the uninterrupted one.
+TEST(DemRun, SettledHeightRuleStopsAtAWindowBoundaryAndResumesWithItsReference) {
+  World settling = make_deposition(40, /*platen=*/false);
+  settling.options().contact.local_damping = 0.7;
+  RunLimits limits;
+  limits.max_steps = 200000;
+  limits.height_window = 500;
+  limits.height_tolerance = 1e-5;  // m; the spheres are ~1e-2 m
+  std::vector<std::pair<World, RunState>> checkpoints;
+  limits.checkpoint_every_seconds = 1e-9;
+  limits.checkpoint = [&](const World& w, const RunState& st) {
+    if (w.steps() % 700 == 0) checkpoints.emplace_back(w, st);
+  };
+  const World start = settling;
+  const RunOutcome out = run_until(settling, limits);
+  EXPECT_EQ(out.stopped_by, "settled_height");
+  EXPECT_EQ(out.steps % 500, 0);
+  EXPECT_LT(out.steps, limits.max_steps);
+  EXPECT_LT(unbalanced_to_weight_ratio(settling), 1.0);
+  EXPECT_LT(std::abs(column_height(settling) - out.state.height_reference), 1e-5);
+  ASSERT_GE(checkpoints.size(), 2u);
+
+  // Resumed from a checkpoint in the middle of a window, with its state.
+  auto& [world, state] = checkpoints[checkpoints.size() / 2];
+  ASSERT_NE(world.steps() % 500, 0u);
+  RunLimits rest = limits;
+  rest.checkpoint = {};
+  rest.max_steps = limits.max_steps - static_cast<long>(world.steps());
+  rest.state = state;
+  const RunOutcome resumed = run_until(world, rest);
+  EXPECT_EQ(resumed.stopped_by, "settled_height");
+  EXPECT_EQ(world.steps(), settling.steps());
+  expect_identical(settling, world);
+
+  // The checkpoints did not change the run: without them it stops at the same step.
+  World again = start;
+  RunLimits plain = limits;
+  plain.checkpoint = {};
+  EXPECT_EQ(run_until(again, plain).steps, out.steps);
+  expect_identical(settling, again);
+}
+
+}  // namespace
+}  // namespace clumpkit::dem

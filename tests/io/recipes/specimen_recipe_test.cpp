@@ -1,0 +1,90 @@
+// Tests of specimen recipes: bundled recipes parse, bad ones fail before any simulation with the
+// file, field and value in one line.
+#include "io/recipes/specimen_recipe.h"
+#include "geom/errors.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace clumpkit;
+
+namespace {
+const std::string kDir = std::string(CLUMPKIT_SOURCE_DIR) + "/assets/recipes/";
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_specimen_recipe(text, kDir + "test.toml");  // relative paths resolve in assets/recipes
+  } catch (const InvalidInput& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const std::string kGood = R"(
+rock_mass_fraction = 0.4
+soil_rock_threshold = 0.02
+[container]
+diameter = 0.3
+height = 0.6
+[gradation]
+sieves = [0.06, 0.04, 0.02, 0.01, 0.005]
+passing = [100, 80, 60, 40, 20]
+[rock]
+recipe = "srm-rock-blocks.toml"
+)";
+
+std::string with(const std::string& from, const std::string& to) {
+  std::string s = kGood;
+  s.replace(s.find(from), from.size(), to);
+  return s;
+}
+}  // namespace
+
+TEST(SpecimenRecipe, BundledRecipesParse) {
+  const SpecimenRecipe full = read_specimen_recipe(kDir + "srm40-triaxial.toml");
+  EXPECT_DOUBLE_EQ(full.container_diameter, 0.3);
+  EXPECT_EQ(full.layers, 3);
+  double sum = 0, rock = 0;
+  for (const auto& c : full.classes) {
+    sum += c.percent;
+    if (c.min >= 0.02 - 1e-12) rock += c.percent;
+  }
+  EXPECT_NEAR(sum, 100.0, 1e-9);
+  EXPECT_NEAR(rock, 40.0, 1e-9);
+  EXPECT_TRUE(std::filesystem::exists(full.library_recipe));
+  const SpecimenRecipe quick = read_specimen_recipe(kDir + "quick-specimen.toml");
+  EXPECT_EQ(quick.layers, 2);
+  EXPECT_EQ(quick.classes.size(), 2u);
+}
+
+TEST(SpecimenRecipe, BadRecipesFailBeforeSimulation) {
+  EXPECT_EQ(error_of(kGood), "");
+  std::string e = error_of("target_relative_density = 1.2\n" + kGood);
+  EXPECT_NE(e.find("test.toml: target_relative_density: must be in [0, 1], got 1.2"),
+            std::string::npos)
+      << e;
+  e = error_of("target_relative_density = -0.1\n" + kGood);
+  EXPECT_NE(e.find("target_relative_density"), std::string::npos) << e;
+  e = error_of(with("passing = [100, 80, 60, 40, 20]", "passing = [95, 80, 60, 40, 20]"));
+  EXPECT_NE(e.find("gradation.passing[0]: the class percentages must sum to 100"),
+            std::string::npos)
+      << e;
+  EXPECT_NE(e.find("95"), std::string::npos) << e;
+  e = error_of(with("diameter = 0.3", "diameter = 0.05"));
+  EXPECT_NE(e.find("container.diameter: not wider than twice the largest particle"),
+            std::string::npos)
+      << e;
+  e = error_of(with("recipe = \"srm-rock-blocks.toml\"", "library = \"no-such-library\""));
+  EXPECT_NE(e.find("rock.library: no clump library"), std::string::npos) << e;
+  e = error_of(with("recipe = \"srm-rock-blocks.toml\"", "recipe = \"missing.toml\""));
+  EXPECT_NE(e.find("rock.recipe: file not found"), std::string::npos) << e;
+  e = error_of("colour = 1\n" + kGood);
+  EXPECT_NE(e.find("colour: unknown key"), std::string::npos) << e;
+  e = error_of("rock_mass_fraction = nan\n" + with("rock_mass_fraction = 0.4\n", ""));
+  EXPECT_NE(e.find("rock_mass_fraction: must be finite, got nan"), std::string::npos) << e;
+  e = error_of(with("rock_mass_fraction = 0.4", "rock_mass_fraction = 0.3"));
+  EXPECT_NE(e.find("the gradation gives 40 %"), std::string::npos) << e;
+  e = error_of(with("passing = [100, 80, 60, 40, 20]", "passing = [100, 80, 90, 40, 20]"));
+  EXPECT_NE(e.find("must not increase"), std::string::npos) << e;
+}

@@ -1,0 +1,57 @@
+// Tests of element-test recipes (io/recipes/test_recipe.h): the bundled ones parse to their values,
+// bad ones fail with the file, field and value in one line.
+#include "io/recipes/test_recipe.h"
+
+#include "geom/errors.h"
+
+#include <gtest/gtest.h>
+
+using namespace clumpkit;
+
+namespace {
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_test_recipe(text, "t.toml");
+  } catch (const InvalidInput& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+// CTGU 2017's Table 1 law.
+TEST(TestRecipe, BundledTable1RecipeGivesSeed004sLaw) {
+  const TestRecipe r = read_test_recipe(std::string(CLUMPKIT_SOURCE_DIR) +
+                                        "/assets/recipes/elastic-scaling-table1.toml");
+  EXPECT_EQ(r.settings.confining, 5e6);
+  EXPECT_EQ(r.settings.friction, 0.8);
+  EXPECT_EQ(r.settings.consolidation_friction, 0.8);
+  EXPECT_EQ(r.settings.servo_strain_rate, 2.7);
+  EXPECT_EQ(r.settings.max_axial_strain, 3e-4);
+  ASSERT_TRUE(r.scaling && r.kn_ref && r.d_ref && r.ks_over_kn);
+  EXPECT_EQ(*r.scaling, dem::StiffnessScaling::linear);
+  EXPECT_EQ(*r.kn_ref, 8e7);
+  EXPECT_EQ(*r.d_ref, 0.01);
+  EXPECT_EQ(*r.ks_over_kn, 0.01);
+}
+
+TEST(TestRecipe, DefaultsLeaveConsolidationAndServoToTheTest) {
+  const TestRecipe r = parse_test_recipe("[test]\nconfining = 1e5\n", "t.toml");
+  EXPECT_LT(r.settings.consolidation_friction, 0.0);  // the test's μ
+  EXPECT_EQ(r.settings.servo_strain_rate, 0.0);       // the per-step default
+  EXPECT_FALSE(r.scaling.has_value());
+}
+
+TEST(TestRecipe, BadValuesNameFileFieldAndValue) {
+  const std::string e1 = error_of("[test]\nconsolidation_friction = -0.1\n");
+  EXPECT_NE(e1.find("t.toml"), std::string::npos) << e1;
+  EXPECT_NE(e1.find("test.consolidation_friction"), std::string::npos) << e1;
+  EXPECT_NE(e1.find("-0.1"), std::string::npos) << e1;
+  const std::string e2 = error_of("[test]\nservo_strain_rate = 0\n");
+  EXPECT_NE(e2.find("test.servo_strain_rate"), std::string::npos) << e2;
+  const std::string e3 = error_of("[test]\nservo_rate = 1\n");
+  EXPECT_NE(e3.find("unknown key"), std::string::npos) << e3;
+  EXPECT_NE(e3.find("servo_strain_rate"), std::string::npos) << e3;  // the known keys listed
+}
