@@ -73,3 +73,27 @@ TEST(DemServo, SettledIsotropicPackingHoldsItsTargetAndLoveWeberMatchesTheWalls)
   std::printf("Love-Weber diagonal %.1f %.1f %.1f Pa, off-diagonal max %.1f Pa\n", lw(0, 0),
               lw(1, 1), lw(2, 2), (lw - Mat3(lw.diagonal().asDiagonal())).cwiseAbs().maxCoeff());
 }
+
+TEST(DemCell, CylinderCellSizesAndLoveWeberOfASqueezedSphere) {
+  // One sphere of radius r pressed by both platens (overlap δ each) in a cylinder of radius
+  // 2r: the platen force F on area A gives σ_a = F/A, and Love–Weber over the cell's volume
+  // A·h, with branch vectors of length about r − δ, gives σ_zz = 2F(r − δ)/(A·h) = σ_a
+  // (h = 2(r − δ)), up to where in the overlap the contact point sits: O(δ/r) = 1e-3.
+  WorldOptions o;
+  o.gravity = Vec3::Zero();
+  World w(o);
+  const double r = 0.01, delta = 1e-5, h = 2 * (r - delta);
+  w.add_body(make_sphere_body(Vec3(0, 0, 0.5 * h), r, 2650));
+  const TestCell cell = add_cylinder_test_cell(w, 2 * r, 0.0, h);
+  w.step(1);
+  EXPECT_EQ(cell_walls(cell), (std::vector<int>{cell.lateral[0], cell.bottom, cell.top}));
+  EXPECT_EQ(cell_lengths(w, cell), Vec3(4 * r, 4 * r, h));
+  EXPECT_NEAR(cell_volume(w, cell), 3.14159265358979323846 * 4 * r * r * h, 1e-18);
+  const double sa = axial_stress(w, cell);
+  ASSERT_GT(sa, 0.0);
+  EXPECT_EQ(lateral_stress(w, cell), 0.0);
+  const Mat3 lw = cell_love_weber_stress(w, cell);
+  EXPECT_NEAR(lw(2, 2) / sa, 1.0, 1e-3);
+  EXPECT_NEAR(lw(0, 0), 0.0, 1e-9 * sa);
+  EXPECT_THROW(cell_axis_stress(w, cell), InvalidInput);
+}
