@@ -33,7 +33,7 @@ WorldOptions element_test_world_options(const std::vector<Body>& bodies,
 double inertial_number(const std::vector<Body>& bodies, double strain_rate, double confining) {
   double d_sum = 0, mass = 0, volume = 0;
   for (const Body& b : bodies) {
-    d_sum += std::cbrt(6.0 * b.volume / M_PI);
+    d_sum += std::cbrt(6.0 * b.volume / kPi);
     mass += b.mass;
     volume += b.volume;
   }

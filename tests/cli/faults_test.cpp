@@ -26,6 +26,18 @@ std::string clean_and_partial_library(const fs::path& d) {
   return run;
 }
 
+// Starts `clumpkit specimen` on `recipe` into `out` and sends it SIGTERM as soon as the stage
+// record `record` exists (or after a minute).
+void stop_at_first_stage_record(const fs::path& recipe, const fs::path& out,
+                                const fs::path& record) {
+  const std::string start = std::string(CLUMPKIT_BINARY) + " specimen --quiet --recipe " +
+                            recipe.string() + " --out " + out.string();
+  const std::string script =
+      "(" + start + " >/dev/null 2>&1 & pid=$!; for i in $(seq 6000); do [ -e " + record.string() +
+      " ] && break; sleep 0.01; done; kill -TERM $pid; wait $pid)";
+  std::system(("bash -c '" + script + "'").c_str());
+}
+
 }  // namespace
 
 TEST(CliFaults, LibraryRedoesAParticleRecordThatFailsItsChecksum) {
@@ -79,12 +91,7 @@ TEST(CliFaults, SpecimenRefusesAStageRecordThatFailsItsChecksum) {
   const fs::path recipe = tiny_specimen_recipe(d);
   const fs::path out = d / "spec",
                  record = d / "spec.partial" / "checkpoints" / "calibration-0.done";
-  const std::string start = std::string(CLUMPKIT_BINARY) + " specimen --quiet --recipe " +
-                            recipe.string() + " --out " + out.string();
-  const std::string script =
-      "(" + start + " >/dev/null 2>&1 & pid=$!; for i in $(seq 6000); do [ -e " + record.string() +
-      " ] && break; sleep 0.01; done; kill -TERM $pid; wait $pid)";
-  std::system(("bash -c '" + script + "'").c_str());
+  stop_at_first_stage_record(recipe, out, record);
   ASSERT_TRUE(fs::exists(record)) << "the run ended before its first stage record";
   ASSERT_FALSE(fs::exists(out));
   std::string text = slurp(record);
@@ -106,12 +113,7 @@ TEST(CliFaults, SpecimenStoppedAfterItsFirstStageResumesToTheSameBytes) {
   const fs::path recipe = tiny_specimen_recipe(d);
   const fs::path out = d / "spec",
                  record = d / "spec.partial" / "checkpoints" / "calibration-0.done";
-  const std::string start = std::string(CLUMPKIT_BINARY) + " specimen --quiet --recipe " +
-                            recipe.string() + " --out " + out.string();
-  const std::string script =
-      "(" + start + " >/dev/null 2>&1 & pid=$!; for i in $(seq 6000); do [ -e " + record.string() +
-      " ] && break; sleep 0.01; done; kill -TERM $pid; wait $pid)";
-  std::system(("bash -c '" + script + "'").c_str());
+  stop_at_first_stage_record(recipe, out, record);
   ASSERT_TRUE(fs::exists(record)) << "the run ended before its first stage record";
   ASSERT_FALSE(fs::exists(out));
   const Result r = run_cli(
