@@ -4,7 +4,9 @@
 #include "geom/errors.h"
 
 #include <array>
+#include <charconv>
 #include <cmath>
+#include <string>
 
 namespace clumpkit::dem {
 
@@ -176,6 +178,42 @@ Mat3 cell_love_weber_stress(const World& world, const TestCell& cell) {
         return (x.array() >= lo.array()).all() && (x.array() <= hi.array()).all();
       },
       (hi - lo).prod());
+}
+
+void put_cell(StageRecord& record, const TestCell& cell) {
+  record["cell.shape"] = cell.shape == TestCell::Shape::cuboid ? "cuboid" : "cylinder";
+  std::string lateral;
+  for (int w : cell.lateral) lateral += (lateral.empty() ? "" : ",") + std::to_string(w);
+  record["cell.lateral"] = lateral;
+  record["cell.bottom"] = std::to_string(cell.bottom);
+  record["cell.top"] = std::to_string(cell.top);
+}
+
+TestCell read_cell(const StageRecord& record, const std::string& where) {
+  TestCell cell;
+  const auto shape = record.find("cell.shape");
+  if (shape == record.end() || (shape->second != "cuboid" && shape->second != "cylinder"))
+    throw InvalidInput(where + ": stage record cell.shape missing or not cuboid/cylinder");
+  cell.shape = shape->second == "cuboid" ? TestCell::Shape::cuboid : TestCell::Shape::cylinder;
+  const auto lateral = record.find("cell.lateral");
+  if (lateral == record.end()) throw InvalidInput(where + ": stage record misses cell.lateral");
+  const std::string& text = lateral->second;
+  for (const char* p = text.data(); p <= text.data() + text.size();) {
+    int w = -1;
+    const auto [next, ec] = std::from_chars(p, text.data() + text.size(), w);
+    if (ec != std::errc() || w < 0 || (next != text.data() + text.size() && *next != ','))
+      throw InvalidInput(where + ": stage record cell.lateral: '" + text + "' is not wall indices");
+    cell.lateral.push_back(w);
+    p = next + 1;
+  }
+  cell.bottom = static_cast<int>(record_integer(record, "cell.bottom", where));
+  cell.top = static_cast<int>(record_integer(record, "cell.top", where));
+  const std::size_t lateral_walls = cell.shape == TestCell::Shape::cuboid ? 4 : 1;
+  if (cell.lateral.size() != lateral_walls || cell.bottom < 0 || cell.top < 0)
+    throw InvalidInput(where + ": stage record cell: " + shape->second + " with " +
+                       std::to_string(cell.lateral.size()) + " lateral walls, bottom " +
+                       std::to_string(cell.bottom) + ", top " + std::to_string(cell.top));
+  return cell;
 }
 
 }  // namespace clumpkit::dem

@@ -4,6 +4,7 @@
 
 #include "dem/core/world.h"
 #include "dem/lab/servo.h"
+#include "dem/run/stage_store.h"
 
 #include <vector>
 
@@ -62,5 +63,12 @@ Vec3 cell_axis_stress(const World& world, const TestCell& cell);
 /// Love–Weber stress (dem/measure/stress.h) of the bodies whose centroid lies inside the cell,
 /// over the cell's volume.
 Mat3 cell_love_weber_stress(const World& world, const TestCell& cell);
+
+/// The cell's walls into a stage record ("cell.shape", "cell.lateral", "cell.bottom", "cell.top"),
+/// so a checkpointed run knows them again.
+void put_cell(StageRecord& record, const TestCell& cell);
+
+/// The cell of put_cell. Throws InvalidInput naming `where` for a missing or malformed entry.
+TestCell read_cell(const StageRecord& record, const std::string& where);
 
 }  // namespace clumpkit::dem

@@ -5,6 +5,7 @@
 #include "dem/core/world.h"
 #include "dem/lab/cell.h"
 #include "dem/lab/servo.h"
+#include "dem/run/stage_store.h"
 
 #include <array>
 #include <functional>
@@ -87,6 +88,7 @@ struct ElementTestResult {
   std::vector<CurveRow> curve;
   double solid_volume = 0;  ///< Σ body volumes (m³)
   bool stopped = false;     ///< ended early by the stop callback
+  bool resumed = false;     ///< continued from a stored checkpoint (the staged run)
 };
 
 /// Consolidates the specimen in `cell` isotropically to the confining stress (servo on every
@@ -105,6 +107,35 @@ ElementTestResult run_element_test(World& world, const TestCell& cell,
 ElementTestResult run_element_test(World& world, const TestCell& cell,
                                    const ElementTestSettings& settings, ElementTestState& state,
                                    const std::function<bool()>& stop = {});
+
+/// A specimen in its test cell: the world (bodies, the cell's walls, options with the time step)
+/// and the cell.
+struct CellSpecimen {
+  World world;
+  TestCell cell;
+};
+
+/// The element test as the resumable stage "test" of control.store (dem/run/stage_store.h),
+/// opened with `fingerprint` (of everything that decides the result): when the store holds a
+/// running checkpoint of the stage, `specimen` is replaced by its world and cell and the test
+/// continues from its state; else it starts on `specimen`. A checkpoint is saved every
+/// control.checkpoint_every_seconds and when the interrupter, told "test" and the fraction done
+/// (consolidation the first tenth), asks to stop; then Interrupted is thrown. `consolidated`,
+/// when set, is called once at the consolidated state (not by a run resumed past it). A resumed
+/// test ends with the same curve, bit for bit, as one never stopped.
+ElementTestResult run_element_test(
+    CellSpecimen& specimen, const ElementTestSettings& settings, const StageControl& control,
+    const std::string& fingerprint,
+    const std::function<void(const CellSpecimen&, const ElementTestState&)>& consolidated = {});
+
+/// What a checkpoint of the staged test keeps besides the world: every field of `state` (numbers
+/// exact), the cell's walls and the curve so far ("curve.000000", … : ten numbers per row).
+StageRecord element_test_record(const ElementTestState& state, const TestCell& cell);
+
+/// The state and cell of element_test_record. Throws InvalidInput naming `where` for a missing
+/// or malformed entry.
+void read_element_test_record(const StageRecord& record, const std::string& where,
+                              ElementTestState& state, TestCell& cell);
 
 /// Tangent modulus dy/dx of the least-squares line through the rows whose `x_of` (stress) lies
 /// in [lo, hi]: the bulk modulus (p against ε_v) or the constrained modulus (σ_a against ε_a).

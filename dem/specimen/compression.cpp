@@ -8,12 +8,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
 
 namespace clumpkit::dem {
 
 namespace {
 
 enum Stream : std::uint64_t { particles_stream = 11, placement_stream = 12 };
+
+constexpr const char* kStage = "compression";
 
 // The container of `size` (cuboid edges, or diameter, diameter, height), centred on the z-axis
 // and standing on z = 0: its walls' positions.
@@ -77,29 +81,14 @@ void validate(const CompressionSpec& spec) {
     throw InvalidInput("compression: relaxation limits must not be negative");
 }
 
-}  // namespace
-
-CompressionResult compress_specimen(const CompressionSpec& spec, const Interrupter& interrupter) {
-  validate(spec);
+// The loose packing of `drawn` in the container of `size` enlarged by `factor` (more while too
+// crowded; the same stream goes on, so the result stays fixed by the seed): the world with the
+// cell's walls there and its time step; `factor` and `cell` as built.
+World loose_packing(const CompressionSpec& spec, LayerParticles drawn, const Vec3& size,
+                    double& factor, TestCell& cell) {
   const bool cuboid = spec.shape == CompressionSpec::Shape::cuboid;
-
-  // The particles for the requested container, then the container resized so that they fill it
-  // at exactly the target porosity (the drawn volume misses the goal by part of a particle).
-  Rng particle_rng = Rng::stream(spec.seed, particles_stream);
-  const double goal = (1.0 - spec.porosity) * container_volume(spec, spec.size);
-  LayerParticles drawn = layer_particles(spec.classes, spec.templates, goal, spec.soil_density,
-                                         spec.rock_density, particle_rng);
-  if (drawn.bodies.empty()) throw InvalidInput("compression: the container holds no particle");
-  double solid = 0;
-  for (const Body& b : drawn.bodies) solid += b.volume;
-  const Vec3 size =
-      spec.size * std::cbrt(solid / (1.0 - spec.porosity) / container_volume(spec, spec.size));
-
-  // The loose packing: random placement in the container enlarged by loose_factor (more while
-  // too crowded; the same stream goes on, so the result stays fixed by the seed).
   Rng place_rng = Rng::stream(spec.seed, placement_stream);
   const std::vector<PlacementItem> items = placement_items(drawn.bodies);
-  double factor = spec.loose_factor;
   std::vector<Placement> placed;
   for (int tries = 0; placed.empty(); ++tries) {
     if (tries == 40) throw InvalidInput("compression: no room for the loose packing");
@@ -126,9 +115,7 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const Interrupt
   for (const Body& b : drawn.bodies)
     for (const Sphere& s : b.spheres) r_min = std::min(r_min, s.radius);
   o.skin = 0.2 * r_min;  // a length of the specimen: similar specimens scale exactly
-  CompressionResult r;
-  r.world = World(o);
-  World& world = r.world;
+  World world(o);
   for (std::size_t k = 0; k < drawn.bodies.size(); ++k) {
     Body b = std::move(drawn.bodies[k]);
     b.position = placed[k].position;
@@ -136,51 +123,123 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const Interrupt
     world.add_body(std::move(b));
   }
   const Box start = container(size * factor);
-  const TestCell cell =
-      cuboid ? add_cuboid_test_cell(world, start.lo, start.hi)
-             : add_cylinder_test_cell(world, start.radius, start.lo.z(), start.hi.z());
+  cell = cuboid ? add_cuboid_test_cell(world, start.lo, start.hi)
+                : add_cylinder_test_cell(world, start.radius, start.lo.z(), start.hi.z());
   world.options().timestep = spec.timestep_safety * critical_timestep(world);
-  r.timestep = world.options().timestep;
+  return world;
+}
+
+}  // namespace
+
+CompressionResult compress_specimen(const CompressionSpec& spec, const StageControl& control) {
+  validate(spec);
+  const bool cuboid = spec.shape == CompressionSpec::Shape::cuboid;
+  StageStore in_memory;
+  StageStore& store = control.store ? *control.store : in_memory;
+  store.open(compression_fingerprint(spec));
+
+  // The particles for the requested container, then the container resized so that they fill it
+  // at exactly the target porosity (the drawn volume misses the goal by part of a particle).
+  // Drawn on a resume too: the size follows from them.
+  Rng particle_rng = Rng::stream(spec.seed, particles_stream);
+  const double goal = (1.0 - spec.porosity) * container_volume(spec, spec.size);
+  LayerParticles drawn = layer_particles(spec.classes, spec.templates, goal, spec.soil_density,
+                                         spec.rock_density, particle_rng);
+  if (drawn.bodies.empty()) throw InvalidInput("compression: the container holds no particle");
+  double solid = 0;
+  for (const Body& b : drawn.bodies) solid += b.volume;
+  const Vec3 size =
+      spec.size * std::cbrt(solid / (1.0 - spec.porosity) / container_volume(spec, spec.size));
+
+  CompressionResult r;
+  World& world = r.world;
+  TestCell cell;
+  double factor = spec.loose_factor;  // of the loose packing's container
+  long first_step = 1;                // of the closing
+  double s = 0;                       // the container's scale before first_step
+  long relax = 0;                     // relaxation steps done
+  r.relaxed_by = "step_cap";
+  bool relaxed = false;  // the relaxation ended (the stage finished)
+  CheckpointInfo info;
+  if (const std::optional<StageRecord> done = store.finished(kStage)) {
+    world = store.finished_world(kStage);
+    cell = read_cell(*done, kStage);
+    factor = record_number(*done, "factor", kStage);
+    relax = static_cast<long>(record_integer(*done, "relax_steps", kStage));
+    const auto by = done->find("relaxed_by");
+    if (by != done->end()) r.relaxed_by = by->second;
+    relaxed = true;
+  } else if (std::optional<World> running = store.running(kStage, info)) {
+    world = std::move(*running);
+    cell = read_cell(info.state, kStage);
+    factor = record_number(info.state, "factor", kStage);
+    first_step = static_cast<long>(record_integer(info.state, "closing_step", kStage)) + 1;
+    s = record_number(info.state, "scale", kStage);
+    relax = static_cast<long>(record_integer(info.state, "relax_steps", kStage));
+  } else {
+    world = loose_packing(spec, std::move(drawn), size, factor, cell);
+    s = factor;
+  }
+  // The checkpointed state: where the closing and the relaxation are.
+  long k = first_step - 1;
+  StageCheckpoints checkpoints(store, control, kStage);
+  const auto state = [&] {
+    StageRecord st;
+    put_cell(st, cell);
+    put_number(st, "factor", factor);
+    st["closing_step"] = std::to_string(k);
+    put_number(st, "scale", s);
+    st["relax_steps"] = std::to_string(relax);
+    return st;
+  };
+  const auto stop = [&](double fraction) {
+    if (checkpoints.check(world, state, "compression", fraction))
+      throw Interrupted(std::string("compression: stopped on request") +
+                        (store.keeps_checkpoints() ? " (checkpoint kept)" : ""));
+  };
 
   // Closing: the container's scale s goes from `factor` to 1 by strain_per_step of the current
   // size each step; every body centre is mapped by the same ratio about the container's centre
   // (x, y about the axis, z about mid-height), so the packing densifies evenly.
   const long steps =
       static_cast<long>(std::ceil(std::log(factor) / -std::log1p(-spec.strain_per_step)));
-  double s = factor;
   const Vec3 centre(0.0, 0.0, 0.5 * size.z());
-  for (long k = 1; k <= steps; ++k) {
-    const double next = k == steps ? 1.0 : factor * std::pow(1.0 - spec.strain_per_step, double(k));
-    const Vec3 c_old = centre * s, c_new = centre * next;
-    const double ratio = next / s;
-    for (Body& b : world.bodies()) b.position = c_new + ratio * (b.position - c_old);
-    s = next;
-    set_walls(world, cell, container(size * s));
-    // Quench: every 100 steps all bodies stop (a steepest-descent relaxation between small
-    // affine steps, as in jamming studies), so no kinetic energy builds up while the container
-    // closes (with α = 0.7 alone it still reached 28 J).
-    if (k % 100 == 0) stop_bodies(world);
-    world.step(1);
-    if (k % 1000 == 0 && interrupter && interrupter("compression", 0.9 * double(k) / steps))
-      throw Interrupted("compression: stopped on request");
-  }
+  if (!relaxed)
+    for (k = first_step; k <= steps; ++k) {
+      const double next =
+          k == steps ? 1.0 : factor * std::pow(1.0 - spec.strain_per_step, double(k));
+      const Vec3 c_old = centre * s, c_new = centre * next;
+      const double ratio = next / s;
+      for (Body& b : world.bodies()) b.position = c_new + ratio * (b.position - c_old);
+      s = next;
+      set_walls(world, cell, container(size * s));
+      // Quench: every 100 steps all bodies stop (a steepest-descent relaxation between small
+      // affine steps, as in jamming studies), so no kinetic energy builds up while the
+      // container closes (with α = 0.7 alone it still reached 28 J).
+      if (k % 100 == 0) stop_bodies(world);
+      world.step(1);
+      if (k % 1000 == 0) stop(0.9 * double(k) / double(steps));
+    }
+  k = steps;
   r.compression_steps = steps;
 
   // Relaxation at the final size.
-  long relax = 0;
-  r.relaxed_by = "step_cap";
-  while (relax < spec.relax_max_steps) {
+  while (!relaxed && relax < spec.relax_max_steps) {
     world.step(100);
     relax += 100;
     if (mean_unbalanced_force_ratio(world) < spec.relax_unbalanced) {
       r.relaxed_by = "unbalanced_ratio";
       break;
     }
-    if (relax % 1000 == 0 && interrupter &&
-        interrupter("compression", 0.9 + 0.1 * double(relax) / spec.relax_max_steps))
-      throw Interrupted("compression: stopped on request");
+    if (relax % 1000 == 0) stop(0.9 + 0.1 * double(relax) / double(spec.relax_max_steps));
   }
   r.relax_steps = relax;
+  r.timestep = world.options().timestep;
+  if (!relaxed) {
+    StageRecord record = state();
+    record["relaxed_by"] = r.relaxed_by;
+    store.finish(kStage, record, &world);
+  }
 
   // The specimen: at rest, with the material friction (shear history rescaled).
   stop_bodies(world);

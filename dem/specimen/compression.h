@@ -4,8 +4,8 @@
 
 #include "dem/core/contact.h"
 #include "dem/core/world.h"
+#include "dem/run/stage_store.h"
 #include "dem/specimen/specimen_particles.h"
-#include "geom/progress.h"
 
 #include <cstdint>
 #include <string>
@@ -66,9 +66,16 @@ struct CompressionResult {
 /// off, and relaxes at the final size. The container's final volume is Σ body volumes / (1 − n),
 /// so the porosity is the target exactly. A porosity above the packing's jamming porosity at
 /// spec.friction leaves bodies without contacts (mean_stress 0): the caller should say so.
-/// Deterministic for any thread count. The interrupter is told "compression" and the fraction
-/// done; when it asks to stop, Interrupted is thrown. Throws InvalidInput for a bad spec.
-CompressionResult compress_specimen(const CompressionSpec& spec,
-                                    const Interrupter& interrupter = {});
+/// Deterministic for any thread count. Runs as the resumable stage "compression" of
+/// control.store (opened with compression_fingerprint(spec)): checkpoints every
+/// control.checkpoint_every_seconds and when the interrupter, told "compression" and the
+/// fraction done, asks to stop (then Interrupted is thrown); the world at the end of the
+/// relaxation is kept with the finished stage. Continued from the store, it ends with the bytes
+/// of a run never stopped. Throws InvalidInput for a bad spec.
+CompressionResult compress_specimen(const CompressionSpec& spec, const StageControl& control = {});
+
+/// The resume fingerprint of a compression: FNV-1a 64 (16 hex digits) of the program version and
+/// every field of `spec` (doubles exact, templates with all their spheres and mass properties).
+std::string compression_fingerprint(const CompressionSpec& spec);
 
 }  // namespace clumpkit::dem

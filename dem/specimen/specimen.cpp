@@ -16,7 +16,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <exception>
 #include <map>
 #include <mutex>
@@ -37,13 +36,6 @@ enum Stream : std::uint64_t {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-/// A number of a stage record (written with format_number(), read back exactly).
-double number(const StageRecord& r, const std::string& key, const std::string& stage) {
-  auto it = r.find(key);
-  if (it == r.end()) throw InvalidInput("specimen stage " + stage + ": record misses " + key);
-  return std::strtod(it->second.c_str(), nullptr);
 }
 
 double top_height(const World& world) {
@@ -104,26 +96,14 @@ World scaled_world(const std::vector<Body>& bodies, const std::vector<Placement>
   return world;
 }
 
-std::uint64_t bits(double v) {
-  std::uint64_t u;
-  std::memcpy(&u, &v, sizeof u);
-  return u;
-}
-
-double from_bits(std::uint64_t u) {
-  double v;
-  std::memcpy(&v, &u, sizeof v);
-  return v;
-}
-
 /// Settles `world` from its current step to equilibrium (SpecimenSpec::equilibrium_ratio or the
 /// settled-height rule of run_until) or the step cap, with periodic checkpoints of `stage`
-/// carrying the run's state (the height reference, random_state[1]), so a resumed run tests its
+/// carrying the run's state (the height reference), so a resumed run tests its
 /// rules as the uninterrupted one. `resumed` is the info of the checkpoint the world came from,
 /// or null for a fresh stage. `report(fraction of the stage)` answers whether to stop; then the
 /// checkpoint is saved and Interrupted thrown.
 RunOutcome settle(World& world, const SpecimenSpec& spec, const std::string& stage,
-                  StageStore& store, const SpecimenControl& control,
+                  StageStore& store, const StageControl& control,
                   const std::function<bool(double)>& report,
                   const CheckpointInfo* resumed = nullptr) {
   RunLimits limits;
@@ -131,13 +111,14 @@ RunOutcome settle(World& world, const SpecimenSpec& spec, const std::string& sta
   limits.weight_ratio_below = spec.equilibrium_ratio;
   limits.height_window = spec.settle_window;
   limits.height_tolerance = spec.height_tolerance * smallest_size(spec);
-  if (resumed) limits.state.height_reference = from_bits(resumed->random_state[1]);
+  if (resumed)
+    limits.state.height_reference = record_number(resumed->state, "height_reference", stage);
   if (store.keeps_checkpoints()) {
     limits.checkpoint_every_seconds = control.checkpoint_every_seconds;
     limits.checkpoint = [&](const World& w, const RunState& state) {
       CheckpointInfo info;
       info.stage = stage;
-      info.random_state[1] = bits(state.height_reference);
+      put_number(info.state, "height_reference", state.height_reference);
       store.checkpoint(stage, w, info);
     };
   }
@@ -157,7 +138,7 @@ RunOutcome settle(World& world, const SpecimenSpec& spec, const std::string& sta
 /// finished, else settled from the store's running checkpoint or from `start()`; after settling,
 /// `finish` (if any) edits the world before the store keeps it.
 World settled_stage(const std::string& name, StageStore& store, const SpecimenSpec& spec,
-                    const SpecimenControl& control, const std::function<World()>& start,
+                    const StageControl& control, const std::function<World()>& start,
                     const std::function<bool(double)>& report,
                     const std::function<void(World&)>& finish = {}) {
   if (store.finished(name)) return store.finished_world(name);
@@ -231,7 +212,7 @@ namespace {
 /// What every stage of one build shares.
 struct Build {
   const SpecimenSpec& spec;
-  const SpecimenControl& control;
+  const StageControl& control;
   StageStore& store;
   double lambda;  ///< density scaling of the preparation
   double margin;  ///< of the measurement regions (m)
@@ -266,8 +247,8 @@ std::vector<CalibrationPoint> calibrate(const Build& build, double layer_volume)
     StageStore& store = build.store;
     if (const std::optional<StageRecord> r = store.finished(name)) {
       const auto stopped = r->find("stopped_by");
-      cal[k] = {number(*r, "friction", name), number(*r, "porosity", name), 0.0,
-                static_cast<long>(number(*r, "steps", name)),
+      cal[k] = {record_number(*r, "friction", name), record_number(*r, "porosity", name), 0.0,
+                static_cast<long>(record_integer(*r, "steps", name)),
                 stopped == r->end() ? std::string() : stopped->second};
       cal[k].void_ratio = cal[k].porosity / (1.0 - cal[k].porosity);
       return;
@@ -380,7 +361,7 @@ double next_compaction_friction(const SpecimenResult& result, double& porosity_f
 
 }  // namespace
 
-SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& control) {
+SpecimenResult build_specimen(const SpecimenSpec& spec, const StageControl& control) {
   check_spec(spec);
   SpecimenResult result;
   StageStore in_memory;

@@ -98,19 +98,6 @@ struct SpecimenResult {
   std::vector<SpecimenRound> rounds;                    ///< every build, the last one is the result
 };
 
-/// Progress, interruption and stage storage of build_specimen.
-struct SpecimenControl {
-  /// Where finished stages and running checkpoints are kept (and taken from when resuming);
-  /// null = nowhere (in memory only). Stages may run in parallel: calibration runs call the
-  /// store from several threads, each for its own stage.
-  StageStore* store = nullptr;
-  double checkpoint_every_seconds = 60;  ///< wall-clock period of a running stage's checkpoints
-  /// Told the stage ("calibration", "layer compaction", "layered specimen", "measurement") and
-  /// the fraction of the whole job done (0..1); when it asks to stop, the running stages save a
-  /// checkpoint and build_specimen throws Interrupted.
-  Interrupter interrupter;
-};
-
 /// Relative density Dr = (e_max − e)/(e_max − e_min) from porosities (e = n/(1 − n)).
 double relative_density(double porosity, double porosity_max, double porosity_min);
 
@@ -158,7 +145,10 @@ World stack_layers(const World& layer, int layers, double layer_height);
 ///     per-layer and per-band porosity, coordination number.
 /// Random streams derive from spec.seed only, and the DEM is deterministic, so the result is
 /// bit-identical for any thread count and after a resume from the store. Throws InvalidInput for
-/// a bad spec; the store's open() throws for stored stages of another spec.
-SpecimenResult build_specimen(const SpecimenSpec& spec, const SpecimenControl& control = {});
+/// a bad spec; the store's open() throws for stored stages of another spec. The interrupter is
+/// told "calibration", "layer compaction", "layered specimen", "measurement" or "done" and the
+/// fraction of the whole build; when it asks to stop, the running stages save a checkpoint and
+/// Interrupted is thrown.
+SpecimenResult build_specimen(const SpecimenSpec& spec, const StageControl& control = {});
 
 }  // namespace clumpkit::dem

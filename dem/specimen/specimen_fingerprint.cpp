@@ -1,5 +1,7 @@
-// The resume fingerprint of a specimen spec (dem/specimen/specimen.h): a canonical text of every
-// field, hashed with the program version.
+// The resume fingerprints of a specimen spec (dem/specimen/specimen.h) and of a compression
+// (dem/specimen/compression.h): a canonical text of every field, hashed with the program
+// version.
+#include "dem/specimen/compression.h"
 #include "dem/specimen/specimen.h"
 
 #include "geom/format.h"
@@ -17,44 +19,41 @@ static_assert(sizeof(ContactParams) == 7 * sizeof(double), "add the new field to
 static_assert(sizeof(ParticleClass) == 3 * sizeof(double) + sizeof(double),
               "add the new field to canonical_text");
 
-std::string canonical_text(const SpecimenSpec& s) {
-  std::ostringstream t;
-  auto line = [&](const char* key, const std::string& value) { t << key << " " << value << "\n"; };
-  auto vec = [&](const Vec3& v) {
-    return format_number(v.x()) + " " + format_number(v.y()) + " " + format_number(v.z());
-  };
-  line("radius", format_number(s.radius));
-  line("height", format_number(s.height));
-  line("layers", std::to_string(s.layers));
-  line("soil_density", format_number(s.soil_density));
-  line("rock_density", format_number(s.rock_density));
-  line("contact.kn", format_number(s.contact.kn));
-  line("contact.ks", format_number(s.contact.ks));
-  line("contact.friction", format_number(s.contact.friction));
-  line("contact.damping_ratio", format_number(s.contact.damping_ratio));
-  line("contact.local_damping", format_number(s.contact.local_damping));
+namespace {
+
+/// Writes one "key value" line of a canonical text.
+class Lines {
+ public:
+  void operator()(const char* key, const std::string& value) { t_ << key << " " << value << "\n"; }
+  std::string text() const { return t_.str(); }
+
+ private:
+  std::ostringstream t_;
+};
+
+std::string vec(const Vec3& v) {
+  return format_number(v.x()) + " " + format_number(v.y()) + " " + format_number(v.z());
+}
+
+void contact_lines(Lines& line, const ContactParams& c) {
+  line("contact.kn", format_number(c.kn));
+  line("contact.ks", format_number(c.ks));
+  line("contact.friction", format_number(c.friction));
+  line("contact.damping_ratio", format_number(c.damping_ratio));
+  line("contact.local_damping", format_number(c.local_damping));
   // Written only when set, so the fingerprints of specimens made before scaling existed hold.
-  if (s.contact.scaling != StiffnessScaling::none) {
+  if (c.scaling != StiffnessScaling::none) {
     line("contact.scaling", "linear");
-    line("contact.d_ref", format_number(s.contact.d_ref));
+    line("contact.d_ref", format_number(c.d_ref));
   }
-  line("target_relative_density", format_number(s.target_relative_density));
-  for (double f : s.calibration_frictions) line("calibration_friction", format_number(f));
-  line("seed", std::to_string(s.seed));
-  line("porosity_guess", format_number(s.porosity_guess));
-  line("timestep_safety", format_number(s.timestep_safety));
-  line("equilibrium_ratio", format_number(s.equilibrium_ratio));
-  line("settle_window", std::to_string(s.settle_window));
-  line("height_tolerance", format_number(s.height_tolerance));
-  line("max_steps", std::to_string(s.max_steps));
-  line("correction_rounds", std::to_string(s.correction_rounds));
-  line("relative_density_tolerance", format_number(s.relative_density_tolerance));
-  line("density_scaling", format_number(s.density_scaling));
-  line("margin", format_number(s.margin));
-  for (const ParticleClass& c : s.classes)
+}
+
+void particle_lines(Lines& line, const std::vector<ParticleClass>& classes,
+                    const std::vector<RockTemplate>& templates) {
+  for (const ParticleClass& c : classes)
     line("class", format_number(c.min_size) + " " + format_number(c.max_size) + " " +
                       format_number(c.mass_percent) + " " + (c.rock ? "rock" : "soil"));
-  for (const RockTemplate& tp : s.templates) {
+  for (const RockTemplate& tp : templates) {
     const ClumpTemplate& c = tp.clump;
     line("template", format_number(tp.sieve_size) + " " + std::to_string(c.spheres.size()));
     line("template.volume", format_number(c.mass.volume));
@@ -69,14 +68,64 @@ std::string canonical_text(const SpecimenSpec& s) {
     for (const Sphere& sp : c.spheres)
       line("sphere", vec(sp.center) + " " + format_number(sp.radius));
   }
-  return t.str();
+}
+
+std::string fingerprint(const std::string& canonical) {
+  Fnv1a h;
+  h.add(std::string_view("clumpkit " CLUMPKIT_VERSION "\n"));
+  h.add(std::string_view(canonical));
+  return h.hex();
+}
+
+}  // namespace
+
+std::string canonical_text(const SpecimenSpec& s) {
+  Lines line;
+  line("radius", format_number(s.radius));
+  line("height", format_number(s.height));
+  line("layers", std::to_string(s.layers));
+  line("soil_density", format_number(s.soil_density));
+  line("rock_density", format_number(s.rock_density));
+  contact_lines(line, s.contact);
+  line("target_relative_density", format_number(s.target_relative_density));
+  for (double f : s.calibration_frictions) line("calibration_friction", format_number(f));
+  line("seed", std::to_string(s.seed));
+  line("porosity_guess", format_number(s.porosity_guess));
+  line("timestep_safety", format_number(s.timestep_safety));
+  line("equilibrium_ratio", format_number(s.equilibrium_ratio));
+  line("settle_window", std::to_string(s.settle_window));
+  line("height_tolerance", format_number(s.height_tolerance));
+  line("max_steps", std::to_string(s.max_steps));
+  line("correction_rounds", std::to_string(s.correction_rounds));
+  line("relative_density_tolerance", format_number(s.relative_density_tolerance));
+  line("density_scaling", format_number(s.density_scaling));
+  line("margin", format_number(s.margin));
+  particle_lines(line, s.classes, s.templates);
+  return line.text();
 }
 
 std::string spec_fingerprint(const SpecimenSpec& spec) {
-  Fnv1a h;
-  h.add(std::string_view("clumpkit " CLUMPKIT_VERSION "\n"));
-  h.add(std::string_view(canonical_text(spec)));
-  return h.hex();
+  return fingerprint(canonical_text(spec));
+}
+
+std::string compression_fingerprint(const CompressionSpec& s) {
+  Lines line;
+  line("method", "compression");
+  line("shape", s.shape == CompressionSpec::Shape::cuboid ? "cuboid" : "cylinder");
+  line("size", vec(s.size));
+  line("porosity", format_number(s.porosity));
+  line("friction", format_number(s.friction));
+  line("soil_density", format_number(s.soil_density));
+  line("rock_density", format_number(s.rock_density));
+  contact_lines(line, s.contact);
+  line("seed", std::to_string(s.seed));
+  line("loose_factor", format_number(s.loose_factor));
+  line("strain_per_step", format_number(s.strain_per_step));
+  line("timestep_safety", format_number(s.timestep_safety));
+  line("relax_unbalanced", format_number(s.relax_unbalanced));
+  line("relax_max_steps", std::to_string(s.relax_max_steps));
+  particle_lines(line, s.classes, s.templates);
+  return fingerprint(line.text());
 }
 
 }  // namespace clumpkit::dem

@@ -37,7 +37,8 @@ void register_specimen(CLI::App& app) {
       "container enlarged 1.4 times and compressed homogeneously by its rigid frictionless walls "
       "to the target porosity at preparation.friction (the specimens of `clumpkit test`); "
       "report.json gives porosity, coordination_number, mean_stress and the container box (no "
-      "calibration or slices; --resume restarts it). Same seed, same bytes, for any --threads.");
+      "calibration or slices; it checkpoints and resumes the same way). Same seed, same bytes, for "
+      "any --threads.");
   c->add_option("--recipe", o->recipe, "Specimen recipe file (see assets/recipes/)")->required();
   c->add_option("--out", o->out, "Output directory")->required();
   c->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->capture_default_str();

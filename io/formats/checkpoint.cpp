@@ -323,7 +323,8 @@ void save_checkpoint(const std::string& path, const World& world, const Checkpoi
   w.bytes.append(kMagic, sizeof kMagic);
   w.u32(kCheckpointVersion);
   w.str(info.stage);
-  for (std::uint64_t v : info.random_state) w.u64(v);
+  w.u64(info.state.size());
+  for (const auto& [key, value] : info.state) w.str(key), w.str(value);
   WorldCodec::write(w, world);
   w.u64(fnv1a(w.bytes.data(), w.bytes.size()));
 
@@ -355,7 +356,12 @@ World load_checkpoint(const std::string& path, CheckpointInfo* info) {
 
   CheckpointInfo read_info;
   read_info.stage = header.str("stage");
-  for (std::uint64_t& v : read_info.random_state) v = header.u64();
+  const std::size_t entries = header.count(16, "stage state");  // two lengths each at least
+  for (std::size_t k = 0; k < entries; ++k) {
+    std::string key = header.str("stage state key");
+    read_info.state[std::move(key)] = header.str("stage state value");
+  }
+  if (read_info.state.size() != entries) header.fail("repeated stage state key");
   World world = WorldCodec::read(header);
   if (header.position() != end)
     header.fail(std::to_string(end - header.position()) + " unexpected bytes before the checksum");

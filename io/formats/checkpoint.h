@@ -11,10 +11,12 @@ namespace clumpkit {
 
 /// Current checkpoint format version (bumped on any layout change, or a change in what a
 /// stored word means: 4 = run_until's height reference is the one after the window test;
-/// 6 = the sort interval, WorldOptions::sort_every).
-inline constexpr std::uint32_t kCheckpointVersion = 6;
+/// 6 = the sort interval, WorldOptions::sort_every; 7 = the stage state as key/value text).
+inline constexpr std::uint32_t kCheckpointVersion = 7;
 
-/// Writes `world` and `info` to `path`: magic "CLUMPKITCKPT", version, then little-endian
+/// Writes `world` and `info` to `path`: magic "CLUMPKITCKPT", version, the stage and its state
+/// (length-prefixed strings: the stage, the number of entries, each key and value), then
+/// little-endian
 /// integers and raw IEEE-754 doubles — options (gravity, timestep, skin, near-skin fraction,
 /// sort interval, contact parameters), step count, time, every body (spheres, mass, moments,
 /// position, velocity, orientation, angular velocity, force, torque, rotation lock, volume, kind,

@@ -10,16 +10,13 @@
 #include "io/formats/checkpoint.h"
 #include "io/formats/specimen_csv.h"
 #include "io/pipeline/job.h"
+#include "io/pipeline/stage_files.h"
 #include "io/reports/plot.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
-#include <optional>
-#include <sstream>
 
 namespace clumpkit {
 
@@ -102,8 +99,6 @@ nlohmann::ordered_json measured(double v) {
   return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
 }
 
-using Phase = dem::ElementTestState::Phase;
-
 // The container of the specimen as a test cell: a cuboid at its recorded box, or a cylinder of
 // its diameter with the platens on the specimen's bottom and top.
 dem::TestCell test_cell(dem::World& world, const nlohmann::json& report, const std::string& path,
@@ -123,99 +118,6 @@ dem::TestCell test_cell(dem::World& world, const nlohmann::json& report, const s
   }
   const double radius = 0.5 * report_number(report, path, "container", "diameter");
   return dem::add_cylinder_test_cell(world, radius, z_lo, z_hi);
-}
-
-std::string fnv1a_hex(const std::string& text) {
-  Fnv1a h;
-  h.add(std::string_view(text));
-  return h.hex();
-}
-
-nlohmann::json state_json(const dem::ElementTestState& st, const dem::TestCell& cell,
-                          const std::string& fingerprint) {
-  nlohmann::json j;
-  j["fingerprint"] = fingerprint;
-  j["phase"] = static_cast<int>(st.phase);
-  j["consolidation_steps"] = st.consolidation_steps;
-  j["consolidated"] = st.consolidated;
-  j["loading_steps"] = st.loading_steps;
-  // nlohmann writes doubles with 17 significant digits: they read back to the same bits.
-  j["start_height"] = st.start_height;
-  j["height0"] = st.height0;
-  j["volume0"] = st.volume0;
-  j["solid_volume"] = st.solid_volume;
-  j["test_friction"] = st.test_friction;
-  j["cell"] = {{"shape", cell.shape == dem::TestCell::Shape::cuboid ? "cuboid" : "cylinder"},
-               {"lateral", cell.lateral},
-               {"bottom", cell.bottom},
-               {"top", cell.top}};
-  nlohmann::json rows = nlohmann::json::array();
-  for (const dem::CurveRow& c : st.curve)
-    rows.push_back({c.step, c.axial_strain, c.volumetric_strain, c.axial_stress, c.lateral_stress,
-                    c.p, c.q, c.porosity, c.coordination, c.unbalanced});
-  j["curve"] = rows;
-  return j;
-}
-
-// The state an earlier run saved, or nothing when it is missing, damaged (checksum) or of other
-// inputs (fingerprint); `why` says which.
-std::optional<dem::ElementTestState> read_state(const fs::path& path,
-                                                const std::string& fingerprint,
-                                                const fs::path& checkpoint, dem::TestCell& cell,
-                                                std::string& why) {
-  if (!fs::exists(path)) {
-    why = "no checkpoint in " + path.parent_path().string();
-    return std::nullopt;
-  }
-  try {
-    nlohmann::json j = nlohmann::json::parse(read_file(path.string()));
-    const std::string stored = j.value("checksum", std::string());
-    j.erase("checksum");
-    if (stored != fnv1a_hex(j.dump())) {
-      why = path.string() + " failed its checksum";
-      return std::nullopt;
-    }
-    if (j.at("fingerprint").get<std::string>() != fingerprint) {
-      why = path.string() + " is of another test, recipe, specimen or version";
-      return std::nullopt;
-    }
-    if (!fs::exists(checkpoint) ||
-        j.at("checkpoint").get<std::string>() != fnv1a_hex(read_file(checkpoint.string()))) {
-      why = checkpoint.string() + " is not the checkpoint " + path.string() + " was saved with";
-      return std::nullopt;
-    }
-    dem::ElementTestState st;
-    const int phase = j.at("phase").get<int>();
-    if (phase < 1 || phase > 2) throw InvalidInput("phase");
-    st.phase = static_cast<Phase>(phase);
-    st.consolidation_steps = j.at("consolidation_steps").get<long long>();
-    st.consolidated = j.at("consolidated").get<bool>();
-    st.loading_steps = j.at("loading_steps").get<long long>();
-    st.start_height = j.at("start_height").get<double>();
-    st.height0 = j.at("height0").get<double>();
-    st.volume0 = j.at("volume0").get<double>();
-    st.solid_volume = j.at("solid_volume").get<double>();
-    st.test_friction = j.at("test_friction").get<double>();
-    cell.shape = j.at("cell").at("shape").get<std::string>() == "cuboid"
-                     ? dem::TestCell::Shape::cuboid
-                     : dem::TestCell::Shape::cylinder;
-    cell.lateral = j.at("cell").at("lateral").get<std::vector<int>>();
-    cell.bottom = j.at("cell").at("bottom").get<int>();
-    cell.top = j.at("cell").at("top").get<int>();
-    for (const auto& r : j.at("curve")) {
-      dem::CurveRow c;
-      c.step = r.at(0).get<long long>();
-      double* f[] = {
-          &c.axial_strain, &c.volumetric_strain, &c.axial_stress, &c.lateral_stress, &c.p, &c.q,
-          &c.porosity,     &c.coordination,      &c.unbalanced};
-      for (int k = 0; k < 9; ++k) *f[k] = r.at(k + 1).get<double>();
-      st.curve.push_back(c);
-    }
-    return st;
-  } catch (const std::exception&) {
-    why = path.string() + " is damaged";
-    return std::nullopt;
-  }
 }
 
 // The consolidated specimen as a specimen directory for `clumpkit export`: bodies shifted so the
@@ -314,77 +216,41 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
                        ": container.shape: \"cuboid\": --save-consolidated writes cylinder cells "
                        "only (the engine exports model a cylinder container)");
 
-  // The work directory DIR.partial, continued with --resume when its checkpoint matches.
+  // The work directory DIR.partial: with --resume, its checkpoint of the same inputs continues.
   const fs::path out = out_dir + ".partial";
-  const fs::path ckpt = out / "test.ckpt", state_path = out / "test-state.json";
-  std::string why_afresh;
-  dem::TestCell cell;
-  std::optional<dem::ElementTestState> saved;
-  std::optional<dem::World> resumed_world;
-  if (options.resume) {
-    saved = read_state(state_path, fingerprint, ckpt, cell, why_afresh);
-    if (saved) {
-      try {
-        resumed_world.emplace(load_checkpoint(ckpt.string()));
-      } catch (const std::exception& e) {
-        why_afresh = e.what();
-        saved.reset();
-      }
-    }
-  }
-  if (!saved)
+  if (!options.resume)
     begin_staging(out_dir);  // afresh: an empty DIR.partial
   else
     remove_stray_temporaries(out.string());  // a killed run's half-written files
-  dem::World world = saved ? std::move(*resumed_world) : dem::World(o);
-  dem::ElementTestState state = saved ? *saved : dem::ElementTestState{};
-  if (!saved) {
-    for (dem::Body& b : bodies) world.add_body(std::move(b));
-    cell = test_cell(world, spec_report, report_path, z_lo, z_hi);
+  fs::create_directories(out);
+  StageFiles stages((out / "checkpoints").string(), options.resume);
+  dem::StageControl control;
+  control.store = &stages;
+  control.checkpoint_every_seconds = options.checkpoint_seconds;
+  control.interrupter = interrupter;
 
-    world.options().timestep = recipe.timestep_safety * dem::critical_timestep(world);
-  }
+  dem::CellSpecimen specimen{dem::World(o), {}};
+  for (dem::Body& b : bodies) specimen.world.add_body(std::move(b));
+  specimen.cell = test_cell(specimen.world, spec_report, report_path, z_lo, z_hi);
+  specimen.world.options().timestep =
+      recipe.timestep_safety * dem::critical_timestep(specimen.world);
 
   dem::ElementTestSettings s = recipe.settings;
   s.kind = kind;
-  auto save = [&] {
-    // The world first, then the state naming the world's bytes: a run killed between the two
-    // writes leaves a pair that does not match, which a resume refuses (and starts afresh).
-    save_checkpoint(ckpt.string(), world);
-    nlohmann::json j = state_json(state, cell, fingerprint);
-    j["checkpoint"] = fnv1a_hex(read_file(ckpt.string()));
-    j["checksum"] = fnv1a_hex(j.dump());
-    write_file_atomically(state_path.string(), [&](std::ostream& f) { f << j.dump() << "\n"; });
+  const auto consolidated = [&](const dem::CellSpecimen& c, const dem::ElementTestState& st) {
+    if (options.save_consolidated)
+      write_consolidated(out / "consolidated", c.world, c.cell, spec_report, o.contact,
+                         st.test_friction, st.curve.front(), s.confining);
   };
-  // Asked every 1,000 consolidation steps and at every record of the loading: a checkpoint
-  // every checkpoint_seconds, and one when asked to stop.
-  auto last_save = std::chrono::steady_clock::now();
-  long long checks = 0;
-  auto stop = [&] {
-    ++checks;
-    if (options.save_consolidated && state.phase == Phase::loading && state.loading_steps == 0 &&
-        state.curve.size() == 1)
-      write_consolidated(out / "consolidated", world, cell, spec_report, o.contact,
-                         state.test_friction, state.curve.front(), s.confining);
-    const auto now = std::chrono::steady_clock::now();
-    if (options.checkpoint_seconds > 0 &&
-        std::chrono::duration<double>(now - last_save).count() >= options.checkpoint_seconds) {
-      save();
-      last_save = now;
-    }
-    if (interrupter && interrupter("test", std::min(0.99, double(checks % 100) / 100.0))) {
-      save();
-      return true;
-    }
-    return false;
-  };
-  const dem::ElementTestResult r = dem::run_element_test(world, cell, s, state, stop);
-  if (r.stopped)
-    throw Interrupted("test: stopped on request; " + out.string() +
+  dem::ElementTestResult r;
+  try {
+    r = dem::run_element_test(specimen, s, control, fingerprint, consolidated);
+  } catch (const Interrupted& e) {
+    throw Interrupted(std::string(e.what()) + "; " + out.string() +
                       " is kept: continue with --resume");
-  std::error_code ec;
-  fs::remove(ckpt, ec);
-  fs::remove(state_path, ec);
+  }
+  const dem::World& world = specimen.world;
+  fs::remove_all(out / "checkpoints");
 
   write_file_atomically((out / "curve.csv").string(), [&](std::ostream& f) {
     f << "step,axial_strain,volumetric_strain,axial_stress_pa,radial_stress_pa,p_pa,q_pa,"
@@ -492,8 +358,9 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
   publish_directory(out.string(), out_dir);
   ElementTestJobResult result;
   result.report = rep;
-  result.resumed = saved.has_value();
-  result.afresh_reason = options.resume && !saved ? why_afresh : "";
+  result.resumed = r.resumed;
+  if (options.resume && !r.resumed)
+    result.afresh_reason = "no checkpoint in " + (out / "checkpoints").string();
   return result;
 }
 

@@ -24,8 +24,9 @@ dem::TestKind test_kind(const std::string& name);
 /// report.json and manifest.json. The interrupter is told the stage ("test").
 /// Options of run_element_test_job.
 struct ElementTestJobOptions {
-  /// Continue the work kept in DIR.partial (its checkpoint, if it was made by the same test,
-  /// recipe, specimen and version; otherwise it starts afresh, saying so in the report).
+  /// Continue the work kept in DIR.partial (its checkpoint; refused, naming both fingerprints,
+  /// when it was made by another test, recipe, specimen or version; without one it starts
+  /// afresh, saying so).
   bool resume = false;
   double checkpoint_seconds = 60;  ///< wall-clock seconds between checkpoints (≤ 0: none)
   /// Run a test whose inertial number I = ε̇·d·sqrt(ρ/σ3) exceeds 1e-2 (refused otherwise: a
@@ -47,10 +48,11 @@ struct ElementTestJobResult {
   std::string afresh_reason;
 };
 
-/// Work goes to DIR.partial: test.ckpt (the world, io/formats/checkpoint.h) and test-state.json
-/// (where the test is, its curve so far, a fingerprint of its inputs and a checksum), saved every
-/// checkpoint_seconds and when the interrupter asks to stop (then Interrupted is thrown, saying
-/// to --resume). A resumed test ends with the same bytes as one never stopped.
+/// Work goes to DIR.partial; the test runs as the stage "test" of a StageFiles store in
+/// DIR.partial/checkpoints (the protocol of specimen builds: spec.fingerprint of the test, recipe,
+/// specimen and version; test.ckpt, the world with where the test is and its curve so far),
+/// saved every checkpoint_seconds and when the interrupter asks to stop (then Interrupted is
+/// thrown, saying to --resume). A resumed test ends with the same bytes as one never stopped.
 ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string& specimen_dir,
                                           const TestRecipe& recipe, const std::string& out_dir,
                                           const ElementTestJobOptions& options = {},

@@ -44,20 +44,22 @@ void write_report_and_manifest(const fs::path& staging, const SpecimenRecipe& re
                         [&](std::ostream& s) { s << manifest.dump(2) << "\n"; });
 }
 
-/// A gravity-free specimen (preparation.method = "compression"): one stage of about a minute,
-/// restarted rather than resumed; its files go to DIR.partial, published at the end.
+/// A gravity-free specimen (preparation.method = "compression"): one stage, checkpointed in
+/// DIR.partial/checkpoints like the stages of a deposited specimen; its files go to DIR.partial,
+/// published at the end.
 SpecimenJobResult compress_into(const SpecimenRecipe& recipe, const std::string& out_dir,
                                 const fs::path& staging, std::vector<dem::RockTemplate> templates,
-                                const std::string& library, const Interrupter& interrupter,
+                                const std::string& library, const dem::StageControl& control,
                                 std::chrono::steady_clock::time_point started) {
   const dem::CompressionResult result =
-      dem::compress_specimen(compression_spec(recipe, std::move(templates)), interrupter);
+      dem::compress_specimen(compression_spec(recipe, std::move(templates)), control);
   const std::vector<SpecimenBody> bodies = specimen_bodies(result.world);
   write_specimen_csv((staging / "specimen.csv").string(), bodies);
   write_specimen_vtp((staging / "specimen.vtp").string(), bodies);
   nlohmann::ordered_json report = compression_report(recipe, result);
   if (!library.empty()) report["library"] = library_entry(library, staging, out_dir);
   write_report_and_manifest(staging, recipe, report, started);
+  fs::remove_all(staging / "checkpoints");
   publish_directory(staging.string(), out_dir);
   SpecimenJobResult job;
   job.specimen.world = result.world;
@@ -87,16 +89,14 @@ SpecimenJobResult build_into(const SpecimenRecipe& recipe, const std::string& ou
   }
   std::vector<dem::RockTemplate> templates;
   if (!library.empty()) templates = read_rock_templates(library);
-  if (recipe.compression)
-    return compress_into(recipe, out_dir, staging, std::move(templates), library, interrupter,
-                         started);
-  const dem::SpecimenSpec spec = specimen_spec(recipe, std::move(templates));
-
   StageFiles stages((staging / "checkpoints").string(), options.resume);
-  dem::SpecimenControl control;
+  dem::StageControl control;
   control.store = &stages;
   control.checkpoint_every_seconds = options.checkpoint_seconds;
   control.interrupter = interrupter;
+  if (recipe.compression)
+    return compress_into(recipe, out_dir, staging, std::move(templates), library, control, started);
+  const dem::SpecimenSpec spec = specimen_spec(recipe, std::move(templates));
   SpecimenJobResult job;
   job.specimen = dem::build_specimen(spec, control);
   const dem::SpecimenResult& result = job.specimen;

@@ -88,8 +88,8 @@ void StageFiles::open(const std::string& fingerprint) {
     const std::string old = it == r.end() ? std::string("none") : it->second;
     if (old != fingerprint)
       throw InvalidInput(dir_ +
-                         ": checkpoints are from another recipe, library or program "
-                         "version (fingerprint " +
+                         ": checkpoints are of other inputs (another recipe, specimen, library or "
+                         "program version; fingerprint " +
                          old + ", this run " + fingerprint + "); remove them or drop --resume");
   } else {
     fs::remove_all(dir_);

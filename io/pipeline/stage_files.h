@@ -1,5 +1,6 @@
-// Stage storage of a resumable specimen build in a directory: checksummed stage records and the
-// fingerprint, binary checkpoints for running stages and saved worlds, all written atomically.
+// Stage storage of a resumable run (specimen build, compression, element test) in a directory:
+// checksummed stage records and the fingerprint, binary checkpoints for running stages and saved
+// worlds, all written atomically.
 #pragma once
 
 #include "dem/run/stage_store.h"
@@ -18,7 +19,8 @@ namespace clumpkit {
 /// InvalidInput naming both) and finished()/running() return what is there; a record whose
 /// checksum does not match is refused (InvalidInput naming the file), never used. Without
 /// `resume`, or when the directory holds no fingerprint, open() empties the directory: the store
-/// owns it, so pass a directory of its own (the specimen job uses DIR.partial/checkpoints).
+/// owns it, so pass a directory of its own (the specimen and test jobs use
+/// DIR.partial/checkpoints).
 class StageFiles : public dem::StageStore {
  public:
   StageFiles(std::string dir, bool resume);

@@ -57,7 +57,7 @@ TEST(CliQuickElementTest, StoppedOrKilledThenResumedEndsByteIdentical) {
   std::printf("SIGKILL after %.2f s: %s\n", 0.4 * straight, killed ? "killed" : "it had finished");
   if (killed) {
     EXPECT_FALSE(fs::exists(d / "k"));
-    EXPECT_TRUE(fs::exists(d / "k.partial" / "test.ckpt"));
+    EXPECT_TRUE(fs::exists(d / "k.partial" / "checkpoints" / "test.ckpt"));
   }
   r = run_cli(base + (d / "k").string() + " --resume", d);
   ASSERT_EQ(r.rc, 0) << r.err;

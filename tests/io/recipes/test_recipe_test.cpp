@@ -22,7 +22,7 @@ std::string error_of(const std::string& text) {
 }  // namespace
 
 // CTGU 2017's Table 1 law.
-TEST(TestRecipe, BundledTable1RecipeGivesSeed004sLaw) {
+TEST(TestRecipe, BundledTable1RecipeGivesTheCtgu2017Law) {
   const TestRecipe r = read_test_recipe(std::string(CLUMPKIT_SOURCE_DIR) +
                                         "/assets/recipes/elastic-scaling-table1.toml");
   EXPECT_EQ(r.settings.confining, 5e6);

@@ -1,0 +1,175 @@
+// The element test as a resumable stage (dem/lab/element_test.h): its state as a stage record,
+// and the run that checkpoints it into a StageStore and continues from one.
+#include "dem/lab/element_test.h"
+
+#include "geom/errors.h"
+#include "geom/format.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace clumpkit::dem {
+
+namespace {
+
+constexpr const char* kStage = "test";
+constexpr int kRowFields = 10;
+
+// The curve row's numbers in file order (the step is the first, written as a double: exact up
+// to 2^53 steps).
+std::array<double*, kRowFields - 1> row_fields(CurveRow& c) {
+  return {&c.axial_strain, &c.volumetric_strain, &c.axial_stress, &c.lateral_stress, &c.p, &c.q,
+          &c.porosity,     &c.coordination,      &c.unbalanced};
+}
+
+std::string row_key(std::size_t k) {
+  char key[32];
+  std::snprintf(key, sizeof key, "curve.%06zu", k);
+  return key;
+}
+
+// The comma-separated numbers of `text`; throws InvalidInput naming `where` and `key`.
+std::vector<double> numbers(const std::string& text, const std::string& where,
+                            const std::string& key) {
+  std::vector<double> out;
+  const char* p = text.data();
+  const char* end = p + text.size();
+  while (true) {
+    double v = 0;
+    const auto [next, ec] = std::from_chars(p, end, v);
+    if (ec != std::errc())
+      throw InvalidInput(where + ": stage record " + key + ": '" + text + "' is not numbers");
+    out.push_back(v);
+    if (next == end) return out;
+    if (*next != ',')
+      throw InvalidInput(where + ": stage record " + key + ": '" + text + "' is not numbers");
+    p = next + 1;
+  }
+}
+
+// How far the test is (0..1): the consolidation is the first tenth (by its step cap), the
+// loading the rest by its end criterion.
+double fraction_done(const ElementTestState& st, const ElementTestSettings& s) {
+  if (st.phase != ElementTestState::Phase::loading || st.curve.empty())
+    return 0.1 * std::min(1.0, double(st.consolidation_steps) /
+                                   double(std::max(1LL, s.max_consolidation_steps)));
+  const CurveRow& c = st.curve.back();
+  double f = 0;
+  switch (s.kind) {
+    case TestKind::isotropic:
+      f = (c.p - s.confining) / (s.final_stress - s.confining);
+      break;
+    case TestKind::oedometer:
+      f = (c.axial_stress - s.confining) / (s.final_stress - s.confining);
+      break;
+    case TestKind::triaxial:
+      f = c.axial_strain / s.max_axial_strain;
+      break;
+  }
+  return 0.1 + 0.9 * std::clamp(std::isfinite(f) ? f : 0.0, 0.0, 1.0);
+}
+
+}  // namespace
+
+StageRecord element_test_record(const ElementTestState& st, const TestCell& cell) {
+  StageRecord r;
+  r["phase"] = std::to_string(static_cast<int>(st.phase));
+  r["consolidation_steps"] = std::to_string(st.consolidation_steps);
+  r["consolidated"] = st.consolidated ? "1" : "0";
+  r["loading_steps"] = std::to_string(st.loading_steps);
+  put_number(r, "start_height", st.start_height);
+  put_number(r, "height0", st.height0);
+  put_number(r, "volume0", st.volume0);
+  put_number(r, "solid_volume", st.solid_volume);
+  put_number(r, "test_friction", st.test_friction);
+  put_cell(r, cell);
+  r["curve.rows"] = std::to_string(st.curve.size());
+  for (std::size_t k = 0; k < st.curve.size(); ++k) {
+    CurveRow c = st.curve[k];
+    std::string text = format_number(double(c.step));
+    for (double* v : row_fields(c)) text += "," + format_number(*v);
+    r[row_key(k)] = text;
+  }
+  return r;
+}
+
+void read_element_test_record(const StageRecord& r, const std::string& where, ElementTestState& st,
+                              TestCell& cell) {
+  const long long phase = record_integer(r, "phase", where);
+  if (phase < 0 || phase > 3)
+    throw InvalidInput(where + ": stage record phase: " + std::to_string(phase) +
+                       " is not a phase of the test");
+  st.phase = static_cast<ElementTestState::Phase>(phase);
+  st.consolidation_steps = record_integer(r, "consolidation_steps", where);
+  st.consolidated = record_integer(r, "consolidated", where) != 0;
+  st.loading_steps = record_integer(r, "loading_steps", where);
+  st.start_height = record_number(r, "start_height", where);
+  st.height0 = record_number(r, "height0", where);
+  st.volume0 = record_number(r, "volume0", where);
+  st.solid_volume = record_number(r, "solid_volume", where);
+  st.test_friction = record_number(r, "test_friction", where);
+  cell = read_cell(r, where);
+  const long long rows = record_integer(r, "curve.rows", where);
+  if (rows < 0) throw InvalidInput(where + ": stage record curve.rows is negative");
+  st.curve.clear();
+  for (long long k = 0; k < rows; ++k) {
+    const std::string key = row_key(static_cast<std::size_t>(k));
+    const auto it = r.find(key);
+    if (it == r.end()) throw InvalidInput(where + ": stage record misses " + key);
+    const std::vector<double> v = numbers(it->second, where, key);
+    if (v.size() != kRowFields)
+      throw InvalidInput(where + ": stage record " + key + ": expected " +
+                         std::to_string(kRowFields) + " numbers");
+    CurveRow c;
+    c.step = static_cast<long long>(v[0]);
+    auto fields = row_fields(c);
+    for (int f = 0; f < kRowFields - 1; ++f) *fields[f] = v[f + 1];
+    st.curve.push_back(c);
+  }
+}
+
+ElementTestResult run_element_test(
+    CellSpecimen& specimen, const ElementTestSettings& settings, const StageControl& control,
+    const std::string& fingerprint,
+    const std::function<void(const CellSpecimen&, const ElementTestState&)>& consolidated) {
+  StageStore in_memory;
+  StageStore& store = control.store ? *control.store : in_memory;
+  store.open(fingerprint);
+  ElementTestState state;
+  CheckpointInfo info;
+  bool resumed = false;
+  if (std::optional<World> world = store.running(kStage, info)) {
+    read_element_test_record(info.state, std::string("element test checkpoint"), state,
+                             specimen.cell);
+    for (int w : cell_walls(specimen.cell))
+      if (w >= static_cast<int>(world->walls().size()))
+        throw InvalidInput("element test checkpoint: the cell's wall " + std::to_string(w) +
+                           " is not a wall of its world");
+    specimen.world = std::move(*world);
+    resumed = true;
+  }
+  StageCheckpoints checkpoints(store, control, kStage);
+  const auto stop = [&] {
+    if (consolidated && state.phase == ElementTestState::Phase::loading &&
+        state.loading_steps == 0 && state.curve.size() == 1)
+      consolidated(specimen, state);
+    return checkpoints.check(
+        specimen.world, [&] { return element_test_record(state, specimen.cell); }, kStage,
+        fraction_done(state, settings));
+  };
+  ElementTestResult r = run_element_test(specimen.world, specimen.cell, settings, state, stop);
+  if (r.stopped)
+    throw Interrupted(std::string("test: stopped on request") +
+                      (store.keeps_checkpoints() ? " (checkpoint kept)" : ""));
+  store.finish(kStage, {{"steps", std::to_string(state.curve.back().step)}}, nullptr);
+  r.resumed = resumed;
+  return r;
+}
+
+}  // namespace clumpkit::dem
