@@ -65,23 +65,6 @@ double feature_distance(const DistanceField& f, const Mesh& mesh, const Vec3& p)
   return n ? best : std::abs(f.sample(p));
 }
 
-double field_voxel_size(const Mesh& mesh, const FieldOptions& o) {
-  if (o.voxel_size > 0.0) {
-    if (!std::isfinite(o.voxel_size))
-      throw InvalidInput("voxel size must be finite, got " + std::to_string(o.voxel_size));
-    return o.voxel_size;
-  }
-  if (o.voxels < 4 || o.voxels > 2000)
-    throw InvalidInput("--voxels must be in [4, 2000], got " + std::to_string(o.voxels));
-  if (o.vote_sign) {
-    // A mesh with holes has no reliable volume, hence no inertia axes: use the box instead.
-    const auto bb = bounding_box(mesh);
-    return (bb[1] - bb[0]).minCoeff() / o.voxels;
-  }
-  const PrincipalFrame f = principal_frame(mesh);
-  return f.extents[0] / o.voxels;
-}
-
 namespace {
 
 // Grid dimensions: voxel centres from about two voxels below the box to two above.
@@ -102,6 +85,33 @@ double product(const std::array<int, 3>& d) {
 }
 
 }  // namespace
+
+double field_voxel_size(const Mesh& mesh, const FieldOptions& o) {
+  if (o.voxel_size > 0.0) {
+    if (!std::isfinite(o.voxel_size))
+      throw InvalidInput("voxel size must be finite, got " + std::to_string(o.voxel_size));
+    return o.voxel_size;
+  }
+  if (o.voxels < 4 || o.voxels > 2000)
+    throw InvalidInput("--voxels must be in [4, 2000], got " + std::to_string(o.voxels));
+  if (o.vote_sign) {
+    // A mesh with holes has no reliable volume, hence no inertia axes: use the box instead.
+    const auto bb = bounding_box(mesh);
+    return (bb[1] - bb[0]).minCoeff() / o.voxels;
+  }
+  const PrincipalFrame f = principal_frame(mesh);
+  double h = f.extents[0] / o.voxels;
+  // The default resolution's budget: a platy or elongated shape gets coarser voxels rather
+  // than hundreds of times the work of a compact one (a 1:20 plate at 40 voxels across its
+  // thickness is 26e6 voxels); compact shapes stay far below it.
+  if (o.max_voxels > 0) {
+    const auto bb = bounding_box(mesh);
+    const double box = (bb[1] - bb[0]).prod();
+    for (int k = 0; k < 100 && product(field_dims(bb, h)) > o.max_voxels; ++k)
+      h = std::max(1.05 * h, std::cbrt(box / o.max_voxels));
+  }
+  return h;
+}
 
 double field_voxel_count(const Mesh& mesh, const FieldOptions& options) {
   return product(field_dims(bounding_box(mesh), field_voxel_size(mesh, options)));

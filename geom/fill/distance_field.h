@@ -11,6 +11,10 @@
 
 namespace clumpkit {
 
+/// The voxel budget of `clumpkit fill` at its default resolution: a 1:20 plate at 40 voxels
+/// across its thickness would take 26e6.
+inline constexpr double kDefaultMaxVoxels = 1e6;
+
 /// Resolution of the voxel grid.
 struct FieldOptions {
   /// Voxels across the smallest principal extent S of the mesh (ignored if voxel_size > 0; the
@@ -18,6 +22,10 @@ struct FieldOptions {
   /// 40 resolves the corners of the Jin et al. 2017 blocks well enough for ~350-sphere clumps.
   int voxels = 40;
   double voxel_size = 0.0;  ///< explicit voxel edge length, units of the mesh
+  /// Budget of the `voxels` resolution (0: none): voxels grow until the grid holds at most this
+  /// many, so a platy or elongated shape costs about what a compact one does. `clumpkit fill`
+  /// sets kDefaultMaxVoxels unless --voxels is given.
+  double max_voxels = 0.0;
   /// Decide inside/outside by Embree ray-parity voting (RayInside) instead of OpenVDB's sign,
   /// for meshes that are not watertight (holes, cracks, flipped patches).
   bool vote_sign = false;

@@ -1,6 +1,7 @@
 #include "geom/mesh/cgal_mesh.h"
 
 #include "geom/errors.h"
+#include "geom/mesh/cgal_surface.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -20,43 +21,13 @@
 namespace clumpkit {
 
 namespace {
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = K::Point_3;
-using SurfaceMesh = CGAL::Surface_mesh<Point>;
+using K = cgal_surface::K;
+using Point = cgal_surface::Point;
+using SurfaceMesh = cgal_surface::SurfaceMesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-SurfaceMesh to_surface_mesh(const Mesh& mesh) {
-  SurfaceMesh sm;
-  std::vector<SurfaceMesh::Vertex_index> v;
-  v.reserve(mesh.vertices.size());
-  for (const auto& p : mesh.vertices) v.push_back(sm.add_vertex(Point(p.x(), p.y(), p.z())));
-  for (const auto& t : mesh.triangles) {
-    if (sm.add_face(v[t[0]], v[t[1]], v[t[2]]) == SurfaceMesh::null_face())
-      throw InvalidInput("mesh is not a manifold surface: a triangle could not be added");
-  }
-  return sm;
-}
-
-Mesh from_surface_mesh(const SurfaceMesh& sm) {
-  Mesh mesh;
-  std::vector<int> index(sm.number_of_vertices() + sm.number_of_removed_vertices(), -1);
-  for (auto v : sm.vertices()) {
-    index[v.idx()] = static_cast<int>(mesh.vertices.size());
-    const Point& p = sm.point(v);
-    mesh.vertices.emplace_back(p.x(), p.y(), p.z());
-  }
-  for (auto f : sm.faces()) {
-    std::array<int, 3> t{};
-    int k = 0;
-    for (auto v : CGAL::vertices_around_face(sm.halfedge(f), sm)) {
-      if (k < 3) t[k] = index[v.idx()];
-      ++k;
-    }
-    if (k != 3) throw NumericError("convex hull produced a non-triangular face");
-    mesh.triangles.push_back(t);
-  }
-  return mesh;
-}
+using cgal_surface::from_surface_mesh;
+using cgal_surface::to_surface_mesh;
 }  // namespace
 
 Mesh convex_hull(const std::vector<Vec3>& points) {

@@ -1,4 +1,5 @@
-// Little-endian bytes, the order of binary STL, binary PLY and clumpkit checkpoints, on any host.
+// Little-endian bytes, the order of binary STL, binary PLY and clumpkit checkpoints, on any host
+// (and big-endian reads, PLY's other byte order).
 #pragma once
 
 #include <algorithm>
@@ -14,6 +15,19 @@ T load_le(const char* p) {
   char b[sizeof(T)];
   std::memcpy(b, p, sizeof(T));
 #if __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+  std::reverse(b, b + sizeof(T));
+#endif
+  T v;
+  std::memcpy(&v, b, sizeof(T));
+  return v;
+}
+
+/// The value of type T stored big-endian at `p`.
+template <class T>
+T load_be(const char* p) {
+  char b[sizeof(T)];
+  std::memcpy(b, p, sizeof(T));
+#if __BYTE_ORDER__ != __ORDER_BIG_ENDIAN__
   std::reverse(b, b + sizeof(T));
 #endif
   T v;

@@ -84,6 +84,15 @@ Interrupter signal_interrupter(ProgressBar& bar, const std::string& command) {
   };
 }
 
+void add_weld_option(CLI::App* command, double& weld_tolerance) {
+  command
+      ->add_option("--weld-tolerance", weld_tolerance,
+                   "Merge vertices closer than this fraction of the bounding-box diagonal (0: "
+                   "equal positions only, the seam copies of OBJ and PLY exporters; STL at least "
+                   "1e-9)")
+      ->capture_default_str();
+}
+
 void note(const std::string& message) {
   std::fprintf(stderr, "clumpkit: note: %s\n", message.c_str());
 }

@@ -24,6 +24,11 @@ void register_import(CLI::App& app);
 void register_test(CLI::App& app);
 void register_specimen_scale(CLI::App& app);
 
+void register_repair(CLI::App& app);
+
+/// The --weld-tolerance option of the commands that read a mesh (MeshReadOptions).
+void add_weld_option(CLI::App* command, double& weld_tolerance);
+
 /// Thread-count control shared by parallel subcommands: 0 = all cores.
 void set_threads(int threads);
 

@@ -14,6 +14,7 @@ void register_describe(CLI::App& app) {
   struct Opts {
     std::string mesh;
     bool json = false;
+    MeshReadOptions read;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -24,15 +25,19 @@ void register_describe(CLI::App& app) {
       "V/V_hull, weighted roundness over three principal views (Zhang & Zhou 2015 eq. 2)");
   c->add_option("MESH", o->mesh, "Mesh file")->required();
   c->add_flag("--json", o->json, "Print one JSON object on stdout");
+  add_weld_option(c, o->read.weld_tolerance);
   c->callback([o] {
     MeshReadReport report;
-    const Mesh mesh = read_mesh(o->mesh, &report);
-    if (report.reoriented) note(o->mesh + ": triangles were not consistently outward; re-oriented");
+    const Mesh mesh = read_mesh(o->mesh, &report, o->read);
+    for (const std::string& line : mesh_read_notes(o->mesh, report)) note(line);
     const Descriptors d = describe(mesh);
     if (o->json) {
       nlohmann::json j = to_json(d);
       j["file"] = o->mesh;
       j["reoriented"] = report.reoriented;
+      j["merged_vertices"] = report.merged_vertices;
+      j["removed_triangles"] = report.removed_triangles;
+      j["shells"] = report.shells;
       std::cout << j.dump(2) << "\n";
       return;
     }

@@ -19,6 +19,7 @@ void register_fill(CLI::App& app) {
     int spheres = -1;
     double max_memory_gib = 0;  // 0: half of this machine's memory
     bool json = false, allow_open = false;
+    MeshReadOptions read;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -34,8 +35,11 @@ void register_fill(CLI::App& app) {
   c->add_option("--min-radius", o->fill.min_radius,
                 "Smallest sphere radius R_lim (Jin et al. 2017)")
       ->capture_default_str();
-  c->add_option("--voxels", o->fill.field.voxels, "Voxels across the smallest principal extent")
-      ->capture_default_str();
+  auto* voxels =
+      c->add_option("--voxels", o->fill.field.voxels,
+                    "Voxels across the smallest principal extent (default 40, coarser for platy "
+                    "or elongated shapes: at most 1e6 voxels unless this is given)")
+          ->capture_default_str();
   c->add_option("--voxel-size", o->fill.field.voxel_size,
                 "Explicit voxel size (overrides --voxels)");
   c->add_option("--max-overshoot", o->fill.max_overshoot,
@@ -48,7 +52,8 @@ void register_fill(CLI::App& app) {
                 "(default: half of this machine's memory)");
   c->add_flag("--allow-open", o->allow_open,
               "Accept a mesh that is not watertight: inside/outside by Embree ray-parity voting "
-              "(the report says so; volumes are then approximate)");
+              "(the report says so; volumes are then approximate, and the overshoot is measured "
+              "against the voted inside; `clumpkit repair` closes the mesh instead)");
   c->add_option("--png", o->png,
                 "Also write this picture (900 px: front, side, top and oblique views, the spheres "
                 "lit and coloured under the translucent mesh, caps outside it red)");
@@ -56,10 +61,13 @@ void register_fill(CLI::App& app) {
                 "Also write mesh and spheres for ParaView here (Glyph: Sphere, Scale Array "
                 "diameter, Scale Factor 1)");
   c->add_flag("--json", o->json, "Print the fidelity report as JSON on stdout");
-  c->callback([o] {
+  add_weld_option(c, o->read.weld_tolerance);
+  c->callback([o, voxels] {
     if (o->spheres == 0 || o->spheres < -1)
       throw InvalidInput("--spheres must be at least 1, got " + std::to_string(o->spheres));
     o->fill.spheres = std::max(0, o->spheres);
+    // The default resolution has a budget; a resolution asked for is what it says.
+    o->fill.field.max_voxels = voxels->count() > 0 ? 0.0 : kDefaultMaxVoxels;
     o->fill.field.max_bytes = max_memory_bytes(o->max_memory_gib);
     FillJobOptions job;
     job.mesh = o->mesh;
@@ -68,6 +76,7 @@ void register_fill(CLI::App& app) {
     job.vtp = o->vtp;
     job.fill = o->fill;
     job.allow_open = o->allow_open;
+    job.read = o->read;
     const FillJobResult r = run_fill_job(job, note, warning);
     const nlohmann::ordered_json& j = r.report;
     const Fidelity& f = r.fidelity;

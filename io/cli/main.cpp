@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   clumpkit::cli::register_shapes(app);
   clumpkit::cli::register_describe(app);
   clumpkit::cli::register_refine(app);
+  clumpkit::cli::register_repair(app);
   clumpkit::cli::register_fill(app);
   clumpkit::cli::register_library(app);
   clumpkit::cli::register_volume(app);

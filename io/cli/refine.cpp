@@ -15,6 +15,7 @@ void register_refine(CLI::App& app) {
   struct Opts {
     std::string mesh, out;
     std::int64_t triangles = 0;
+    MeshReadOptions read;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -25,13 +26,14 @@ void register_refine(CLI::App& app) {
   c->add_option("MESH", o->mesh, "Closed mesh (STL, OBJ, PLY)")->required();
   c->add_option("--triangles", o->triangles, "At least this many triangles (1 to 5e7)")->required();
   c->add_option("-o,--output", o->out, "Mesh to write (.stl, .obj or .ply)")->required();
+  add_weld_option(c, o->read.weld_tolerance);
   c->callback([o] {
     if (o->triangles < 1)
       throw InvalidInput("--triangles must be at least 1, got " + std::to_string(o->triangles));
     check_not_input(o->out, "--output", o->mesh);
     MeshReadReport report;
-    const Mesh mesh = read_mesh(o->mesh, &report);
-    if (report.reoriented) note(o->mesh + ": triangles were not consistently outward; re-oriented");
+    const Mesh mesh = read_mesh(o->mesh, &report, o->read);
+    for (const std::string& line : mesh_read_notes(o->mesh, report)) note(line);
     const Mesh fine = refine(mesh, o->triangles);
     write_mesh(o->out, fine);
     std::printf("wrote %s: %zu triangles (from %zu), volume %s\n", o->out.c_str(),

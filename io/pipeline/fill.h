@@ -4,6 +4,7 @@
 
 #include "geom/fill/fidelity.h"
 #include "geom/fill/fill.h"
+#include "io/formats/mesh_io.h"
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +22,7 @@ struct FillJobOptions {
   FillOptions fill;  ///< the stop rules, the field and the overshoot contract
   /// Accept a mesh that is not watertight: inside/outside by Embree ray-parity voting.
   bool allow_open = false;
+  MeshReadOptions read;  ///< welding on reading
 };
 
 /// What the fill job did.
@@ -36,8 +38,11 @@ struct FillJobResult {
 /// writes the outputs. Every output's folder is checked, and no output may be the input or
 /// another output, before the work starts, so a refusal leaves nothing behind. `note` hears
 /// what the user should know about the input (a re-oriented mesh, ray voting), `warn` a sphere
-/// budget that was not reached. Throws InvalidInput for bad options or a mesh no sphere fits,
-/// and what read_mesh throws.
+/// budget that was not reached. The overshoot contract holds for every report: a clump whose
+/// measured overshoot exceeds max_overshoot (possible only where the report's inside test is not
+/// the fill's: a mesh read with allow_open) is filled again with a smaller budget, at most twice,
+/// else refused. Throws InvalidInput for bad options, a mesh no sphere fits, a contract that
+/// cannot be met, and what read_mesh throws.
 FillJobResult run_fill_job(const FillJobOptions& options,
                            const std::function<void(const std::string&)>& note,
                            const std::function<void(const std::string&)>& warn);

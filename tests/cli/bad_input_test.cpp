@@ -44,6 +44,23 @@ struct Inputs {
     write(d / "twice.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3\n");
     write(d / "flat.obj",
           "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\nf 1 3 2\nf 2 3 4\n");
+    // The PLY and OBJ parsing paths: big-endian data cut short, a count no file can hold, a list
+    // longer than the file, a garbled property line, a continued face that ends the file.
+    const std::string be_head =
+        "ply\nformat binary_big_endian 1.0\nelement vertex 4\nproperty float x\n"
+        "property float y\nproperty float z\nelement face 4\n"
+        "property list uchar int vertex_indices\nend_header\n";
+    write(d / "trunc_be.ply", be_head + std::string(30, '\x3f'));
+    write(d / "huge_count.ply",
+          "ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\nproperty float y\n"
+          "property float z\nend_header\n0 0 0\n");
+    write(d / "long_list.ply",
+          "ply\nformat binary_little_endian 1.0\nelement vertex 0\nproperty float x\n"
+          "property float y\nproperty float z\nelement face 1\n"
+          "property list uint int vertex_indices\nend_header\n\xff\xff\xff\x7f");
+    write(d / "garbled.ply",
+          "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar\nend_header\n3 0 1 2\n");
+    write(d / "continued.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \\\n");
     write(d / "good.csv", "x,y,z,r\n0,0,0,1\n0.5,0,0,1\n");
     write(d / "trunc.csv", "x,y,z,r\n0,0,0,1\n0.5,0,");
     write(d / "nan.csv", "x,y,z,r\n0,0,0,1\n0.5,nan,0,1\n");
@@ -84,8 +101,16 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
   std::vector<Case> cases;
   // describe MESH
   for (const char* f : {"missing.stl", "a_dir", "empty.stl", "garbage.stl", "trunc.stl", "nan.obj",
-                        "huge.obj", "flat.obj", "twice.obj"})
+                        "huge.obj", "flat.obj", "twice.obj", "trunc_be.ply", "huge_count.ply",
+                        "long_list.ply", "garbled.ply", "continued.obj"})
     cases.push_back({"describe " + in(f), f, ""});
+  // repair MESH -o OUT
+  for (const char* f : {"missing.stl", "a_dir", "empty.stl", "garbage.obj", "trunc_be.ply",
+                        "long_list.ply", "nan.obj", "twice.obj"})
+    cases.push_back({"repair " + in(f) + " -o " + mesh_out, f, mesh_out});
+  cases.push_back({"repair " + in("box.stl") + " -o " + in("box.stl"), "would be overwritten", ""});
+  cases.push_back({"repair " + in("box.stl") + " -o " + in("out.off"), "out.off", in("out.off")});
+  cases.push_back({"describe " + in("box.stl") + " --weld-tolerance -1", "-1", ""});
   // fill MESH -o OUT
   for (const char* f : {"missing.stl", "a_dir", "empty.stl", "garbage.obj", "trunc.stl", "nan.obj",
                         "huge.obj", "flat.obj"})

@@ -1,6 +1,7 @@
 // End-to-end tests of the clumpkit binary: outputs, determinism, exit codes and error lines.
 #include "cli_helpers.h"
 
+#include "geom/shapes/primitives.h"
 #include "io/formats/clump_io.h"
 #include "io/formats/mesh_io.h"
 #include "io/formats/png.h"
@@ -468,17 +469,31 @@ TEST(Cli, VolumeBadAndDegenerateInput) {
   EXPECT_EQ(j["exact"]["hidden_spheres"], 999999);
 }
 
-TEST(Cli, FillAllowOpenSaysItVoted) {
+TEST(Cli, FillAllowOpenSaysItVotedAndKeepsTheOvershootContract) {
+  // A sphere with one triangle missing, as a scan arrives: filled by voting within the contract.
   const fs::path d = scratch();
-  write(d / "open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");
-  const Result r = run_cli("fill " + (d / "open.obj").string() + " -o " + (d / "c.csv").string() +
-                               " --spheres 5 --allow-open --json",
-                           d);
+  clumpkit::Mesh scan = clumpkit::make_icosphere(3);
+  scan.triangles.pop_back();
+  clumpkit::write_mesh((d / "open.obj").string(), scan);
+  Result r = run_cli("fill " + (d / "open.obj").string() + " -o " + (d / "c.csv").string() +
+                         " --spheres 5 --allow-open --json",
+                     d);
   ASSERT_EQ(r.rc, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NE(j["inside_outside"].get<std::string>().find("ray-parity"), std::string::npos);
   EXPECT_NE(r.err.find("ray-parity voting"), std::string::npos);
+  EXPECT_NE(r.err.find("clumpkit repair"), std::string::npos);  // the other way out
+  EXPECT_LE(j["overshoot_fraction"].get<double>(), j["max_overshoot"].get<double>());
   EXPECT_TRUE(fs::exists(d / "c.csv"));
+  // A tetrahedron without a face has no inside the votes agree on: the contract cannot be met,
+  // so the fill is refused rather than reported above it.
+  write(d / "lid.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");
+  r = run_cli("fill " + (d / "lid.obj").string() + " -o " + (d / "l.csv").string() +
+                  " --spheres 5 --allow-open",
+              d);
+  EXPECT_EQ(r.rc, 2) << r.err;
+  EXPECT_NE(r.err.find("over --max-overshoot 0.01"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(d / "l.csv"));
 }
 
 TEST(Cli, SpecimenSameForAnyThreadCountAndAfterAKill) {

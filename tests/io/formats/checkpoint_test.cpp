@@ -344,3 +344,19 @@ TEST(DemRun, SettledHeightRuleStopsAtAWindowBoundaryAndResumesWithItsReference) 
 
 }  // namespace
 }  // namespace clumpkit::dem
+
+namespace clumpkit::dem {
+
+// The checkpoint seed of the fuzz corpus is of the current format, so fuzzing reaches the
+// decoding behind the version check (a format change must regenerate it).
+TEST(DemCheckpoint, FuzzCorpusSeedIsOfTheCurrentFormat) {
+  CheckpointInfo info;
+  const World w = load_checkpoint(
+      std::string(CLUMPKIT_SOURCE_DIR) + "/tests/fuzz/corpus/checkpoint/sorted-servo-v7.ckpt",
+      &info);
+  EXPECT_GT(w.bodies().size(), 0u);
+  EXPECT_FALSE(w.walls().empty());
+  EXPECT_EQ(info.state.at("phase"), "2");
+}
+
+}  // namespace clumpkit::dem

@@ -1,0 +1,69 @@
+// Inside geom/mesh: a Mesh as a CGAL Surface_mesh and back, for the files that call CGAL's
+// polygon-mesh processing (cgal_mesh.cpp, shells.cpp, repair.cpp).
+#pragma once
+
+#include "geom/errors.h"
+#include "geom/mesh/mesh.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <vector>
+
+namespace clumpkit::cgal_surface {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_3;
+using SurfaceMesh = CGAL::Surface_mesh<Point>;
+
+/// The triangles of `mesh` (all, or those listed in `only`) as a Surface_mesh with the vertices
+/// they use, in order of first use. Throws InvalidInput when a triangle cannot be added (the
+/// triangles do not form a manifold surface).
+inline SurfaceMesh to_surface_mesh(const Mesh& mesh, const std::vector<int>* only = nullptr) {
+  SurfaceMesh sm;
+  std::vector<SurfaceMesh::Vertex_index> index(mesh.vertices.size());
+  std::vector<bool> added(mesh.vertices.size(), false);
+  const auto vertex = [&](int v) {
+    if (!added[v]) {
+      const Vec3& p = mesh.vertices[v];
+      index[v] = sm.add_vertex(Point(p.x(), p.y(), p.z()));
+      added[v] = true;
+    }
+    return index[v];
+  };
+  const auto add = [&](const std::array<int, 3>& t) {
+    const auto a = vertex(t[0]), b = vertex(t[1]), c = vertex(t[2]);
+    if (sm.add_face(a, b, c) == SurfaceMesh::null_face())
+      throw InvalidInput("mesh is not a manifold surface: a triangle could not be added");
+  };
+  if (only)
+    for (int t : *only) add(mesh.triangles[t]);
+  else
+    for (const auto& t : mesh.triangles) add(t);
+  return sm;
+}
+
+/// The faces of `sm` (triangles) as a Mesh, vertices in index order. Throws NumericError for a
+/// face that is not a triangle.
+inline Mesh from_surface_mesh(const SurfaceMesh& sm) {
+  Mesh mesh;
+  std::vector<int> index(sm.number_of_vertices() + sm.number_of_removed_vertices(), -1);
+  for (auto v : sm.vertices()) {
+    index[v.idx()] = static_cast<int>(mesh.vertices.size());
+    const Point& p = sm.point(v);
+    mesh.vertices.emplace_back(p.x(), p.y(), p.z());
+  }
+  for (auto f : sm.faces()) {
+    std::array<int, 3> t{};
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(sm.halfedge(f), sm)) {
+      if (k < 3) t[k] = index[v.idx()];
+      ++k;
+    }
+    if (k != 3) throw NumericError("CGAL produced a face that is not a triangle");
+    mesh.triangles.push_back(t);
+  }
+  return mesh;
+}
+
+}  // namespace clumpkit::cgal_surface
