@@ -8,16 +8,21 @@ set(clumpkit_long_tests
   # DemPhysics.ResultsAreBitIdenticalForOneAndTwoThreads (thread count)
   Cli.SpecimenSameForAnyThreadCountAndAfterAKill
   # element tests through the CLI (140-280 s each) -> DemElementTest.* (the same drive on a
-  # small compressed cube, 1 and 2 threads) and CliElementTest.BundledTestRecipeParses (the job
-  # on the tiny specimen, to 0.2 % strain)
+  # small compressed cube, 1 and 2 threads) and
+  # CliElementTest.ShortTriaxialOfASmallCompressedCylinderSavesItsConsolidatedState (the job)
   CliElementTest.TriaxialHasAPeakAndTheSameBytesForOneAndTwoThreads
   CliElementTest.IsotropicAndOedometerGiveModuliWithTheOedometerStiffer
   CliElementTest.CompressedCuboidAndItsScaledCopyTestTheSameBitForBit
   CliElementTest.SpecimenScaledByTwoTestsTheSameBitForBit
   # `test oedometer --save-consolidated` on the tiny specimen, then LAMMPS on it (110 s) ->
-  # CliElementTest.BundledTestRecipeParses (--save-consolidated),
+  # CliElementTest.ShortTriaxialOfASmallCompressedCylinderSavesItsConsolidatedState
+  # (--save-consolidated),
   # CliImport.LammpsRoundTripKeepsTheMeasurements (export, LAMMPS, import)
   CliImport.LammpsOedometerFromTheSavedConsolidatedStateHasClumpkitsModulus
+  # the bundled test recipe on the tiny specimen (80 s) ->
+  # CliElementTest.ShortTriaxialOfASmallCompressedCylinderSavesItsConsolidatedState (the job,
+  # --save-consolidated), StageFiles.ElementTest... (stopped and resumed)
+  CliElementTest.BundledTestRecipeParses
   # similarity of compressed packings (100-200 s) -> DemStiffnessScaling.ScaledCopyMidRun...
   DemStiffnessScaling.PackingScaledByPowersOfTwoIsBitwiseSimilar
   DemStiffnessScaling.PackingScaledByThreeIsSimilarWithinRounding

@@ -182,6 +182,50 @@ TEST(CliElementTest, BundledTestRecipeParses) {
     EXPECT_TRUE(fs::exists(d / "tri" / "consolidated" / f)) << f;
 }
 
+TEST(CliElementTest, ShortTriaxialOfASmallCompressedCylinderSavesItsConsolidatedState) {
+  // The job end to end in seconds under the sanitizers (the sibling of BundledTestRecipeParses,
+  // label long): a gravity-free cylinder of about 130 spheres of 10 mm (5 d across and high,
+  // n = 0.42), tested to 0.05 % axial strain with --save-consolidated (stopped and resumed:
+  // StageFiles.ElementTest... on the same drive, CliQuickElementTest through the CLI).
+  const fs::path d = scratch();
+  write(d / "cyl.toml", R"(seed = 5
+soil_rock_threshold = 1.0
+rock_mass_fraction = 0.0
+[container]
+shape = "cylinder"
+diameter = 0.05
+height = 0.05
+[preparation]
+method = "compression"
+porosity = 0.42
+[gradation]
+sieves = [0.0101, 0.0099]
+passing = [100, 0]
+[density]
+soil = 2650
+[contact]
+kn = 8e7
+ks = 8e5
+friction = 0.5
+local_damping = 0.7
+)");
+  Result r = run_cli(
+      "specimen --quiet --recipe " + (d / "cyl.toml").string() + " --out " + (d / "cyl").string(),
+      d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  write(d / "t.toml",
+        "[test]\nconfining = 2e5\nstrain_rate = 0.5\nmax_axial_strain = 5e-4\nrecord_every = "
+        "100\nconsolidation_tolerance = 0.05\n");
+  const std::string base = "test triaxial --quiet --allow-dynamic --specimen " +
+                           (d / "cyl").string() + " --recipe " + (d / "t.toml").string();
+  r = run_cli(base + " --save-consolidated --out " + (d / "tri").string(), d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto rep = nlohmann::json::parse(slurp(d / "tri" / "report.json"));
+  EXPECT_GT(rep["steps"].get<long long>(), 0);
+  for (const char* f : {"specimen.csv", "report.json", "manifest.json"})
+    EXPECT_TRUE(fs::exists(d / "tri" / "consolidated" / f)) << f;
+}
+
 TEST(CliElementTest, CompressedCuboidAndItsScaledCopyTestTheSameBitForBit) {
   // A gravity-free cuboid specimen (preparation.method = "compression", ~570 spheres of 10 mm in
   // an 8 d cube at n = 0.40, kn ∝ d) tested in a cuboid cell at CTGU 2017's 5 MPa, and its copy

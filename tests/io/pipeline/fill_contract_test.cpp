@@ -1,0 +1,90 @@
+// The overshoot contract of `clumpkit fill` (io/pipeline/fill.h) over random generated meshes:
+// whenever the fill job returns, its report's overshoot is at most max_overshoot — closed
+// polyhedra, two disjoint shells, a solid with a void, and open meshes read by voting.
+#include "io/pipeline/fill.h"
+
+#include "geom/errors.h"
+#include "geom/random.h"
+#include "geom/shapes/polyhedron.h"
+#include "geom/shapes/primitives.h"
+#include "io/formats/mesh_io.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+using namespace clumpkit;
+namespace fs = std::filesystem;
+
+namespace {
+
+Mesh joined(const Mesh& a, const Mesh& b) {
+  Mesh m = a;
+  const int n = static_cast<int>(m.vertices.size());
+  m.vertices.insert(m.vertices.end(), b.vertices.begin(), b.vertices.end());
+  for (const auto& t : b.triangles) m.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
+  return m;
+}
+
+}  // namespace
+
+TEST(FillContract, EveryReportOfARandomMeshKeepsTheOvershootBudget) {
+  const fs::path d = fs::path(::testing::TempDir()) / "clumpkit_fill_contract";
+  fs::remove_all(d);
+  fs::create_directories(d);
+  Rng rng(20261126);
+  int filled = 0, refused = 0;
+  for (int k = 0; k < 8; ++k) {
+    PolyhedronParams p;
+    p.planes = 8 + static_cast<int>(rng.uniform(0, 20));
+    p.E = rng.uniform(0.5, 1.0);
+    p.F = rng.uniform(0.4, 1.0);
+    p.sphere_level = 1;
+    Mesh m = make_polyhedron(p, rng);
+    bool open = false;
+    switch (k % 4) {
+      case 1: {  // two disjoint shells
+        Mesh other = make_polyhedron(p, rng);
+        transform(other, Mat3::Identity(), Vec3(3.0, 0, 0));
+        m = joined(m, other);
+        break;
+      }
+      case 2: {  // a solid with a void: a small inward box at its centroid
+        Mesh hole = make_box(Vec3::Constant(0.1));
+        flip_orientation(hole);
+        m = joined(m, hole);
+        break;
+      }
+      case 3:  // a scan with a hole: one triangle missing, read by voting
+        m.triangles.erase(m.triangles.begin() + static_cast<long>(rng.uniform(0, 4)));
+        open = true;
+        break;
+    }
+    const std::string mesh = (d / ("m" + std::to_string(k) + ".obj")).string();
+    write_mesh(mesh, m);
+    FillJobOptions job;
+    job.mesh = mesh;
+    job.out = (d / ("c" + std::to_string(k) + ".csv")).string();
+    job.allow_open = open;
+    job.fill.spheres = 12;
+    job.fill.max_overshoot = rng.uniform(0.0, 0.02);
+    try {
+      const FillJobResult r = run_fill_job(
+          job, [](const std::string&) {}, [](const std::string&) {});
+      EXPECT_LE(r.fidelity.overshoot_fraction, job.fill.max_overshoot) << mesh;
+      EXPECT_LE(r.report["overshoot_fraction"].get<double>(),
+                r.report["max_overshoot"].get<double>())
+          << mesh;
+      ++filled;
+    } catch (const InvalidInput& e) {
+      // Refused: the contract could not be met; nothing may be written then.
+      EXPECT_NE(std::string(e.what()).find("over --max-overshoot"), std::string::npos) << e.what();
+      EXPECT_FALSE(fs::exists(job.out)) << mesh;
+      ++refused;
+    }
+  }
+  EXPECT_GE(filled, 6);  // the closed ones, at least
+  std::printf("%d filled, %d refused\n", filled, refused);
+}
