@@ -4,7 +4,6 @@
 #include "geom/errors.h"
 
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <string>
 
@@ -195,16 +194,11 @@ TestCell read_cell(const StageRecord& record, const std::string& where) {
   if (shape == record.end() || (shape->second != "cuboid" && shape->second != "cylinder"))
     throw InvalidInput(where + ": stage record cell.shape missing or not cuboid/cylinder");
   cell.shape = shape->second == "cuboid" ? TestCell::Shape::cuboid : TestCell::Shape::cylinder;
-  const auto lateral = record.find("cell.lateral");
-  if (lateral == record.end()) throw InvalidInput(where + ": stage record misses cell.lateral");
-  const std::string& text = lateral->second;
-  for (const char* p = text.data(); p <= text.data() + text.size();) {
-    int w = -1;
-    const auto [next, ec] = std::from_chars(p, text.data() + text.size(), w);
-    if (ec != std::errc() || w < 0 || (next != text.data() + text.size() && *next != ','))
-      throw InvalidInput(where + ": stage record cell.lateral: '" + text + "' is not wall indices");
-    cell.lateral.push_back(w);
-    p = next + 1;
+  for (double w : record_list(record, "cell.lateral", where)) {
+    if (!(w >= 0 && w < 2147483647.0) || w != std::floor(w))
+      throw InvalidInput(where + ": stage record cell.lateral: " + std::to_string(w) +
+                         " is not a wall index");
+    cell.lateral.push_back(static_cast<int>(w));
   }
   cell.bottom = static_cast<int>(record_integer(record, "cell.bottom", where));
   cell.top = static_cast<int>(record_integer(record, "cell.top", where));

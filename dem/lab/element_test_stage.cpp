@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -32,25 +31,6 @@ std::string row_key(std::size_t k) {
   char key[32];
   std::snprintf(key, sizeof key, "curve.%06zu", k);
   return key;
-}
-
-// The comma-separated numbers of `text`; throws InvalidInput naming `where` and `key`.
-std::vector<double> numbers(const std::string& text, const std::string& where,
-                            const std::string& key) {
-  std::vector<double> out;
-  const char* p = text.data();
-  const char* end = p + text.size();
-  while (true) {
-    double v = 0;
-    const auto [next, ec] = std::from_chars(p, end, v);
-    if (ec != std::errc())
-      throw InvalidInput(where + ": stage record " + key + ": '" + text + "' is not numbers");
-    out.push_back(v);
-    if (next == end) return out;
-    if (*next != ',')
-      throw InvalidInput(where + ": stage record " + key + ": '" + text + "' is not numbers");
-    p = next + 1;
-  }
 }
 
 // How far the test is (0..1): the consolidation is the first tenth (by its step cap), the
@@ -120,9 +100,7 @@ void read_element_test_record(const StageRecord& r, const std::string& where, El
   st.curve.clear();
   for (long long k = 0; k < rows; ++k) {
     const std::string key = row_key(static_cast<std::size_t>(k));
-    const auto it = r.find(key);
-    if (it == r.end()) throw InvalidInput(where + ": stage record misses " + key);
-    const std::vector<double> v = numbers(it->second, where, key);
+    const std::vector<double> v = record_list(r, key, where);
     if (v.size() != kRowFields)
       throw InvalidInput(where + ": stage record " + key + ": expected " +
                          std::to_string(kRowFields) + " numbers");

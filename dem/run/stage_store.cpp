@@ -44,6 +44,23 @@ long long record_integer(const StageRecord& record, const std::string& key,
   return parse<long long>(record, key, where);
 }
 
+std::vector<double> record_list(const StageRecord& record, const std::string& key,
+                                const std::string& where) {
+  const std::string& text = value_at(record, key, where);
+  std::vector<double> out;
+  const char* p = text.data();
+  const char* end = p + text.size();
+  while (true) {
+    double v = 0;
+    const auto [next, ec] = std::from_chars(p, end, v);
+    if (ec != std::errc() || (next != end && *next != ','))
+      throw InvalidInput(where + ": stage record " + key + ": '" + text + "' is not numbers");
+    out.push_back(v);
+    if (next == end) return out;
+    p = next + 1;
+  }
+}
+
 StageCheckpoints::StageCheckpoints(StageStore& store, const StageControl& control,
                                    std::string stage)
     : store_(store),

@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace clumpkit::dem {
 
@@ -76,6 +77,11 @@ void put_number(StageRecord& record, const std::string& key, double value);
 double record_number(const StageRecord& record, const std::string& key, const std::string& where);
 long long record_integer(const StageRecord& record, const std::string& key,
                          const std::string& where);
+
+/// The comma-separated numbers at `key` (put there as format_number texts joined by commas).
+/// Throws InvalidInput naming `where` and the key when it is missing or not such a list.
+std::vector<double> record_list(const StageRecord& record, const std::string& key,
+                                const std::string& where);
 
 /// The checkpoints of one running stage: asked between units of work, it saves the world and
 /// the stage's state every control.checkpoint_every_seconds (when the store keeps checkpoints)

@@ -105,26 +105,10 @@ bool self_intersects(const Mesh& mesh) {
 }
 
 bool orient_outward(Mesh& mesh) {
-  // Only the vertices of triangles go to CGAL: an isolated vertex becomes a vertex without a
-  // halfedge, on which orient_to_bound_a_volume reads out of bounds (found by fuzz_mesh_obj).
-  std::vector<int> compact(mesh.vertices.size(), -1);
-  std::vector<int> original;
-  std::vector<Point> pts;
-  std::vector<std::vector<std::size_t>> polys;
-  polys.reserve(mesh.triangles.size());
-  for (const auto& t : mesh.triangles) {
-    std::vector<std::size_t> poly;
-    for (int v : t) {
-      if (compact[std::size_t(v)] < 0) {
-        compact[std::size_t(v)] = int(original.size());
-        original.push_back(v);
-        const Vec3& p = mesh.vertices[std::size_t(v)];
-        pts.emplace_back(p.x(), p.y(), p.z());
-      }
-      poly.push_back(std::size_t(compact[std::size_t(v)]));
-    }
-    polys.push_back(std::move(poly));
-  }
+  cgal_surface::Soup soup = cgal_surface::used_soup(mesh, mesh.triangles);
+  std::vector<Point>& pts = soup.points;
+  std::vector<std::vector<std::size_t>>& polys = soup.polygons;
+  const std::vector<int>& original = soup.original;
   const std::size_t used = pts.size();
   PMP::orient_polygon_soup(pts, polys);
   if (pts.size() != used)

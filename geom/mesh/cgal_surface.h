@@ -43,6 +43,35 @@ inline SurfaceMesh to_surface_mesh(const Mesh& mesh, const std::vector<int>* onl
   return sm;
 }
 
+/// Triangles as a CGAL polygon soup over the vertices they use only: an isolated vertex would
+/// become a vertex without a halfedge, on which orient_to_bound_a_volume reads out of bounds
+/// (found by fuzz_mesh_obj). `original[i]` is the mesh vertex of soup point i.
+struct Soup {
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  std::vector<int> original;
+};
+
+inline Soup used_soup(const Mesh& mesh, const std::vector<std::array<int, 3>>& triangles) {
+  Soup soup;
+  std::vector<int> compact(mesh.vertices.size(), -1);
+  soup.polygons.reserve(triangles.size());
+  for (const auto& t : triangles) {
+    std::vector<std::size_t> poly;
+    for (int v : t) {
+      if (compact[std::size_t(v)] < 0) {
+        compact[std::size_t(v)] = static_cast<int>(soup.original.size());
+        soup.original.push_back(v);
+        const Vec3& p = mesh.vertices[std::size_t(v)];
+        soup.points.emplace_back(p.x(), p.y(), p.z());
+      }
+      poly.push_back(std::size_t(compact[std::size_t(v)]));
+    }
+    soup.polygons.push_back(std::move(poly));
+  }
+  return soup;
+}
+
 /// The faces of `sm` (triangles) as a Mesh, vertices in index order. Throws NumericError for a
 /// face that is not a triangle.
 inline Mesh from_surface_mesh(const SurfaceMesh& sm) {

@@ -196,6 +196,12 @@ struct ExactHash {
 
 }  // namespace
 
+void append_mesh(Mesh& mesh, const Mesh& other) {
+  const int n = static_cast<int>(mesh.vertices.size());
+  mesh.vertices.insert(mesh.vertices.end(), other.vertices.begin(), other.vertices.end());
+  for (const auto& t : other.triangles) mesh.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
+}
+
 void weld_vertices(Mesh& mesh, double relative_tolerance) {
   if (mesh.vertices.empty()) return;
   const auto bb = bounding_box(mesh);

@@ -48,6 +48,10 @@ Mat3 solid_inertia(const Mesh& mesh, const Vec3& centroid);
 /// Checks closedness, manifoldness, orientation consistency and degeneracy by edge counting.
 MeshCheck check_mesh(const Mesh& mesh);
 
+/// Appends `other`'s vertices and triangles to `mesh` (indices shifted): its shells beside
+/// mesh's, as one file of several shells holds them.
+void append_mesh(Mesh& mesh, const Mesh& other);
+
 /// Flips all triangles (reverses orientation).
 void flip_orientation(Mesh& mesh);
 

@@ -33,7 +33,7 @@ RepairReport repair_mesh(Mesh& mesh) {
     r.volume_before = before.volume;
   }
   // The soup: triangles with three distinct corners, each vertex triple once.
-  std::vector<std::vector<std::size_t>> polys;
+  std::vector<std::array<int, 3>> kept;
   std::set<std::array<int, 3>> seen;
   for (const auto& t : mesh.triangles) {
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
@@ -46,23 +46,12 @@ RepairReport repair_mesh(Mesh& mesh) {
       ++r.duplicate_triangles;
       continue;
     }
-    polys.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
+    kept.push_back(t);
   }
-  if (polys.empty()) throw InvalidInput("repair: no triangle with three distinct corners");
-  // Only the vertices of triangles go to CGAL: an isolated vertex (the centre of a punched
-  // hole) would be a vertex without a halfedge, on which orient_to_bound_a_volume reads out of
-  // bounds.
-  std::vector<long> compact(mesh.vertices.size(), -1);
-  std::vector<Point> points;
-  for (auto& poly : polys)
-    for (std::size_t& v : poly) {
-      if (compact[v] < 0) {
-        compact[v] = static_cast<long>(points.size());
-        const Vec3& p = mesh.vertices[v];
-        points.emplace_back(p.x(), p.y(), p.z());
-      }
-      v = static_cast<std::size_t>(compact[v]);
-    }
+  if (kept.empty()) throw InvalidInput("repair: no triangle with three distinct corners");
+  cgal_surface::Soup soup = cgal_surface::used_soup(mesh, kept);
+  std::vector<Point>& points = soup.points;
+  std::vector<std::vector<std::size_t>>& polys = soup.polygons;
   const std::vector<std::vector<std::size_t>> as_read = polys;
   PMP::orient_polygon_soup(points, polys);
   SurfaceMesh sm;

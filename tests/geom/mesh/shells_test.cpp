@@ -11,12 +11,10 @@ using namespace clumpkit;
 
 namespace {
 
-Mesh joined(const Mesh& a, const Mesh& b) {
-  Mesh m = a;
-  const int n = static_cast<int>(m.vertices.size());
-  m.vertices.insert(m.vertices.end(), b.vertices.begin(), b.vertices.end());
-  for (const auto& t : b.triangles) m.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
-  return m;
+// The shells of a and b in one mesh.
+Mesh joined(Mesh a, const Mesh& b) {
+  append_mesh(a, b);
+  return a;
 }
 
 Mesh box_at(const Vec3& centre, double edge) {

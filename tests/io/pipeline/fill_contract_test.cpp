@@ -18,18 +18,6 @@
 using namespace clumpkit;
 namespace fs = std::filesystem;
 
-namespace {
-
-Mesh joined(const Mesh& a, const Mesh& b) {
-  Mesh m = a;
-  const int n = static_cast<int>(m.vertices.size());
-  m.vertices.insert(m.vertices.end(), b.vertices.begin(), b.vertices.end());
-  for (const auto& t : b.triangles) m.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
-  return m;
-}
-
-}  // namespace
-
 TEST(FillContract, EveryReportOfARandomMeshKeepsTheOvershootBudget) {
   const fs::path d = fs::path(::testing::TempDir()) / "clumpkit_fill_contract";
   fs::remove_all(d);
@@ -48,13 +36,13 @@ TEST(FillContract, EveryReportOfARandomMeshKeepsTheOvershootBudget) {
       case 1: {  // two disjoint shells
         Mesh other = make_polyhedron(p, rng);
         transform(other, Mat3::Identity(), Vec3(3.0, 0, 0));
-        m = joined(m, other);
+        append_mesh(m, other);
         break;
       }
       case 2: {  // a solid with a void: a small inward box at its centroid
         Mesh hole = make_box(Vec3::Constant(0.1));
         flip_orientation(hole);
-        m = joined(m, hole);
+        append_mesh(m, hole);
         break;
       }
       case 3:  // a scan with a hole: one triangle missing, read by voting

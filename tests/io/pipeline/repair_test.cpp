@@ -78,10 +78,9 @@ TEST(RepairJob, AClosedMeshIsKeptAndWhatCannotBeRepairedIsRefusedWithNothingWrit
   EXPECT_NEAR(r.repair.volume_after, r.repair.volume_before, 1e-12);
   // Two spheres through each other: closed, but the surface crosses itself.
   Mesh two = make_icosphere(2);
-  const Mesh other = make_icosphere(2);
-  const int n = static_cast<int>(two.vertices.size());
-  for (const Vec3& p : other.vertices) two.vertices.push_back(p + Vec3(0.5, 0, 0));
-  for (const auto& t : other.triangles) two.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
+  Mesh other = make_icosphere(2);
+  transform(other, Mat3::Identity(), Vec3(0.5, 0, 0));
+  append_mesh(two, other);
   write_mesh((d / "two.ply").string(), two);
   try {
     run_repair_job((d / "two.ply").string(), (d / "two-out.ply").string());
