@@ -47,6 +47,13 @@ double Rng::uniform(double lo, double hi) {
   return lo + (hi - lo) * uniform();
 }
 
+Vec3 Rng::uniform(const Vec3& lo, const Vec3& hi) {
+  const double z = uniform(lo.z(), hi.z());
+  const double y = uniform(lo.y(), hi.y());
+  const double x = uniform(lo.x(), hi.x());
+  return Vec3(x, y, z);
+}
+
 std::uint64_t Rng::below(std::uint64_t n) {
   return n == 0 ? 0 : next() % n;
 }
@@ -56,6 +63,14 @@ double Rng::normal() {
   while (u1 <= 0.0) u1 = uniform();
   const double u2 = uniform();
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
+}
+
+Eigen::Quaterniond Rng::normal_quaternion() {
+  const double z = normal();
+  const double y = normal();
+  const double x = normal();
+  const double w = normal();
+  return Eigen::Quaterniond(w, x, y, z);
 }
 
 Vec3 Rng::unit_vector() {

@@ -21,10 +21,18 @@ class Rng {
   double uniform();
   /// Uniform in [lo, hi).
   double uniform(double lo, double hi);
+  /// Point uniform in the box [lo, hi), its components drawn z first, then y, then x. Written
+  /// as Vec3(uniform(..), uniform(..), uniform(..)) the order would be the compiler's (C++ leaves
+  /// the order of arguments open: GCC takes them right to left, clang left to right) and so
+  /// would every result; z, y, x is the order GCC gave, so results made before are unchanged.
+  Vec3 uniform(const Vec3& lo, const Vec3& hi);
   /// Uniform integer in [0, n).
   std::uint64_t below(std::uint64_t n);
   /// Standard normal by the Box–Muller transform.
   double normal();
+  /// Quaternion of four standard normals (w, x, y, z), drawn z, y, x, w (GCC's order, as above),
+  /// not normalised: a uniform random rotation once normalised.
+  Eigen::Quaterniond normal_quaternion();
   /// Uniform direction on the unit sphere (Marsaglia's method via z and angle).
   Vec3 unit_vector();
 

@@ -218,8 +218,7 @@ std::vector<Placement> place_in_box(const std::vector<PlacementItem>& items, con
                          std::to_string(b) + ") does not fit in the box");
     bool placed = false;
     for (int t = 0; t < max_trials && !placed; ++t) {
-      const Vec3 position(rng.uniform(lo.x() + b, hi.x() - b), rng.uniform(lo.y() + b, hi.y() - b),
-                          rng.uniform(lo.z() + b, hi.z() - b));
+      const Vec3 position = rng.uniform(lo + Vec3::Constant(b), hi - Vec3::Constant(b));
       const Eigen::Quaterniond orientation = uniform_orientation(rng);
       if (!try_place(item, position, orientation, grid, world)) continue;
       placements.push_back({position, orientation});

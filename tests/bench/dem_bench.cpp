@@ -116,7 +116,7 @@ std::vector<Vec3> subset(const std::vector<Vec3>& pts, std::size_t n, Rng& rng) 
 }
 
 Vec3 random_velocity(Rng& rng) {
-  return Vec3(rng.uniform(-0.05, 0.05), rng.uniform(-0.05, 0.05), rng.uniform(-0.05, 0.05));
+  return rng.uniform(Vec3::Constant(-0.05), Vec3::Constant(0.05));
 }
 
 World spheres_world() {
@@ -308,7 +308,7 @@ World clumps_world(const Molecule& m) {
   const auto pts = subset(lattice(0.0215, 0.1385, 0.0115, 0.50), 2000, rng);
   for (const Vec3& p : pts) {
     Body b = proto;
-    Eigen::Quaterniond q(rng.normal(), rng.normal(), rng.normal(), rng.normal());
+    Eigen::Quaterniond q = rng.normal_quaternion();
     q.normalize();
     b.position = p;
     b.orientation = (q * frame).normalized();

@@ -72,8 +72,7 @@ int main() {
   const double side = 46.4;  // 1e5 balls at unit spacing
   for (int i = 0; i < 100000; ++i)
     big.spheres.push_back(
-        Sphere{Vec3(rng.uniform(0, side), rng.uniform(0, side), rng.uniform(0, side)),
-               rng.uniform(0.25, 0.75)});
+        Sphere{rng.uniform(Vec3::Constant(0), Vec3::Constant(side)), rng.uniform(0.25, 0.75)});
   double t0 = now();
   const UnionProperties ub = union_properties(big);
   std::printf(

@@ -41,7 +41,7 @@ inline World make_deposition(int spheres, bool platen = true, bool scaled = fals
         if (std::hypot(x, y) > R - 0.008) continue;
         const double r = rng.uniform(0.004, 0.006);
         Body b = make_sphere_body(Vec3(x, y, 0.007 + layer * spacing), r, kDensity);
-        b.velocity = Vec3(rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3));
+        b.velocity = rng.uniform(Vec3::Constant(-0.3), Vec3::Constant(0.3));
         world.add_body(std::move(b));
         ++placed;
       }
@@ -53,7 +53,7 @@ inline World make_deposition(int spheres, bool platen = true, bool scaled = fals
     c.position = Vec3(k % 2 ? 0.02 : -0.02, k / 2 ? 0.02 : -0.02, top);
     c.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7 * k + 0.3, rng.unit_vector()));
     c.velocity = Vec3(0.0, 0.0, -0.5);
-    c.angular_velocity = Vec3(rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-5, 5));
+    c.angular_velocity = rng.uniform(Vec3::Constant(-5), Vec3::Constant(5));
     world.add_body(std::move(c));
   }
   Wall floor = Wall::plane(Vec3::Zero(), Vec3::UnitZ()), side = Wall::cylinder(0.0, 0.0, R);

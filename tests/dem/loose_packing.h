@@ -46,8 +46,7 @@ inline LoosePacking loose_packing(int nx, int ny, int nz, double lambda, bool li
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
         const double r = rng.uniform(0.8, 1.0) * r0;
-        const Vec3 jitter(rng.uniform(-0.05, 0.05), rng.uniform(-0.05, 0.05),
-                          rng.uniform(-0.05, 0.05));
+        const Vec3 jitter = rng.uniform(Vec3::Constant(-0.05), Vec3::Constant(0.05));
         const Vec3 x = (Vec3(i + 1, j + 1, k + 1) + jitter) * spacing;
         p.world.add_body(make_sphere_body(x * lambda, r * lambda, density));
       }

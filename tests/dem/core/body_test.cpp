@@ -15,8 +15,8 @@ namespace {
 Clump random_clump(Rng& rng, int n) {
   Clump c;
   for (int k = 0; k < n; ++k)
-    c.spheres.push_back({Vec3(rng.uniform(-1, 1), rng.uniform(-0.6, 0.6), rng.uniform(-0.4, 0.4)),
-                         rng.uniform(0.3, 0.7)});
+    c.spheres.push_back(
+        {rng.uniform(Vec3(-1, -0.6, -0.4), Vec3(1, 0.6, 0.4)), rng.uniform(0.3, 0.7)});
   return c;
 }
 
@@ -33,9 +33,8 @@ TEST(DemBody, TemplateScalingMatchesTheUnionOfTheScaledSpheres) {
     const ClumpTemplate t = make_clump_template(random_clump(rng, 4 + 3 * trial));
     const double scale = 0.004 * (1 + trial);  // a 1-unit template as a 4–24 mm rock
     const double density = 2650.0;
-    const Vec3 position(rng.uniform(-0.1, 0.1), rng.uniform(-0.1, 0.1), rng.uniform(0, 0.3));
-    const Eigen::Quaterniond q =
-        Eigen::Quaterniond(rng.normal(), rng.normal(), rng.normal(), rng.normal()).normalized();
+    const Vec3 position = rng.uniform(Vec3(-0.1, -0.1, 0), Vec3(0.1, 0.1, 0.3));
+    const Eigen::Quaterniond q = rng.normal_quaternion().normalized();
     const Body body = make_clump_body(t, density, position, q, scale, trial);
     EXPECT_EQ(body.kind, BodyKind::rock);
     EXPECT_EQ(body.template_id, trial);

@@ -58,7 +58,7 @@ std::vector<Vec3> lattice(double a, int layers) {
 }
 
 Vec3 jitter(Rng& rng, double speed) {
-  return Vec3(rng.uniform(-speed, speed), rng.uniform(-speed, speed), rng.uniform(-speed, speed));
+  return rng.uniform(Vec3::Constant(-speed), Vec3::Constant(speed));
 }
 
 World spheres(double spacing, int layers) {
@@ -92,7 +92,7 @@ World falling_clumps() {
   for (const Vec3& p : lattice(2.2 * kD, 8)) {
     Body b = proto;
     b.position = p;
-    Eigen::Quaterniond q(rng.normal(), rng.normal(), rng.normal(), rng.normal());
+    Eigen::Quaterniond q = rng.normal_quaternion();
     b.orientation = q.normalized();
     b.velocity = jitter(rng, 0.05);
     b.angular_velocity = jitter(rng, 5.0);

@@ -25,15 +25,13 @@ Cloud cloud(int n, double side, const Vec3& origin, std::uint64_t seed) {
   int body = 0;
   while (static_cast<int>(c.position.size()) < n) {
     const int parts = body % 4 == 3 ? 3 : 1;
-    const Vec3 centre =
-        origin + Vec3(rng.uniform(0, side), rng.uniform(0, side), rng.uniform(0, side));
+    const Vec3 centre = origin + rng.uniform(Vec3::Constant(0), Vec3::Constant(side));
     for (int p = 0; p < parts; ++p) {
       const double u = rng.uniform();
       c.radius.push_back(u < 0.9 ? rng.uniform(0.0005, 0.004) : rng.uniform(0.004, 0.03));
-      c.position.push_back(centre +
-                           (p == 0 ? Vec3::Zero()
-                                   : Vec3(rng.uniform(-0.004, 0.004), rng.uniform(-0.004, 0.004),
-                                          rng.uniform(-0.004, 0.004))));
+      c.position.push_back(
+          centre +
+          (p == 0 ? Vec3::Zero() : rng.uniform(Vec3::Constant(-0.004), Vec3::Constant(0.004))));
       c.body.push_back(body);
     }
     ++body;

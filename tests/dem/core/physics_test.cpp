@@ -248,8 +248,9 @@ World make_pile() {
   for (int layer = 0; layer < 12; ++layer)
     for (int ix = -2; ix <= 2; ++ix)
       for (int iy = -2; iy <= 2; ++iy) {
-        const Vec3 c(ix * 0.022 + rng.uniform(-1e-3, 1e-3), iy * 0.022 + rng.uniform(-1e-3, 1e-3),
-                     0.012 + layer * 0.025);
+        const double dy = rng.uniform(-1e-3, 1e-3);  // y before x, as GCC drew them (Rng::uniform)
+        const double dx = rng.uniform(-1e-3, 1e-3);
+        const Vec3 c(ix * 0.022 + dx, iy * 0.022 + dy, 0.012 + layer * 0.025);
         if (std::hypot(c.x(), c.y()) > rc - 0.016) continue;
         if (placed++ % 5 == 0) {
           Clump clump{{Sphere{c + Vec3(-0.004, 0, 0), 0.007}, Sphere{c + Vec3(0.004, 0, 0), 0.006},

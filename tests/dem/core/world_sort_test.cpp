@@ -33,9 +33,7 @@ World heap(int sort_every) {
   o.contact.damping_ratio = 0.3;
   World w(o);
   Rng rng(77);
-  auto point = [&] {
-    return Vec3(rng.uniform(0.0, 0.08), rng.uniform(0.0, 0.08), rng.uniform(0.005, 0.10));
-  };
+  auto point = [&] { return rng.uniform(Vec3(0.0, 0.0, 0.005), Vec3(0.08, 0.08, 0.10)); };
   for (int k = 0; k < 720; ++k) {
     if (k % 36 == 0) {
       const Vec3 c = point();
@@ -44,7 +42,8 @@ World heap(int sort_every) {
       w.add_body(make_clump_body(clump, 2650.0));
     } else {
       Body b = make_sphere_body(point(), rng.uniform(0.002, 0.005), 2650.0);
-      b.velocity = Vec3(rng.uniform(-0.2, 0.2), rng.uniform(-0.2, 0.2), -0.5);
+      const double vy = rng.uniform(-0.2, 0.2);  // y before x, as GCC drew them (Rng::uniform)
+      b.velocity = Vec3(rng.uniform(-0.2, 0.2), vy, -0.5);
       w.add_body(std::move(b));
     }
   }

@@ -30,10 +30,8 @@ WorldOptions cloud_options(double timestep, double stiffness, double skin) {
 Clump random_clump(Rng& rng, const Vec3& c, int count, double spread, double r_min, double r_max) {
   Clump clump;
   for (int s = 0; s < count; ++s)
-    clump.spheres.push_back(
-        Sphere{c + Vec3(rng.uniform(-spread, spread), rng.uniform(-spread, spread),
-                        rng.uniform(-spread, spread)),
-               rng.uniform(r_min, r_max)});
+    clump.spheres.push_back(Sphere{c + rng.uniform(Vec3::Constant(-spread), Vec3::Constant(spread)),
+                                   rng.uniform(r_min, r_max)});
   return clump;
 }
 
@@ -43,13 +41,11 @@ World mixed_cloud(double skin, std::uint64_t seed) {
   World world(cloud_options(2e-6, 1e5, skin));
   Rng rng(seed);
   const double box = 0.12;
-  auto point = [&] {
-    return Vec3(rng.uniform(0.0, box), rng.uniform(0.0, box), rng.uniform(0.0, box));
-  };
+  auto point = [&] { return rng.uniform(Vec3::Constant(0.0), Vec3::Constant(box)); };
   for (int k = 0; k < 900; ++k) {
     const double r = k % 30 == 0 ? rng.uniform(0.01, 0.03) : rng.uniform(0.0006, 0.006);
     Body b = make_sphere_body(point(), r, 2650.0);
-    b.velocity = Vec3(rng.uniform(-0.2, 0.2), rng.uniform(-0.2, 0.2), rng.uniform(-0.2, 0.2));
+    b.velocity = rng.uniform(Vec3::Constant(-0.2), Vec3::Constant(0.2));
     world.add_body(b);
   }
   for (int k = 0; k < 40; ++k) {
@@ -110,12 +106,8 @@ World gentle_cloud(double skin, std::uint64_t seed) {
     }
     return true;
   };
-  auto velocity = [&] {
-    return Vec3(rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.0));
-  };
-  auto point = [&] {
-    return Vec3(rng.uniform(0.0, 0.15), rng.uniform(0.0, 0.15), rng.uniform(0.0, 0.06));
-  };
+  auto velocity = [&] { return rng.uniform(Vec3::Constant(-0.5), Vec3(0.5, 0.5, 0.0)); };
+  auto point = [&] { return rng.uniform(Vec3::Constant(0.0), Vec3(0.15, 0.15, 0.06)); };
   for (int k = 0; k < 500;) {
     const double r = k < 12 ? rng.uniform(0.01, 0.02) : rng.uniform(0.0015, 0.006);
     const Sphere s{point(), r};

@@ -37,11 +37,10 @@ TEST(FarthestPair, SamePairAsTheDoubleLoopTiesIncluded) {
     const std::size_t n = 2 + std::size_t(rng.uniform(0.0, 1500.0));
     std::vector<Vec3> cloud(n), grid(n);
     for (std::size_t k = 0; k < n; ++k) {
-      cloud[k] = Vec3(rng.uniform(-1, 1), rng.uniform(-2, 2), rng.uniform(-0.5, 0.5));
+      cloud[k] = rng.uniform(Vec3(-1, -2, -0.5), Vec3(1, 2, 0.5));
       // Integer points of a 4 x 4 x 4 grid: hundreds of pairs share the largest distance, and
       // points repeat.
-      grid[k] = Vec3(std::floor(rng.uniform(0, 4)), std::floor(rng.uniform(0, 4)),
-                     std::floor(rng.uniform(0, 4)));
+      grid[k] = rng.uniform(Vec3::Zero(), Vec3::Constant(4)).array().floor().matrix();
     }
     expect_same(farthest_pair(cloud), double_loop(cloud), "random cloud");
     expect_same(farthest_pair(grid), double_loop(grid), "integer grid");
@@ -58,7 +57,7 @@ TEST(FarthestPair, DiameterOfALargeSphereCloud) {
   Rng rng(7);
   std::vector<Vec3> pts;
   for (int k = 0; k < 200000; ++k) {
-    Vec3 p(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+    Vec3 p = rng.uniform(Vec3::Constant(-1), Vec3::Constant(1));
     if (p.norm() < 1e-3 || p.norm() > 1) continue;
     pts.push_back(2.9 * p.normalized());
   }

@@ -37,10 +37,10 @@ double brute_distance(const Mesh& m, const Vec3& p, int* which = nullptr) {
 TEST(ClosestPointOnTriangle, NoSampledPointOfTheTriangleIsCloser) {
   Rng rng(11);
   for (int trial = 0; trial < 200; ++trial) {
-    const Vec3 a(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
-    const Vec3 b(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
-    const Vec3 c(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
-    const Vec3 p(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-2, 2));
+    const Vec3 a = rng.uniform(Vec3::Constant(-1), Vec3::Constant(1));
+    const Vec3 b = rng.uniform(Vec3::Constant(-1), Vec3::Constant(1));
+    const Vec3 c = rng.uniform(Vec3::Constant(-1), Vec3::Constant(1));
+    const Vec3 p = rng.uniform(Vec3::Constant(-2), Vec3::Constant(2));
     const Vec3 q = closest_point_on_triangle(p, a, b, c);
     // q lies in the triangle: barycentric coordinates in [0, 1] (up to rounding).
     const Vec3 n = (b - a).cross(c - a);
@@ -67,8 +67,7 @@ TEST(MeshIndex, DistancesAreTheBruteForceMinimumAndBoundsOnlyCut) {
     const MeshIndex index(*m);
     const auto bb = bounding_box(*m);
     for (int s = 0; s < 300; ++s) {
-      const Vec3 p(rng.uniform(bb[0].x(), bb[1].x()), rng.uniform(bb[0].y(), bb[1].y()),
-                   rng.uniform(bb[0].z(), bb[1].z()));
+      const Vec3 p = rng.uniform(bb[0], bb[1]);
       int which = -1;
       const double exact = brute_distance(*m, p, &which);
       EXPECT_NEAR(index.distance(p), exact, 1e-12 * (1 + exact));
@@ -116,11 +115,11 @@ TEST(MeshIndex, DescentOverTheSurfaceReachesTheNearestTriangle) {
   Rng rng(17);
   for (int s = 0; s < 300; ++s) {
     const bool outside = s % 2 == 1;
-    const Vec3 u(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+    const Vec3 u = rng.uniform(Vec3::Constant(-1), Vec3::Constant(1));
     const Vec3 p = (outside ? 1.6 : 0.9) * Vec3(2.0 * u.x(), u.y(), u.z());
     int which = -1;
     const double truth = brute_distance(m, p, &which);
-    const Vec3 off(rng.uniform(-0.05, 0.05), rng.uniform(-0.05, 0.05), rng.uniform(-0.05, 0.05));
+    const Vec3 off = rng.uniform(Vec3::Constant(-0.05), Vec3::Constant(0.05));
     int start = -1;
     brute_distance(m, p + off, &start);
     if (outside && s % 4 == 1)

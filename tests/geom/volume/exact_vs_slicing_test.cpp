@@ -18,8 +18,7 @@ Clump random_clump(int n, std::uint64_t seed) {
   Clump c;
   for (int i = 0; i < n; ++i)
     c.spheres.push_back(
-        Sphere{Vec3(rng.uniform(0, side), rng.uniform(0, side), rng.uniform(0, side)),
-               rng.uniform(0.5, 1.5)});
+        Sphere{rng.uniform(Vec3::Constant(0), Vec3::Constant(side)), rng.uniform(0.5, 1.5)});
   return c;
 }
 }  // namespace

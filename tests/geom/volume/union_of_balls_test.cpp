@@ -270,8 +270,10 @@ TEST(UnionOfBalls, EnginesAgreeOnCoplanarAndCollinearCentres) {
   Rng rng(7);
   Clump plane, line;
   for (int i = 0; i < 40; ++i) {
-    plane.spheres.push_back(ball(rng.uniform(0, 4), rng.uniform(0, 4), 0, rng.uniform(0.3, 1.0)));
-    line.spheres.push_back(ball(0, rng.uniform(0, 8), 0, rng.uniform(0.2, 1.0)));
+    const Vec3 xy = rng.uniform(Vec3(0, 0, 0.3), Vec3(4, 4, 1.0));  // (x, y, radius)
+    plane.spheres.push_back(ball(xy.x(), xy.y(), 0, xy.z()));
+    const double r = rng.uniform(0.2, 1.0);  // radius before y, as GCC drew them (Rng::uniform)
+    line.spheres.push_back(ball(0, rng.uniform(0, 8), 0, r));
   }
   expect_engines_agree(plane, 1e-12);
   expect_engines_agree(line, 1e-12);
@@ -316,9 +318,7 @@ TEST(UnionOfBalls, EnginesAgreeOnDegenerateLattices) {
 TEST(UnionOfBalls, RigidMotionInvariance) {
   const Clump c = random_clump(50, 5);
   Rng rng(99);
-  const Mat3 rot = Eigen::Quaterniond(rng.normal(), rng.normal(), rng.normal(), rng.normal())
-                       .normalized()
-                       .toRotationMatrix();
+  const Mat3 rot = rng.normal_quaternion().normalized().toRotationMatrix();
   const Vec3 shift(3.7, -1.2, 10.5);
   Clump moved = c;
   for (Sphere& s : moved.spheres) s.center = rot * s.center + shift;
