@@ -4,8 +4,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <map>
-#include <unordered_map>
 
 namespace clumpkit {
 
@@ -88,46 +86,60 @@ Mat3 solid_inertia(const Mesh& mesh, const Vec3& c) {
 MeshCheck check_mesh(const Mesh& mesh) {
   MeshCheck r;
   const int nv = static_cast<int>(mesh.vertices.size());
-  // Every directed edge as one sorted key: the undirected edge (lo, hi) and its direction in the
-  // lowest bit, so each edge's uses are adjacent after one sort and are counted in one pass
-  // (a tree map took seconds on a scan's 4·10⁶ edges). Indices are below 2³¹.
-  std::vector<std::uint64_t> keys;
-  keys.reserve(3 * mesh.triangles.size());
+  // Every directed edge filed under its lower vertex (compressed rows) as one key: the higher
+  // vertex and the direction in the lowest bit, so each edge's uses are adjacent once a row is
+  // sorted and are counted in one pass. Rows hold a handful of keys: sorting them is cheaper
+  // than one sort of a scan's 4·10⁶ edges (and a tree map took seconds). Indices are below 2³¹.
   const auto bb =
       mesh.vertices.empty() ? std::array<Vec3, 2>{Vec3::Zero(), Vec3::Zero()} : bounding_box(mesh);
   const double scale = (bb[1] - bb[0]).norm();
+  std::vector<int> row(std::size_t(nv) + 1, 0);
+  auto valid = [&](const std::array<int, 3>& t) {
+    for (int k = 0; k < 3; ++k)
+      if (t[k] < 0 || t[k] >= nv) return false;
+    return t[0] != t[1] && t[1] != t[2] && t[0] != t[2];
+  };
   for (const auto& t : mesh.triangles) {
-    bool bad_index = false;
-    for (int k = 0; k < 3; ++k) bad_index |= t[k] < 0 || t[k] >= nv;
-    if (bad_index || t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+    if (!valid(t)) {
       r.degenerate = true;
       continue;
     }
     const Vec3& a = mesh.vertices[t[0]];
     const double area2 = (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a).norm();
     if (!(area2 > 1e-14 * scale * scale)) r.degenerate = true;
-    for (int k = 0; k < 3; ++k) {
-      const int from = t[k], to = t[(k + 1) % 3];
-      const std::uint64_t lo = std::uint32_t(std::min(from, to)),
-                          hi = std::uint32_t(std::max(from, to));
-      keys.push_back((lo << 32) | (hi << 1) | std::uint64_t(from > to));
+    for (int k = 0; k < 3; ++k) ++row[std::size_t(std::min(t[k], t[(k + 1) % 3])) + 1];
+  }
+  for (int v = 0; v < nv; ++v) row[v + 1] += row[v];
+  std::vector<std::uint32_t> keys(static_cast<std::size_t>(row[nv]));
+  {
+    std::vector<int> next(row.begin(), row.end() - 1);
+    for (const auto& t : mesh.triangles) {
+      if (!valid(t)) continue;
+      for (int k = 0; k < 3; ++k) {
+        const int from = t[k], to = t[(k + 1) % 3];
+        keys[next[std::min(from, to)]++] =
+            (std::uint32_t(std::max(from, to)) << 1) | std::uint32_t(from > to);
+      }
     }
   }
-  std::sort(keys.begin(), keys.end());
   bool oriented = true;
-  for (std::size_t q = 0; q < keys.size();) {
-    int uses[2] = {0, 0};  // low-to-high, high-to-low
-    const std::uint64_t edge = keys[q] >> 1;
-    for (; q < keys.size() && keys[q] >> 1 == edge; ++q) ++uses[keys[q] & 1];
-    if (uses[0] > 1 || uses[1] > 1) oriented = false;  // a directed edge used twice
-    const int total = uses[0] + uses[1];
-    if (total == 1) {
-      ++r.boundary_edges;
-      oriented = false;
-    } else if (total > 2) {
-      ++r.nonmanifold_edges;
-    } else if (uses[0] == 0 || uses[1] == 0) {
-      oriented = false;  // the two uses run in the same direction
+  for (int v = 0; v < nv; ++v) {
+    const auto first = keys.begin() + row[v], last = keys.begin() + row[v + 1];
+    std::sort(first, last);
+    for (auto q = first; q != last;) {
+      int uses[2] = {0, 0};  // low-to-high, high-to-low
+      const std::uint32_t edge = *q >> 1;
+      for (; q != last && *q >> 1 == edge; ++q) ++uses[*q & 1];
+      if (uses[0] > 1 || uses[1] > 1) oriented = false;  // a directed edge used twice
+      const int total = uses[0] + uses[1];
+      if (total == 1) {
+        ++r.boundary_edges;
+        oriented = false;
+      } else if (total > 2) {
+        ++r.nonmanifold_edges;
+      } else if (uses[0] == 0 || uses[1] == 0) {
+        oriented = false;  // the two uses run in the same direction
+      }
     }
   }
   // Vertex manifoldness: the triangles around each vertex must form a single fan.
@@ -181,17 +193,47 @@ void flip_orientation(Mesh& mesh) {
 
 namespace {
 
-struct ExactHash {
-  std::size_t operator()(const std::array<double, 3>& p) const {
+// Open-addressing table from a key of three 64-bit words to the order in which keys were first
+// added: no node per entry, as std::unordered_map has (a scan-sized STL repeats each of its
+// 6.5·10⁵ vertices six times, and one node per copy took most of a second).
+class FirstSeen {
+ public:
+  using Key = std::array<std::uint64_t, 3>;
+  explicit FirstSeen(std::size_t n) {
+    std::size_t capacity = 16;
+    while (capacity < 2 * n) capacity *= 2;
+    mask_ = capacity - 1;
+    slots_.assign(capacity, -1);
+  }
+  /// The number of `key` in the order of first addition; `added` tells whether it is new.
+  int add(const Key& key, bool& added) {
+    std::size_t h = hash(key) & mask_;
+    for (;; h = (h + 1) & mask_) {
+      const int s = slots_[h];
+      if (s < 0) break;
+      if (keys_[std::size_t(s)] == key) {
+        added = false;
+        return s;
+      }
+    }
+    slots_[h] = static_cast<int>(keys_.size());
+    keys_.push_back(key);
+    added = true;
+    return slots_[h];
+  }
+
+ private:
+  static std::size_t hash(const Key& key) {
     std::uint64_t h = 0x9e3779b97f4a7c15ull;
-    for (double v : p) {
-      std::uint64_t bits;
-      std::memcpy(&bits, &v, sizeof bits);
-      h = (h ^ bits) * 0xff51afd7ed558ccdull;
+    for (std::uint64_t w : key) {
+      h = (h ^ w) * 0xff51afd7ed558ccdull;
       h ^= h >> 32;
     }
     return static_cast<std::size_t>(h);
   }
+  std::size_t mask_ = 0;
+  std::vector<int> slots_;
+  std::vector<Key> keys_;
 };
 
 }  // namespace
@@ -206,37 +248,27 @@ void weld_vertices(Mesh& mesh, double relative_tolerance) {
   if (mesh.vertices.empty()) return;
   const auto bb = bounding_box(mesh);
   const double tol = relative_tolerance * (bb[1] - bb[0]).norm();
-  // First exact repeats (an STL file repeats every vertex about six times, bit for bit) by a
-  // hash table, in the order of first occurrence; then, with a tolerance, the survivors that
-  // share a cell of size `tol` (a tree map over far fewer points).
+  // One pass in file order: each vertex joins the first one with the same key, its exact
+  // coordinates (+ 0.0 makes −0 and +0 one key) or, with a tolerance, its cell of size `tol`.
+  // Exact copies share a cell, so this is the same as welding exact copies first and then
+  // their survivors by cell, in the order of first occurrence.
   std::vector<int> remap(mesh.vertices.size());
-  std::vector<Vec3> unique;
-  {
-    std::unordered_map<std::array<double, 3>, int, ExactHash> same;
-    same.reserve(mesh.vertices.size());
-    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-      const Vec3& p = mesh.vertices[i];
-      // + 0.0 makes −0 and +0 one key, as the tree map's comparison did.
-      auto [it, inserted] = same.emplace(
-          std::array<double, 3>{p.x() + 0.0, p.y() + 0.0, p.z() + 0.0}, int(unique.size()));
-      if (inserted) unique.push_back(p);
-      remap[i] = it->second;
-    }
-  }
   std::vector<Vec3> kept;
-  if (tol > 0.0) {
-    std::vector<int> cell_of(unique.size());
-    std::map<std::array<long long, 3>, int> cell;
-    for (std::size_t u = 0; u < unique.size(); ++u) {
-      std::array<long long, 3> key;
-      for (int k = 0; k < 3; ++k) key[k] = std::llround((unique[u][k] - bb[0][k]) / tol);
-      auto [it, inserted] = cell.emplace(key, int(kept.size()));
-      if (inserted) kept.push_back(unique[u]);
-      cell_of[u] = it->second;
+  FirstSeen seen(mesh.vertices.size());
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const Vec3& p = mesh.vertices[i];
+    FirstSeen::Key key;
+    for (int k = 0; k < 3; ++k) {
+      if (tol > 0.0) {
+        key[k] = static_cast<std::uint64_t>(std::llround((p[k] - bb[0][k]) / tol));
+      } else {
+        const double v = p[k] + 0.0;
+        std::memcpy(&key[k], &v, sizeof v);
+      }
     }
-    for (int& r : remap) r = cell_of[r];
-  } else {
-    kept = std::move(unique);
+    bool added = false;
+    remap[i] = seen.add(key, added);
+    if (added) kept.push_back(p);
   }
   std::vector<std::array<int, 3>> tris;
   tris.reserve(mesh.triangles.size());
