@@ -117,9 +117,16 @@ double field_voxel_count(const Mesh& mesh, const FieldOptions& options) {
   return product(field_dims(bounding_box(mesh), field_voxel_size(mesh, options)));
 }
 
+namespace {
+
+double bytes_estimate(double voxels, std::size_t triangles) {
+  return 64.0 * 1048576.0 + 16.0 * voxels + 200.0 * double(triangles);
+}
+
+}  // namespace
+
 double fill_bytes_estimate(const Mesh& mesh, const FieldOptions& options) {
-  return 64.0 * 1048576.0 + 16.0 * field_voxel_count(mesh, options) +
-         200.0 * double(mesh.triangles.size());
+  return bytes_estimate(field_voxel_count(mesh, options), mesh.triangles.size());
 }
 
 DistanceField make_distance_field(const Mesh& mesh, const FieldOptions& options) {
@@ -193,7 +200,9 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
     throw InvalidInput("distance field would have " + format_number(total) +
                        " voxels (limit 2e9): use fewer --voxels or a larger voxel size");
   if (options.max_bytes > 0) {
-    const double need = fill_bytes_estimate(mesh, options);
+    // From the size found above: the voxel size of a shape with two equal moments takes a 2-D
+    // hull of every vertex (principal_frame), a tenth of a second on a scan.
+    const double need = bytes_estimate(total, mesh.triangles.size());
     if (!(need <= options.max_bytes))
       throw InvalidInput("fill would need an estimated " + format_number(need / 1073741824.0, 3) +
                          " GiB (" + format_number(total) + " voxels of size " + format_number(h) +

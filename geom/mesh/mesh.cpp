@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 
 namespace clumpkit {
 
@@ -191,93 +190,10 @@ void flip_orientation(Mesh& mesh) {
   for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
 }
 
-namespace {
-
-// Open-addressing table from a key of three 64-bit words to the order in which keys were first
-// added: no node per entry, as std::unordered_map has (a scan-sized STL repeats each of its
-// 6.5·10⁵ vertices six times, and one node per copy took most of a second).
-class FirstSeen {
- public:
-  using Key = std::array<std::uint64_t, 3>;
-  explicit FirstSeen(std::size_t n) {
-    std::size_t capacity = 16;
-    while (capacity < 2 * n) capacity *= 2;
-    mask_ = capacity - 1;
-    slots_.assign(capacity, -1);
-  }
-  /// The number of `key` in the order of first addition; `added` tells whether it is new.
-  int add(const Key& key, bool& added) {
-    std::size_t h = hash(key) & mask_;
-    for (;; h = (h + 1) & mask_) {
-      const int s = slots_[h];
-      if (s < 0) break;
-      if (keys_[std::size_t(s)] == key) {
-        added = false;
-        return s;
-      }
-    }
-    slots_[h] = static_cast<int>(keys_.size());
-    keys_.push_back(key);
-    added = true;
-    return slots_[h];
-  }
-
- private:
-  static std::size_t hash(const Key& key) {
-    std::uint64_t h = 0x9e3779b97f4a7c15ull;
-    for (std::uint64_t w : key) {
-      h = (h ^ w) * 0xff51afd7ed558ccdull;
-      h ^= h >> 32;
-    }
-    return static_cast<std::size_t>(h);
-  }
-  std::size_t mask_ = 0;
-  std::vector<int> slots_;
-  std::vector<Key> keys_;
-};
-
-}  // namespace
-
 void append_mesh(Mesh& mesh, const Mesh& other) {
   const int n = static_cast<int>(mesh.vertices.size());
   mesh.vertices.insert(mesh.vertices.end(), other.vertices.begin(), other.vertices.end());
   for (const auto& t : other.triangles) mesh.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
-}
-
-void weld_vertices(Mesh& mesh, double relative_tolerance) {
-  if (mesh.vertices.empty()) return;
-  const auto bb = bounding_box(mesh);
-  const double tol = relative_tolerance * (bb[1] - bb[0]).norm();
-  // One pass in file order: each vertex joins the first one with the same key, its exact
-  // coordinates (+ 0.0 makes −0 and +0 one key) or, with a tolerance, its cell of size `tol`.
-  // Exact copies share a cell, so this is the same as welding exact copies first and then
-  // their survivors by cell, in the order of first occurrence.
-  std::vector<int> remap(mesh.vertices.size());
-  std::vector<Vec3> kept;
-  FirstSeen seen(mesh.vertices.size());
-  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-    const Vec3& p = mesh.vertices[i];
-    FirstSeen::Key key;
-    for (int k = 0; k < 3; ++k) {
-      if (tol > 0.0) {
-        key[k] = static_cast<std::uint64_t>(std::llround((p[k] - bb[0][k]) / tol));
-      } else {
-        const double v = p[k] + 0.0;
-        std::memcpy(&key[k], &v, sizeof v);
-      }
-    }
-    bool added = false;
-    remap[i] = seen.add(key, added);
-    if (added) kept.push_back(p);
-  }
-  std::vector<std::array<int, 3>> tris;
-  tris.reserve(mesh.triangles.size());
-  for (auto t : mesh.triangles) {
-    for (int& k : t) k = remap[k];
-    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) tris.push_back(t);
-  }
-  mesh.vertices = std::move(kept);
-  mesh.triangles = std::move(tris);
 }
 
 std::vector<int> lexicographic_rank(const std::vector<Vec3>& points) {

@@ -55,11 +55,6 @@ void append_mesh(Mesh& mesh, const Mesh& other);
 /// Flips all triangles (reverses orientation).
 void flip_orientation(Mesh& mesh);
 
-/// Merges vertices closer than `tolerance` (relative to the bounding-box diagonal) and drops
-/// triangles that become degenerate. Used after reading STL, which stores unshared vertices.
-/// A tolerance of 0 merges exactly equal coordinates only.
-void weld_vertices(Mesh& mesh, double relative_tolerance = 1e-9);
-
 /// Puts the mesh in a canonical order: vertices sorted lexicographically, each triangle rotated to
 /// start at its smallest index, triangles sorted. Geometry is unchanged. Libraries that order
 /// their output by memory address (CGAL's hulls) give different orders run to run; after this,

@@ -6,6 +6,7 @@
 #include "geom/mesh/cgal_mesh.h"
 #include "geom/mesh/repair.h"
 #include "geom/mesh/shells.h"
+#include "geom/mesh/weld.h"
 #include "io/base/atomic_file.h"
 #include "io/base/little_endian.h"
 #include "io/base/text.h"

@@ -1,6 +1,8 @@
-// STL, ASCII and binary: read (three corners per triangle, welded by the intake) and written.
+// STL, ASCII and binary: read (three corners per triangle, exact copies welded as read) and
+// written.
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "geom/mesh/weld.h"
 #include "io/base/little_endian.h"
 #include "io/formats/mesh_formats.h"
 
@@ -15,27 +17,30 @@ namespace clumpkit::mesh_format {
 
 namespace {
 
-void add_triangle_soup(Mesh& mesh, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const int n = static_cast<int>(mesh.vertices.size());
-  mesh.vertices.insert(mesh.vertices.end(), {a, b, c});
-  mesh.triangles.push_back({n, n + 1, n + 2});
+// Corners are welded as they are read (exact copies only; the intake then welds within its
+// tolerance): a scan's soup of 4·10⁶ corners is never held.
+void add_triangle(Mesh& mesh, VertexWelder& weld, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const int i = weld.add(a), j = weld.add(b), k = weld.add(c);
+  mesh.triangles.push_back({i, j, k});
 }
 
 Mesh read_binary_stl(const std::string& data, uint32_t n) {
   Mesh mesh;
-  mesh.vertices.reserve(3 * size_t(n));
   mesh.triangles.reserve(n);
+  VertexWelder weld(n / 2 + 16);  // a closed mesh has about half as many vertices as triangles
   for (uint32_t i = 0; i < n; ++i) {
     const char* p = data.data() + 84 + 50 * size_t(i) + 12;  // skip the stored normal
     Vec3 v[3];
     for (int k = 0; k < 9; ++k) v[k / 3][k % 3] = load_le<float>(p + 4 * k);
-    add_triangle_soup(mesh, v[0], v[1], v[2]);
+    add_triangle(mesh, weld, v[0], v[1], v[2]);
   }
+  mesh.vertices = weld.take_vertices();
   return mesh;
 }
 
 Mesh read_ascii_stl(const std::string& path, const std::string& data) {
   Mesh mesh;
+  VertexWelder weld;
   std::vector<Vec3> loop;
   std::vector<std::string_view> tok;
   Lines lines(data);
@@ -54,11 +59,12 @@ Mesh read_ascii_stl(const std::string& path, const std::string& data) {
       if (loop.size() != 3)
         throw InvalidInput(at_line(path, lines.line()) + ": facet has " +
                            std::to_string(loop.size()) + " vertices, expected 3");
-      add_triangle_soup(mesh, loop[0], loop[1], loop[2]);
+      add_triangle(mesh, weld, loop[0], loop[1], loop[2]);
       loop.clear();
     }
   }
   if (!loop.empty()) bad(path, "ASCII STL ends inside a facet (missing 'endloop')");
+  mesh.vertices = weld.take_vertices();
   return mesh;
 }
 

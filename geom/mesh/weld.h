@@ -1,0 +1,43 @@
+// Welding vertices: exact copies as a triangle soup is read, and copies within a tolerance.
+#pragma once
+
+#include "geom/mesh/mesh.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace clumpkit {
+
+/// Joins exact copies of vertices as they come, so that a reader of a triangle soup (STL: each
+/// corner stored once per triangle, about six copies of every vertex) never holds the soup.
+/// Open addressing, no node per vertex: a scan-sized STL has 4·10⁶ corners.
+class VertexWelder {
+ public:
+  /// `expected` distinct vertices: a hint for the table's first size, which grows as needed.
+  explicit VertexWelder(std::size_t expected = 0);
+  /// The index of the first vertex added with the same coordinates (−0 and +0 alike), adding
+  /// `p` if it is new.
+  int add(const Vec3& p);
+  /// The distinct vertices in the order of first addition (moved out; the welder is spent).
+  std::vector<Vec3> take_vertices() { return std::move(vertices_); }
+
+  /// The table behind add(): keys of three 64-bit words, numbered in order of first addition.
+  using Key = std::array<std::uint64_t, 3>;
+  int add_key(const Key& key, bool& added);
+
+ private:
+  void grow();
+  std::size_t mask_ = 0;
+  std::vector<int> slots_;
+  std::vector<Key> keys_;
+  std::vector<Vec3> vertices_;
+};
+
+/// Merges vertices closer than `tolerance` (relative to the bounding-box diagonal): vertex i
+/// joins the first vertex with the same cell of that size from the box's corner (with 0, the
+/// same coordinates), survivors in the order of first occurrence; drops triangles that become
+/// degenerate. After reading STL and, with a tolerance asked for, OBJ and PLY.
+void weld_vertices(Mesh& mesh, double relative_tolerance = 1e-9);
+
+}  // namespace clumpkit
