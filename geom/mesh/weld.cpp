@@ -25,6 +25,14 @@ VertexWelder::Key exact_key(const Vec3& p) {
   return key;
 }
 
+// The cell of size `tol` that holds `p`, counted from `origin`.
+VertexWelder::Key cell_key(const Vec3& p, const Vec3& origin, double tol) {
+  VertexWelder::Key key;
+  for (int k = 0; k < 3; ++k)
+    key[k] = static_cast<std::uint64_t>(std::llround((p[k] - origin[k]) / tol));
+  return key;
+}
+
 }  // namespace
 
 VertexWelder::VertexWelder(std::size_t expected) {
@@ -81,10 +89,7 @@ void weld_vertices(Mesh& mesh, double relative_tolerance) {
   VertexWelder seen(mesh.vertices.size());
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     const Vec3& p = mesh.vertices[i];
-    VertexWelder::Key key = exact_key(p);
-    if (tol > 0.0)
-      for (int k = 0; k < 3; ++k)
-        key[k] = static_cast<std::uint64_t>(std::llround((p[k] - bb[0][k]) / tol));
+    const VertexWelder::Key key = tol > 0.0 ? cell_key(p, bb[0], tol) : exact_key(p);
     bool added = false;
     remap[i] = seen.add_key(key, added);
     if (added) kept.push_back(p);
