@@ -32,6 +32,10 @@ set(clumpkit_long_tests
   # golden hashes of a settling pack, unsorted and sorted (150 s each) ->
   # DemGolden.SmallSettlingPackingSorted (4 layers instead of 16), FallingSpheres, FallingClumps
   DemGolden.SettlingPacking
+  # the small settling pack once per SIMD instruction set (4 x 15 s) ->
+  # DemGolden.ShortCasesWithSimdOffGiveTheSameBits (scalar reference against the golden hashes)
+  # and PairKernel.EveryInstructionSetGivesTheReferenceBits (every set, kernel alone)
+  DemGolden.SmallSettlingPackingOnEveryInstructionSet
   DemGolden.SettlingPackingSortedEvery1000Steps
   # compression of 570 spheres (80 s each) ->
   # DemCompression.FiveDiameterCubeIsExactForAnyThreadsAndAtTwiceTheSize

@@ -18,4 +18,13 @@ void parallel_items(std::size_t n, F&& f) {
                     });
 }
 
+/// Calls f(begin, end) on disjoint ranges covering [0, n), in parallel, each at most `grain`
+/// items long: for kernels that work on batches of items. Thread-count independent under the
+/// same condition as parallel_items.
+template <class F>
+void parallel_ranges(std::size_t n, std::size_t grain, F&& f) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
+                    [&](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
+}
+
 }  // namespace clumpkit::dem

@@ -1,5 +1,6 @@
 // The contact pass of dem::World: the near-list index and its contact slots, wall candidates,
 // and the pair and wall contact forces of a step.
+#include "dem/core/pair_kernel.h"
 #include "dem/core/parallel.h"
 #include "dem/core/world.h"
 #include "dem/core/world_step_cache.h"
@@ -10,19 +11,6 @@
 namespace clumpkit::dem {
 
 using namespace detail;
-
-namespace {
-
-// v + ω × (p − x) and (p − x) × f written per component: Eigen's code for these expressions
-// stores two scalars and reloads them as one packed pair, which defeats store forwarding and
-// cost a third of the contact kernel (perf). Same formulas, same bits.
-inline Vec3 point_velocity(const Vec3& v, const Vec3& w, const Vec3& p, const Vec3& x) {
-  const double rx = p.x() - x.x(), ry = p.y() - x.y(), rz = p.z() - x.z();
-  return Vec3(v.x() + (w.y() * rz - w.z() * ry), v.y() + (w.z() * rx - w.x() * rz),
-              v.z() + (w.x() * ry - w.y() * rx));
-}
-
-}  // namespace
 
 // Index of the candidate list: per sphere its candidates as i (a range of candidates_) and as j
 // (down_), per body every candidate it takes part in, in candidate order — the order in which
@@ -218,55 +206,27 @@ void World::compute_forces() {
   const bool scaled = p.scaling != StiffnessScaling::none;
   if (!sc.damping_valid_) update_damping();
 
-  // Pair contacts, one slot per candidate: a touching pair keeps its shear history when it
-  // touched at the last step too, else it starts from a fresh state. Each touching pair writes
-  // its force and contact point into its slot and marks both bodies touched; a pair that stops
-  // touching zeroes its slot.
-  const std::size_t ncand = candidates_.size();
-  parallel_items(ncand, [&](std::size_t k) {
-    // The partner j is far from i in memory for a mixed packing: fetch a few candidates ahead.
-    constexpr std::size_t kAhead = 6;
-    if (k + kAhead < ncand) {
-      const int ahead = candidates_[k + kAhead].second;
-      __builtin_prefetch(&sphere_world_[ahead]);
-      __builtin_prefetch(&sc.kinematics_[sphere_body_[ahead]]);
-    }
-    const auto [i, j] = candidates_[k];
-    auto release = [&] {
-      if (!sc.slot_active_[k]) return;
-      sc.slot_active_[k] = 0;
-      sc.slot_out_[k] = SlotOut{Vec3::Zero(), Vec3::Zero()};
-    };
-    const Vec3 d = sphere_world_[j] - sphere_world_[i];
-    const double touch = sphere_radius_[i] + sphere_radius_[j];
-    const double d2 = d.squaredNorm();
-    if (d2 > touch * touch * (1.0 + 1e-9)) return release();  // clearly apart: no square root
-    const double dist = std::sqrt(d2);                        // = d.norm()
-    const double delta = touch - dist;
-    if (!(delta > 0.0)) return release();
-    SlotForce& state = sc.slot_force_[k];
-    if (!sc.slot_active_[k]) state = SlotForce{Vec3::Zero(), 0.0};
-    sc.slot_active_[k] = 1;
-    const Kinematics& a = sc.kinematics_[sphere_body_[i]];
-    const Kinematics& b = sc.kinematics_[sphere_body_[j]];
-    const Vec3 n = dist > 0.0 ? Vec3(d / dist) : Vec3(Vec3::UnitZ());
-    const Vec3 point = sphere_world_[i] + (sphere_radius_[i] - 0.5 * delta) * n;
-    const Vec3 va = point_velocity(a.velocity, a.angular_velocity, point, a.position);
-    const Vec3 vb = point_velocity(b.velocity, b.angular_velocity, point, b.position);
-    if (scaled)
-      update_contact_force(state.shear, state.normal_force, n, delta, vb - va, sc.slot_damping_[k],
-                           scaled_stiffness(p, sc.slot_stiffness_[k]), dt);
-    else
-      update_contact_force(state.shear, state.normal_force, n, delta, vb - va, sc.slot_damping_[k],
-                           p, dt);
-    if (sc.record_geometry_) sc.slot_geometry_[k] = SlotGeometry{n, point, delta};
-    const Vec3 f = state.normal_force * n + state.shear;  // ContactState::force()
-    // Body of j receives +f, body of i −f (sum_wrench forms the torques).
-    sc.slot_out_[k] = SlotOut{f, point};
-    // Several threads may mark the same body: relaxed atomic stores of the same value.
-    __atomic_store_n(&sc.body_touched_[sphere_body_[i]], std::uint8_t{1}, __ATOMIC_RELAXED);
-    __atomic_store_n(&sc.body_touched_[sphere_body_[j]], std::uint8_t{1}, __ATOMIC_RELAXED);
-  });
+  // Pair contacts, one slot per candidate (dem/core/pair_kernel.h): a touching pair keeps its
+  // shear history when it touched at the last step too, else it starts from a fresh state.
+  const PairKernelArgs args{candidates_.data(),
+                            sphere_world_.data(),
+                            sphere_radius_.data(),
+                            sphere_body_.data(),
+                            sc.sphere_body64_.data(),
+                            sc.kinematics_.data(),
+                            sc.slot_damping_.data(),
+                            scaled ? sc.slot_stiffness_.data() : nullptr,
+                            p.kn,
+                            p.ks,
+                            p.friction,
+                            dt,
+                            sc.slot_force_.data(),
+                            sc.slot_out_.data(),
+                            sc.record_geometry_ ? sc.slot_geometry_.data() : nullptr,
+                            sc.slot_active_.data(),
+                            sc.body_touched_.data()};
+  parallel_ranges(candidates_.size(), 256,
+                  [&](std::size_t begin, std::size_t end) { pair_contacts(args, begin, end); });
 
   // Wall contacts, one slot per wall candidate, likewise.
   parallel_items(sc.wall_cand_.size(), [&](std::size_t k) {

@@ -44,6 +44,7 @@ void World::load_bodies() {
                                                                       : Spin::isotropic;
     sc.rotation_[k] = Rotation{b.orientation, b.moments, spin};
   });
+  sc.sphere_body64_.assign(sphere_body_.begin(), sphere_body_.end());
   sc.damping_valid_ = false;  // masses may have changed
 }
 

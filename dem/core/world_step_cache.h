@@ -69,6 +69,7 @@ struct StepCache {
   std::vector<Kinematics> kinematics_;  // per body
   std::vector<Wrench> body_wrench_;     // per body: gravity + contacts of the last step
   std::vector<Rotation> rotation_;      // per body
+  std::vector<std::int64_t> sphere_body64_;  // per sphere: its body, for the pair kernel's gathers
   // Per candidate: the force on the body of j and its point of application, written by the
   // contact kernel in candidate order (zero while not touching); each body gathers its items
   // (body_items_) and forms ±force and the torque about its own centroid.

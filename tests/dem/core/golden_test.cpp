@@ -4,6 +4,7 @@
 // Re-baselining: a change that alters bits on purpose (a new contact law, another summation
 // order, template mass properties) replaces the constants below in the same commit and says
 // why in its message. Any other failure here is a regression.
+#include "dem/core/pair_kernel.h"
 #include "dem/core/state_hash.h"
 #include "dem/core/world.h"
 #include "geom/random.h"
@@ -113,6 +114,26 @@ std::uint64_t run(World w, int steps, int threads) {
   return state_hash(w);
 }
 
+// The golden hashes of the short cases, which the SIMD checks below share.
+constexpr const char* kFallingSpheres = "0xe569e55e0e76812c";
+constexpr const char* kFallingClumps = "0x2c8f7b9e2b917e5f";
+constexpr const char* kSmallSettlingSorted = "0x0b67d93277e00698";
+
+// The small sorted settling packing of DemGolden.SmallSettlingPackingSorted, settled.
+World small_settled_packing() {
+  World w = spheres(1.02, 4);
+  w.options().timestep = 1e-5;
+  w.options().sort_every = 1000;
+  w.step(25000);
+  return w;
+}
+
+struct SimdOff {
+  bool was = simd_enabled();
+  SimdOff() { set_simd(false); }
+  ~SimdOff() { set_simd(was); }
+};
+
 }  // namespace
 
 TEST(DemGolden, FallingSpheres) {
@@ -120,7 +141,7 @@ TEST(DemGolden, FallingSpheres) {
   ASSERT_GT(w.sphere_count(), 1000);
   const std::uint64_t one = run(w, 3000, 1);
   EXPECT_EQ(one, run(w, 3000, 2)) << "thread count changed the bits";
-  EXPECT_EQ(hex(one), "0xe569e55e0e76812c") << "golden hash of the falling spheres changed";
+  EXPECT_EQ(hex(one), kFallingSpheres) << "golden hash of the falling spheres changed";
 }
 
 TEST(DemGolden, FallingClumps) {
@@ -128,7 +149,7 @@ TEST(DemGolden, FallingClumps) {
   ASSERT_GT(w.bodies().size(), 100u);
   const std::uint64_t one = run(w, 3000, 1);
   EXPECT_EQ(one, run(w, 3000, 2)) << "thread count changed the bits";
-  EXPECT_EQ(hex(one), "0x2c8f7b9e2b917e5f") << "golden hash of the falling clumps changed";
+  EXPECT_EQ(hex(one), kFallingClumps) << "golden hash of the falling clumps changed";
 }
 
 // Dropped onto the floor and left to settle: a dense packing with thousands of sliding and
@@ -161,12 +182,29 @@ TEST(DemGolden, SettlingPackingSortedEvery1000Steps) {
 // 27,000 steps): the dense-contact kernels, sorting and the 2-thread split in seconds,
 // for the sanitizer pass, which leaves the two above out (label long, tests/long_tests.cmake).
 TEST(DemGolden, SmallSettlingPackingSorted) {
-  World w = spheres(1.02, 4);
-  w.options().timestep = 1e-5;
-  w.options().sort_every = 1000;
-  w.step(25000);
+  const World w = small_settled_packing();
   ASSERT_GT(w.contacts().size(), w.bodies().size());
   const std::uint64_t one = run(w, 2000, 1);
   EXPECT_EQ(one, run(w, 2000, 2)) << "thread count changed the bits";
-  EXPECT_EQ(hex(one), "0x0b67d93277e00698") << "golden hash of the small sorted packing changed";
+  EXPECT_EQ(hex(one), kSmallSettlingSorted) << "golden hash of the small sorted packing changed";
+}
+
+// The cases above run the pair kernel in SIMD (on this CPU's best instruction set); its scalar
+// reference gives the same bits (dem/core/pair_kernel.h).
+TEST(DemGolden, ShortCasesWithSimdOffGiveTheSameBits) {
+  SimdOff off;
+  EXPECT_EQ(hex(run(spheres(1.2, 20), 3000, 1)), kFallingSpheres);
+  EXPECT_EQ(hex(run(falling_clumps(), 3000, 1)), kFallingClumps);
+  EXPECT_EQ(hex(run(small_settled_packing(), 2000, 2)), kSmallSettlingSorted);
+}
+
+// Every instruction set compiled and supported here (AVX-512, AVX2, SSE4 and Highway's portable
+// fallback on an AVX-512 machine), from the settle on.
+TEST(DemGolden, SmallSettlingPackingOnEveryInstructionSet) {
+  int sets = 0;
+  for_each_simd_target([&](const char* name) {
+    EXPECT_EQ(hex(run(small_settled_packing(), 2000, 2)), kSmallSettlingSorted) << name;
+    ++sets;
+  });
+  EXPECT_GE(sets, 1);
 }
