@@ -2,6 +2,8 @@
 
 #include "geom/errors.h"
 
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -24,7 +26,8 @@ void validate(const Clump& clump) {
 std::vector<int> distinct_balls(const std::vector<Sphere>& s) {
   std::vector<int> order(s.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
+  // A total order (ties broken by index), so the parallel sort gives one result.
+  tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) {
     const Vec3& p = s[a].center;
     const Vec3& q = s[b].center;
     if (p.x() != q.x()) return p.x() < q.x();

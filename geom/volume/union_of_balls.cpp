@@ -10,9 +10,13 @@
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -21,6 +25,7 @@ namespace clumpkit {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr int kChunk = 1 << 18;  // balls owned by one chunk of the power diagram
 
 using Vec2 = Eigen::Vector2d;
 using Mat2 = Eigen::Matrix2d;
@@ -48,6 +53,16 @@ struct Piece {
   Vec3 first = Vec3::Zero();   // ∫ u dV
   Mat3 second = Mat3::Zero();  // ∫ u uᵀ dV
   bool empty = false;          // known to be empty (the ball lies outside one half-space)
+};
+
+// Working arrays of ball_piece and integrate_face, reused from ball to ball (allocating them per
+// face cost a tenth of the time on 10⁶ balls).
+struct Scratch {
+  std::vector<HalfSpace> kept;
+  std::vector<Vec3> poly, clipped, dir;
+  std::vector<double> f;
+  std::vector<int> radial;
+  std::vector<Vec2> q;
 };
 
 // Orthonormal e1, e2 with e1 × e2 = n.
@@ -107,7 +122,7 @@ void add_great_arc(const Vec3& u, const Vec3& v, Vec3& m1, Mat3& m2_edges) {
 // Faces with h < 0 (centre outside the cell) come out with the right sign automatically.
 // (e1, n_e2) is an orthonormal basis of the plane with e1 × n_e2 = pl.n.
 void integrate_face(const HalfSpace& pl, const Vec3& e1, const Vec3& n_e2,
-                    const std::vector<Vec3>& poly, double r, Piece& piece) {
+                    const std::vector<Vec3>& poly, double r, Piece& piece, Scratch& w) {
   const double d = std::abs(pl.h);
   if (d == 0.0) return;  // plane through the centre: cones of zero height and zero solid angle
   const Vec3 np = pl.h > 0.0 ? pl.n : Vec3(-pl.n);  // from the centre towards the plane
@@ -149,8 +164,10 @@ void integrate_face(const HalfSpace& pl, const Vec3& e1, const Vec3& n_e2,
   // they are only counted in `radial` and added once at the end; at a crossing of the circle
   // (index −1) they are added at once.
   const std::size_t m = poly.size();
-  std::vector<Vec3> dir(m);  // unit directions of the polygon vertices
-  std::vector<int> radial(m, 0);
+  std::vector<Vec3>& dir = w.dir;  // unit directions of the polygon vertices
+  dir.resize(m);
+  std::vector<int>& radial = w.radial;
+  radial.assign(m, 0);
   auto outside = [&](const Vec2& A, const Vec2& B, int ia, int ib) {
     const Vec3 a = ia >= 0 ? dir[ia] : Vec3((foot + A.x() * e1 + A.y() * e2).normalized());
     const Vec3 b = ib >= 0 ? dir[ib] : Vec3((foot + B.x() * e1 + B.y() * e2).normalized());
@@ -181,7 +198,8 @@ void integrate_face(const HalfSpace& pl, const Vec3& e1, const Vec3& n_e2,
     om += 2.0 * std::atan2(np.dot(a.cross(b)), 1.0 + np.dot(a) + a.dot(b) + b.dot(np));
   };
 
-  std::vector<Vec2> q(m);
+  std::vector<Vec2>& q = w.q;
+  q.resize(m);
   for (std::size_t k = 0; k < m; ++k) {
     q[k] = Vec2(poly[k].dot(e1), poly[k].dot(e2));
     dir[k] = poly[k].normalized();
@@ -263,9 +281,10 @@ void integrate_face(const HalfSpace& pl, const Vec3& e1, const Vec3& n_e2,
 // that excludes it (h ≤ −r) empties the piece; the rest are bounded by the cube |u|∞ ≤ 2r (which
 // leaves the ball untouched) so that every face is a bounded polygon, built by clipping a large
 // square in its plane by all other half-spaces.
-Piece ball_piece(double r, const std::vector<HalfSpace>& planes) {
+Piece ball_piece(double r, const std::vector<HalfSpace>& planes, Scratch& w) {
   Piece piece;
-  std::vector<HalfSpace> kept;
+  std::vector<HalfSpace>& kept = w.kept;
+  kept.clear();
   for (const HalfSpace& p : planes) {
     if (p.h <= -r) {
       piece.empty = true;
@@ -292,86 +311,181 @@ Piece ball_piece(double r, const std::vector<HalfSpace>& planes) {
     kept.push_back({Vec3::Unit(axis), box});
     kept.push_back({-Vec3::Unit(axis), box});
   }
-  std::vector<Vec3> poly, scratch;
-  std::vector<double> f;
   const double half = 2.0 * box;  // the square covers the cube's section (radius √3·box)
-  for (std::size_t k = 0; k < kept.size(); ++k) {
+  // Face k: a square in its plane clipped by the first `count` planes but itself, in order.
+  auto face = [&](std::size_t k, std::size_t count, std::vector<Vec3>& poly, Vec3& e1, Vec3& e2) {
     const HalfSpace& pk = kept[k];
-    Vec3 e1, e2;
     plane_basis(pk.n, e1, e2);  // e1 × e2 = n: the square is counter-clockwise about n
     const Vec3 foot = pk.h * pk.n;
     poly = {foot - half * e1 - half * e2, foot + half * e1 - half * e2,
             foot + half * e1 + half * e2, foot - half * e1 + half * e2};
-    for (std::size_t j = 0; j < kept.size() && poly.size() >= 3; ++j)
-      if (j != k) clip(poly, kept[j], scratch, f);
-    if (poly.size() >= 3) integrate_face(pk, e1, e2, poly, r, piece);
+    for (std::size_t j = 0; j < count && poly.size() >= 3; ++j)
+      if (j != k) clip(poly, kept[j], w.clipped, w.f);
+  };
+
+  std::vector<Vec3>& poly = w.poly;
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    Vec3 e1, e2;
+    face(k, kept.size(), poly, e1, e2);
+    if (poly.size() >= 3) integrate_face(kept[k], e1, e2, poly, r, piece, w);
   }
   return piece;
 }
 
-}  // namespace
-
-UnionProperties union_properties(const Clump& clump) {
-  validate(clump);
-  const std::vector<Sphere>& s = clump.spheres;
-  const std::vector<int> balls = distinct_balls(s);
-  const int n = static_cast<int>(balls.size());
-
-  // Regular triangulation of the weighted centres (weight r²); info = index into `balls`.
+// The pieces of the balls owned by one chunk (`owned`, indices into `balls`), from the regular
+// triangulation of `local` (owned first, then the halo; indices into `balls`). Pieces of other
+// balls are not touched.
+void chunk_pieces(const std::vector<Sphere>& s, const std::vector<int>& balls,
+                  const std::vector<int>& local, std::size_t owned, std::vector<Piece>& pieces) {
+  const int n = static_cast<int>(local.size());
+  // Regular triangulation of the weighted centres (weight r²); info = index into `local`.
   std::vector<std::pair<K::Weighted_point_3, int>> points;
   points.reserve(n);
   for (int k = 0; k < n; ++k) {
-    const Sphere& b = s[balls[k]];
+    const Sphere& b = s[balls[local[k]]];
     points.emplace_back(K::Weighted_point_3(K::Point_3(b.center.x(), b.center.y(), b.center.z()),
                                             b.radius * b.radius),
                         k);
   }
   RegularTriangulation rt;
   rt.insert(points.begin(), points.end());
+  std::vector<std::pair<K::Weighted_point_3, int>>().swap(points);
 
-  // Power-diagram neighbours = edges of the regular triangulation (any dimension 0–3). In
-  // dimension 3 every finite edge lies on a finite cell, and collecting the six edges of each cell
-  // (duplicates removed per ball below) is much faster than CGAL's edge iterator.
-  std::vector<std::vector<int>> neighbours(n);
-  std::vector<char> is_vertex(n, 0);
+  // Power-diagram neighbours of the owned balls = edges of the regular triangulation (any
+  // dimension 0–3), as (owned ball, neighbour) pairs sorted into rows. In dimension 3 every finite
+  // edge lies on a finite cell, and the six edges of each cell are much faster to collect than
+  // CGAL's edge iterator.
+  const int own = static_cast<int>(owned);
+  std::vector<char> is_vertex(owned, 0);
   for (auto v = rt.finite_vertices_begin(); v != rt.finite_vertices_end(); ++v)
-    is_vertex[v->info()] = 1;
-  if (rt.dimension() == 3) {
+    if (v->info() < own) is_vertex[v->info()] = 1;
+  // Neighbours from the cells (dimension 3) or the edges (lower dimensions): the cells' vertices
+  // are read once into a flat array and each owned ball gets the list of its cells (counted,
+  // then placed); its neighbours are the other vertices of those cells, each kept once (a
+  // stamp per ball). One sort of every edge of the chunk cost more than the triangulation.
+  std::vector<std::array<int, 4>> cells;
+  std::vector<std::pair<int, int>> edges;
+  const bool solid = rt.dimension() == 3;
+  if (solid) {
+    cells.reserve(rt.number_of_finite_cells());
     for (auto c = rt.finite_cells_begin(); c != rt.finite_cells_end(); ++c)
-      for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b)
-          if (a != b) neighbours[c->vertex(a)->info()].push_back(c->vertex(b)->info());
+      cells.push_back(
+          {c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
   } else {
     for (auto e = rt.finite_edges_begin(); e != rt.finite_edges_end(); ++e) {
       const int a = e->first->vertex(e->second)->info();
       const int b = e->first->vertex(e->third)->info();
-      neighbours[a].push_back(b);
-      neighbours[b].push_back(a);
+      edges.emplace_back(a, b);
     }
   }
+  rt.clear();
+  // row[k] .. row[k + 1]: the cells (or edges) of owned ball k.
+  std::vector<std::size_t> row(owned + 1, 0);
+  std::vector<int> incident;
+  auto place = [&](const auto& items, auto&& vertices_of) {
+    for (const auto& item : items)
+      for (const int v : vertices_of(item))
+        if (v < own) ++row[v + 1];
+    for (std::size_t k = 0; k < owned; ++k) row[k + 1] += row[k];
+    incident.resize(row[owned]);
+    std::vector<std::size_t> next(row.begin(), row.end() - 1);
+    for (std::size_t c = 0; c < items.size(); ++c)
+      for (const int v : vertices_of(items[c]))
+        if (v < own) incident[next[v]++] = static_cast<int>(c);
+  };
+  if (solid)
+    place(cells, [](const std::array<int, 4>& c) { return c; });
+  else
+    place(edges, [](const std::pair<int, int>& e) {
+      return std::array<int, 2>{e.first, e.second};
+    });
 
+  Scratch scratch;
+  std::vector<int> seen(local.size(), -1), neighbours;
+  std::vector<HalfSpace> planes;
+  for (int k = 0; k < own; ++k) {
+    // Each neighbour once, in index order (the half-spaces' order, so a ball's piece does not
+    // depend on the chunking).
+    neighbours.clear();
+    seen[k] = k;
+    auto add = [&](int b) {
+      if (seen[b] != k) neighbours.push_back(local[b]);
+      seen[b] = k;
+    };
+    for (std::size_t r = row[k]; r < row[k + 1]; ++r) {
+      if (solid)
+        for (const int b : cells[incident[r]]) add(b);
+      else
+        add(edges[incident[r]].first), add(edges[incident[r]].second);
+    }
+    const int i = local[k];
+    if (!is_vertex[k]) {
+      pieces[i].empty = true;
+      continue;
+    }
+    std::sort(neighbours.begin(), neighbours.end());
+    const Sphere& bi = s[balls[i]];
+    planes.clear();
+    for (const int j : neighbours) {
+      const Sphere& bj = s[balls[j]];
+      const Vec3 dv = bj.center - bi.center;
+      const double d2 = dv.squaredNorm();
+      const double dist = std::sqrt(d2);
+      planes.push_back(
+          {dv / dist, (d2 + (bi.radius - bj.radius) * (bi.radius + bj.radius)) / (2.0 * dist)});
+    }
+    pieces[i] = ball_piece(bi.radius, planes, scratch);
+  }
+}
+
+}  // namespace
+
+UnionProperties union_properties(const Clump& clump) {
+  return union_properties_in_chunks(clump, kChunk);
+}
+
+UnionProperties union_properties_in_chunks(const Clump& clump, int chunk) {
+  if (chunk < 1) throw InvalidInput("union_properties: chunk size must be positive");
+  validate(clump);
+  const std::vector<Sphere>& s = clump.spheres;
+  const std::vector<int> balls = distinct_balls(s);
+  const int n = static_cast<int>(balls.size());
+
+  // The power diagram in chunks: slabs of consecutive balls along the longest axis of the centres'
+  // box, each triangulated with a halo of every ball within 2·r_max of the slab. Exact: a ball
+  // j restricts the piece B_i ∩ PowerCell_i only where pow_j < pow_i ≤ 0, i.e. inside B_j ∩ B_i,
+  // so the balls that overlap B_i (all in its slab's halo) give the same piece as all balls, and
+  // a half-space of a ball that is a power neighbour only in the halo's diagram leaves the piece
+  // (and the clipping of its other faces) unchanged. Chunks run in parallel, each with a
+  // triangulation a fraction of the size, which bounds the memory (issue 34: 10⁶ balls).
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  double r_max = 0.0;
+  for (const int b : balls) {
+    lo = lo.cwiseMin(s[b].center);
+    hi = hi.cwiseMax(s[b].center);
+    r_max = std::max(r_max, s[b].radius);
+  }
+  int axis = 0;
+  (hi - lo).maxCoeff(&axis);
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  auto key = [&](int k) { return s[balls[k]].center[axis]; };
+  tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) {
+    return key(a) < key(b) || (key(a) == key(b) && a < b);  // a total order: one result
+  });
+  const int chunks = std::max(1, (n + chunk - 1) / chunk);
   std::vector<Piece> pieces(n);
-  tbb::parallel_for(tbb::blocked_range<int>(0, n, 16), [&](const tbb::blocked_range<int>& range) {
-    std::vector<HalfSpace> planes;
-    for (int k = range.begin(); k != range.end(); ++k) {
-      if (!is_vertex[k]) {
-        pieces[k].empty = true;
-        continue;
-      }
-      std::vector<int>& nb = neighbours[k];
-      std::sort(nb.begin(), nb.end());  // order-independent per-ball result
-      nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
-      const Sphere& bi = s[balls[k]];
-      planes.clear();
-      for (int j : nb) {
-        const Sphere& bj = s[balls[j]];
-        const Vec3 dv = bj.center - bi.center;
-        const double d2 = dv.squaredNorm();
-        const double dist = std::sqrt(d2);
-        planes.push_back(
-            {dv / dist, (d2 + (bi.radius - bj.radius) * (bi.radius + bj.radius)) / (2.0 * dist)});
-      }
-      pieces[k] = ball_piece(bi.radius, planes);
+  tbb::parallel_for(tbb::blocked_range<int>(0, chunks, 1), [&](const tbb::blocked_range<int>& r) {
+    for (int c = r.begin(); c != r.end(); ++c) {
+      const int first = static_cast<int>(static_cast<long long>(n) * c / chunks);
+      const int last = static_cast<int>(static_cast<long long>(n) * (c + 1) / chunks);
+      // The halo: sorted neighbours on either side within 2·r_max (with a margin for rounding).
+      const double margin = 2.0 * r_max * (1.0 + 1e-9) + 1e-12 * (hi - lo).norm();
+      const double from = key(order[first]) - margin, to = key(order[last - 1]) + margin;
+      std::vector<int> local(order.begin() + first, order.begin() + last);
+      for (int k = first - 1; k >= 0 && key(order[k]) >= from; --k) local.push_back(order[k]);
+      for (int k = last; k < n && key(order[k]) <= to; ++k) local.push_back(order[k]);
+      chunk_pieces(s, balls, local, static_cast<std::size_t>(last - first), pieces);
     }
   });
 
@@ -408,6 +522,16 @@ UnionProperties union_properties(const Clump& clump) {
 }
 
 double union_bytes_estimate(const Clump& clump) {
+  // 64 MiB for the program, 200 bytes per ball for the input, order and pieces, and 1,100 per
+  // ball in each triangulation alive at once (a chunk with its halo, one per thread).
+  const double n = double(clump.spheres.size());
+  const double chunk = 1.35 * double(kChunk);
+  const double at_once =
+      std::min(std::ceil(n / double(kChunk)), double(tbb::this_task_arena::max_concurrency()));
+  return 64.0 * 1048576.0 + 200.0 * n + 1100.0 * std::min(n, chunk * std::max(1.0, at_once));
+}
+
+double whole_triangulation_bytes_estimate(const Clump& clump) {
   return 64.0 * 1048576.0 + 1500.0 * double(clump.spheres.size());
 }
 

@@ -63,9 +63,9 @@ VolumeJobResult run_volume_job(const VolumeJobOptions& options) {
                          " GiB, more than --max-memory " + format_number(budget / 1073741824.0, 3) +
                          " GiB: " + advice);
   };
-  if (want("exact") || want("analytic-slice") || want("inclusion-exclusion"))
-    check(options.method == "all" ? "exact" : options.method.c_str(), union_bytes_estimate(clump),
-          "split the clump");
+  if (want("exact")) check("exact", union_bytes_estimate(clump), "split the clump");
+  for (const char* whole : {"analytic-slice", "inclusion-exclusion"})
+    if (want(whole)) check(whole, whole_triangulation_bytes_estimate(clump), "split the clump");
   if (want("pixel-slice"))
     check("pixel-slice", pixel_slice_bytes_estimate(clump, po),
           "use fewer --slices or a larger --pixel");

@@ -313,6 +313,51 @@ TEST(UnionOfBalls, EnginesAgreeOnDegenerateLattices) {
   expect_engines_agree(Clump{{ball(0, 2, 2, 1.5), ball(1, 1, 1, 0.5), ball(2, 1, 0, 1.5)}}, 1e-12);
 }
 
+// Chunked power diagram (slabs with a halo of 2·r_max): every chunk size gives the pieces of one
+// triangulation, bit for bit on random input; to rounding on lattices, whose cospherical centres
+// make the triangulation depend on insertion order. Also in lower dimensions.
+TEST(UnionOfBalls, ChunksGiveTheSameResultAsOneTriangulation) {
+  auto same = [](const UnionProperties& a, const UnionProperties& b, double tol) {
+    EXPECT_NEAR(a.mass.volume, b.mass.volume, tol * a.mass.volume);
+    EXPECT_LE((a.mass.centroid - b.mass.centroid).norm(), tol * (1.0 + a.mass.centroid.norm()));
+    EXPECT_LE((a.mass.inertia - b.mass.inertia).cwiseAbs().maxCoeff(),
+              tol * a.mass.inertia.cwiseAbs().maxCoeff());
+    EXPECT_NEAR(a.area, b.area, tol * a.area);
+    EXPECT_EQ(a.hidden, b.hidden);
+  };
+  const Clump c = random_clump(1000, 4);
+  const UnionProperties whole = union_properties_in_chunks(c, 1 << 20);
+  for (int chunk : {300, 61, 7}) {
+    SCOPED_TRACE("chunk " + std::to_string(chunk));
+    const UnionProperties parts = union_properties_in_chunks(c, chunk);
+    EXPECT_EQ(parts.mass.volume, whole.mass.volume);
+    EXPECT_EQ(parts.mass.centroid, whole.mass.centroid);
+    EXPECT_EQ(parts.mass.inertia, whole.mass.inertia);
+    EXPECT_EQ(parts.area, whole.area);
+    EXPECT_EQ(parts.hidden, whole.hidden);
+  }
+  // A lattice: 6³ balls of two radii at unit spacing (ties in the slab coordinate, cospherical
+  // centres, hidden balls inside bigger ones).
+  Clump lattice;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      for (int k = 0; k < 6; ++k)
+        lattice.spheres.push_back(ball(i, j, k, (i + j + k) % 3 == 0 ? 0.8 : 0.6));
+  lattice.spheres.push_back(ball(2.05, 2, 2, 0.1));  // hidden
+  const UnionProperties lattice_whole = union_properties_in_chunks(lattice, 1 << 20);
+  EXPECT_GE(lattice_whole.hidden, 1);
+  for (int chunk : {50, 7}) same(union_properties_in_chunks(lattice, chunk), lattice_whole, 1e-12);
+  // Coplanar centres: each chunk's triangulation is 2-D.
+  Clump plane;
+  Rng rng(3);
+  for (int i = 0; i < 300; ++i) {
+    const Vec3 p = rng.uniform(Vec3(0, 0, 0.3), Vec3(12, 12, 0.8));
+    plane.spheres.push_back(ball(p.x(), p.y(), 0.0, p.z()));
+  }
+  same(union_properties_in_chunks(plane, 37), union_properties_in_chunks(plane, 1 << 20), 1e-12);
+  EXPECT_THROW(union_properties_in_chunks(plane, 0), InvalidInput);
+}
+
 // ---- Invariances ----
 
 TEST(UnionOfBalls, RigidMotionInvariance) {
