@@ -155,6 +155,17 @@ HWY_INLINE void touch_bodies(const PairKernelArgs& a, int i, int j) {
   __atomic_store_n(&a.body_touched[a.sphere_body[j]], std::uint8_t{1}, __ATOMIC_RELAXED);
 }
 
+// A touching pair's results into its slot, the same for both paths.
+HWY_INLINE void store_contact(const PairKernelArgs& a, std::size_t k, const Vec3& n,
+                              const Vec3& point, const Vec3& shear, double normal_force,
+                              const Vec3& f, double delta) {
+  a.active[k] = 1;
+  a.force[k] = SlotForce{shear, normal_force};
+  a.out[k] = SlotOut{f, point};
+  if (a.geometry) a.geometry[k] = SlotGeometry{n, point, delta};
+  touch_bodies(a, a.candidates[k].first, a.candidates[k].second);
+}
+
 // The reference: one candidate at a time, with the early exits of a scalar loop.
 HWY_INLINE void scalar_candidate(const PairKernelArgs& a, std::size_t k) {
   using L = ScalarLanes;
@@ -180,12 +191,8 @@ HWY_INLINE void scalar_candidate(const PairKernelArgs& a, std::size_t k) {
   s.ks_dt = (a.stiffness ? a.ks * f : a.ks) * a.dt;
   s.friction = a.friction;
   const PairOutput<L> o = pair_law<L>(g, s);
-  a.active[k] = 1;
-  const Vec3 point(o.point[0], o.point[1], o.point[2]);
-  a.force[k] = SlotForce{Vec3(o.shear[0], o.shear[1], o.shear[2]), o.normal_force};
-  a.out[k] = SlotOut{Vec3(o.f[0], o.f[1], o.f[2]), point};
-  if (a.geometry) a.geometry[k] = SlotGeometry{Vec3(o.n[0], o.n[1], o.n[2]), point, g.delta};
-  touch_bodies(a, i, j);
+  auto vec = [](const double v[3]) { return Vec3(v[0], v[1], v[2]); };
+  store_contact(a, k, vec(o.n), vec(o.point), vec(o.shear), o.normal_force, vec(o.f), g.delta);
 }
 
 void PairRangeScalar(const PairKernelArgs& a, std::size_t begin, std::size_t end) {
@@ -297,12 +304,7 @@ void PairRange(const PairKernelArgs& a, std::size_t begin, std::size_t end) {
       auto vec = [&](int first) {
         return Vec3(lane_out[first][l], lane_out[first + 1][l], lane_out[first + 2][l]);
       };
-      a.active[kk] = 1;
-      const Vec3 point = vec(3);
-      a.force[kk] = SlotForce{vec(6), lane_out[12][l]};
-      a.out[kk] = SlotOut{vec(9), point};
-      if (a.geometry) a.geometry[kk] = SlotGeometry{vec(0), point, lane_out[13][l]};
-      touch_bodies(a, a.candidates[kk].first, a.candidates[kk].second);
+      store_contact(a, kk, vec(0), vec(3), vec(6), lane_out[12][l], vec(9), lane_out[13][l]);
     }
   }
   for (; k < end; ++k) scalar_candidate(a, k);

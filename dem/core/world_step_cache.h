@@ -66,9 +66,9 @@ struct StepCache {
   // During step(count) the bodies' state lives in these packed arrays (loaded from bodies_ when
   // the call begins, stored back when it ends), so the per-step passes stream small records
   // instead of whole Body objects with their sphere vectors.
-  std::vector<Kinematics> kinematics_;  // per body
-  std::vector<Wrench> body_wrench_;     // per body: gravity + contacts of the last step
-  std::vector<Rotation> rotation_;      // per body
+  std::vector<Kinematics> kinematics_;       // per body
+  std::vector<Wrench> body_wrench_;          // per body: gravity + contacts of the last step
+  std::vector<Rotation> rotation_;           // per body
   std::vector<std::int64_t> sphere_body64_;  // per sphere: its body, for the pair kernel's gathers
   // Per candidate: the force on the body of j and its point of application, written by the
   // contact kernel in candidate order (zero while not touching); each body gathers its items

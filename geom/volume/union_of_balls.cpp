@@ -457,7 +457,7 @@ UnionProperties union_properties_in_chunks(const Clump& clump, int chunk) {
   // so the balls that overlap B_i (all in its slab's halo) give the same piece as all balls, and
   // a half-space of a ball that is a power neighbour only in the halo's diagram leaves the piece
   // (and the clipping of its other faces) unchanged. Chunks run in parallel, each with a
-  // triangulation a fraction of the size, which bounds the memory (issue 34: 10⁶ balls).
+  // triangulation a fraction of the size, which bounds the memory.
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   double r_max = 0.0;
   for (const int b : balls) {
