@@ -170,10 +170,16 @@ MeshCheck check_mesh(const Mesh& mesh) {
       for (int i = 0; i < m; ++i)
         for (int w : mesh.triangles[star[first[v] + i]])
           if (w != v) ends.emplace_back(w, i);
-      std::sort(ends.begin(), ends.end());
-      for (std::size_t e = 1; e < ends.size(); ++e)
-        if (ends[e].first == ends[e - 1].first)
-          parent[find(ends[e].second)] = find(ends[e - 1].second);
+      if (m <= 16) {  // a scan's valence is about 6: pairs are cheaper than a sort
+        for (std::size_t e = 1; e < ends.size(); ++e)
+          for (std::size_t f = 0; f < e; ++f)
+            if (ends[e].first == ends[f].first) parent[find(ends[e].second)] = find(ends[f].second);
+      } else {
+        std::sort(ends.begin(), ends.end());
+        for (std::size_t e = 1; e < ends.size(); ++e)
+          if (ends[e].first == ends[e - 1].first)
+            parent[find(ends[e].second)] = find(ends[e - 1].second);
+      }
       const int root = find(0);
       for (int i = 1; i < m; ++i)
         if (find(i) != root) vertex_manifold = false;

@@ -50,12 +50,35 @@ double winding_number(const Mesh& mesh, const std::vector<int>& triangles, const
   return sum / (4.0 * M_PI);
 }
 
-std::vector<Shell> mesh_shells(const Mesh& mesh) {
-  const int nv = static_cast<int>(mesh.vertices.size());
-  std::vector<int> parent(nv);
+namespace {
+
+// Vertices joined by the triangles' edges (union-find, roots by find()).
+std::vector<int> joined_vertices(const Mesh& mesh) {
+  std::vector<int> parent(mesh.vertices.size());
   std::iota(parent.begin(), parent.end(), 0);
   for (const auto& t : mesh.triangles)
     for (int k = 1; k < 3; ++k) parent[find(parent, t[k])] = find(parent, t[0]);
+  return parent;
+}
+
+// The number of shells, without listing their triangles: a scan is one shell.
+std::size_t count_shells(const Mesh& mesh) {
+  std::vector<int> parent = joined_vertices(mesh);
+  std::vector<char> seen(parent.size(), 0);
+  std::size_t count = 0;
+  for (const auto& t : mesh.triangles) {
+    char& s = seen[std::size_t(find(parent, t[0]))];
+    count += s == 0;
+    s = 1;
+  }
+  return count;
+}
+
+}  // namespace
+
+std::vector<Shell> mesh_shells(const Mesh& mesh) {
+  const int nv = static_cast<int>(mesh.vertices.size());
+  std::vector<int> parent = joined_vertices(mesh);
   std::vector<int> shell_of_root(nv, -1);
   std::vector<Shell> shells;
   for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
@@ -95,9 +118,10 @@ std::vector<Shell> mesh_shells(const Mesh& mesh) {
 }
 
 bool orient_shells(Mesh& mesh, std::size_t* count) {
+  const std::size_t n = count_shells(mesh);
+  if (count) *count = n;
+  if (n < 2) return false;
   std::vector<Shell> shells = mesh_shells(mesh);
-  if (count) *count = shells.size();
-  if (shells.size() < 2) return false;
   const auto name = [&](std::size_t i) {
     return "shell " + std::to_string(i + 1) + " of " + std::to_string(shells.size());
   };

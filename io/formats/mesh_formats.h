@@ -52,9 +52,12 @@ class Lines {
 void triangulate_polygon(const std::vector<Vec3>& vertices, const std::vector<int>& face,
                          std::vector<std::array<int, 3>>& triangles);
 
-/// The readers: a Mesh as stored, unwelded (STL: three corners per triangle). Throw
-/// InvalidInput naming the file (and line) for what cannot be parsed.
-Mesh read_stl(const std::string& path, const std::string& data);
+/// The readers: a Mesh as stored (OBJ, PLY: unwelded). Throw InvalidInput naming the file (and
+/// line) for what cannot be parsed. STL comes back welded within `relative_tolerance` of its bounding-box diagonal (weld_vertices),
+/// `dropped` the triangles that became degenerate; unwelded beyond exact copies when a corner is
+/// not finite.
+Mesh read_stl(const std::string& path, const std::string& data, double relative_tolerance,
+              std::size_t& dropped);
 Mesh read_obj(const std::string& path, const std::string& data);
 Mesh read_ply(const std::string& path, const std::string& data);
 

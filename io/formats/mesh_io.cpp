@@ -61,20 +61,25 @@ Mesh read_mesh_raw(const std::string& path, const MeshReadOptions& options,
   if (!(options.weld_tolerance >= 0.0 && options.weld_tolerance < 1.0))
     bad(path, "weld tolerance must lie in [0, 1), got " + format_number(options.weld_tolerance));
   const std::string data = read_whole_file(path);
-  Mesh mesh = format == MeshFormat::Obj   ? mesh_format::read_obj(path, data)
-              : format == MeshFormat::Ply ? mesh_format::read_ply(path, data)
-                                          : mesh_format::read_stl(path, data);
+  if (format == MeshFormat::Stl) {
+    // STL's float32 corners at 1e-9 of the diagonal as always, welded as they are read.
+    std::size_t dropped = 0;
+    Mesh mesh = mesh_format::read_stl(path, data, std::max(options.weld_tolerance, 1e-9), dropped);
+    if (report) report->removed_triangles = dropped;
+    return mesh;
+  }
+  Mesh mesh = format == MeshFormat::Obj ? mesh_format::read_obj(path, data)
+                                        : mesh_format::read_ply(path, data);
   // Welding a non-finite coordinate would collapse the whole grid; leave such a mesh as it is so
   // that read_mesh reports the coordinate instead of a misleading "no triangles".
   const bool finite = std::all_of(mesh.vertices.begin(), mesh.vertices.end(),
                                   [](const Vec3& p) { return p.allFinite(); });
   if (!finite) return mesh;
   const std::size_t vertices = mesh.vertices.size(), triangles = mesh.triangles.size();
-  // STL's float32 corners at 1e-9 of the diagonal as always; OBJ and PLY exactly, unless asked.
-  weld_vertices(mesh, format == MeshFormat::Stl ? std::max(options.weld_tolerance, 1e-9)
-                                                : options.weld_tolerance);
+  // OBJ and PLY exactly, unless asked.
+  weld_vertices(mesh, options.weld_tolerance);
   if (report) {
-    if (format != MeshFormat::Stl) report->merged_vertices = vertices - mesh.vertices.size();
+    report->merged_vertices = vertices - mesh.vertices.size();
     report->removed_triangles = triangles - mesh.triangles.size();
   }
   return mesh;
@@ -128,7 +133,7 @@ Mesh read_mesh(const std::string& path, MeshReadReport* report, const MeshReadOp
   if (!((bb[1] - bb[0]).norm() >= kMinLength))
     bad(path, "mesh is smaller than 1e-30 across: bounding-box diagonal " +
                   format_number((bb[1] - bb[0]).norm()));
-  const double volume = signed_volume(mesh);
+  const double volume = reoriented ? signed_volume(mesh) : check.volume;  // the same sum
   if (!(volume > 1e-12 * std::pow((bb[1] - bb[0]).norm(), 3)))
     bad(path, "mesh encloses no volume: signed volume " + format_number(volume, 6) +
                   " after orientation");

@@ -125,6 +125,36 @@ TEST(VertexWelder, ExactWeldAsReadThenTheToleranceIsTheWholeSoupsWeld) {
   }
 }
 
+// The batch add (which fetches the table's lines ahead) numbers points as one add at a time
+// does, exact and by cells, across blocks and while the table grows; by cells it is
+// weld_vertices of the whole soup.
+TEST(VertexWelder, BatchAddIsOneAtATimeAndCellsAreTheWholeSoupsWeld) {
+  Rng rng(8);
+  for (int trial = 0; trial < 6; ++trial) {
+    const Mesh soup = random_soup(rng, 400, 1e-7);
+    const auto bb = bounding_box(soup);
+    for (double tol : {0.0, 1e-9, 1e-5}) {
+      const double cell = tol * (bb[1] - bb[0]).norm();
+      VertexWelder one(4, bb[0], cell), batch(4, bb[0], cell);
+      std::vector<int> expected, got(soup.vertices.size());
+      for (const Vec3& p : soup.vertices) expected.push_back(one.add(p));
+      batch.add(soup.vertices.data(), soup.vertices.size(), got.data());
+      ASSERT_EQ(got, expected) << trial << " " << tol;
+      Mesh read;
+      read.vertices = batch.take_vertices();
+      ASSERT_EQ(read.vertices, one.take_vertices());
+      for (const auto& t : soup.triangles) {
+        const std::array<int, 3> w{got[t[0]], got[t[1]], got[t[2]]};
+        if (w[0] != w[1] && w[1] != w[2] && w[0] != w[2]) read.triangles.push_back(w);
+      }
+      Mesh welded = soup;
+      weld_vertices(welded, tol);
+      ASSERT_EQ(read.vertices, welded.vertices) << trial << " " << tol;
+      ASSERT_EQ(read.triangles, welded.triangles) << trial << " " << tol;
+    }
+  }
+}
+
 TEST(VertexWelder, GrowsPastItsHintAndKeepsTheFirstIndexOfEachVertex) {
   VertexWelder weld(4);
   for (int i = 0; i < 10000; ++i) ASSERT_EQ(weld.add(Vec3(i, 0.5 * i, -i)), i);

@@ -2,6 +2,7 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "geom/mesh/weld.h"
 #include "geom/shapes/primitives.h"
 #include "io/base/atomic_file.h"
 #include "tests/io/formats/mesh_test_support.h"
@@ -102,6 +103,47 @@ TEST_F(MeshIoTest, StlRoundTripsKeepFloatPrecision) {
       EXPECT_NEAR(signed_volume(r), signed_volume(m), 1e-6 * signed_volume(m));
     }
   }
+}
+
+// STL is welded as it is read (binary: one pass into cells of the file's box): the same mesh,
+// and the same count of removed triangles, as welding the float soup at once.
+TEST_F(MeshIoTest, StlIsWeldedAsReadLikeTheWholeSoup) {
+  Mesh soup;
+  std::uint64_t state = 7;
+  auto next = [&] {  // a few lattice points, some moved by about 1e-6 of the box
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return double(state >> 11) / 9007199254740992.0;
+  };
+  for (int f = 0; f < 3000; ++f) {
+    for (int k = 0; k < 3; ++k) {
+      Vec3 p(std::floor(4 * next()), std::floor(4 * next()), std::floor(4 * next()));
+      if (next() < 0.3) p += 3e-6 * Vec3(next(), next(), next());
+      soup.vertices.push_back(p.cast<float>().cast<double>());
+    }
+    soup.triangles.push_back({3 * f, 3 * f + 1, 3 * f + 2});
+  }
+  for (MeshFormat format : {MeshFormat::Stl, MeshFormat::StlAscii})
+    for (double tol : {0.0, 1e-5}) {
+      write_mesh(path("soup.stl"), soup, format);
+      MeshReadOptions options;
+      options.weld_tolerance = tol;
+      MeshReadReport report;
+      const Mesh read = read_mesh_raw(path("soup.stl"), options, &report);
+      Mesh expected = soup;
+      if (format == MeshFormat::StlAscii)  // nine significant digits, read as double
+        for (Vec3& p : expected.vertices)
+          for (int k = 0; k < 3; ++k) p[k] = std::stod(format_number(p[k], 9));
+      weld_vertices(expected, std::max(tol, 1e-9));
+      ASSERT_EQ(read.vertices, expected.vertices) << tol;
+      ASSERT_EQ(read.triangles, expected.triangles) << tol;
+      EXPECT_EQ(report.removed_triangles, soup.triangles.size() - expected.triangles.size());
+      EXPECT_GT(report.removed_triangles, 0u);  // the lattice makes repeated corners
+      if (tol > 0) {
+        EXPECT_EQ(read.vertices.size(), 64u);  // moved corners rejoin the lattice's 4³ points
+      } else {
+        EXPECT_GT(read.vertices.size(), 64u);
+      }
+    }
 }
 
 TEST_F(MeshIoTest, AsciiStlStartingWithSolidReads) {
