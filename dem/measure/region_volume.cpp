@@ -50,6 +50,39 @@ double integrate(const F& f, double a, double b, double tol, int pieces = 8) {
   return sum;
 }
 
+// Area of the disk of radius a whose centre lies d from the centre of the disk of radius R, inside
+// the latter: the lens of the two circles in closed form.
+double lens_area(double a, double R, double d) {
+  if (d >= a + R) return 0.0;
+  if (d <= R - a) return M_PI * a * a;
+  if (d <= a - R) return M_PI * R * R;
+  const double ca = std::clamp((d * d + a * a - R * R) / (2.0 * d * a), -1.0, 1.0);
+  const double cR = std::clamp((d * d + R * R - a * a) / (2.0 * d * R), -1.0, 1.0);
+  const double k = (-d + a + R) * (d + a - R) * (d - a + R) * (d + a + R);
+  return a * a * std::acos(ca) + R * R * std::acos(cR) - 0.5 * std::sqrt(std::max(0.0, k));
+}
+
+// One sphere (a soil grain: most bodies of a specimen) in the region: between the planes the cap
+// integral in closed form, π∫(r² − t²)dt; cut by the side wall, the same quadrature as a clump's
+// over the lens of its slice disk and the region's disk instead of a union of disks.
+double sphere_region_volume(const Vec3& c, double r, double volume, const CylinderRegion& region,
+                            bool radially_inside) {
+  const double a = std::max(c.z() - r, region.z_lo), b = std::min(c.z() + r, region.z_hi);
+  if (radially_inside) {
+    const auto primitive = [&](double z) {
+      const double t = z - c.z();
+      return r * r * t - t * t * t / 3.0;
+    };
+    return M_PI * (primitive(b) - primitive(a));
+  }
+  const double d = std::hypot(c.x(), c.y());
+  const auto slice_area = [&](double z) {
+    const double t = z - c.z(), r2 = r * r - t * t;
+    return r2 > 0.0 ? lens_area(std::sqrt(r2), region.radius, d) : 0.0;
+  };
+  return integrate(slice_area, a, b, 1e-9 * volume);
+}
+
 }  // namespace
 
 std::vector<double> body_volumes(const World& world) {
@@ -90,6 +123,9 @@ double body_region_volume(const Body& body, double body_volume, const CylinderRe
   const bool radially_inside = rho_max <= region.radius;
   if (radially_inside && z0 >= region.z_lo && z1 <= region.z_hi) return body_volume;
 
+  if (world_spheres.size() == 1)
+    return sphere_region_volume(world_spheres[0].center, world_spheres[0].radius, body_volume,
+                                region, radially_inside);
   const double region_disk = M_PI * region.radius * region.radius;
   std::vector<Disk> disks;
   auto slice_area = [&](double z) {

@@ -36,6 +36,25 @@ TEST(RegionVolume, SphereInsideCutByPlaneAndOutside) {
               v - kPi * h * h * (3 * r - h) / 3, 1e-9 * v);
 }
 
+// A single sphere takes the closed forms (the cap between the planes, the lens of its slice and
+// the region's disk at the side wall); the same sphere given twice takes the clump's union of
+// disks: both agree to the quadrature's tolerance, wherever the region cuts the sphere.
+TEST(RegionVolume, OneSphereAgreesWithTheUnionOfDisksPath) {
+  const CylinderRegion region{0.5, 0.0, 1.0};
+  const double r = 0.1, v = 4.0 / 3.0 * kPi * r * r * r;
+  for (double rho : {0.0, 0.3, 0.42, 0.45, 0.5, 0.55, 0.59})
+    for (double z : {0.5, 0.95, 1.0, 1.07, 0.03, -0.05}) {
+      const Body one = ball(Vec3(rho * 0.6, rho * 0.8, z), r);
+      Body two = one;
+      two.spheres.push_back(two.spheres.front());
+      const double fast = body_region_volume(one, v, region);
+      const double general = body_region_volume(two, v, region);
+      EXPECT_NEAR(fast, general, 2e-9 * v) << rho << " " << z;
+      EXPECT_GE(fast, 0.0);
+      EXPECT_LE(fast, v * (1 + 1e-12));
+    }
+}
+
 TEST(RegionVolume, ComplementaryRegionsAddUpForACutClump) {
   // A three-sphere clump straddling the region's side wall and a horizontal plane: the parts in
   // complementary regions add up to the exact union volume.
