@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -62,27 +63,6 @@ double lens_area(double a, double R, double d) {
   return a * a * std::acos(ca) + R * R * std::acos(cR) - 0.5 * std::sqrt(std::max(0.0, k));
 }
 
-// One sphere (a soil grain: most bodies of a specimen) in the region: between the planes the cap
-// integral in closed form, π∫(r² − t²)dt; cut by the side wall, the same quadrature as a clump's
-// over the lens of its slice disk and the region's disk instead of a union of disks.
-double sphere_region_volume(const Vec3& c, double r, double volume, const CylinderRegion& region,
-                            bool radially_inside) {
-  const double a = std::max(c.z() - r, region.z_lo), b = std::min(c.z() + r, region.z_hi);
-  if (radially_inside) {
-    const auto primitive = [&](double z) {
-      const double t = z - c.z();
-      return r * r * t - t * t * t / 3.0;
-    };
-    return M_PI * (primitive(b) - primitive(a));
-  }
-  const double d = std::hypot(c.x(), c.y());
-  const auto slice_area = [&](double z) {
-    const double t = z - c.z(), r2 = r * r - t * t;
-    return r2 > 0.0 ? lens_area(std::sqrt(r2), region.radius, d) : 0.0;
-  };
-  return integrate(slice_area, a, b, 1e-9 * volume);
-}
-
 }  // namespace
 
 std::vector<double> body_volumes(const World& world) {
@@ -107,7 +87,10 @@ double column_height(const World& world) {
   return v > 0 ? 2.0 * vz / v : 0.0;
 }
 
-double body_region_volume(const Body& body, double body_volume, const CylinderRegion& region) {
+void body_region_volumes(const Body& body, double body_volume, double radius,
+                         const std::vector<std::array<double, 2>>& z_ranges,
+                         std::vector<double>& out) {
+  out.assign(z_ranges.size(), 0.0);
   std::vector<Sphere> world_spheres;
   double z0 = INFINITY, z1 = -INFINITY, rho_min = INFINITY, rho_max = 0.0;
   for (const Sphere& s : body.spheres) {
@@ -119,14 +102,27 @@ double body_region_volume(const Body& body, double body_volume, const CylinderRe
     rho_min = std::min(rho_min, rho - s.radius);
     rho_max = std::max(rho_max, rho + s.radius);
   }
-  if (z1 <= region.z_lo || z0 >= region.z_hi || rho_min >= region.radius) return 0.0;
-  const bool radially_inside = rho_max <= region.radius;
-  if (radially_inside && z0 >= region.z_lo && z1 <= region.z_hi) return body_volume;
+  if (rho_min >= radius) return;
+  const bool radially_inside = rho_max <= radius;
+  // The body's height cut at the planes of the ranges that cut it: each piece is integrated
+  // once, whatever number of ranges holds it (a clump cut by the side wall lies in a layer and
+  // a band of a specimen's profile).
+  std::vector<double> cuts;
+  for (std::size_t k = 0; k < z_ranges.size(); ++k) {
+    const double lo = z_ranges[k][0], hi = z_ranges[k][1];
+    if (z1 <= lo || z0 >= hi) continue;
+    if (radially_inside && z0 >= lo && z1 <= hi) {
+      out[k] = body_volume;
+      continue;
+    }
+    cuts.push_back(std::max(z0, lo));
+    cuts.push_back(std::min(z1, hi));
+  }
+  if (cuts.empty()) return;
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
 
-  if (world_spheres.size() == 1)
-    return sphere_region_volume(world_spheres[0].center, world_spheres[0].radius, body_volume,
-                                region, radially_inside);
-  const double region_disk = M_PI * region.radius * region.radius;
+  const double region_disk = M_PI * radius * radius;
   std::vector<Disk> disks;
   auto slice_area = [&](double z) {
     disks.clear();
@@ -138,31 +134,90 @@ double body_region_volume(const Body& body, double body_volume, const CylinderRe
     if (disks.empty()) return 0.0;
     const double a = union_of_disks(disks).area;
     if (radially_inside) return a;
-    disks.push_back({0.0, 0.0, region.radius});
+    disks.push_back({0.0, 0.0, radius});
     return std::max(0.0, a + region_disk - union_of_disks(disks).area);
   };
-  const double a = std::max(z0, region.z_lo), b = std::min(z1, region.z_hi);
-  return integrate(slice_area, a, b, 1e-9 * body_volume);
+  // One sphere (a soil grain: most bodies of a specimen): between the planes the cap integral in
+  // closed form, π∫(r² − t²)dt; cut by the side wall, the same quadrature over the lens of its
+  // slice disk and the region's disk instead of a union of disks.
+  const bool one = world_spheres.size() == 1;
+  const Vec3 c = world_spheres.front().center;
+  const double r = world_spheres.front().radius, d = std::hypot(c.x(), c.y());
+  auto piece = [&](double a, double b) {
+    if (one && radially_inside) {
+      const auto primitive = [&](double z) {
+        const double t = z - c.z();
+        return r * r * t - t * t * t / 3.0;
+      };
+      return M_PI * (primitive(b) - primitive(a));
+    }
+    if (one)
+      return integrate(
+          [&](double z) {
+            const double t = z - c.z(), r2 = r * r - t * t;
+            return r2 > 0.0 ? lens_area(std::sqrt(r2), radius, d) : 0.0;
+          },
+          a, b, 1e-9 * body_volume);
+    return integrate(slice_area, a, b, 1e-9 * body_volume);
+  };
+  std::vector<double> pieces(cuts.size() - 1, -1.0);  // −1: not needed yet
+  for (std::size_t k = 0; k < z_ranges.size(); ++k) {
+    const double lo = std::max(z0, z_ranges[k][0]), hi = std::min(z1, z_ranges[k][1]);
+    if (!(hi > lo) || out[k] > 0.0) continue;
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
+      if (cuts[i] >= lo && cuts[i + 1] <= hi) {
+        if (pieces[i] < 0.0) pieces[i] = piece(cuts[i], cuts[i + 1]);
+        out[k] += pieces[i];
+      }
+  }
+}
+
+double body_region_volume(const Body& body, double body_volume, const CylinderRegion& region) {
+  std::vector<double> out;
+  body_region_volumes(body, body_volume, region.radius, {{region.z_lo, region.z_hi}}, out);
+  return out[0];
+}
+
+std::vector<double> region_porosities(const World& world, const std::vector<double>& volumes,
+                                      const std::vector<CylinderRegion>& regions) {
+  std::vector<std::array<double, 2>> ranges;
+  for (const CylinderRegion& region : regions) {
+    if (!(region.radius > 0) || !(region.z_hi > region.z_lo))
+      throw InvalidInput("region porosity: empty region (radius " + std::to_string(region.radius) +
+                         ", z " + std::to_string(region.z_lo) + " to " +
+                         std::to_string(region.z_hi) + ")");
+    if (region.radius != regions.front().radius)
+      throw InvalidInput("region porosities: the regions differ in radius");
+    ranges.push_back({region.z_lo, region.z_hi});
+  }
+  const auto& bodies = world.bodies();
+  if (volumes.size() != bodies.size())
+    throw InvalidInput("region porosity: body volumes do not match the bodies");
+  if (regions.empty()) return {};
+  const std::size_t m = regions.size();
+  std::vector<double> part(bodies.size() * m, 0.0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bodies.size(), 16),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      std::vector<double> out;
+                      for (std::size_t k = r.begin(); k != r.end(); ++k) {
+                        body_region_volumes(bodies[k], volumes[k], regions.front().radius, ranges,
+                                            out);
+                        std::copy(out.begin(), out.end(), part.begin() + k * m);
+                      }
+                    });
+  std::vector<double> porosity(m);
+  for (std::size_t j = 0; j < m; ++j) {
+    double solid = 0.0;
+    for (std::size_t k = 0; k < bodies.size(); ++k)
+      solid += part[k * m + j];  // fixed order: same sum for any thread count
+    porosity[j] = 1.0 - solid / regions[j].volume();
+  }
+  return porosity;
 }
 
 double region_porosity(const World& world, const std::vector<double>& volumes,
                        const CylinderRegion& region) {
-  if (!(region.radius > 0) || !(region.z_hi > region.z_lo))
-    throw InvalidInput("region porosity: empty region (radius " + std::to_string(region.radius) +
-                       ", z " + std::to_string(region.z_lo) + " to " + std::to_string(region.z_hi) +
-                       ")");
-  const auto& bodies = world.bodies();
-  if (volumes.size() != bodies.size())
-    throw InvalidInput("region porosity: body volumes do not match the bodies");
-  std::vector<double> part(bodies.size(), 0.0);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bodies.size(), 16),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t k = r.begin(); k != r.end(); ++k)
-                        part[k] = body_region_volume(bodies[k], volumes[k], region);
-                    });
-  double solid = 0.0;
-  for (double v : part) solid += v;  // fixed order: same sum for any thread count
-  return 1.0 - solid / region.volume();
+  return region_porosities(world, volumes, {region})[0];
 }
 
 double coordination_number(const World& world, const CylinderRegion& region) {

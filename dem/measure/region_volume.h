@@ -5,6 +5,7 @@
 
 #include "dem/core/world.h"
 
+#include <array>
 #include <vector>
 
 namespace clumpkit::dem {
@@ -31,6 +32,20 @@ double column_height(const World& world);
 /// union_of_disks by inclusion–exclusion A(U ∩ D) = A(U) + A(D) − A(U ∪ D), by adaptive Simpson
 /// quadrature to 1e-9 of the body volume (the slice area is continuous with isolated kinks).
 double body_region_volume(const Body& body, double body_volume, const CylinderRegion& region);
+
+/// body_region_volume for the regions of radius `radius` between each z range's planes (in any
+/// order, overlapping or not), into `out` (one per range): the body's height cut at those
+/// planes, each piece integrated once however many ranges hold it. A single sphere takes closed
+/// forms: the cap integral between the planes, the lens of its slice and the region's disk.
+void body_region_volumes(const Body& body, double body_volume, double radius,
+                         const std::vector<std::array<double, 2>>& z_ranges,
+                         std::vector<double>& out);
+
+/// region_porosity of several regions of one radius (the layers and bands of a specimen's
+/// profile), each body integrated once. Throws InvalidInput for an empty region or radii that
+/// differ.
+std::vector<double> region_porosities(const World& world, const std::vector<double>& volumes,
+                                      const std::vector<CylinderRegion>& regions);
 
 /// Porosity of the region: 1 − Σ body_region_volume / region volume. Overlaps inside a clump
 /// count once; the contact overlaps between bodies (≈ mg/kn, nanometres here) count twice and

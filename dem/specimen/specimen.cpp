@@ -360,14 +360,17 @@ void measure(const World& world, double radius, double margin, SpecimenResult& r
 
 /// The per-layer and per-band porosities and the coordination number of the finished specimen.
 void measure_profiles(const World& world, int layers, SpecimenResult& result) {
-  const std::vector<double> volumes = body_volumes(world);
+  // Layers and bands share the region's radius: one pass, each body integrated once.
   const double layer_span = result.height / layers;
+  std::vector<CylinderRegion> regions;
+  std::vector<int> layer_region(layers, -1);  // -1: the layer misses the central region
   for (int k = 0; k < layers; ++k) {
     CylinderRegion r = result.region;
     r.z_lo = std::max(result.region.z_lo, k * layer_span);
     r.z_hi = std::min(result.region.z_hi, (k + 1) * layer_span);
-    result.layer_porosity.push_back(r.z_hi > r.z_lo ? region_porosity(world, volumes, r)
-                                                    : std::nan(""));
+    if (!(r.z_hi > r.z_lo)) continue;
+    layer_region[k] = static_cast<int>(regions.size());
+    regions.push_back(r);
   }
   const int bands = 2 * layers;
   const double band = (result.region.z_hi - result.region.z_lo) / bands;
@@ -375,8 +378,13 @@ void measure_profiles(const World& world, int layers, SpecimenResult& result) {
     CylinderRegion r = result.region;
     r.z_lo = result.region.z_lo + k * band;
     r.z_hi = k + 1 == bands ? result.region.z_hi : r.z_lo + band;
-    result.band_porosity.push_back(region_porosity(world, volumes, r));
+    regions.push_back(r);
   }
+  const std::vector<double> porosity = region_porosities(world, body_volumes(world), regions);
+  for (int k = 0; k < layers; ++k)
+    result.layer_porosity.push_back(layer_region[k] >= 0 ? porosity[layer_region[k]]
+                                                         : std::nan(""));
+  result.band_porosity.assign(porosity.end() - bands, porosity.end());
   result.coordination = coordination_number(world, result.region);
 }
 

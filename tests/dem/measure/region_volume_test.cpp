@@ -8,6 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <vector>
+
 namespace clumpkit::dem {
 namespace {
 
@@ -88,6 +91,34 @@ TEST(RegionVolume, ComplementaryRegionsAddUpForACutClump) {
   s.position = Vec3(0.1, 0.1, 0.5);
   const double vs = union_properties(Clump{s.spheres}).mass.volume;
   EXPECT_NEAR(body_region_volume(s, vs, {0.5, 0.0, 0.5}), 0.5 * vs, 1e-9 * vs);
+}
+
+// Several ranges at once, each piece of the body's height integrated once: the same parts as one
+// range at a time, complementary ranges adding up to the whole, for a clump and a sphere cut by
+// the side wall.
+TEST(RegionVolume, SeveralRangesAtOnceAgreeWithOneAtATime) {
+  Body c;
+  c.spheres = {
+      {Vec3(-0.05, 0, 0), 0.08}, {Vec3(0.05, 0.02, 0), 0.07}, {Vec3(0, -0.04, 0.05), 0.06}};
+  c.mass = 1;
+  c.moments = Vec3::Ones();
+  c.position = Vec3(0.48, 0.0, 0.5);
+  c.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
+  const double vc = union_properties(Clump{c.spheres}).mass.volume;
+  const std::vector<std::array<double, 2>> ranges = {{0.0, 0.5}, {0.5, 1.0}, {0.45, 0.52},
+                                                     {0.0, 1.0}, {0.9, 1.0}, {0.47, 0.5}};
+  for (const Body& b : {c, ball(Vec3(0.3, 0.4, 0.49), 0.06)}) {
+    const double v = b.spheres.size() == 1 ? b.volume : vc;
+    std::vector<double> out;
+    body_region_volumes(b, v, 0.5, ranges, out);
+    ASSERT_EQ(out.size(), ranges.size());
+    for (std::size_t k = 0; k < ranges.size(); ++k)
+      EXPECT_NEAR(out[k], body_region_volume(b, v, {0.5, ranges[k][0], ranges[k][1]}), 4e-9 * v)
+          << k;
+    EXPECT_NEAR(out[0] + out[1], out[3], 2e-9 * v);
+    EXPECT_GT(out[2], 0.1 * v);
+    EXPECT_EQ(out[4], 0.0);
+  }
 }
 
 TEST(RegionVolume, PorosityAndCoordinationOfASimpleWorld) {
