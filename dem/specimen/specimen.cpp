@@ -193,48 +193,6 @@ double interpolate_friction(const std::vector<CalibrationPoint>& c, double targe
              : c.back().friction;
 }
 
-double interpolate_porosity(const std::vector<CalibrationPoint>& c, double friction) {
-  if (c.empty()) throw InvalidInput("interpolate_porosity: no calibration point");
-  if (friction <= c.front().friction) return c.front().porosity;
-  for (std::size_t k = 0; k + 1 < c.size(); ++k)
-    if (friction <= c[k + 1].friction) {
-      const double span = c[k + 1].friction - c[k].friction;
-      const double t = span > 0 ? (friction - c[k].friction) / span : 1.0;
-      const double e = c[k].void_ratio + t * (c[k + 1].void_ratio - c[k].void_ratio);
-      return e / (1.0 + e);
-    }
-  return c.back().porosity;
-}
-
-double next_layer_friction(const std::vector<CalibrationPoint>& calibration,
-                           const std::vector<LayerAttempt>& attempts, double aim) {
-  // The layer's n(μ) is the calibration's offset in void ratio (another draw of the same
-  // particles), by the mean of what the attempts measured: compactions at nearby μ scatter by
-  // about the tolerance, so a secant through two of them can point the wrong way.
-  const auto e = [](double n) { return n / (1.0 - n); };
-  double offset = 0.0;
-  for (const LayerAttempt& a : attempts)
-    offset += e(a.porosity) - e(interpolate_porosity(calibration, a.friction));
-  if (!attempts.empty()) offset /= static_cast<double>(attempts.size());
-  return interpolate_friction(calibration, e(aim) - offset);
-}
-
-double next_round_friction(const std::vector<CalibrationPoint>& calibration,
-                           const std::vector<SpecimenRound>& rounds, double target) {
-  const SpecimenRound* below = nullptr;  // densest-side build closest to the target
-  const SpecimenRound* above = nullptr;
-  for (const SpecimenRound& x : rounds) {
-    if (x.porosity <= target && (!below || x.porosity > below->porosity)) below = &x;
-    if (x.porosity > target && (!above || x.porosity < above->porosity)) above = &x;
-  }
-  if (below && above)
-    return below->friction + (target - below->porosity) / (above->porosity - below->porosity) *
-                                 (above->friction - below->friction);
-  std::vector<LayerAttempt> builds;
-  for (const SpecimenRound& x : rounds) builds.push_back({x.friction, x.porosity});
-  return next_layer_friction(calibration, builds, target);
-}
-
 World stack_layers(const World& layer, int layers, double layer_height) {
   World stacked(layer.options());
   for (int copy = 0; copy < layers; ++copy)
@@ -388,6 +346,27 @@ void measure_profiles(const World& world, int layers, SpecimenResult& result) {
   result.coordination = coordination_number(world, result.region);
 }
 
+/// The next compaction friction after a build that missed the target: between the two closest
+/// builds that bracket the target porosity, linearly (regula falsi on the measured n(μ) of the
+/// stacked specimen); without a bracket, the calibration curve at the porosity shifted by the
+/// last miss (accumulated in `porosity_for_friction`).
+double next_compaction_friction(const SpecimenResult& result, double& porosity_for_friction) {
+  const SpecimenRound* below = nullptr;  // densest-side build closest to the target
+  const SpecimenRound* above = nullptr;
+  for (const SpecimenRound& x : result.rounds) {
+    if (x.porosity <= result.target_porosity && (!below || x.porosity > below->porosity))
+      below = &x;
+    if (x.porosity > result.target_porosity && (!above || x.porosity < above->porosity)) above = &x;
+  }
+  if (below && above && above->porosity > below->porosity)
+    return below->friction + (result.target_porosity - below->porosity) /
+                                 (above->porosity - below->porosity) *
+                                 (above->friction - below->friction);
+  porosity_for_friction += result.target_porosity - result.porosity;
+  return interpolate_friction(result.calibration,
+                              porosity_for_friction / (1.0 - porosity_for_friction));
+}
+
 }  // namespace
 
 SpecimenResult build_specimen(const SpecimenSpec& spec, const StageControl& control) {
@@ -419,88 +398,56 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const StageControl& cont
   result.seconds.emplace_back("calibration", since(t0));
   result.steps.emplace_back("calibration", cal_steps);
 
-  // Stages 2 and 3. The layer differs from the calibration sample at the same μ (another draw
-  // of particles: on srm40 by 0.012 in porosity, 0.08 in Dr), so the first μ* is found on the
-  // layer itself, which is cheap to compact again (half the specimen's cost): when the layer
-  // compacted at the calibration's μ* misses the target's relative density by more than the
-  // tolerance, it is compacted once more at the calibration's μ offset by the miss
-  // (next_layer_friction), and the nearer of the two is stacked. Not more: two compactions of
-  // the same layer at nearby μ differ by about the tolerance (srm40: 0.0017 in porosity, the
-  // wrong way, at μ = 0.290 and 0.300; the quick specimen's small layer 0.007 at μ = 0.272 and
-  // 0.273). Stacking then shifts the porosity by what neither the layer nor a cheap pilot
-  // predicted (the interfaces loosen the stack, the overburden compacts it, by amounts that
-  // depend on μ* and on the gradation: a copy of the layer under the column's stress and the
-  // stacked copies before settling were tried on srm40 and the quick specimen, and were off
-  // in sign). A stack that misses by more than the tolerance is rebuilt (at most
-  // spec.correction_rounds more times, one compaction each) at the μ* the stacks themselves
-  // give (next_round_friction). Particle volumes always follow the true target porosity, so
-  // the height stays right; only μ* changes. Every compaction starts from the same placed layer
-  // (placed on first use: a resumed run may not need it).
-  constexpr int kLayerAttempts = 2;
+  // Stages 2 and 3, repeated (at most spec.correction_rounds more times) while the specimen
+  // misses the target relative density by more than spec.relative_density_tolerance (the layer
+  // interfaces and the overburden make the stacked specimen differ from the single calibration
+  // sample at the same μ). Particle volumes always follow the true target porosity, so the
+  // height stays right; only μ* changes between rounds.
+  // The layer's particles and their loose placement depend on the target porosity only, so
+  // every round compacts the same placed layer (placed on first use: a resumed run may not
+  // need it).
   Rng particle_rng = Rng::stream(spec.seed, layer_particles_stream);
   const LayerParticles layer =
       layer_particles(spec.classes, spec.templates, (1.0 - result.target_porosity) * layer_volume,
                       spec.soil_density, spec.rock_density, particle_rng);
   std::vector<Placement> layer_placed;
+  double porosity_for_friction = result.target_porosity;
+  double next_friction = interpolate_friction(cal, e_target);
   World& world = result.world;
-  const auto central_porosity = [&](const World& w) {
-    return region_porosity(w, body_volumes(w),
-                           central_region(spec.radius, margin, column_height(w)));
-  };
-  const auto misses = [&](double porosity) {
-    return std::abs(relative_density(porosity, result.porosity_max, result.porosity_min) -
-                    spec.target_relative_density) > spec.relative_density_tolerance;
-  };
   const double round_share = 0.45 / (1 + spec.correction_rounds);
   for (int round = 0;; ++round) {
+    const std::string tag = "-" + std::to_string(round);
     const double base = 0.5 + round * round_share;
-    const int attempts = round == 0 ? kLayerAttempts : 1;
+    const double friction = next_friction;
+    result.rounds.push_back({friction, 0.0, 0.0});
+
     // Stage 2: one layer at the target porosity, compacted at μ*, then μ back to the material
     // friction for stage 3 (shear history rescaled).
-    std::optional<World> layer_world;
-    for (int attempt = 0; attempt < attempts; ++attempt) {
-      const double friction =
-          round == 0 ? next_layer_friction(cal, result.layer_attempts, result.target_porosity)
-                     : next_round_friction(cal, result.rounds, result.target_porosity);
-      const std::string name = "layer-" + std::to_string(result.layer_attempts.size());
-      const auto t_attempt = Clock::now();
-      World w = settled_stage(
-          name, store, spec, control,
-          [&] {
-            if (layer_placed.empty()) {
-              Rng place_rng = Rng::stream(spec.seed, layer_placement);
-              layer_placed =
-                  place_in_cylinder(placement_items(layer.bodies), spec.radius, place_rng);
-            }
-            return scaled_world(layer.bodies, layer_placed, spec, friction, build.lambda);
-          },
-          [&](double f) {
-            return build.report("layer compaction",
-                                base + 0.4 * round_share * (attempt + f) / attempts);
-          },
-          [&](World& w) { w.rescale_friction(spec.contact.friction); });
-      const double porosity = central_porosity(w);
-      result.layer_attempts.push_back({friction, porosity});
-      result.steps.emplace_back(name, static_cast<long>(w.steps()));
-      result.seconds.emplace_back(name, since(t_attempt));
-      if (!layer_world || std::abs(porosity - result.target_porosity) <
-                              std::abs(result.layer_porosity_compacted - result.target_porosity)) {
-        layer_world = std::move(w);
-        result.friction_compaction = friction;
-        result.layer_porosity_compacted = porosity;
-      }
-      if (!misses(porosity)) break;
-    }
-    result.layer_height = top_height(*layer_world);
-    result.rounds.push_back({result.friction_compaction, 0.0, 0.0});
+    t0 = Clock::now();
+    const World layer_world = settled_stage(
+        "layer" + tag, store, spec, control,
+        [&] {
+          if (layer_placed.empty()) {
+            Rng place_rng = Rng::stream(spec.seed, layer_placement);
+            layer_placed = place_in_cylinder(placement_items(layer.bodies), spec.radius, place_rng);
+          }
+          return scaled_world(layer.bodies, layer_placed, spec, friction, build.lambda);
+        },
+        [&](double f) { return build.report("layer compaction", base + 0.4 * round_share * f); },
+        [&](World& w) { w.rescale_friction(spec.contact.friction); });
+    result.layer_porosity_compacted =
+        region_porosity(layer_world, body_volumes(layer_world),
+                        central_region(spec.radius, margin, column_height(layer_world)));
+    result.layer_height = top_height(layer_world);
+    result.steps.emplace_back("layer" + tag, static_cast<long>(layer_world.steps()));
+    result.seconds.emplace_back("layer" + tag, since(t0));
 
     // Stage 3: layered duplication of the layer (already at the material friction): each copy
     // shifted up by the layer's top, so nothing overlaps, then settled to equilibrium.
     t0 = Clock::now();
-    const std::string tag = "-" + std::to_string(round);
     world = settled_stage(
         "specimen" + tag, store, spec, control,
-        [&] { return stack_layers(*layer_world, spec.layers, result.layer_height); },
+        [&] { return stack_layers(layer_world, spec.layers, result.layer_height); },
         [&](double f) {
           return build.report("layered specimen", base + round_share * (0.4 + 0.6 * f));
         });
@@ -508,10 +455,15 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const StageControl& cont
 
     // Stage 4: measurement (masses do not enter it).
     measure(world, spec.radius, build.margin, result);
+    result.friction_compaction = friction;
     result.rounds.back().porosity = result.porosity;
     result.rounds.back().relative_density = result.relative_density;
     result.seconds.emplace_back("specimen" + tag, since(t0));
-    if (!misses(result.porosity) || round >= spec.correction_rounds) break;
+    if (std::abs(result.relative_density - spec.target_relative_density) <=
+            spec.relative_density_tolerance ||
+        round >= spec.correction_rounds)
+      break;
+    next_friction = next_compaction_friction(result, porosity_for_friction);
   }
 
   // True masses in the finished specimen.

@@ -50,8 +50,9 @@ struct SpecimenSpec {
   double height_tolerance = 0.02;
   long max_steps = 200000;  ///< step cap of each settling run
   /// Correction rounds: while the stacked specimen misses the target relative density by more
-  /// than the tolerance, layer and specimen are rebuilt (at most this many more times) at the
-  /// μ* of next_round_friction.
+  /// than the tolerance, layer and specimen are rebuilt (at most this many more times) with a
+  /// new μ*: interpolated between earlier builds that bracket the target, else read from the
+  /// calibration at the porosity shifted by the miss.
   int correction_rounds = 3;
   double relative_density_tolerance = 0.015;
   /// Density scaling λ of the preparation (masses and moments ×λ, so the time step grows by
@@ -78,11 +79,6 @@ struct SpecimenRound {
   double friction = 0, porosity = 0, relative_density = 0;
 };
 
-/// One compaction of the layer: its friction μ* and the central porosity it reached.
-struct LayerAttempt {
-  double friction = 0, porosity = 0;
-};
-
 /// The finished specimen and its measurements.
 struct SpecimenResult {
   World world;  ///< bodies carry kind, template id, scale and exact volume
@@ -100,7 +96,6 @@ struct SpecimenResult {
   std::vector<std::pair<std::string, long>> steps;      ///< steps per stage
   double density_scaling = 1.0;                         ///< λ used in the preparation
   std::vector<SpecimenRound> rounds;                    ///< every build, the last one is the result
-  std::vector<LayerAttempt> layer_attempts;             ///< every compaction of the layer, in order
 };
 
 /// Relative density Dr = (e_max − e)/(e_max − e_min) from porosities (e = n/(1 − n)).
@@ -112,22 +107,6 @@ double relative_density(double porosity, double porosity_max, double porosity_mi
 /// than two points.
 double interpolate_friction(const std::vector<CalibrationPoint>& calibration,
                             double target_void_ratio);
-
-/// The calibration's porosity at `friction`: void ratio linear between the points around it,
-/// the nearer end's porosity outside. Throws InvalidInput for no point.
-double interpolate_porosity(const std::vector<CalibrationPoint>& calibration, double friction);
-
-/// The friction of the next compaction of the layer, aiming at central porosity `aim`: the
-/// calibration's μ at the aim, its n(μ) offset in void ratio by the mean offset the earlier
-/// attempts measured (the layer is another draw of the same particles).
-double next_layer_friction(const std::vector<CalibrationPoint>& calibration,
-                           const std::vector<LayerAttempt>& attempts, double aim);
-
-/// The compaction friction of the next round after stacked specimens that missed the target
-/// porosity: linear between the two builds closest to it on either side (regula falsi on the
-/// stacks' own n(μ)); without such a pair, next_layer_friction on the builds.
-double next_round_friction(const std::vector<CalibrationPoint>& calibration,
-                           const std::vector<SpecimenRound>& rounds, double target);
 
 /// Every field of the spec as text, one "key value" line each, doubles in hexadecimal (exact),
 /// templates with all their spheres and mass properties: two specs that differ in any field
@@ -157,14 +136,11 @@ World stack_layers(const World& layer, int layers, double layer_height);
 ///     in parallel), porosity measured in the central region → n(μ), n_max, n_min, μ*;
 ///  2. layer: particles whose solid volume fills one layer (height/layers) at the target
 ///     porosity (Jin et al. 2017 §4.2), placed and compacted at μ*, then μ restored to the material
-///     friction (shear history rescaled); compacted once more at a corrected μ*
-///     (next_layer_friction) when it misses the target relative density by more than the
-///     tolerance, the nearer of the two stacked;
+///     friction (shear history rescaled);
 ///  3. specimen: the layer copied `layers` times, each shifted up by the layer's top height
 ///     (clumps whole, new ids), and settled to equilibrium at the material friction
 ///     (Jin et al. 2017 §4.2 steps 1–3: "cycle to equilibrium");
-///     stages 2–3 are repeated (correction_rounds; μ* from next_round_friction, one
-///     compaction) while the stacked specimen still misses;
+///     stages 2–3 are repeated (correction_rounds) while the relative density misses;
 ///  4. measurement: porosity of the central region (exact sphere–region volumes), Dr, height,
 ///     per-layer and per-band porosity, coordination number.
 /// Random streams derive from spec.seed only, and the DEM is deterministic, so the result is

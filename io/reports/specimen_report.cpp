@@ -172,10 +172,6 @@ nlohmann::ordered_json specimen_report(const SpecimenRecipe& recipe, const dem::
                       {"porosity", x.porosity},
                       {"relative_density", x.relative_density}});
   j["rounds"] = rounds;
-  nlohmann::ordered_json attempts = nlohmann::ordered_json::array();
-  for (const auto& a : r.layer_attempts)
-    attempts.push_back({{"friction_compaction", a.friction}, {"porosity", a.porosity}});
-  j["layer_attempts"] = attempts;
   j["timestep"] = r.world.options().timestep;
   j["density_scaling"] = r.density_scaling;
   nlohmann::ordered_json steps, seconds;

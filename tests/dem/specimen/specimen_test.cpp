@@ -122,48 +122,6 @@ TEST(Specimen, RelativeDensityAndFrictionInterpolation) {
   EXPECT_THROW(interpolate_friction({c[0]}, 0.5), InvalidInput);
 }
 
-// The layer's μ*: the calibration curve offset by the mean of what the attempts measured (exact
-// for a layer whose law is the calibration's shifted in void ratio).
-TEST(Specimen, NextLayerFrictionOffsetsTheCalibrationByTheAttempts) {
-  const auto n = [](double e) { return e / (1 + e); };
-  std::vector<CalibrationPoint> c;
-  for (double mu : {0.0, 0.2, 0.4, 0.8})
-    c.push_back({mu, n(0.5 + 0.5 * mu), 0.5 + 0.5 * mu, 0, ""});
-  EXPECT_NEAR(interpolate_porosity(c, 0.3), n(0.65), 1e-15);
-  EXPECT_EQ(interpolate_porosity(c, -1.0), c.front().porosity);
-  EXPECT_EQ(interpolate_porosity(c, 2.0), c.back().porosity);
-  EXPECT_THROW(interpolate_porosity({}, 0.3), InvalidInput);
-  // No attempt: the calibration's μ at the aim.
-  EXPECT_NEAR(next_layer_friction(c, {}, n(0.65)), 0.3, 1e-14);
-  // A layer looser than the calibration by 0.02 in void ratio: aim 0.65 is the calibration's
-  // 0.63, at μ = 0.26, whichever attempt measured the offset.
-  for (double mu : {0.1, 0.3, 0.5}) {
-    const std::vector<LayerAttempt> one = {{mu, n(0.5 + 0.5 * mu + 0.02)}};
-    EXPECT_NEAR(next_layer_friction(c, one, n(0.65)), 0.26, 1e-12) << mu;
-  }
-  // Scattered attempts, offsets +0.03 and +0.01: their mean, 0.02.
-  const std::vector<LayerAttempt> two = {{0.2, n(0.63)}, {0.4, n(0.71)}};
-  EXPECT_NEAR(next_layer_friction(c, two, n(0.65)), 0.26, 1e-12);
-  // Beyond the calibration's range: its ends.
-  EXPECT_EQ(next_layer_friction(c, two, n(0.99)), 0.8);
-  EXPECT_EQ(next_layer_friction(c, two, n(0.3)), 0.0);
-}
-
-// Later rounds: regula falsi between the stacks that bracket the target, else the calibration
-// offset by the stacks' mean miss.
-TEST(Specimen, NextRoundFrictionBracketsTheStacksOrOffsetsTheCalibration) {
-  const auto n = [](double e) { return e / (1 + e); };
-  std::vector<CalibrationPoint> c;
-  for (double mu : {0.0, 0.2, 0.4, 0.8})
-    c.push_back({mu, n(0.5 + 0.5 * mu), 0.5 + 0.5 * mu, 0, ""});
-  const std::vector<SpecimenRound> bracket = {{0.2, 0.38, 0}, {0.3, 0.40, 0}, {0.5, 0.45, 0}};
-  EXPECT_NEAR(next_round_friction(c, bracket, 0.385), 0.225, 1e-14);
-  EXPECT_NEAR(next_round_friction(c, bracket, 0.42), 0.38, 1e-14);
-  // All stacks denser than the target, by 0.02 in void ratio: the calibration's μ shifted.
-  const std::vector<SpecimenRound> dense = {{0.3, n(0.63), 0}};
-  EXPECT_NEAR(next_round_friction(c, dense, n(0.65)), 0.34, 1e-12);
-}
-
 // The resume fingerprint: a spec changed in any one field (every field of the spec, its contact
 // law, its gradation classes and its templates) gets another fingerprint; equal specs agree.
 TEST(Specimen, FingerprintChangesWithEveryField) {
