@@ -53,9 +53,9 @@ void triangulate_polygon(const std::vector<Vec3>& vertices, const std::vector<in
                          std::vector<std::array<int, 3>>& triangles);
 
 /// The readers: a Mesh as stored (OBJ, PLY: unwelded). Throw InvalidInput naming the file (and
-/// line) for what cannot be parsed. STL comes back welded within `relative_tolerance` of its bounding-box diagonal (weld_vertices),
-/// `dropped` the triangles that became degenerate; unwelded beyond exact copies when a corner is
-/// not finite.
+/// line) for what cannot be parsed. STL comes back welded within `relative_tolerance` of its
+/// bounding-box diagonal (weld_vertices), `dropped` the triangles that became degenerate; unwelded
+/// beyond exact copies when a corner is not finite.
 Mesh read_stl(const std::string& path, const std::string& data, double relative_tolerance,
               std::size_t& dropped);
 Mesh read_obj(const std::string& path, const std::string& data);

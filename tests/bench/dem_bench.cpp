@@ -449,6 +449,35 @@ long peak_rss_bytes() {
   return -1;
 }
 
+// `start` settled for `settle` steps on `threads` threads, from the checkpoint
+// $TMPDIR/clumpkit-dem-bench-NAME-SETTLE.ckpt when an earlier run saved it (`cached`), else
+// settled (printing its progress) and saved there.
+World settled_or_cached(World start, const std::string& name, long settle, int threads,
+                        std::string& ckpt, bool& cached) {
+  const char* tmp = std::getenv("TMPDIR");
+  ckpt = std::string(tmp && *tmp ? tmp : "/tmp") + "/clumpkit-dem-bench-" + name + "-" +
+         std::to_string(settle) + ".ckpt";
+  cached = false;
+  try {
+    World w = load_checkpoint(ckpt);
+    cached = true;
+    return w;
+  } catch (const std::exception&) {
+  }
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+  const double t0 = now();
+  for (long done = 0; done < settle; done += 10000) {
+    start.step(static_cast<int>(std::min(10000L, settle - done)));
+    std::printf("  settling: step %lld, KE %.4g J, unbalanced ratio %.3g\n",
+                static_cast<long long>(start.steps()), kinetic_energy(start),
+                mean_unbalanced_force_ratio(start));
+    std::fflush(stdout);
+  }
+  std::printf("  settled in %.1f s\n", now() - t0);
+  save_checkpoint(ckpt, start);
+  return start;
+}
+
 struct Row {
   std::string name;
   std::string lammps_case;
@@ -565,30 +594,11 @@ int main(int argc, char** argv) {
     for (int t : threads) rows.push_back(timed("falling clumps", "clumps", w, t, steps));
   }
   if (wanted("dense")) {
-    const char* tmp = std::getenv("TMPDIR");
-    const std::string ckpt = std::string(tmp && *tmp ? tmp : "/tmp") +
-                             "/clumpkit-dem-bench-settled-" + std::to_string(settle) + ".ckpt";
-    World w = spheres_world();
+    std::string ckpt;
     bool cached = false;
-    try {
-      w = load_checkpoint(ckpt);
-      cached = true;
-    } catch (const std::exception&) {
-    }
-    if (!cached) {
-      tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
-                                *std::max_element(threads.begin(), threads.end()));
-      const double t0 = now();
-      for (long done = 0; done < settle; done += 10000) {
-        w.step(static_cast<int>(std::min(10000L, settle - done)));
-        std::printf("  settling: step %lld, KE %.4g J, unbalanced ratio %.3g\n",
-                    static_cast<long long>(w.steps()), kinetic_energy(w),
-                    mean_unbalanced_force_ratio(w));
-        std::fflush(stdout);
-      }
-      std::printf("  settled in %.1f s\n", now() - t0);
-      save_checkpoint(ckpt, w);
-    }
+    const World w =
+        settled_or_cached(spheres_world(), "settled", settle,
+                          *std::max_element(threads.begin(), threads.end()), ckpt, cached);
     std::printf(
         "(c) settled spheres (%s %s): %lld steps settled, KE %.4g J, unbalanced ratio "
         "%.3g, zmax %.4f\n",
@@ -623,23 +633,11 @@ int main(int argc, char** argv) {
   }
 
   if (wanted("scale")) {
-    const char* tmp = std::getenv("TMPDIR");
-    const std::string ckpt = std::string(tmp && *tmp ? tmp : "/tmp") +
-                             "/clumpkit-dem-bench-tile-smooth-" + std::to_string(settle) + ".ckpt";
-    World tile = tile_world();
+    std::string ckpt;
     bool cached = false;
-    try {
-      tile = load_checkpoint(ckpt);
-      cached = true;
-    } catch (const std::exception&) {
-    }
-    if (!cached) {
-      tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
-                                *std::max_element(threads.begin(), threads.end()));
-      for (long done = 0; done < settle; done += 10000)
-        tile.step(static_cast<int>(std::min(10000L, settle - done)));
-      save_checkpoint(ckpt, tile);
-    }
+    const World tile =
+        settled_or_cached(tile_world(), "tile-smooth", settle,
+                          *std::max_element(threads.begin(), threads.end()), ckpt, cached);
     std::printf(
         "(d) scale: tile of %zu spheres in a %.2f m box (%s %s), %lld steps settled, KE %.4g J, "
         "unbalanced ratio %.3g, zmax %.4f\n",

@@ -26,6 +26,18 @@ Body ball(const Vec3& c, double r) {
   return b;
 }
 
+// A three-sphere clump straddling the side wall r = 0.5 and the plane z = 0.5.
+Body cut_clump() {
+  Body c;
+  c.spheres = {
+      {Vec3(-0.05, 0, 0), 0.08}, {Vec3(0.05, 0.02, 0), 0.07}, {Vec3(0, -0.04, 0.05), 0.06}};
+  c.mass = 1;
+  c.moments = Vec3::Ones();
+  c.position = Vec3(0.48, 0.0, 0.5);
+  c.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
+  return c;
+}
+
 TEST(RegionVolume, SphereInsideCutByPlaneAndOutside) {
   const CylinderRegion region{0.5, 0.0, 1.0};
   const double r = 0.1, v = 4.0 / 3.0 * kPi * r * r * r;
@@ -61,13 +73,7 @@ TEST(RegionVolume, OneSphereAgreesWithTheUnionOfDisksPath) {
 TEST(RegionVolume, ComplementaryRegionsAddUpForACutClump) {
   // A three-sphere clump straddling the region's side wall and a horizontal plane: the parts in
   // complementary regions add up to the exact union volume.
-  Body c;
-  c.spheres = {
-      {Vec3(-0.05, 0, 0), 0.08}, {Vec3(0.05, 0.02, 0), 0.07}, {Vec3(0, -0.04, 0.05), 0.06}};
-  c.mass = 1;
-  c.moments = Vec3::Ones();
-  c.position = Vec3(0.48, 0.0, 0.5);
-  c.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
+  Body c = cut_clump();
   const double v = union_properties(Clump{c.spheres}).mass.volume;
   const double lower = body_region_volume(c, v, {0.5, 0.0, 0.5});
   const double upper = body_region_volume(c, v, {0.5, 0.5, 1.0});
@@ -97,13 +103,7 @@ TEST(RegionVolume, ComplementaryRegionsAddUpForACutClump) {
 // range at a time, complementary ranges adding up to the whole, for a clump and a sphere cut by
 // the side wall.
 TEST(RegionVolume, SeveralRangesAtOnceAgreeWithOneAtATime) {
-  Body c;
-  c.spheres = {
-      {Vec3(-0.05, 0, 0), 0.08}, {Vec3(0.05, 0.02, 0), 0.07}, {Vec3(0, -0.04, 0.05), 0.06}};
-  c.mass = 1;
-  c.moments = Vec3::Ones();
-  c.position = Vec3(0.48, 0.0, 0.5);
-  c.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
+  Body c = cut_clump();
   const double vc = union_properties(Clump{c.spheres}).mass.volume;
   const std::vector<std::array<double, 2>> ranges = {{0.0, 0.5}, {0.5, 1.0}, {0.45, 0.52},
                                                      {0.0, 1.0}, {0.9, 1.0}, {0.47, 0.5}};
