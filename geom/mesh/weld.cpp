@@ -135,7 +135,11 @@ void VertexWelder::add(const Vec3* points, std::size_t n, int* index) {
 }
 
 void weld_vertices(Mesh& mesh, double relative_tolerance) {
-  if (mesh.vertices.empty()) return;
+  // A non-finite coordinate would collapse the whole grid: such a mesh stays as it is, so that
+  // its reader reports the coordinate instead of a misleading "no triangles".
+  if (mesh.vertices.empty() || !std::all_of(mesh.vertices.begin(), mesh.vertices.end(),
+                                            [](const Vec3& p) { return p.allFinite(); }))
+    return;
   const auto bb = bounding_box(mesh);
   const double tol = relative_tolerance * (bb[1] - bb[0]).norm();
   // One pass in order: exact copies share a cell, so this is the same as welding exact copies

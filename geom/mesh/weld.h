@@ -50,7 +50,8 @@ class VertexWelder {
 /// Merges vertices closer than `tolerance` (relative to the bounding-box diagonal): vertex i
 /// joins the first vertex with the same cell of that size from the box's corner (with 0, the
 /// same coordinates), survivors in the order of first occurrence; drops triangles that become
-/// degenerate. After reading STL and, with a tolerance asked for, OBJ and PLY.
+/// degenerate. After reading STL and, with a tolerance asked for, OBJ and PLY. A mesh with a
+/// non-finite coordinate is left as it is.
 void weld_vertices(Mesh& mesh, double relative_tolerance = 1e-9);
 
 }  // namespace clumpkit

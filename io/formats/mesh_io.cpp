@@ -70,11 +70,6 @@ Mesh read_mesh_raw(const std::string& path, const MeshReadOptions& options,
   }
   Mesh mesh = format == MeshFormat::Obj ? mesh_format::read_obj(path, data)
                                         : mesh_format::read_ply(path, data);
-  // Welding a non-finite coordinate would collapse the whole grid; leave such a mesh as it is so
-  // that read_mesh reports the coordinate instead of a misleading "no triangles".
-  const bool finite = std::all_of(mesh.vertices.begin(), mesh.vertices.end(),
-                                  [](const Vec3& p) { return p.allFinite(); });
-  if (!finite) return mesh;
   const std::size_t vertices = mesh.vertices.size(), triangles = mesh.triangles.size();
   // OBJ and PLY exactly, unless asked.
   weld_vertices(mesh, options.weld_tolerance);

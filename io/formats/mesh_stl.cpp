@@ -131,13 +131,8 @@ Mesh read_stl(const std::string& path, const std::string& data, double relative_
   } else if (says_solid && (is_text(data) || data.find("endloop", 80) != std::string::npos)) {
     mesh = read_ascii_stl(path, data);
     const std::size_t read = mesh.triangles.size();
-    // Welding a non-finite coordinate would collapse the whole grid; such a mesh stays as it is
-    // so that read_mesh reports the coordinate instead of a misleading "no triangles".
-    if (std::all_of(mesh.vertices.begin(), mesh.vertices.end(),
-                    [](const Vec3& p) { return p.allFinite(); })) {
-      weld_vertices(mesh, relative_tolerance);
-      dropped = read - mesh.triangles.size();
-    }
+    weld_vertices(mesh, relative_tolerance);
+    dropped = read - mesh.triangles.size();
   } else if (size < 84) {
     bad(path, "truncated binary STL: the file has " + std::to_string(size) +
                   " bytes, less than the 84-byte header");
