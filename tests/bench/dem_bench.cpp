@@ -13,21 +13,19 @@
 //      and shuffled (the same bodies added in a random order, shear history dropped: the order a
 //      specimen built from a shuffled library has), each unsorted and sorted every --sort steps
 //      (WorldOptions::sort_every; LAMMPS's atom_modify sort is on by default every 1,000).
-//  (d) scale (--cases scale, not in the default): settled packings of --sizes spheres (10⁴, 10⁵,
-//      10⁶ by default), copies of a tile of 10,000 spheres settled for --settle steps in a box
-//      (cached): time per sphere-step on each thread count and the process's peak RSS per
-//      sphere (run one size per process for the peak of that size).
 // Differences to LAMMPS: no tangential dashpot (LAMMPS uses 0.5·γn); wall dashpot with m_eff = m
 // (LAMMPS: the same γn, i.e. √2 larger); clump spins start at zero.
 //
 // Usage: dem_bench [--steps N] [--settle N] [--dense N] [--sort N] [--threads 1,2] [--full]
-//                  [--lammps FILE] [--cases spheres,clumps,dense,scale] [--sizes N,N,...]
+//                  [--lammps FILE] [--cases spheres,clumps,dense]
 //   defaults: --steps 5000 --settle 40000 --dense 2000 (--full: 40000, 100000, 10000), a few
 //   minutes on 2 cores (the settle runs once, then comes from the cached checkpoint). In.dense
 //   starts from a 100,000-step settle: use --full (or --settle 100000) for the ratio.
 //   --sort 1000 by default; 0 times the unsorted orders only.
 //   FILE: output of run.sh (SUMMARY lines), for the ratio column. Env CLUMPKIT_DEM_BENCH_FULL=1
 //   is --full.
+#include "tests/bench/dem_bench_common.h"
+
 #include "dem/core/state_hash.h"
 #include "dem/core/world.h"
 #include "geom/random.h"
@@ -53,11 +51,11 @@
 
 using namespace clumpkit;
 using namespace clumpkit::dem;
+using namespace clumpkit::dem::bench;
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kD = 0.010;
 // The LAMMPS decks: $CLUMPKIT_LAMMPS_DECKS, else ../shared/baselines/lammps from the working
 // directory (scripts/bench runs from the repository root).
 std::string baseline_dir() {
@@ -69,22 +67,6 @@ double cpu_seconds() {  // process CPU time (all threads)
   timespec ts;
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-WorldOptions options() {
-  WorldOptions o;
-  o.gravity = Vec3(0.0, 0.0, -9.81);
-  o.timestep = 5e-6;
-  o.skin = 0.002;
-  o.contact.kn = 1e6;
-  o.contact.ks = 1e6;
-  o.contact.friction = 0.8;
-  o.contact.damping_ratio = 0.3;
-  return o;
 }
 
 void add_walls(World& w) {
@@ -105,22 +87,6 @@ std::vector<Vec3> lattice(double a, double rc, double z0, double z1) {
         if (p.x() * p.x() + p.y() * p.y() < rc * rc) out.push_back(p);
       }
   return out;
-}
-
-// A random subset of n points, kept in lattice order (locality).
-std::vector<Vec3> subset(const std::vector<Vec3>& pts, std::size_t n, Rng& rng) {
-  std::vector<std::size_t> idx(pts.size());
-  for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
-  for (std::size_t k = 0; k < n; ++k) std::swap(idx[k], idx[k + rng.below(idx.size() - k)]);
-  idx.resize(n);
-  std::sort(idx.begin(), idx.end());
-  std::vector<Vec3> out;
-  for (std::size_t k : idx) out.push_back(pts[k]);
-  return out;
-}
-
-Vec3 random_velocity(Rng& rng) {
-  return rng.uniform(Vec3::Constant(-0.05), Vec3::Constant(0.05));
 }
 
 World spheres_world() {
@@ -322,162 +288,6 @@ World clumps_world(const Molecule& m) {
   return w;
 }
 
-double max_top(const World& w) {
-  double z = 0.0;
-  for (const Body& b : w.bodies())
-    for (const Sphere& s : b.spheres)
-      z = std::max(z, (b.position + b.orientation * s.center).z() + s.radius);
-  return z;
-}
-
-// --- Scale (case d): settled packings of 10⁴ to 10⁶ spheres. A tile of 10,000 spheres (the
-// material of case a) settled in a square box of side kTile, then copied side by side in mirror
-// image (tiled_world), so the packing is settled without settling 10⁶ spheres from a fall
-// (10¹¹ sphere-steps). Walls: the floor and the outer box.
-constexpr double kTile = 0.2;
-constexpr int kTileSpheres = 10000;
-
-// The floor, and frictionless side walls: a tile held up by the friction of its side walls would
-// slump once they fall between copies (its image across a seam moves with it, so no friction
-// takes their place: 4.1 contacts per sphere fell to 3.3 within 5,000 steps).
-void add_box_walls(World& w, double lx, double ly) {
-  w.add_wall(Wall::plane(Vec3::Zero(), Vec3::UnitZ()));
-  for (Wall side :
-       {Wall::plane(Vec3::Zero(), Vec3::UnitX()), Wall::plane(Vec3(lx, 0, 0), -Vec3::UnitX()),
-        Wall::plane(Vec3::Zero(), Vec3::UnitY()), Wall::plane(Vec3(0, ly, 0), -Vec3::UnitY())}) {
-    side.friction = 0.0;
-    w.add_wall(side);
-  }
-}
-
-World tile_world() {
-  World w(options());
-  add_box_walls(w, kTile, kTile);
-  const double a = 1.15 * kD;
-  std::vector<Vec3> pts;  // simple-cubic points in the box, z-major, 4/3 of what is kept
-  for (int k = 0; pts.size() < kTileSpheres * 4 / 3; ++k)
-    for (int j = 0; (j + 0.5) * a + 0.5 * kD <= kTile; ++j)
-      for (int i = 0; (i + 0.5) * a + 0.5 * kD <= kTile; ++i)
-        pts.push_back(Vec3((i + 0.5) * a, (j + 0.5) * a, 0.006 + (k + 0.5) * a));
-  Rng rng(4720);
-  for (const Vec3& p : subset(pts, kTileSpheres, rng)) {
-    Body b = make_sphere_body(p, 0.5 * kD, 2700.0);
-    b.velocity = random_velocity(rng);
-    w.add_body(std::move(b));
-  }
-  return w;
-}
-
-// mx × my copies of `tile`, every other one mirrored in x and in y so that copies meet in
-// mirror image: a sphere that rested on a box wall faces its own image across the seam, at twice
-// its wall overlap, where the wall pushed. Copies keep their contacts and shear history (a copy
-// without them is no longer held by friction and slumps: 4.1 contacts per sphere fell to 1.9);
-// contacts with the walls that remain (the floor, the outer box) are kept, those at the seams
-// (frictionless: normal forces only) give way to the pair with the image.
-// Tile-major order, each copy in its own order (local, as settled).
-World tiled_world(const World& tile, int mx, int my) {
-  World w(tile.options());
-  add_box_walls(w, mx * kTile, my * kTile);
-  const int n = tile.sphere_count();
-  std::vector<PairContact> pairs;
-  std::vector<WallContact> walls;
-  for (int ty = 0; ty < my; ++ty)
-    for (int tx = 0; tx < mx; ++tx) {
-      const int first = (ty * mx + tx) * n;
-      const double sx = tx % 2 ? -1.0 : 1.0, sy = ty % 2 ? -1.0 : 1.0;
-      const Vec3 shift((tx + (tx % 2)) * kTile, (ty + (ty % 2)) * kTile, 0.0);
-      const auto point = [&](const Vec3& p) -> Vec3 {
-        return Vec3(sx * p.x(), sy * p.y(), p.z()) + shift;
-      };
-      const auto vec = [&](const Vec3& v) -> Vec3 { return Vec3(sx * v.x(), sy * v.y(), v.z()); };
-      const auto axial = [&](const Vec3& v) -> Vec3 {
-        return sx * sy * vec(v);
-      };  // ω: a pseudovector
-      for (const Body& b : tile.bodies()) {
-        Body c = b;
-        c.position = point(b.position);
-        c.velocity = vec(b.velocity);
-        c.angular_velocity = axial(b.angular_velocity);
-        w.add_body(std::move(c));
-      }
-      const auto mirrored = [&](ContactState s) {
-        s.normal = vec(s.normal);
-        s.point = point(s.point);
-        s.shear = vec(s.shear);
-        return s;
-      };
-      for (PairContact c : tile.contacts()) {
-        c.i += first;
-        c.j += first;
-        c.state = mirrored(c.state);
-        pairs.push_back(c);
-      }
-      // Walls: 0 floor, 1 x = 0, 2 x = max, 3 y = 0, 4 y = max (add_box_walls); a tile's side
-      // wall lands on the outer box or on a seam.
-      for (WallContact c : tile.wall_contacts()) {
-        if (c.wall > 0) {
-          const bool along_x = c.wall <= 2;
-          const Vec3 at = point(c.wall % 2 ? Vec3::Zero() : Vec3(kTile, kTile, 0.0));
-          const double x = along_x ? at.x() : at.y(), end = along_x ? mx * kTile : my * kTile;
-          if (std::abs(x) < 1e-12)
-            c.wall = along_x ? 1 : 3;
-          else if (std::abs(x - end) < 1e-9)
-            c.wall = along_x ? 2 : 4;
-          else
-            continue;  // a seam
-        }
-        c.sphere += first;
-        c.state = mirrored(c.state);
-        walls.push_back(c);
-      }
-    }
-  std::sort(walls.begin(), walls.end(), [](const WallContact& a, const WallContact& b) {
-    return a.sphere != b.sphere ? a.sphere < b.sphere : a.wall < b.wall;
-  });
-  World::ListState lists;
-  lists.steps = tile.steps();
-  lists.time = tile.time();
-  w.restore(std::move(lists), std::move(pairs), std::move(walls));
-  return w;
-}
-
-long peak_rss_bytes() {
-  std::ifstream in("/proc/self/status");
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("VmHWM:", 0) == 0) return 1024 * std::atol(line.c_str() + 6);
-  return -1;
-}
-
-// `start` settled for `settle` steps on `threads` threads, from the checkpoint
-// $TMPDIR/clumpkit-dem-bench-NAME-SETTLE.ckpt when an earlier run saved it (`cached`), else
-// settled (printing its progress) and saved there.
-World settled_or_cached(World start, const std::string& name, long settle, int threads,
-                        std::string& ckpt, bool& cached) {
-  const char* tmp = std::getenv("TMPDIR");
-  ckpt = std::string(tmp && *tmp ? tmp : "/tmp") + "/clumpkit-dem-bench-" + name + "-" +
-         std::to_string(settle) + ".ckpt";
-  cached = false;
-  try {
-    World w = load_checkpoint(ckpt);
-    cached = true;
-    return w;
-  } catch (const std::exception&) {
-  }
-  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-  const double t0 = now();
-  for (long done = 0; done < settle; done += 10000) {
-    start.step(static_cast<int>(std::min(10000L, settle - done)));
-    std::printf("  settling: step %lld, KE %.4g J, unbalanced ratio %.3g\n",
-                static_cast<long long>(start.steps()), kinetic_energy(start),
-                mean_unbalanced_force_ratio(start));
-    std::fflush(stdout);
-  }
-  std::printf("  settled in %.1f s\n", now() - t0);
-  save_checkpoint(ckpt, start);
-  return start;
-}
-
 struct Row {
   std::string name;
   std::string lammps_case;
@@ -532,7 +342,6 @@ int main(int argc, char** argv) {
   int sort_every = 1000;
   std::vector<int> threads{1, 2};
   std::string lammps, cases = "spheres,clumps,dense";
-  std::vector<long> sizes{10000, 100000, 1000000};
   const char* full_env = std::getenv("CLUMPKIT_DEM_BENCH_FULL");
   bool full = full_env && std::string(full_env) == "1";
   for (int k = 1; k < argc; ++k) {
@@ -558,12 +367,7 @@ int main(int argc, char** argv) {
       lammps = value();
     else if (a == "--cases")
       cases = value();
-    else if (a == "--sizes") {
-      sizes.clear();
-      std::stringstream s(value());
-      std::string t;
-      while (std::getline(s, t, ',')) sizes.push_back(std::atol(t.c_str()));
-    } else if (a == "--threads") {
+    else if (a == "--threads") {
       threads.clear();
       std::stringstream s(value());
       std::string t;
@@ -571,8 +375,7 @@ int main(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: dem_bench [--steps N] [--settle N] [--dense N] [--sort N] "
-                   "[--threads 1,2] [--full] [--lammps FILE] [--cases spheres,clumps,dense,scale] "
-                   "[--sizes 10000,100000,1000000]\n");
+                   "[--threads 1,2] [--full] [--lammps FILE] [--cases spheres,clumps,dense]\n");
       return 2;
     }
   }
@@ -629,47 +432,6 @@ int main(int argc, char** argv) {
       World run = *v.world;
       run.options().sort_every = v.sort;
       for (int t : threads) rows.push_back(timed(name + v.label, "dense-spheres", run, t, dense));
-    }
-  }
-
-  if (wanted("scale")) {
-    std::string ckpt;
-    bool cached = false;
-    const World tile =
-        settled_or_cached(tile_world(), "tile-smooth", settle,
-                          *std::max_element(threads.begin(), threads.end()), ckpt, cached);
-    std::printf(
-        "(d) scale: tile of %zu spheres in a %.2f m box (%s %s), %lld steps settled, KE %.4g J, "
-        "unbalanced ratio %.3g, zmax %.4f\n",
-        tile.bodies().size(), kTile, cached ? "cached" : "saved", ckpt.c_str(),
-        static_cast<long long>(tile.steps()), kinetic_energy(tile),
-        mean_unbalanced_force_ratio(tile), max_top(tile));
-    std::printf(
-        "\n| spheres | tiles | threads | steps | ns per sphere-step | contacts per sphere "
-        "| peak RSS [MB] | bytes per sphere |\n|---|---|---|---|---|---|---|---|\n");
-    for (long n : sizes) {
-      const long copies = std::max(1L, n / kTileSpheres);
-      int mx = static_cast<int>(std::sqrt(static_cast<double>(copies)));
-      while (copies % mx) --mx;
-      const int my = static_cast<int>(copies / mx);
-      // The same number of sphere-steps at every size (10⁹ / 5 per thread count), at least 100
-      // steps, after 20 steps that build the lists.
-      const long timed_steps = std::max(100L, 200000000L / (copies * kTileSpheres));
-      for (int t : threads) {
-        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, t);
-        World w = tiled_world(tile, mx, my);
-        w.step(20);
-        const double t0 = now();
-        w.step(static_cast<int>(timed_steps));
-        const double sec = now() - t0;
-        const double spheres = static_cast<double>(w.sphere_count());
-        const long peak = peak_rss_bytes();
-        std::printf("| %d | %d × %d | %d | %ld | %.1f | %.2f | %.0f | %.0f |\n", w.sphere_count(),
-                    mx, my, t, timed_steps, 1e9 * sec / (spheres * timed_steps),
-                    2.0 * static_cast<double>(w.contacts().size()) / spheres, peak / 1048576.0,
-                    peak / spheres);
-        std::fflush(stdout);
-      }
     }
   }
 
