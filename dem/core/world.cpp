@@ -85,6 +85,7 @@ int World::add_body(Body body) {
 }
 
 int World::add_wall(const Wall& wall) {
+  if (wall.kind == Wall::Kind::probe) validate_probe_profile(wall);
   StepCache& sc = cache_.get();
   walls_.push_back(wall);
   sc.walls_valid_ = false;

@@ -123,6 +123,12 @@ class World {
   /// Body owning global sphere `sphere` (spheres are numbered body by body, in insertion order).
   int sphere_body(int sphere) const { return sphere_body_[sphere]; }
   int sphere_count() const { return static_cast<int>(sphere_body_.size()); }
+  /// Centre (world, m) and radius (m) of sphere `sphere`, from its body's present pose.
+  Vec3 sphere_center(int sphere) const {
+    const Body& b = bodies_[sphere_body_[sphere]];
+    return b.position + b.orientation * sphere_local_[sphere];
+  }
+  double sphere_radius(int sphere) const { return sphere_radius_[sphere]; }
   double time() const { return time_; }
   std::int64_t steps() const { return steps_; }
   /// Number of neighbour-list builds (grid searches) so far (for tests of the Verlet skin).

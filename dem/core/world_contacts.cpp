@@ -127,7 +127,10 @@ bool World::walls_moved() const {
     const Wall& a = walls_[w];
     const Wall& b = sc.walls_at_build_[w];
     if (a.kind != b.kind || a.normal != b.normal) return true;
-    if (a.kind == Wall::Kind::cylinder) {
+    if (a.kind == Wall::Kind::probe) {
+      if (a.profile != b.profile || !((a.point - b.point).norm() <= 0.5 * options_.skin))
+        return true;
+    } else if (a.kind == Wall::Kind::cylinder) {
       if (a.point.x() != b.point.x() || a.point.y() != b.point.y()) return true;
       // A servo-driven radius, like a plane, may move half the skin before new candidates.
       if (!(std::abs(a.radius - b.radius) <= 0.5 * options_.skin)) return true;
@@ -242,10 +245,11 @@ void World::compute_forces() {
     const Kinematics& b = sc.kinematics_[sphere_body_[s]];
     const Vec3 vb = b.velocity + b.angular_velocity.cross(hit.point - b.position);
     const Wall& wall = walls_[w];
-    // A growing cylinder's surface moves along −normal (outward) at radial_velocity.
-    const Vec3 vw = wall.kind == Wall::Kind::plane ? wall.velocity
-                    : wall.radial_velocity != 0.0  ? Vec3(-wall.radial_velocity * hit.normal)
-                                                   : Vec3(Vec3::Zero());
+    // Planes and probes translate; a growing cylinder's surface moves along −normal (outward)
+    // at radial_velocity.
+    const Vec3 vw = wall.kind != Wall::Kind::cylinder ? wall.velocity
+                    : wall.radial_velocity != 0.0     ? Vec3(-wall.radial_velocity * hit.normal)
+                                                      : Vec3(Vec3::Zero());
     const int body = sphere_body_[s];
     ContactParams q =
         scaled ? scaled_stiffness(p, wall_stiffness_factor(p, sc.body_diameter_[body])) : p;

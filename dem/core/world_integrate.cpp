@@ -145,7 +145,7 @@ void World::integrate() {
   sc.positions_fresh_ = true;
   sc.moved_ = !have_reference || moved.load();
   for (Wall& w : walls_) {
-    if (w.kind == Wall::Kind::plane)
+    if (w.kind != Wall::Kind::cylinder)
       w.point += w.velocity * dt;
     else if (w.radial_velocity != 0.0)
       w.radius += w.radial_velocity * dt;

@@ -25,6 +25,9 @@ void set_wall_speed(World& world, int wall, double speed) {
   if (wall < 0 || wall >= static_cast<int>(world.walls().size()))
     throw InvalidInput("servo: no wall " + std::to_string(wall));
   Wall& w = world.walls()[wall];
+  if (w.kind == Wall::Kind::probe)
+    throw InvalidInput("servo: wall " + std::to_string(wall) +
+                       " is a probe (it moves at its own velocity)");
   if (w.kind == Wall::Kind::plane)
     w.velocity = speed * w.normal;
   else

@@ -27,6 +27,21 @@ Vec3 wall_force(const World& world, int wall) {
   return f;
 }
 
+ProbeForces probe_forces(const World& world, int wall) {
+  check_wall(world, wall);
+  const Wall& probe = world.walls()[wall];
+  if (probe.kind != Wall::Kind::probe)
+    throw InvalidInput("DEM stress: wall " + std::to_string(wall) + " is not a probe");
+  ProbeForces f;
+  for (const WallContact& c : world.wall_contacts()) {
+    if (c.wall != wall) continue;
+    const WallHit hit =
+        wall_hit(probe, world.sphere_center(c.sphere), world.sphere_radius(c.sphere));
+    (hit.part == ProbePart::tip ? f.tip : f.sleeve) -= c.state.force();
+  }
+  return f;
+}
+
 double wall_stress(const World& world, int wall, double area) {
   check_wall(world, wall);
   if (!(area > 0.0)) throw InvalidInput("DEM stress: wall area must be positive");

@@ -11,6 +11,16 @@ namespace clumpkit::dem {
 /// (WallContact::state.force() acts on the sphere), in contact order.
 Vec3 wall_force(const World& world, int wall);
 
+/// Forces the spheres exert on a probe wall (N), apart by the part each contact touches: the
+/// part of the one closest profile point (wall_hit) at the spheres' present positions, so no
+/// contact is counted on both the tip and the sleeve. Throws InvalidInput for a wall that is
+/// not a probe.
+struct ProbeForces {
+  Vec3 tip = Vec3::Zero();
+  Vec3 sleeve = Vec3::Zero();
+};
+ProbeForces probe_forces(const World& world, int wall);
+
 /// Normal stress on a plane wall of area `area` (Pa, compression positive): the push of the
 /// spheres against its normal, −wall_force·n / A. For a cylinder, the mean radial pressure over
 /// its area `area` (2πR·h for a height h): Σ over contacts of the outward radial push, / A.

@@ -163,9 +163,14 @@ struct WorldCodec {
     }
     w.u64(world.walls().size());
     for (const Wall& wall : world.walls()) {
-      w.u8(wall.kind == Wall::Kind::plane ? 0 : 1);
+      w.u8(static_cast<std::uint8_t>(wall.kind));  // 0 plane, 1 cylinder, 2 probe
       w.vec(wall.point), w.vec(wall.normal), w.f64(wall.radius), w.vec(wall.velocity);
       w.f64(wall.radial_velocity), w.f64(wall.friction);
+      if (wall.kind == Wall::Kind::probe) {  // its profile after the common fields
+        w.u64(wall.profile.size());
+        for (const Eigen::Vector2d& x : wall.profile) w.f64(x.x()), w.f64(x.y());
+        w.i32(wall.sleeve_from);
+      }
     }
     w.u64(world.contacts().size());
     for (const PairContact& c : world.contacts()) w.i32(c.i), w.i32(c.j), w.state(c.state);
@@ -248,11 +253,23 @@ struct WorldCodec {
     for (std::size_t k = 0; k < walls; ++k) {
       Wall wall;
       const std::uint8_t kind = r.u8();
-      if (kind > 1)
+      if (kind > 2)
         r.fail("unknown kind " + std::to_string(kind) + " of wall " + std::to_string(k));
-      wall.kind = kind == 0 ? Wall::Kind::plane : Wall::Kind::cylinder;
+      wall.kind = static_cast<Wall::Kind>(kind);
       wall.point = r.vec(), wall.normal = r.vec(), wall.radius = r.f64(), wall.velocity = r.vec();
       wall.radial_velocity = r.f64(), wall.friction = r.f64();
+      if (wall.kind == Wall::Kind::probe) {
+        const std::size_t points = r.count(16, "probe profile point");
+        if (points < 1) r.fail("probe wall " + std::to_string(k) + " has no profile");
+        wall.profile.resize(points);
+        for (Eigen::Vector2d& x : wall.profile) x.x() = r.f64(), x.y() = r.f64();
+        wall.sleeve_from = r.i32();
+        try {
+          validate_probe_profile(wall);
+        } catch (const InvalidInput& e) {
+          r.fail("wall " + std::to_string(k) + ": " + e.what());
+        }
+      }
       world.add_wall(wall);
     }
 

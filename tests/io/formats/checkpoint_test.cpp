@@ -170,6 +170,42 @@ TEST(DemCheckpoint, SortingWorldContinuesBitIdentically) {
   std::filesystem::remove(path);
 }
 
+// A cone probe pushed into the pile: its profile and sleeve are saved, and the push continues
+// to the same bits.
+TEST(DemCheckpoint, ProbeWallContinuesBitIdentically) {
+  auto make = [] {
+    World world = make_deposition(160, false);
+    world.add_wall(Wall::probe(Vec3(0.0, 0.0, 0.06), 0.012, 60.0, Vec3(0.0, 0.0, -1.0)));
+    return world;
+  };
+  auto on_probe = [](const World& w) {
+    int n = 0;
+    for (const WallContact& c : w.wall_contacts()) n += c.wall == 2;
+    return n;
+  };
+  // Saved at the first hundred steps that end with the probe touching a sphere.
+  World first = make();
+  int steps = 0;
+  while (on_probe(first) == 0 && steps < 6000) first.step(100), steps += 100;
+  ASSERT_GT(on_probe(first), 0) << "the test needs the probe in the pile at the checkpoint";
+  World straight = make();
+  straight.step(steps + 1500);
+  const std::string path = temp_path("probe.ckpt"), again = temp_path("probe2.ckpt");
+  save_checkpoint(path, first);
+  World resumed = load_checkpoint(path);
+  const Wall& w = resumed.walls()[2];
+  EXPECT_EQ(w.kind, Wall::Kind::probe);
+  EXPECT_EQ(w.profile, first.walls()[2].profile);
+  EXPECT_EQ(w.sleeve_from, 1);
+  save_checkpoint(again, resumed);
+  EXPECT_EQ(read_bytes(path), read_bytes(again));
+  resumed.step(1500);
+  expect_identical(straight, resumed);
+  EXPECT_LT(straight.walls()[2].point.z(), 0.045);  // the probe did go down
+  std::filesystem::remove(path);
+  std::filesystem::remove(again);
+}
+
 TEST(DemCheckpoint, SaveLoadSaveIsByteIdentical) {
   World world = make_deposition(160);
   world.step(2000);
