@@ -22,6 +22,7 @@ void register_specimen(CLI::App& app);
 void register_export(CLI::App& app);
 void register_import(CLI::App& app);
 void register_test(CLI::App& app);
+void register_compare_curves(CLI::App& app);
 void register_specimen_scale(CLI::App& app);
 
 void register_repair(CLI::App& app);

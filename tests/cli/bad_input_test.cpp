@@ -197,6 +197,21 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
       {"import lammps " + in("run") + " --specimen " + in("run") + " --out " + in("run"),
        "would replace", ""});
 
+  // compare-curves A B: missing or unreadable files, a missing column, a cell that is not a
+  // number, x that goes back, one row, ranges that do not overlap, too few points
+  write(d / "qc_a.csv", "step,depth_m,qc_pa\n1,0,0\n2,0.1,1e6\n3,0.2,2e6\n");
+  write(d / "qc_nan.csv", "step,depth_m,qc_pa\n1,0,0\n2,0.1,nan\n");
+  write(d / "qc_back.csv", "step,depth_m,qc_pa\n1,0,0\n2,0.1,1\n3,0.05,2\n");
+  write(d / "qc_one.csv", "step,depth_m,qc_pa\n1,0,0\n");
+  write(d / "qc_far.csv", "step,depth_m,qc_pa\n1,1,0\n2,2,1\n");
+  const std::string qa = in("qc_a.csv");
+  for (const char* f : {"missing.csv", "a_dir", "empty.csv", "garbage.csv", "qc_nan.csv",
+                        "qc_back.csv", "qc_one.csv", "good.csv"})
+    cases.push_back({"compare-curves " + qa + " " + in(f), f, ""});
+  cases.push_back({"compare-curves " + qa + " " + qa + " --y qc", "'qc'", ""});
+  cases.push_back({"compare-curves " + qa + " " + in("qc_far.csv"), "do not overlap", ""});
+  cases.push_back({"compare-curves " + qa + " " + qa + " --points 1", "points", ""});
+
   for (const Case& c : cases) {
     SCOPED_TRACE(c.command);
     expect_one_line_error(run_cli(c.command, d), c.needle);
@@ -210,5 +225,5 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
   // The inputs are untouched.
   EXPECT_EQ(slurp(d / "rocks.toml"), std::string(kTinyRocks));
   EXPECT_TRUE(fs::is_regular_file(d / "box.stl"));
-  std::printf("bad-input matrix: %zu cases over 10 commands\n", cases.size());
+  std::printf("bad-input matrix: %zu cases over 11 commands\n", cases.size());
 }

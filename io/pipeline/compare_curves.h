@@ -1,0 +1,22 @@
+// The job of `clumpkit compare-curves`: the residual of one test curve against another (CTGU
+// 2017, eq. 4) over their common range.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace clumpkit {
+
+/// What the job compares: curve b against the reference a, columns `x` and `y` of each CSV.
+struct CompareCurvesOptions {
+  std::string a, b;
+  std::string x = "depth_m", y = "qc_pa";
+  int points = 200;
+};
+
+/// Reads both curves and returns {a, b, x, y, from, to, points, residual_abs, residual_rel,
+/// relative_points}. Throws IoError / InvalidInput naming the file for bad input.
+nlohmann::ordered_json compare_curves(const CompareCurvesOptions& o);
+
+}  // namespace clumpkit
