@@ -3,6 +3,7 @@
 #include "dem/measure/stress.h"
 #include "geom/errors.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -126,6 +127,33 @@ void drive_cell(World& world, const TestCell& cell, const Control& axial, const 
       throw InvalidInput("test cell: lateral walls are stress-controlled or fixed");
   }
   world.step(steps);
+}
+
+Consolidation consolidate_cell(World& world, const TestCell& cell, double stress, double tolerance,
+                               double unbalanced, long long max_steps, const ServoGain& gain,
+                               long long& steps, const std::function<bool()>& stop) {
+  const Control confine{Control::Mode::stress, stress, 0.0};
+  constexpr int kCheck = 100;
+  while (steps < max_steps) {
+    drive_cell(world, cell, confine, confine, gain, 1);
+    if (++steps % kCheck != 0) continue;
+    const double ea = std::abs(axial_stress(world, cell) / stress - 1.0);
+    const double el = std::abs(lateral_stress(world, cell) / stress - 1.0);
+    if (ea <= tolerance && el <= tolerance && mean_unbalanced_force_ratio(world) <= unbalanced)
+      return Consolidation::equilibrium;
+    if (stop && steps % (kCheck * 10) == 0 && stop()) return Consolidation::stopped;
+  }
+  return Consolidation::step_limit;
+}
+
+ServoGain test_servo_gain(ServoGain gain, double servo_strain_rate, double strain_rate,
+                          double height, double dt) {
+  // Default speed limit: a millionth of the height per step, or ten times the platen's speed.
+  if (servo_strain_rate > 0.0)
+    gain.max_speed = servo_strain_rate * height;
+  else if (!(gain.max_speed > 0.0))
+    gain.max_speed = std::max(1e-6 * height / dt, 10.0 * strain_rate * height);
+  return gain;
 }
 
 std::vector<int> cell_walls(const TestCell& cell) {

@@ -6,6 +6,7 @@
 #include "dem/lab/servo.h"
 #include "dem/run/stage_store.h"
 
+#include <functional>
 #include <vector>
 
 namespace clumpkit::dem {
@@ -46,6 +47,24 @@ struct Control {
 /// control closes in at its speed, fixed walls stay; then the world steps `steps` times.
 void drive_cell(World& world, const TestCell& cell, const Control& axial, const Control& lateral,
                 const ServoGain& gain, int steps = 1);
+
+/// How a consolidation ended.
+enum class Consolidation { equilibrium, step_limit, stopped };
+
+/// Isotropic consolidation of the specimen in `cell` to `stress` (Pa): every wall under servo
+/// control, one step at a time; every 100 steps, equilibrium when both the axial and the lateral
+/// stress are within `tolerance` (relative) of the target and the mean unbalanced-force ratio is
+/// at most `unbalanced`. `steps` counts the steps taken (continued from its value, up to
+/// `max_steps`); `stop` is asked every 1,000 steps and ends it early when true.
+Consolidation consolidate_cell(World& world, const TestCell& cell, double stress, double tolerance,
+                               double unbalanced, long long max_steps, const ServoGain& gain,
+                               long long& steps, const std::function<bool()>& stop = {});
+
+/// The servo gain of a test: `gain` with its speed limit set, when not given, to
+/// servo_strain_rate × height (when positive), else the larger of a millionth of the height per
+/// step and ten times the platen speed `strain_rate` × height.
+ServoGain test_servo_gain(ServoGain gain, double servo_strain_rate, double strain_rate,
+                          double height, double dt);
 
 /// Every wall of the cell: the lateral ones, then the bottom and top platens (cuboid: −x, +x,
 /// −y, +y, −z, +z).

@@ -74,12 +74,8 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
     st.phase = Phase::consolidation;
   }
   const double dt = world.options().timestep;
-  ServoGain gain = s.gain;
-  // Default speed limit: a millionth of the height per step, or ten times the platen's speed.
-  if (s.servo_strain_rate > 0.0)
-    gain.max_speed = s.servo_strain_rate * st.start_height;
-  else if (!(gain.max_speed > 0.0))
-    gain.max_speed = std::max(1e-6 * st.start_height / dt, 10.0 * s.strain_rate * st.start_height);
+  const ServoGain gain =
+      test_servo_gain(s.gain, s.servo_strain_rate, s.strain_rate, st.start_height, dt);
   auto result = [&](bool stopped) {
     ElementTestResult r;
     r.consolidation_steps = st.consolidation_steps;
@@ -92,20 +88,11 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
 
   // 1. Isotropic consolidation to the confining stress.
   if (st.phase == Phase::consolidation) {
-    const Control confine{Mode::stress, s.confining, 0.0};
-    constexpr int kCheck = 100;
-    while (st.consolidation_steps < s.max_consolidation_steps) {
-      drive_cell(world, cell, confine, confine, gain, 1);
-      if (++st.consolidation_steps % kCheck != 0) continue;
-      const double ea = std::abs(axial_stress(world, cell) / s.confining - 1.0);
-      const double el = std::abs(lateral_stress(world, cell) / s.confining - 1.0);
-      if (ea <= s.consolidation_tolerance && el <= s.consolidation_tolerance &&
-          mean_unbalanced_force_ratio(world) <= s.consolidation_unbalanced) {
-        st.consolidated = true;
-        break;
-      }
-      if (stop && st.consolidation_steps % (kCheck * 10) == 0 && stop()) return result(true);
-    }
+    const Consolidation c = consolidate_cell(world, cell, s.confining, s.consolidation_tolerance,
+                                             s.consolidation_unbalanced, s.max_consolidation_steps,
+                                             gain, st.consolidation_steps, stop);
+    if (c == Consolidation::stopped) return result(true);
+    st.consolidated = c == Consolidation::equilibrium;
     st.height0 = cell_height(world, cell);
     st.volume0 = cell_volume(world, cell);
     if (world.options().contact.friction != st.test_friction)
