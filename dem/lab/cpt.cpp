@@ -1,0 +1,256 @@
+#include "dem/lab/cpt.h"
+
+#include "dem/measure/stress.h"
+#include "geom/errors.h"
+#include "geom/format.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+namespace clumpkit::dem {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr const char* kStage = "cpt";
+constexpr int kRowFields = 8;
+
+// The cell's vertical axis (x, y): the cylinder's, or the middle of the cuboid's side walls.
+Vec3 cell_axis(const World& world, const TestCell& cell) {
+  const std::vector<Wall>& w = world.walls();
+  if (cell.shape == TestCell::Shape::cylinder)
+    return Vec3(w[cell.lateral[0]].point.x(), w[cell.lateral[0]].point.y(), 0.0);
+  return Vec3(0.5 * (w[cell.lateral[0]].point.x() + w[cell.lateral[1]].point.x()),
+              0.5 * (w[cell.lateral[2]].point.y() + w[cell.lateral[3]].point.y()), 0.0);
+}
+
+std::array<double*, kRowFields - 1> row_fields(CptRow& c) {
+  return {&c.depth, &c.tip_force,    &c.sleeve_force,  &c.qc,
+          &c.fs,    &c.axial_stress, &c.lateral_stress};
+}
+
+std::string row_key(std::size_t k) {
+  char key[32];
+  std::snprintf(key, sizeof key, "curve.%06zu", k);
+  return key;
+}
+
+double fraction_done(const CptState& st, const CptSettings& s) {
+  if (st.phase != CptState::Phase::push || st.curve.empty())
+    return 0.1 * std::min(1.0, double(st.consolidation_steps) /
+                                   double(std::max(1LL, s.cell.max_consolidation_steps)));
+  return 0.1 + 0.9 * std::clamp(st.curve.back().depth / s.probe.depth, 0.0, 1.0);
+}
+
+}  // namespace
+
+void validate_cpt(const World& world, const TestCell& cell, const CptSettings& s) {
+  const ProbeSettings& p = s.probe;
+  auto positive = [](double v, const char* what) {
+    if (!(v > 0.0) || !std::isfinite(v))
+      throw InvalidInput(std::string("cpt: probe ") + what + " must be positive, got " +
+                         format_number(v));
+  };
+  positive(p.diameter, "diameter");
+  positive(p.velocity, "velocity");
+  positive(p.depth, "depth");
+  if (!(p.apex_deg > 0.0 && p.apex_deg < 180.0))
+    throw InvalidInput("cpt: probe apex angle must be in (0, 180) degrees, got " +
+                       format_number(p.apex_deg));
+  const Vec3 l = cell_lengths(world, cell);
+  if (!(p.diameter <= 0.5 * std::min(l.x(), l.y())))
+    throw InvalidInput("cpt: probe diameter " + format_number(p.diameter) +
+                       " m exceeds half the cell's width " + format_number(std::min(l.x(), l.y())) +
+                       " m");
+  if (s.cell.record_every < 1) throw InvalidInput("cpt: record_every must be at least 1");
+  if (!(s.cell.confining > 0.0)) throw InvalidInput("cpt: the confining stress must be positive");
+}
+
+CptResult run_cpt(World& world, const TestCell& cell, const CptSettings& s, CptState& st,
+                  const std::function<bool()>& stop) {
+  using Phase = CptState::Phase;
+  validate_cpt(world, cell, s);
+  const ProbeSettings& p = s.probe;
+  if (st.phase == Phase::start) {
+    st.test_friction = s.cell.friction >= 0.0 ? s.cell.friction : world.options().contact.friction;
+    world.rescale_friction(s.cell.consolidation_friction >= 0.0 ? s.cell.consolidation_friction
+                                                                : st.test_friction);
+    st.start_height = cell_height(world, cell);
+    st.phase = Phase::consolidation;
+  }
+  const double dt = world.options().timestep;
+  // The push's strain rate, for the servo's default speed limit: the probe's speed over its
+  // diameter.
+  const ServoGain gain = test_servo_gain(s.cell.gain, s.cell.servo_strain_rate,
+                                         p.velocity / p.diameter, st.start_height, dt);
+  auto result = [&](bool stopped) {
+    CptResult r;
+    r.consolidation_steps = st.consolidation_steps;
+    r.consolidated = st.consolidated;
+    r.reached_bottom = st.reached_bottom;
+    r.curve = st.curve;
+    r.stopped = stopped;
+    return r;
+  };
+
+  // 1. Isotropic consolidation to the confining stress.
+  if (st.phase == Phase::consolidation) {
+    const Consolidation c =
+        consolidate_cell(world, cell, s.cell.confining, s.cell.consolidation_tolerance,
+                         s.cell.consolidation_unbalanced, s.cell.max_consolidation_steps, gain,
+                         st.consolidation_steps, stop);
+    if (c == Consolidation::stopped) return result(true);
+    st.consolidated = c == Consolidation::equilibrium;
+    if (world.options().contact.friction != st.test_friction)
+      world.rescale_friction(st.test_friction);
+    // The probe, apex at the top platen on the cell's axis, pushed down.
+    const Vec3 axis = cell_axis(world, cell);
+    st.apex0 = world.walls()[cell.top].point.z();
+    Wall probe = Wall::probe(Vec3(axis.x(), axis.y(), st.apex0), p.diameter, p.apex_deg,
+                             Vec3(0.0, 0.0, -p.velocity));
+    probe.friction = p.friction >= 0.0 ? p.friction : st.test_friction;
+    st.probe = world.add_wall(probe);
+    st.phase = Phase::push;
+  }
+
+  // 2. The push, with the cell's stresses held.
+  if (st.phase == Phase::push) {
+    const Wall& probe = world.walls()[st.probe];
+    const double radius = 0.5 * p.diameter;
+    const double shoulder = probe.profile[probe.sleeve_from].y();
+    auto row = [&](long long step) {
+      CptRow c;
+      c.step = step;
+      const double apex = world.walls()[st.probe].point.z();
+      c.depth = st.apex0 - apex;
+      const ProbeForces f = probe_forces(world, st.probe);
+      c.tip_force = f.tip.z();
+      c.sleeve_force = f.sleeve.z();
+      c.qc = c.tip_force / (kPi * radius * radius);
+      const double embedded = world.walls()[cell.top].point.z() - (apex + shoulder);
+      c.fs = embedded > 0.0 ? c.sleeve_force / (2.0 * kPi * radius * embedded) : 0.0;
+      c.axial_stress = axial_stress(world, cell);
+      c.lateral_stress = lateral_stress(world, cell);
+      return c;
+    };
+    if (st.curve.empty()) {
+      st.curve.push_back(row(0));
+      if (stop && stop()) return result(true);
+    }
+    const Control hold{Control::Mode::stress, s.cell.confining, 0.0};
+    const long long max_steps = static_cast<long long>(std::ceil(p.depth / p.velocity / dt)) + 1;
+    long long& step = st.push_steps;
+    while (step < max_steps) {
+      for (int k = 0; k < s.cell.record_every && step < max_steps; ++k, ++step)
+        drive_cell(world, cell, hold, hold, gain, 1);
+      st.curve.push_back(row(step));
+      const double apex = world.walls()[st.probe].point.z();
+      if (apex - world.walls()[cell.bottom].point.z() < p.diameter) {
+        st.reached_bottom = true;
+        break;
+      }
+      if (st.curve.back().depth >= p.depth) break;
+      if (stop && stop()) return result(true);
+    }
+    world.walls()[st.probe].velocity = Vec3::Zero();
+    for (int w : cell_walls(cell)) set_wall_speed(world, w, 0.0);
+    st.phase = Phase::done;
+  }
+  return result(false);
+}
+
+StageRecord cpt_record(const CptState& st, const TestCell& cell) {
+  StageRecord r;
+  r["phase"] = std::to_string(static_cast<int>(st.phase));
+  r["consolidation_steps"] = std::to_string(st.consolidation_steps);
+  r["consolidated"] = st.consolidated ? "1" : "0";
+  r["push_steps"] = std::to_string(st.push_steps);
+  put_number(r, "start_height", st.start_height);
+  put_number(r, "test_friction", st.test_friction);
+  put_number(r, "apex0", st.apex0);
+  r["probe"] = std::to_string(st.probe);
+  r["reached_bottom"] = st.reached_bottom ? "1" : "0";
+  put_cell(r, cell);
+  r["curve.rows"] = std::to_string(st.curve.size());
+  for (std::size_t k = 0; k < st.curve.size(); ++k) {
+    CptRow c = st.curve[k];
+    std::string text = format_number(double(c.step));
+    for (double* v : row_fields(c)) text += "," + format_number(*v);
+    r[row_key(k)] = text;
+  }
+  return r;
+}
+
+void read_cpt_record(const StageRecord& r, const std::string& where, CptState& st, TestCell& cell) {
+  const long long phase = record_integer(r, "phase", where);
+  if (phase < 0 || phase > 3)
+    throw InvalidInput(where + ": stage record phase: " + std::to_string(phase) +
+                       " is not a phase of the test");
+  st.phase = static_cast<CptState::Phase>(phase);
+  st.consolidation_steps = record_integer(r, "consolidation_steps", where);
+  st.consolidated = record_integer(r, "consolidated", where) != 0;
+  st.push_steps = record_integer(r, "push_steps", where);
+  st.start_height = record_number(r, "start_height", where);
+  st.test_friction = record_number(r, "test_friction", where);
+  st.apex0 = record_number(r, "apex0", where);
+  st.probe = static_cast<int>(record_integer(r, "probe", where));
+  st.reached_bottom = record_integer(r, "reached_bottom", where) != 0;
+  cell = read_cell(r, where);
+  const long long rows = record_integer(r, "curve.rows", where);
+  if (rows < 0) throw InvalidInput(where + ": stage record curve.rows is negative");
+  st.curve.clear();
+  for (long long k = 0; k < rows; ++k) {
+    const std::string key = row_key(static_cast<std::size_t>(k));
+    const std::vector<double> v = record_list(r, key, where);
+    if (v.size() != kRowFields)
+      throw InvalidInput(where + ": stage record " + key + ": expected " +
+                         std::to_string(kRowFields) + " numbers");
+    CptRow c;
+    c.step = static_cast<long long>(v[0]);
+    auto fields = row_fields(c);
+    for (int f = 0; f < kRowFields - 1; ++f) *fields[f] = v[f + 1];
+    st.curve.push_back(c);
+  }
+}
+
+CptResult run_cpt(CellSpecimen& specimen, const CptSettings& settings, const StageControl& control,
+                  const std::string& fingerprint) {
+  StageStore in_memory;
+  StageStore& store = control.store ? *control.store : in_memory;
+  store.open(fingerprint);
+  CptState state;
+  CheckpointInfo info;
+  bool resumed = false;
+  if (std::optional<World> world = store.running(kStage, info)) {
+    read_cpt_record(info.state, std::string("cpt checkpoint"), state, specimen.cell);
+    std::vector<int> walls = cell_walls(specimen.cell);
+    if (state.probe >= 0) walls.push_back(state.probe);
+    for (int w : walls)
+      if (w >= static_cast<int>(world->walls().size()))
+        throw InvalidInput("cpt checkpoint: wall " + std::to_string(w) +
+                           " is not a wall of its world");
+    if (state.probe >= 0 && world->walls()[state.probe].kind != Wall::Kind::probe)
+      throw InvalidInput("cpt checkpoint: wall " + std::to_string(state.probe) + " is not a probe");
+    specimen.world = std::move(*world);
+    resumed = true;
+  }
+  StageCheckpoints checkpoints(store, control, kStage);
+  const auto stop = [&] {
+    return checkpoints.check(
+        specimen.world, [&] { return cpt_record(state, specimen.cell); }, kStage,
+        fraction_done(state, settings));
+  };
+  CptResult r = run_cpt(specimen.world, specimen.cell, settings, state, stop);
+  if (r.stopped)
+    throw Interrupted(std::string("cpt: stopped on request") +
+                      (store.keeps_checkpoints() ? " (checkpoint kept)" : ""));
+  store.finish(kStage, {{"steps", std::to_string(state.curve.back().step)}}, nullptr);
+  r.resumed = resumed;
+  return r;
+}
+
+}  // namespace clumpkit::dem
