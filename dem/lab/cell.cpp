@@ -113,6 +113,10 @@ void drive_cell(World& world, const TestCell& cell, const Control& axial, const 
       set_wall_speed(world, cell.bottom, 0.0);
       set_wall_speed(world, cell.top, axial.speed);
       break;
+    case Mode::top_stress:
+      set_wall_speed(world, cell.bottom, 0.0);
+      servo(world, cell.top, a, axial.stress, gain);
+      break;
     case Mode::fixed:
       set_wall_speed(world, cell.bottom, 0.0);
       set_wall_speed(world, cell.top, 0.0);

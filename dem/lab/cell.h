@@ -36,8 +36,10 @@ double axial_stress(const World& world, const TestCell& cell);
 double lateral_stress(const World& world, const TestCell& cell);
 
 /// How the platens or the lateral walls move during a stage.
+/// top_stress (axial only): the top platen under stress control, the bottom one fixed — a
+/// chamber whose base holds while a probe pushes into it from the top.
 struct Control {
-  enum class Mode { stress, velocity, fixed };
+  enum class Mode { stress, velocity, fixed, top_stress };
   Mode mode = Mode::fixed;
   double stress = 0;  ///< stress mode: target (Pa)
   double speed = 0;   ///< velocity mode: closing speed of the top platen (m/s; bottom stays)

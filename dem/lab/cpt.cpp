@@ -141,12 +141,15 @@ CptResult run_cpt(World& world, const TestCell& cell, const CptSettings& s, CptS
       st.curve.push_back(row(0));
       if (stop && stop()) return result(true);
     }
+    // The base fixed (with both platens under stress control the probe carried the whole
+    // specimen down with it), the top platen and the lateral walls at the confining stress.
+    const Control top{Control::Mode::top_stress, s.cell.confining, 0.0};
     const Control hold{Control::Mode::stress, s.cell.confining, 0.0};
     const long long max_steps = static_cast<long long>(std::ceil(p.depth / p.velocity / dt)) + 1;
     long long& step = st.push_steps;
     while (step < max_steps) {
       for (int k = 0; k < s.cell.record_every && step < max_steps; ++k, ++step)
-        drive_cell(world, cell, hold, hold, gain, 1);
+        drive_cell(world, cell, top, hold, gain, 1);
       st.curve.push_back(row(step));
       const double apex = world.walls()[st.probe].point.z();
       if (apex - world.walls()[cell.bottom].point.z() < p.diameter) {

@@ -1,6 +1,7 @@
 // `clumpkit test isotropic|oedometer|triaxial --specimen DIR --recipe T.toml --out DIR`.
 #include "geom/format.h"
 #include "io/cli/common.h"
+#include "io/pipeline/cpt.h"
 #include "io/pipeline/element_test.h"
 #include "io/recipes/test_recipe.h"
 
@@ -24,16 +25,20 @@ void register_test(CLI::App& app) {
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
       "test",
-      "Element test of a specimen (a `clumpkit specimen` directory) in a frictionless cylinder "
-      "cell, gravity off: isotropic consolidation to [test] confining by servo-controlled walls, "
-      "then isotropic (stress ramp to final_stress: bulk_modulus), oedometer (radial wall fixed, "
+      "Element test or cone penetration test of a specimen (a `clumpkit specimen` directory) in a "
+      "frictionless cylinder cell, gravity off: isotropic consolidation to [test] confining by "
+      "servo-controlled walls, then isotropic (stress ramp to final_stress: bulk_modulus), "
+      "oedometer (radial wall fixed, "
       "platen at strain_rate to final_stress: constrained_modulus, k0) or triaxial (radial "
       "stress held, platen at strain_rate to max_axial_strain: young_modulus at 1e-4, "
-      "peak_friction_angle, critical_friction_angle). Writes DIR/curve.csv (compression "
-      "positive), curve.png, report.json, manifest.json, in DIR.partial until the end (a "
+      "peak_friction_angle, critical_friction_angle) or cpt (the [probe] cone pushed down the "
+      "cell's axis from the top platen at its velocity to its depth, the cell's stresses held: "
+      "curve.csv step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa). Writes DIR/curve.csv "
+      "(compression positive), curve.png, report.json, manifest.json, in DIR.partial until the end "
+      "(a "
       "checkpoint every --checkpoint-seconds and on Ctrl-C; continue with --resume). Same "
       "bytes for any --threads and after a resume.");
-  c->add_option("KIND", o->kind, "isotropic, oedometer or triaxial")->required();
+  c->add_option("KIND", o->kind, "isotropic, oedometer, triaxial or cpt")->required();
   c->add_option("--specimen", o->specimen, "Specimen directory")->required();
   c->add_option("--recipe", o->recipe, "Test recipe (see assets/recipes/test-*.toml)")->required();
   c->add_option("--out", o->out, "Output directory")->required();
@@ -55,7 +60,8 @@ void register_test(CLI::App& app) {
   c->add_flag("--json", o->json, "Print report.json on stdout");
   c->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
-    const dem::TestKind kind = test_kind(o->kind);
+    const bool cpt = o->kind == "cpt";
+    const dem::TestKind kind = cpt ? dem::TestKind::triaxial : test_kind(o->kind);
     set_threads(o->threads);
     const TestRecipe recipe = read_test_recipe(o->recipe);
     ProgressBar bar("test", o->quiet);
@@ -64,8 +70,10 @@ void register_test(CLI::App& app) {
     jo.checkpoint_seconds = o->checkpoint_seconds;
     jo.allow_dynamic = o->allow_dynamic;
     jo.save_consolidated = o->save_consolidated;
-    const ElementTestJobResult job = run_element_test_job(kind, o->specimen, recipe, o->out, jo,
-                                                          signal_interrupter(bar, "test"));
+    const ElementTestJobResult job =
+        cpt ? run_cpt_job(o->specimen, recipe, o->out, jo, signal_interrupter(bar, "test"))
+            : run_element_test_job(kind, o->specimen, recipe, o->out, jo,
+                                   signal_interrupter(bar, "test"));
     bar.finish();
     if (!job.afresh_reason.empty()) note("started afresh: " + job.afresh_reason);
     const nlohmann::ordered_json& rep = job.report;
@@ -73,7 +81,10 @@ void register_test(CLI::App& app) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (rep["inertial_number"].get<double>() > 1e-3)
       warning("inertial number " + format_number(rep["inertial_number"].get<double>()) +
-              " > 1e-3: the test is not quasi-static; lower test.strain_rate");
+              " > 1e-3: the test is not quasi-static; lower " +
+              std::string(cpt ? "probe.velocity" : "test.strain_rate"));
+    if (cpt && rep["reached_bottom"].get<bool>())
+      warning("the probe came within one diameter of the bottom platen before its depth");
     if (!rep["consolidated"].get<bool>())
       warning("consolidation did not reach equilibrium within its step limit");
     if (o->json) {

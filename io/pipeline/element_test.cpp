@@ -11,6 +11,7 @@
 #include "io/formats/specimen_csv.h"
 #include "io/pipeline/job.h"
 #include "io/pipeline/stage_files.h"
+#include "io/pipeline/test_setup.h"
 #include "io/reports/plot.h"
 
 #include <algorithm>
@@ -26,7 +27,7 @@ dem::TestKind test_kind(const std::string& name) {
   if (name == "isotropic") return dem::TestKind::isotropic;
   if (name == "oedometer") return dem::TestKind::oedometer;
   if (name == "triaxial") return dem::TestKind::triaxial;
-  throw InvalidInput("test: unknown test '" + name + "' (known: isotropic, oedometer, triaxial)");
+  throw InvalidInput("test: unknown test '" + name + "' (known: isotropic, oedometer, triaxial, cpt)");
 }
 
 namespace {
@@ -41,44 +42,6 @@ const char* kind_name(dem::TestKind k) {
       return "triaxial";
   }
   return "";
-}
-
-double report_number(const nlohmann::json& j, const std::string& path, const char* a,
-                     const char* b) {
-  const nlohmann::json* v = j.contains(a) ? &j[a] : nullptr;
-  if (v && b) v = v->contains(b) ? &(*v)[b] : nullptr;
-  if (!v || !v->is_number() || !std::isfinite(v->get<double>()))
-    throw InvalidInput(path + ": field " + a + "." + b + " missing or not a number");
-  return v->get<double>();
-}
-
-// The contact law: the specimen's, overridden field by field by the recipe.
-dem::ContactParams contact_law(const nlohmann::json& report, const std::string& path,
-                               const TestRecipe& r) {
-  dem::ContactParams c;
-  c.kn = report_number(report, path, "contact", "kn");
-  c.ks = report_number(report, path, "contact", "ks");
-  c.friction = report_number(report, path, "contact", "friction");
-  c.damping_ratio = report_number(report, path, "contact", "damping_ratio");
-  c.local_damping = report_number(report, path, "contact", "local_damping");
-  // The law the specimen was built with (report.json of specimens before 0.x has no rule: none).
-  const nlohmann::json& rc = report.at("contact");
-  if (rc.contains("stiffness_scaling") && rc["stiffness_scaling"] == "linear") {
-    c.scaling = dem::StiffnessScaling::linear;
-    c.d_ref = report_number(report, path, "contact", "d_ref");
-  }
-  const double ks_over_kn = r.ks_over_kn.value_or(c.ks / c.kn);
-  if (r.kn_ref) c.kn = *r.kn_ref;
-  c.ks = ks_over_kn * c.kn;
-  if (r.scaling) c.scaling = *r.scaling;
-  if (r.d_ref) c.d_ref = *r.d_ref;
-  // No viscous contact damping unless asked: a quasi-static test needs none (local damping
-  // settles it), and against dashpots (the specimen's β = 0.5) the radial servo lagged its
-  // target by 3–7 % while the specimen dilated (measured; within 0.25 % without).
-  c.damping_ratio = r.damping_ratio.value_or(0.0);
-  if (r.local_damping) c.local_damping = *r.local_damping;
-  dem::validate(c);
-  return c;
 }
 
 double axial(const dem::CurveRow& c) {
@@ -97,27 +60,6 @@ double vol_strain(const dem::CurveRow& c) {
 // A measured value, or null when the curve could not give it (too few rows in the range).
 nlohmann::ordered_json measured(double v) {
   return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
-}
-
-// The container of the specimen as a test cell: a cuboid at its recorded box, or a cylinder of
-// its diameter with the platens on the specimen's bottom and top.
-dem::TestCell test_cell(dem::World& world, const nlohmann::json& report, const std::string& path,
-                        double z_lo, double z_hi) {
-  const auto c = report.find("container");
-  if (c != report.end() && c->is_object() && c->value("shape", std::string()) == "cuboid") {
-    Vec3 lo, hi;
-    try {
-      for (int a = 0; a < 3; ++a) {
-        lo[a] = c->at("lo").at(a).get<double>();
-        hi[a] = c->at("hi").at(a).get<double>();
-      }
-    } catch (const std::exception&) {
-      throw InvalidInput(path + ": field container.lo/hi missing or not three numbers");
-    }
-    return dem::add_cuboid_test_cell(world, lo, hi);
-  }
-  const double radius = 0.5 * report_number(report, path, "container", "diameter");
-  return dem::add_cylinder_test_cell(world, radius, z_lo, z_hi);
 }
 
 // The consolidated specimen as a specimen directory for `clumpkit export`: bodies shifted so the
@@ -171,69 +113,29 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
                                           const TestRecipe& recipe, const std::string& out_dir,
                                           const ElementTestJobOptions& options,
                                           const Interrupter& interrupter) {
-  check_output_directory(out_dir);
-  check_output_spares(out_dir, specimen_dir, "the specimen");
-  const fs::path src = specimen_dir;
-  const std::string report_path = (src / "report.json").string();
-  const nlohmann::json spec_report = read_json_file(report_path);
-  const std::vector<SpecimenBody> rows = read_specimen_csv((src / "specimen.csv").string());
-  if (rows.empty()) throw InvalidInput((src / "specimen.csv").string() + ": no bodies");
-
-  // What a checkpoint must match: the test, the recipe, the specimen and this version.
-  Fnv1a fp;
-  fp.add(std::string_view(kind_name(kind)));
-  fp.add(std::string_view(recipe.text));
-  fp.add(std::string_view(read_file((src / "specimen.csv").string())));
-  fp.add(std::string_view(read_file(report_path)));
-  fp.add(std::string_view(CLUMPKIT_VERSION));
-  const std::string fingerprint = fp.hex();
-
-  std::vector<dem::Body> bodies;
-  bodies.reserve(rows.size());
-  double z_lo = 1e300, z_hi = -1e300;
-  for (const SpecimenBody& b : rows) {
-    bodies.push_back(dem_body(b));
-    for (const Sphere& s : b.spheres) {
-      z_lo = std::min(z_lo, s.center.z() - s.radius);
-      z_hi = std::max(z_hi, s.center.z() + s.radius);
-    }
-  }
-  const dem::WorldOptions o =
-      dem::element_test_world_options(bodies, contact_law(spec_report, report_path, recipe));
-  // Refused before anything is written unless the user asks for a dynamic test.
-  const double inertial =
-      dem::inertial_number(bodies, recipe.settings.strain_rate, recipe.settings.confining);
-  if (inertial > 1e-2 && !options.allow_dynamic)
-    throw InvalidInput(recipe.path +
-                       ": test.strain_rate: " + format_number(recipe.settings.strain_rate) +
-                       " gives an inertial number " + format_number(inertial, 3) +
-                       " > 1e-2 on this specimen (a dynamic test, not quasi-static): lower it, or "
-                       "pass --allow-dynamic");
-
-  if (options.save_consolidated && spec_report.contains("container") &&
-      spec_report["container"].value("shape", std::string()) == "cuboid")
-    throw InvalidInput(report_path +
-                       ": container.shape: \"cuboid\": --save-consolidated writes cylinder cells "
-                       "only (the engine exports model a cylinder container)");
-
-  // The work directory DIR.partial: with --resume, its checkpoint of the same inputs continues.
-  const fs::path out = out_dir + ".partial";
-  if (!options.resume)
-    begin_staging(out_dir);  // afresh: an empty DIR.partial
-  else
-    remove_stray_temporaries(out.string());  // a killed run's half-written files
-  fs::create_directories(out);
-  StageFiles stages((out / "checkpoints").string(), options.resume);
-  dem::StageControl control;
-  control.store = &stages;
-  control.checkpoint_every_seconds = options.checkpoint_seconds;
-  control.interrupter = interrupter;
-
-  dem::CellSpecimen specimen{dem::World(o), {}};
-  for (dem::Body& b : bodies) specimen.world.add_body(std::move(b));
-  specimen.cell = test_cell(specimen.world, spec_report, report_path, z_lo, z_hi);
-  specimen.world.options().timestep =
-      recipe.timestep_safety * dem::critical_timestep(specimen.world);
+  TestSetup setup = setup_test(
+      kind_name(kind), specimen_dir, recipe, out_dir, options.resume, options.checkpoint_seconds,
+      options.allow_dynamic, recipe.settings.strain_rate, "test.strain_rate", interrupter,
+      [&](const nlohmann::json& spec_report, const std::string& report_path,
+          const dem::CellSpecimen&) {
+        if (recipe.probe)
+          throw InvalidInput(recipe.path +
+                             ": probe: a [probe] section is for `clumpkit test cpt` "
+                             "only, not the " +
+                             std::string(kind_name(kind)) + " test");
+        if (options.save_consolidated && spec_report.contains("container") &&
+            spec_report["container"].value("shape", std::string()) == "cuboid")
+          throw InvalidInput(report_path +
+                             ": container.shape: \"cuboid\": --save-consolidated writes cylinder "
+                             "cells only (the engine exports model a cylinder container)");
+      });
+  const nlohmann::json& spec_report = setup.spec_report;
+  const dem::WorldOptions& o = setup.options;
+  const double inertial = setup.inertial;
+  const fs::path& out = setup.out;
+  const std::string fingerprint = setup.fingerprint;
+  const dem::StageControl& control = setup.control;
+  dem::CellSpecimen& specimen = setup.specimen;
 
   dem::ElementTestSettings s = recipe.settings;
   s.kind = kind;
@@ -267,7 +169,7 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
   rep["test"] = kind_name(kind);
   rep["specimen"] = specimen_dir;
   rep["recipe"] = recipe.path;
-  rep["bodies"] = rows.size();
+  rep["bodies"] = setup.bodies;
   rep["consolidated"] = r.consolidated;
   rep["consolidation_steps"] = r.consolidation_steps;
   rep["confining_stress"] = s.confining;

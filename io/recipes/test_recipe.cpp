@@ -112,8 +112,31 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
                  "damping_ratio, local_damping)");
         }
       }
+    } else if (k == "probe") {
+      dem::ProbeSettings p;
+      bool have_depth = false;
+      for (const auto& [pk, pv] : f.table(val, k)) {
+        const std::string q(pk.str()), field = "probe." + q;
+        if (q == "diameter") {
+          p.diameter = positive(f, pv, field);
+        } else if (q == "apex_deg") {
+          p.apex_deg = positive(f, pv, field);
+          if (!(p.apex_deg < 180.0)) f.fail(field, "must be in (0, 180), got " + toml_show(pv));
+        } else if (q == "velocity") {
+          p.velocity = positive(f, pv, field);
+        } else if (q == "depth") {
+          p.depth = positive(f, pv, field);
+          have_depth = true;
+        } else if (q == "friction") {
+          p.friction = non_negative(f, pv, field);
+        } else {
+          f.fail(field, "unknown key (known: diameter, apex_deg, velocity, depth, friction)");
+        }
+      }
+      if (!have_depth) f.fail("probe.depth", "is required (the push below the specimen's top, m)");
+      r.probe = p;
     } else {
-      f.fail(k, "unknown key (known: name, description, test, contact)");
+      f.fail(k, "unknown key (known: name, description, test, contact, probe)");
     }
   }
   if (r.scaling == dem::StiffnessScaling::linear && !r.d_ref)

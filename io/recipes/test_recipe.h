@@ -2,6 +2,7 @@
 #pragma once
 
 #include "dem/core/contact.h"
+#include "dem/lab/cpt.h"
 #include "dem/lab/element_test.h"
 
 #include <optional>
@@ -19,7 +20,10 @@ namespace clumpkit {
 /// 0.2), modulus_range ([lo, hi] Pa, default [confining, final_stress] or [p0, 4 p0]). [contact]
 /// (optional, overrides the specimen's law): stiffness_scaling ("none" | "linear"), kn_ref (N/m),
 /// d_ref (m), ks_over_kn, damping_ratio (default 0: no viscous damping in a quasi-static test),
-/// local_damping (default the specimen's).
+/// local_damping (default the specimen's). [probe] (`clumpkit test cpt` only, and required
+/// there): diameter (m, default 0.018), apex_deg (default 60), velocity (m/s, default 0.02),
+/// depth (m: the push below the specimen's top; required), friction (μ probe–sphere, default
+/// the test's).
 struct TestRecipe {
   std::string path, text;
   dem::ElementTestSettings settings;
@@ -29,6 +33,7 @@ struct TestRecipe {
   // [contact] overrides: unset fields keep the specimen's values.
   std::optional<dem::StiffnessScaling> scaling;
   std::optional<double> kn_ref, d_ref, ks_over_kn, damping_ratio, local_damping;
+  std::optional<dem::ProbeSettings> probe;  ///< [probe], when given
 };
 
 /// Parses a test recipe; throws InvalidInput naming the file, the field and the value for an

@@ -104,10 +104,10 @@ TEST(DemCpt, ProbeMeetsResistanceWithTheCellHeldSameBytesForOneAndTwoThreadsAndA
     EXPECT_GE(one[k].tip_force, -1e-9 * std::abs(one[k].tip_force));  // the soil pushes up
     EXPECT_NEAR(one[k].lateral_stress / t.cell.confining, 1.0, 0.5) << k;
   }
-  // Spheres as wide as the probe: the cone meets one or two at a time, qc a fraction of the
-  // confining stress (0.86 of it at most here, measured) rather than the multiples of a fine
-  // packing.
-  EXPECT_GT(qc_max, 0.25 * t.cell.confining);
+  // The cone's resistance is several times the confining stress (9.3 times at most here,
+  // measured; with the base free as well as the top the probe carried the specimen down and qc
+  // stayed below the confining stress).
+  EXPECT_GT(qc_max, 3.0 * t.cell.confining);
   // The sleeve is never pulled down (the probe only goes down; the sleeve's own law is checked
   // on one sphere in tests/dem/core/probe_wall_test.cpp: here the spheres the cone pushed aside
   // stay off the short length of shaft below the top).

@@ -1,0 +1,155 @@
+#include "io/pipeline/test_setup.h"
+
+#include "dem/core/timestep.h"
+#include "geom/errors.h"
+#include "geom/format.h"
+#include "geom/hash.h"
+#include "io/base/atomic_file.h"
+#include "io/base/text.h"
+#include "io/formats/specimen_csv.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace clumpkit {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+double report_number(const nlohmann::json& j, const std::string& path, const char* a,
+                     const char* b) {
+  const nlohmann::json* v = j.contains(a) ? &j[a] : nullptr;
+  if (v && b) v = v->contains(b) ? &(*v)[b] : nullptr;
+  if (!v || !v->is_number() || !std::isfinite(v->get<double>()))
+    throw InvalidInput(path + ": field " + a + "." + b + " missing or not a number");
+  return v->get<double>();
+}
+
+// The contact law: the specimen's, overridden field by field by the recipe.
+dem::ContactParams contact_law(const nlohmann::json& report, const std::string& path,
+                               const TestRecipe& r) {
+  dem::ContactParams c;
+  c.kn = report_number(report, path, "contact", "kn");
+  c.ks = report_number(report, path, "contact", "ks");
+  c.friction = report_number(report, path, "contact", "friction");
+  c.damping_ratio = report_number(report, path, "contact", "damping_ratio");
+  c.local_damping = report_number(report, path, "contact", "local_damping");
+  // The law the specimen was built with (report.json of specimens before 0.x has no rule: none).
+  const nlohmann::json& rc = report.at("contact");
+  if (rc.contains("stiffness_scaling") && rc["stiffness_scaling"] == "linear") {
+    c.scaling = dem::StiffnessScaling::linear;
+    c.d_ref = report_number(report, path, "contact", "d_ref");
+  }
+  const double ks_over_kn = r.ks_over_kn.value_or(c.ks / c.kn);
+  if (r.kn_ref) c.kn = *r.kn_ref;
+  c.ks = ks_over_kn * c.kn;
+  if (r.scaling) c.scaling = *r.scaling;
+  if (r.d_ref) c.d_ref = *r.d_ref;
+  // No viscous contact damping unless asked: a quasi-static test needs none (local damping
+  // settles it), and against dashpots (the specimen's β = 0.5) the radial servo lagged its
+  // target by 3–7 % while the specimen dilated (measured; within 0.25 % without).
+  c.damping_ratio = r.damping_ratio.value_or(0.0);
+  if (r.local_damping) c.local_damping = *r.local_damping;
+  dem::validate(c);
+  return c;
+}
+
+// The container of the specimen as a test cell: a cuboid at its recorded box, or a cylinder of
+// its diameter with the platens on the specimen's bottom and top.
+dem::TestCell test_cell(dem::World& world, const nlohmann::json& report, const std::string& path,
+                        double z_lo, double z_hi) {
+  const auto c = report.find("container");
+  if (c != report.end() && c->is_object() && c->value("shape", std::string()) == "cuboid") {
+    Vec3 lo, hi;
+    try {
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = c->at("lo").at(a).get<double>();
+        hi[a] = c->at("hi").at(a).get<double>();
+      }
+    } catch (const std::exception&) {
+      throw InvalidInput(path + ": field container.lo/hi missing or not three numbers");
+    }
+    return dem::add_cuboid_test_cell(world, lo, hi);
+  }
+  const double radius = 0.5 * report_number(report, path, "container", "diameter");
+  return dem::add_cylinder_test_cell(world, radius, z_lo, z_hi);
+}
+
+}  // namespace
+
+TestSetup setup_test(const std::string& kind, const std::string& specimen_dir,
+                     const TestRecipe& recipe, const std::string& out_dir, bool resume,
+                     double checkpoint_seconds, bool allow_dynamic, double strain_rate,
+                     const std::string& rate_field, const Interrupter& interrupter,
+                     const std::function<void(const nlohmann::json&, const std::string&,
+                                              const dem::CellSpecimen&)>& validate) {
+  check_output_directory(out_dir);
+  check_output_spares(out_dir, specimen_dir, "the specimen");
+  const fs::path src = specimen_dir;
+  const std::string report_path = (src / "report.json").string();
+  const nlohmann::json spec_report = read_json_file(report_path);
+  const std::vector<SpecimenBody> rows = read_specimen_csv((src / "specimen.csv").string());
+  if (rows.empty()) throw InvalidInput((src / "specimen.csv").string() + ": no bodies");
+
+  // What a checkpoint must match: the test, the recipe, the specimen and this version.
+  Fnv1a fp;
+  fp.add(std::string_view(kind));
+  fp.add(std::string_view(recipe.text));
+  fp.add(std::string_view(read_file((src / "specimen.csv").string())));
+  fp.add(std::string_view(read_file(report_path)));
+  fp.add(std::string_view(CLUMPKIT_VERSION));
+  const std::string fingerprint = fp.hex();
+
+  std::vector<dem::Body> bodies;
+  bodies.reserve(rows.size());
+  double z_lo = 1e300, z_hi = -1e300;
+  for (const SpecimenBody& b : rows) {
+    bodies.push_back(dem_body(b));
+    for (const Sphere& s : b.spheres) {
+      z_lo = std::min(z_lo, s.center.z() - s.radius);
+      z_hi = std::max(z_hi, s.center.z() + s.radius);
+    }
+  }
+  const dem::WorldOptions o =
+      dem::element_test_world_options(bodies, contact_law(spec_report, report_path, recipe));
+  // Refused before anything is written unless the user asks for a dynamic test.
+  const double inertial = dem::inertial_number(bodies, strain_rate, recipe.settings.confining);
+  if (inertial > 1e-2 && !allow_dynamic)
+    throw InvalidInput(recipe.path + ": " + rate_field + ": " + format_number(strain_rate) +
+                       " gives an inertial number " + format_number(inertial, 3) +
+                       " > 1e-2 on this specimen (a dynamic test, not quasi-static): lower it, or "
+                       "pass --allow-dynamic");
+
+  dem::CellSpecimen specimen{dem::World(o), {}};
+  for (dem::Body& b : bodies) specimen.world.add_body(std::move(b));
+  specimen.cell = test_cell(specimen.world, spec_report, report_path, z_lo, z_hi);
+  specimen.world.options().timestep =
+      recipe.timestep_safety * dem::critical_timestep(specimen.world);
+  if (validate) validate(spec_report, report_path, specimen);
+
+  // The work directory DIR.partial: with --resume, its checkpoint of the same inputs continues.
+  const fs::path out = out_dir + ".partial";
+  TestSetup setup;
+  if (!resume)
+    begin_staging(out_dir);  // afresh: an empty DIR.partial
+  else
+    remove_stray_temporaries(out.string());  // a killed run's half-written files
+  fs::create_directories(out);
+  setup.stages = std::make_unique<StageFiles>((out / "checkpoints").string(), resume);
+  setup.control.store = setup.stages.get();
+  setup.control.checkpoint_every_seconds = checkpoint_seconds;
+  setup.control.interrupter = interrupter;
+
+  setup.spec_report = spec_report;
+  setup.report_path = report_path;
+  setup.bodies = rows.size();
+  setup.options = o;
+  setup.inertial = inertial;
+  setup.fingerprint = fingerprint;
+  setup.out = out;
+  setup.specimen = std::move(specimen);
+  return setup;
+}
+
+}  // namespace clumpkit

@@ -1,0 +1,122 @@
+// `clumpkit test cpt` on the tiny specimen: a cone pushed 12 mm into it gives a cone resistance
+// well above the confining stress, the same bytes for 1 and 2 threads; bad probes are refused
+// before anything is written.
+#include "cli_helpers.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sstream>
+
+namespace fs = std::filesystem;
+using namespace cli_test;
+
+namespace {
+
+// A 12 mm probe in the 60 mm cylinder at 80 mm/s: inertial number (v / D_c)·d·sqrt(ρ/p) ≈ 0.009.
+const char* kCpt = R"([test]
+confining = 100e3
+record_every = 2000
+
+[probe]
+diameter = 0.012
+velocity = 0.08
+depth = 0.012
+)";
+
+// The numeric rows of curve.csv, its header checked.
+std::vector<std::vector<double>> cpt_rows(const fs::path& path) {
+  std::string text = slurp(path);
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa");
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    for (char& c : line)
+      if (c == ',') c = ' ';
+    std::istringstream s(line);
+    std::vector<double> row;
+    double v;
+    while (s >> v) row.push_back(v);
+    EXPECT_EQ(row.size(), 6u) << line;
+    if (row.size() == 6) rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace
+
+TEST(CliCpt, PushIntoTheTinySpecimenSameBytesForOneAndTwoThreads) {
+  const fs::path d = scratch();
+  ASSERT_NO_FATAL_FAILURE(build_tiny_specimen(d));
+  write(d / "cpt.toml", kCpt);
+  const std::string base = "test cpt --quiet --specimen " + (d / "spec").string() + " --recipe " +
+                           (d / "cpt.toml").string();
+  const Result one = run_cli(base + " --threads 1 --out " + (d / "c1").string(), d);
+  ASSERT_EQ(one.rc, 0) << one.err;
+  const Result two = run_cli(base + " --threads 2 --json --out " + (d / "c2").string(), d);
+  ASSERT_EQ(two.rc, 0) << two.err;
+  for (const char* f : {"curve.csv", "report.json"})
+    EXPECT_EQ(slurp(d / "c1" / f), slurp(d / "c2" / f)) << f << " differs between thread counts";
+  EXPECT_GT(fs::file_size(d / "c1" / "curve.png"), 5000u);
+  const auto rep = nlohmann::json::parse(two.out);
+  EXPECT_EQ(rep["test"], "cpt");
+  EXPECT_TRUE(rep["consolidated"].get<bool>());
+  EXPECT_FALSE(rep["reached_bottom"].get<bool>());
+  EXPECT_LT(rep["inertial_number"].get<double>(), 1e-2);
+  EXPECT_EQ(rep["probe"]["apex_deg"], 60.0);
+  // Columns: step, depth, tip force, sleeve force, qc, fs.
+  const auto rows = cpt_rows(d / "c1" / "curve.csv");
+  ASSERT_GT(rows.size(), 10u);
+  EXPECT_EQ(rows.front()[1], 0.0);
+  EXPECT_GE(rows.back()[1], 0.012);
+  for (std::size_t k = 1; k < rows.size(); ++k) {
+    EXPECT_GT(rows[k][1], rows[k - 1][1]);
+    EXPECT_NEAR(rows[k][4], rows[k][2] / (3.14159265358979323846 * 0.006 * 0.006),
+                1e-9 * std::abs(rows[k][4]) + 1e-9);
+  }
+  // Once the cone is buried (depth ≥ D_c), qc is far above the confining stress (a dense
+  // specimen: about 20 times at 100 kPa, measured on a 40 mm push).
+  EXPECT_GT(rep["qc_max"].get<double>(), 5.0 * 100e3);
+  EXPECT_GT(rows.back()[4], 2.0 * 100e3);
+}
+
+TEST(CliCpt, BadProbesAreRefusedBeforeAnythingIsWritten) {
+  const fs::path d = scratch();
+  ASSERT_NO_FATAL_FAILURE(build_tiny_specimen(d));
+  const std::string test = "[test]\nconfining = 100e3\n";
+  write(d / "noprobe.toml", test);
+  write(d / "wide.toml", test + "[probe]\ndiameter = 0.04\ndepth = 0.01\n");
+  write(d / "apex.toml", test + "[probe]\napex_deg = 180\ndepth = 0.01\n");
+  write(d / "nodepth.toml", test + "[probe]\ndiameter = 0.01\n");
+  write(d / "unknown.toml", test + "[probe]\ndepth = 0.01\nspeed = 1\n");
+  write(d / "fast.toml", test + "[probe]\ndiameter = 0.01\ndepth = 0.01\nvelocity = 10\n");
+  const std::string spec = " --specimen " + (d / "spec").string();
+  const std::string out = (d / "out").string();
+  struct Case {
+    std::string args, needle;
+  };
+  const Case cases[] = {
+      {"test cpt" + spec + " --recipe " + (d / "noprobe.toml").string() + " --out " + out,
+       "[probe]"},
+      {"test cpt" + spec + " --recipe " + (d / "wide.toml").string() + " --out " + out,
+       "half the cell"},
+      {"test cpt" + spec + " --recipe " + (d / "apex.toml").string() + " --out " + out,
+       "probe.apex_deg"},
+      {"test cpt" + spec + " --recipe " + (d / "nodepth.toml").string() + " --out " + out,
+       "probe.depth"},
+      {"test cpt" + spec + " --recipe " + (d / "unknown.toml").string() + " --out " + out,
+       "probe.speed"},
+      {"test cpt" + spec + " --recipe " + (d / "fast.toml").string() + " --out " + out,
+       "probe.velocity"},
+      {"test triaxial" + spec + " --recipe " + (d / "wide.toml").string() + " --out " + out,
+       "test cpt"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.args);
+    expect_one_line_error(run_cli(c.args, d), c.needle);
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_FALSE(fs::exists(out + ".partial"));
+  }
+}
