@@ -37,6 +37,27 @@ TEST(TestRecipe, BundledTable1RecipeGivesTheCtgu2017Law) {
   EXPECT_EQ(*r.ks_over_kn, 0.01);
 }
 
+// The CPT of CTGU 2017's chamber: 300 kPa, an 18 mm 60° cone at 20 mm/s to 8 D_c.
+TEST(TestRecipe, BundledCptRecipeGivesItsProbe) {
+  const TestRecipe r =
+      read_test_recipe(std::string(CLUMPKIT_SOURCE_DIR) + "/assets/recipes/test-cpt.toml");
+  EXPECT_EQ(r.settings.confining, 300e3);
+  EXPECT_EQ(r.settings.friction, 0.5);
+  ASSERT_TRUE(r.probe.has_value());
+  EXPECT_EQ(r.probe->diameter, 0.018);
+  EXPECT_EQ(r.probe->apex_deg, 60.0);
+  EXPECT_EQ(r.probe->velocity, 0.02);
+  EXPECT_EQ(r.probe->depth, 8 * 0.018);
+  EXPECT_LT(r.probe->friction, 0.0);  // the test's
+  EXPECT_FALSE(parse_test_recipe("[test]\nconfining = 1e5\n", "t.toml").probe.has_value());
+  const std::string e = error_of("[probe]\ndepth = 0.1\napex_deg = 200\n");
+  EXPECT_NE(e.find("probe.apex_deg"), std::string::npos) << e;
+  EXPECT_NE(e.find("200"), std::string::npos) << e;
+  EXPECT_NE(error_of("[probe]\ndiameter = 0.01\n").find("probe.depth"), std::string::npos);
+  EXPECT_NE(error_of("[probe]\ndepth = 0.1\nvelocity = -1\n").find("probe.velocity"),
+            std::string::npos);
+}
+
 TEST(TestRecipe, DefaultsLeaveConsolidationAndServoToTheTest) {
   const TestRecipe r = parse_test_recipe("[test]\nconfining = 1e5\n", "t.toml");
   EXPECT_LT(r.settings.consolidation_friction, 0.0);  // the test's μ
