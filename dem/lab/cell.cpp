@@ -19,9 +19,9 @@ int add_frictionless(World& world, Wall wall) {
   return world.add_wall(wall);
 }
 
-// Lateral extents: cuboid x and y lengths; cylinder the diameter twice.
+// Lateral extents: cuboid x and y lengths; cylinder and segment the diameter twice.
 std::array<double, 2> lateral_extents(const World& world, const TestCell& cell) {
-  if (cell.shape == TestCell::Shape::cylinder) {
+  if (cell.shape != TestCell::Shape::cuboid) {
     const double d = 2.0 * world.walls()[cell.lateral[0]].radius;
     return {d, d};
   }
@@ -30,9 +30,9 @@ std::array<double, 2> lateral_extents(const World& world, const TestCell& cell) 
 }
 
 double axial_area(const World& world, const TestCell& cell) {
-  if (cell.shape == TestCell::Shape::cylinder) {
+  if (cell.shape != TestCell::Shape::cuboid) {
     const double r = world.walls()[cell.lateral[0]].radius;
-    return kPi * r * r;
+    return cell_fraction(cell) * kPi * r * r;
   }
   const auto e = lateral_extents(world, cell);
   return e[0] * e[1];
@@ -43,6 +43,8 @@ double lateral_area(const World& world, const TestCell& cell, std::size_t k) {
   const double h = cell_height(world, cell);
   if (cell.shape == TestCell::Shape::cylinder)
     return 2.0 * kPi * world.walls()[cell.lateral[0]].radius * h;
+  if (cell.shape == TestCell::Shape::segment)  // the arc θ R h, or a radial plane R h
+    return (k == 0 ? cell.angle : 1.0) * world.walls()[cell.lateral[0]].radius * h;
   const auto e = lateral_extents(world, cell);
   return (k < 2 ? e[1] : e[0]) * h;  // x walls span y, y walls span x
 }
@@ -80,6 +82,26 @@ TestCell add_cylinder_test_cell(World& world, double radius, double z_lo, double
   return c;
 }
 
+TestCell add_segment_test_cell(World& world, double radius, double angle, double z_lo,
+                               double z_hi) {
+  if (!(angle > 0.0 && angle <= kPi))
+    throw InvalidInput("test cell: a segment's angle must be in (0, 180] degrees, got " +
+                       std::to_string(angle * 180.0 / kPi));
+  TestCell c = add_cylinder_test_cell(world, radius, z_lo, z_hi);
+  c.shape = TestCell::Shape::segment;
+  c.angle = angle;
+  // The radial planes after the cylinder, then the platens again last (cell_walls' order is
+  // lateral, bottom, top; the indices say which is which).
+  c.lateral.push_back(add_frictionless(world, Wall::plane(Vec3::Zero(), Vec3::UnitY())));
+  c.lateral.push_back(add_frictionless(
+      world, Wall::plane(Vec3::Zero(), Vec3(std::sin(angle), -std::cos(angle), 0.0))));
+  return c;
+}
+
+double cell_fraction(const TestCell& cell) {
+  return cell.shape == TestCell::Shape::segment ? cell.angle / (2.0 * kPi) : 1.0;
+}
+
 double cell_height(const World& world, const TestCell& cell) {
   return world.walls()[cell.top].point.z() - world.walls()[cell.bottom].point.z();
 }
@@ -94,6 +116,8 @@ double axial_stress(const World& world, const TestCell& cell) {
 }
 
 double lateral_stress(const World& world, const TestCell& cell) {
+  if (cell.shape == TestCell::Shape::segment)  // the planes of symmetry carry the hoop stress
+    return wall_stress(world, cell.lateral[0], lateral_area(world, cell, 0));
   double s = 0;
   for (std::size_t k = 0; k < cell.lateral.size(); ++k)
     s += wall_stress(world, cell.lateral[k], lateral_area(world, cell, k));
@@ -123,7 +147,9 @@ void drive_cell(World& world, const TestCell& cell, const Control& axial, const 
       break;
   }
   for (std::size_t k = 0; k < cell.lateral.size(); ++k) {
-    if (lateral.mode == Mode::stress)
+    if (cell.shape == TestCell::Shape::segment && k > 0)  // planes of symmetry: fixed
+      set_wall_speed(world, cell.lateral[k], 0.0);
+    else if (lateral.mode == Mode::stress)
       servo(world, cell.lateral[k], lateral_area(world, cell, k), lateral.stress, gain);
     else if (lateral.mode == Mode::fixed)
       set_wall_speed(world, cell.lateral[k], 0.0);
@@ -189,13 +215,19 @@ Vec3 cell_axis_stress(const World& world, const TestCell& cell) {
 Mat3 cell_love_weber_stress(const World& world, const TestCell& cell) {
   const double z_lo = world.walls()[cell.bottom].point.z(),
                z_hi = world.walls()[cell.top].point.z();
-  if (cell.shape == TestCell::Shape::cylinder) {
+  if (cell.shape != TestCell::Shape::cuboid) {
     const Wall& side = world.walls()[cell.lateral[0]];
+    const bool segment = cell.shape == TestCell::Shape::segment;
+    const Vec3 n1 = segment ? world.walls()[cell.lateral[1]].normal : Vec3::Zero();
+    const Vec3 n2 = segment ? world.walls()[cell.lateral[2]].normal : Vec3::Zero();
     return love_weber_stress(
         world,
         [&](const Vec3& x) {
           const double dx = x.x() - side.point.x(), dy = x.y() - side.point.y();
-          return dx * dx + dy * dy <= side.radius * side.radius && x.z() >= z_lo && x.z() <= z_hi;
+          const bool wedge =
+              !segment || (n1.x() * dx + n1.y() * dy >= 0.0 && n2.x() * dx + n2.y() * dy >= 0.0);
+          return wedge && dx * dx + dy * dy <= side.radius * side.radius && x.z() >= z_lo &&
+                 x.z() <= z_hi;
         },
         cell_volume(world, cell));
   }
@@ -212,7 +244,10 @@ Mat3 cell_love_weber_stress(const World& world, const TestCell& cell) {
 }
 
 void put_cell(StageRecord& record, const TestCell& cell) {
-  record["cell.shape"] = cell.shape == TestCell::Shape::cuboid ? "cuboid" : "cylinder";
+  record["cell.shape"] = cell.shape == TestCell::Shape::cuboid     ? "cuboid"
+                         : cell.shape == TestCell::Shape::cylinder ? "cylinder"
+                                                                   : "segment";
+  if (cell.shape == TestCell::Shape::segment) put_number(record, "cell.angle", cell.angle);
   std::string lateral;
   for (int w : cell.lateral) lateral += (lateral.empty() ? "" : ",") + std::to_string(w);
   record["cell.lateral"] = lateral;
@@ -223,9 +258,17 @@ void put_cell(StageRecord& record, const TestCell& cell) {
 TestCell read_cell(const StageRecord& record, const std::string& where) {
   TestCell cell;
   const auto shape = record.find("cell.shape");
-  if (shape == record.end() || (shape->second != "cuboid" && shape->second != "cylinder"))
-    throw InvalidInput(where + ": stage record cell.shape missing or not cuboid/cylinder");
-  cell.shape = shape->second == "cuboid" ? TestCell::Shape::cuboid : TestCell::Shape::cylinder;
+  if (shape == record.end() ||
+      (shape->second != "cuboid" && shape->second != "cylinder" && shape->second != "segment"))
+    throw InvalidInput(where + ": stage record cell.shape missing or not cuboid/cylinder/segment");
+  cell.shape = shape->second == "cuboid"     ? TestCell::Shape::cuboid
+               : shape->second == "cylinder" ? TestCell::Shape::cylinder
+                                             : TestCell::Shape::segment;
+  if (cell.shape == TestCell::Shape::segment) {
+    cell.angle = record_number(record, "cell.angle", where);
+    if (!(cell.angle > 0.0 && cell.angle <= kPi))
+      throw InvalidInput(where + ": stage record cell.angle: not in (0, pi]");
+  }
   for (double w : record_list(record, "cell.lateral", where)) {
     if (!(w >= 0 && w < 2147483647.0) || w != std::floor(w))
       throw InvalidInput(where + ": stage record cell.lateral: " + std::to_string(w) +
@@ -234,7 +277,9 @@ TestCell read_cell(const StageRecord& record, const std::string& where) {
   }
   cell.bottom = static_cast<int>(record_integer(record, "cell.bottom", where));
   cell.top = static_cast<int>(record_integer(record, "cell.top", where));
-  const std::size_t lateral_walls = cell.shape == TestCell::Shape::cuboid ? 4 : 1;
+  const std::size_t lateral_walls = cell.shape == TestCell::Shape::cuboid     ? 4
+                                    : cell.shape == TestCell::Shape::cylinder ? 1
+                                                                              : 3;
   if (cell.lateral.size() != lateral_walls || cell.bottom < 0 || cell.top < 0)
     throw InvalidInput(where + ": stage record cell: " + shape->second + " with " +
                        std::to_string(cell.lateral.size()) + " lateral walls, bottom " +

@@ -13,9 +13,14 @@ namespace clumpkit::dem {
 
 /// The rigid frictionless walls that hold a test specimen. Cuboid: six planes, −x, +x, −y, +y
 /// (lateral) then −z, +z (platens). Cylinder: one vertical cylinder (lateral) then the platens.
+/// Segment: the sector 0 ≤ φ ≤ angle of a vertical cylinder about the z-axis — the cylinder,
+/// then the radial planes through the axis at φ = 0 and φ = angle (lateral), then the platens;
+/// the radial planes are planes of symmetry of a whole chamber: they never move, and the
+/// lateral stress is the cylinder's.
 struct TestCell {
-  enum class Shape { cuboid, cylinder };
+  enum class Shape { cuboid, cylinder, segment };
   Shape shape = Shape::cuboid;
+  double angle = 0.0;        ///< segment: its angle (radians, in (0, π])
   std::vector<int> lateral;  ///< lateral wall indices
   int bottom = -1, top = -1;
 };
@@ -24,6 +29,11 @@ struct TestCell {
 /// the z-axis between z_lo and z_hi.
 TestCell add_cuboid_test_cell(World& world, const Vec3& lo, const Vec3& hi);
 TestCell add_cylinder_test_cell(World& world, double radius, double z_lo, double z_hi);
+/// The segment of `angle` radians (in (0, π]) of that cylinder.
+TestCell add_segment_test_cell(World& world, double radius, double angle, double z_lo, double z_hi);
+
+/// The fraction of a whole chamber that the cell holds: angle / 2π for a segment, else 1.
+double cell_fraction(const TestCell& cell);
 
 /// Current size of the cell: height between the platens (m), lateral extents (cuboid: x and y
 /// lengths; cylinder: both the diameter), volume (m³).

@@ -19,10 +19,11 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr const char* kStage = "cpt";
 constexpr int kRowFields = 8;
 
-// The cell's vertical axis (x, y): the cylinder's, or the middle of the cuboid's side walls.
+// The cell's vertical axis (x, y): the cylinder's (a segment's apex), or the middle of the
+// cuboid's side walls.
 Vec3 cell_axis(const World& world, const TestCell& cell) {
   const std::vector<Wall>& w = world.walls();
-  if (cell.shape == TestCell::Shape::cylinder)
+  if (cell.shape != TestCell::Shape::cuboid)
     return Vec3(w[cell.lateral[0]].point.x(), w[cell.lateral[0]].point.y(), 0.0);
   return Vec3(0.5 * (w[cell.lateral[0]].point.x() + w[cell.lateral[1]].point.x()),
               0.5 * (w[cell.lateral[2]].point.y() + w[cell.lateral[3]].point.y()), 0.0);
@@ -66,6 +67,25 @@ void validate_cpt(const World& world, const TestCell& cell, const CptSettings& s
     throw InvalidInput("cpt: probe diameter " + format_number(p.diameter) +
                        " m exceeds half the cell's width " + format_number(std::min(l.x(), l.y())) +
                        " m");
+  if (cell.shape == TestCell::Shape::segment) {
+    // A sphere of diameter d between the segment's radial walls keeps its centre at least
+    // (d/2)/sin(θ/2) from the axis, its surface (d/2)/sin(θ/2) − d/2: the probe must reach at
+    // least one diameter past that into the packing around it (the largest particle within two
+    // probe diameters of its shaft), or it barely touches the particles (a 30° segment of 6 mm
+    // spheres keeps them 8.6 mm from the axis, an 18 mm cone's radius 9 mm).
+    const Vec3 axis = cell_axis(world, cell);
+    double d = 0.0;
+    for (const Body& b : world.bodies())
+      if (std::hypot(b.position.x() - axis.x(), b.position.y() - axis.y()) <
+          0.5 * p.diameter + 2.0 * p.diameter)
+        for (const Sphere& sp : b.spheres) d = std::max(d, 2.0 * sp.radius);
+    const double gap = 0.5 * d / std::sin(0.5 * cell.angle) - 0.5 * d;
+    if (d > 0.0 && 0.5 * p.diameter - gap < d)
+      throw InvalidInput("cpt: the segment's walls keep particles of " + format_number(d) + " m " +
+                         format_number(gap) + " m from the axis: a probe of radius " +
+                         format_number(0.5 * p.diameter) + " m reaches less than one particle " +
+                         "past that (widen the segment or the probe)");
+  }
   if (s.cell.record_every < 1) throw InvalidInput("cpt: record_every must be at least 1");
   if (!(s.cell.confining > 0.0)) throw InvalidInput("cpt: the confining stress must be positive");
 }
@@ -127,9 +147,11 @@ CptResult run_cpt(World& world, const TestCell& cell, const CptSettings& s, CptS
       c.step = step;
       const double apex = world.walls()[st.probe].point.z();
       c.depth = st.apex0 - apex;
+      // A segment holds angle/2π of the chamber and of the probe: forces for the whole one.
       const ProbeForces f = probe_forces(world, st.probe);
-      c.tip_force = f.tip.z();
-      c.sleeve_force = f.sleeve.z();
+      const double whole = 1.0 / cell_fraction(cell);
+      c.tip_force = whole * f.tip.z();
+      c.sleeve_force = whole * f.sleeve.z();
       c.qc = c.tip_force / (kPi * radius * radius);
       const double embedded = world.walls()[cell.top].point.z() - (apex + shoulder);
       c.fs = embedded > 0.0 ? c.sleeve_force / (2.0 * kPi * radius * embedded) : 0.0;

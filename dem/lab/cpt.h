@@ -28,8 +28,9 @@ struct CptSettings {
 };
 
 /// One row of the CPT curve. Forces are those of the spheres on the probe, positive upwards (the
-/// soil's resistance to the push); qc = tip force / (π D_c² / 4); fs = sleeve force over the
-/// shaft's area below the specimen's top, 2π (D_c/2) L (0 while L = 0).
+/// soil's resistance to the push), for the whole chamber (a segment's × 2π / angle); qc = tip force
+/// / (π D_c² / 4); fs = sleeve force over the shaft's area below the specimen's top, 2π (D_c/2) L
+/// (0 while L = 0).
 struct CptRow {
   long long step = 0;
   double depth = 0;  ///< the apex's travel below the specimen's top at the push's start (m)

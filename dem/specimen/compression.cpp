@@ -7,6 +7,7 @@
 #include "geom/format.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -40,9 +41,28 @@ void stop_bodies(World& world) {
 }
 
 double container_volume(const CompressionSpec& spec, const Vec3& size) {
+  const double disk = spec.shape == CompressionSpec::Shape::segment ? 0.5 * spec.angle : M_PI;
   return spec.shape == CompressionSpec::Shape::cuboid
              ? size.prod()
-             : M_PI * 0.25 * size.x() * size.x() * size.z();
+             : disk * 0.25 * size.x() * size.x() * size.z();
+}
+
+// The largest rectangle |y'| ≤ w, x0 ≤ x' ≤ x1 inside the sector |φ'| ≤ angle/2 of the disk of
+// `radius` (the sector's bisector along x'): w = x0·tan(angle/2), x1 = sqrt(R² − w²), x0 chosen
+// by a fixed search (so the same for every run). A half-disk (angle π) takes its inscribed
+// square's half.
+std::array<double, 3> sector_box(double radius, double angle) {
+  if (angle >= M_PI - 1e-12) return {0.0, radius * M_SQRT1_2, radius * M_SQRT1_2};
+  const double t = std::tan(0.5 * angle);
+  double best = -1, x0_best = 0;
+  for (int k = 1; k < 400; ++k) {
+    const double x0 = radius / std::sqrt(1.0 + t * t) * k / 400.0;
+    const double w = x0 * t, x1 = std::sqrt(radius * radius - w * w);
+    const double area = (x1 - x0) * 2.0 * w;
+    if (area > best) best = area, x0_best = x0;
+  }
+  const double w = x0_best * t;
+  return {x0_best, std::sqrt(radius * radius - w * w), w};
 }
 
 // Moves the cell's walls to the container `b`.
@@ -50,7 +70,7 @@ void set_walls(World& world, const TestCell& cell, const Box& b) {
   std::vector<Wall>& w = world.walls();
   w[cell.bottom].point.z() = b.lo.z();
   w[cell.top].point.z() = b.hi.z();
-  if (cell.shape == TestCell::Shape::cylinder) {
+  if (cell.shape != TestCell::Shape::cuboid) {  // a segment's planes pass through the axis
     w[cell.lateral[0]].radius = b.radius;
   } else {
     w[cell.lateral[0]].point.x() = b.lo.x();
@@ -63,8 +83,11 @@ void set_walls(World& world, const TestCell& cell, const Box& b) {
 void validate(const CompressionSpec& spec) {
   if (!spec.size.allFinite() || !(spec.size.minCoeff() > 0))
     throw InvalidInput("compression: container size must be positive and finite");
-  if (spec.shape == CompressionSpec::Shape::cylinder && spec.size.x() != spec.size.y())
+  if (spec.shape != CompressionSpec::Shape::cuboid && spec.size.x() != spec.size.y())
     throw InvalidInput("compression: a cylinder's size is (diameter, diameter, height)");
+  if (spec.shape == CompressionSpec::Shape::segment && !(spec.angle > 0.0 && spec.angle <= M_PI))
+    throw InvalidInput("compression: a segment's angle must be in (0, 180] degrees, got " +
+                       format_number(spec.angle * 180.0 / M_PI));
   if (!(spec.porosity > 0.0 && spec.porosity < 1.0))
     throw InvalidInput("compression: porosity must be in (0, 1), got " +
                        format_number(spec.porosity));
@@ -87,6 +110,7 @@ void validate(const CompressionSpec& spec) {
 World loose_packing(const CompressionSpec& spec, LayerParticles drawn, const Vec3& size,
                     double& factor, TestCell& cell) {
   const bool cuboid = spec.shape == CompressionSpec::Shape::cuboid;
+  const bool segment = spec.shape == CompressionSpec::Shape::segment;
   Rng place_rng = Rng::stream(spec.seed, placement_stream);
   const std::vector<PlacementItem> items = placement_items(drawn.bodies);
   std::vector<Placement> placed;
@@ -94,7 +118,11 @@ World loose_packing(const CompressionSpec& spec, LayerParticles drawn, const Vec
     if (tries == 40) throw InvalidInput("compression: no room for the loose packing");
     const Box loose = container(size * factor);
     Vec3 lo = loose.lo, hi = loose.hi;
-    if (!cuboid) {  // the cylinder's inscribed square prism: every body inside the cylinder
+    if (segment) {  // a box inside the sector, about its bisector (turned onto it below)
+      const std::array<double, 3> b = sector_box(loose.radius, spec.angle);
+      lo.head<2>() = Eigen::Vector2d(b[0], -b[2]);
+      hi.head<2>() = Eigen::Vector2d(b[1], b[2]);
+    } else if (!cuboid) {  // the cylinder's inscribed square prism: every body inside it
       lo.head<2>() *= M_SQRT1_2;
       hi.head<2>() *= M_SQRT1_2;
     }
@@ -120,11 +148,18 @@ World loose_packing(const CompressionSpec& spec, LayerParticles drawn, const Vec
     Body b = std::move(drawn.bodies[k]);
     b.position = placed[k].position;
     b.orientation = placed[k].orientation;
+    if (segment) {  // from the bisector's frame into the sector
+      const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.5 * spec.angle, Vec3::UnitZ()));
+      b.position = turn * b.position;
+      b.orientation = turn * b.orientation;
+    }
     world.add_body(std::move(b));
   }
   const Box start = container(size * factor);
   cell = cuboid ? add_cuboid_test_cell(world, start.lo, start.hi)
-                : add_cylinder_test_cell(world, start.radius, start.lo.z(), start.hi.z());
+         : segment
+             ? add_segment_test_cell(world, start.radius, spec.angle, start.lo.z(), start.hi.z())
+             : add_cylinder_test_cell(world, start.radius, start.lo.z(), start.hi.z());
   world.options().timestep = spec.timestep_safety * critical_timestep(world);
   return world;
 }
@@ -249,6 +284,7 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const StageCont
   r.lo = end.lo;
   r.hi = end.hi;
   r.radius = cuboid ? 0.0 : end.radius;
+  r.angle = spec.shape == CompressionSpec::Shape::segment ? spec.angle : 0.0;
   r.height = size.z();
   const double volume = container_volume(spec, size);
   r.porosity = 1.0 - solid / volume;

@@ -15,9 +15,11 @@ namespace clumpkit::dem {
 
 /// What to build (SI units).
 struct CompressionSpec {
-  enum class Shape { cuboid, cylinder };
+  enum class Shape { cuboid, cylinder, segment };
   Shape shape = Shape::cuboid;
-  /// Requested container: cuboid edges (x, y, z); cylinder (diameter, diameter, height). The
+  double angle = 0.0;  ///< segment: the sector 0 ≤ φ ≤ angle of the cylinder (radians, (0, π])
+  /// Requested container: cuboid edges (x, y, z); cylinder and segment (diameter, diameter,
+  /// height) of the whole cylinder. The
   /// built container keeps these proportions and is scaled (by less than one particle's share)
   /// so that the particles drawn fill it at exactly the target porosity.
   Vec3 size = Vec3(0.1, 0.1, 0.1);
@@ -49,7 +51,8 @@ struct CompressionResult {
   World world;                    ///< bodies at rest in the container, its walls, contact.friction
   Vec3 lo = Vec3::Zero();         ///< container box (cuboid; the cylinder's bounding box)
   Vec3 hi = Vec3::Zero();         ///<
-  double radius = 0, height = 0;  ///< cylinder only (m)
+  double radius = 0, height = 0;  ///< cylinder and segment only (m)
+  double angle = 0;               ///< segment only (radians)
   double porosity = 0;            ///< 1 − Σ body volumes / container volume
   double mean_stress = 0;         ///< Love–Weber mean stress at the end (Pa, compression +)
   double coordination = 0;        ///< mean contacts per body at the end

@@ -111,7 +111,10 @@ std::string spec_fingerprint(const SpecimenSpec& spec) {
 std::string compression_fingerprint(const CompressionSpec& s) {
   Lines line;
   line("method", "compression");
-  line("shape", s.shape == CompressionSpec::Shape::cuboid ? "cuboid" : "cylinder");
+  line("shape", s.shape == CompressionSpec::Shape::cuboid     ? "cuboid"
+                : s.shape == CompressionSpec::Shape::cylinder ? "cylinder"
+                                                              : "segment");
+  if (s.shape == CompressionSpec::Shape::segment) line("angle", format_number(s.angle));
   line("size", vec(s.size));
   line("porosity", format_number(s.porosity));
   line("friction", format_number(s.friction));

@@ -23,6 +23,10 @@ EngineSettings engine_settings_from_report(const nlohmann::json& report, const s
     throw InvalidInput(path +
                        ": container.shape: \"cuboid\" specimens are not exported yet (the decks "
                        "model a cylinder container): export a cylinder specimen");
+  if (report.contains("container") && report["container"].value("shape", "") == "segment")
+    throw InvalidInput(path +
+                       ": container.shape: \"segment\" specimens are not exported yet (the decks "
+                       "model a whole cylinder container): export a cylinder specimen");
   if (report.contains("contact") && report["contact"].value("stiffness_scaling", "") == "linear")
     throw InvalidInput(path +
                        ": contact.stiffness_scaling: \"linear\" (kn ∝ d) is not exported yet "

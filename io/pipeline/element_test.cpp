@@ -27,7 +27,8 @@ dem::TestKind test_kind(const std::string& name) {
   if (name == "isotropic") return dem::TestKind::isotropic;
   if (name == "oedometer") return dem::TestKind::oedometer;
   if (name == "triaxial") return dem::TestKind::triaxial;
-  throw InvalidInput("test: unknown test '" + name + "' (known: isotropic, oedometer, triaxial, cpt)");
+  throw InvalidInput("test: unknown test '" + name +
+                     "' (known: isotropic, oedometer, triaxial, cpt)");
 }
 
 namespace {
@@ -124,10 +125,11 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
                              "only, not the " +
                              std::string(kind_name(kind)) + " test");
         if (options.save_consolidated && spec_report.contains("container") &&
-            spec_report["container"].value("shape", std::string()) == "cuboid")
-          throw InvalidInput(report_path +
-                             ": container.shape: \"cuboid\": --save-consolidated writes cylinder "
-                             "cells only (the engine exports model a cylinder container)");
+            spec_report["container"].value("shape", std::string("cylinder")) != "cylinder")
+          throw InvalidInput(report_path + ": container.shape: \"" +
+                             spec_report["container"]["shape"].get<std::string>() +
+                             "\": --save-consolidated writes cylinder cells only (the engine "
+                             "exports model a whole cylinder container)");
       });
   const nlohmann::json& spec_report = setup.spec_report;
   const dem::WorldOptions& o = setup.options;

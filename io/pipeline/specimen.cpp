@@ -141,8 +141,9 @@ SpecimenJobResult run_specimen(const SpecimenRecipe& recipe, const std::string& 
   check_output_directory(out_dir);
   if (options.max_memory_bytes > 0) {
     const auto& e = recipe.container_size;
+    const double sector = recipe.segment ? recipe.segment_angle_deg / 360.0 : 1.0;
     const double volume = recipe.cuboid ? e[0] * e[1] * e[2]
-                                        : M_PI / 4 * recipe.container_diameter *
+                                        : sector * M_PI / 4 * recipe.container_diameter *
                                               recipe.container_diameter * recipe.container_height;
     const double need = estimated_specimen_bytes(specimen_spec(recipe, {}), volume);
     if (!(need <= options.max_memory_bytes))

@@ -73,6 +73,10 @@ dem::TestCell test_cell(dem::World& world, const nlohmann::json& report, const s
     return dem::add_cuboid_test_cell(world, lo, hi);
   }
   const double radius = 0.5 * report_number(report, path, "container", "diameter");
+  if (c != report.end() && c->is_object() && c->value("shape", std::string()) == "segment")
+    return dem::add_segment_test_cell(
+        world, radius, report_number(report, path, "container", "angle_deg") * M_PI / 180.0, z_lo,
+        z_hi);
   return dem::add_cylinder_test_cell(world, radius, z_lo, z_hi);
 }
 

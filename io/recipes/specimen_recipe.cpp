@@ -42,7 +42,7 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
   r.text = text;
   bool have_gradation = false;
   std::vector<std::string> deposition_keys;  // keys that only the deposition method uses
-  bool have_diameter = false, have_size = false;
+  bool have_diameter = false, have_size = false, have_angle = false;
   for (const auto& [key, val] : root) {
     const std::string k(key.str());
     if (k == "target_relative_density" || k == "layers" || k == "calibration_frictions")
@@ -64,9 +64,15 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
           have_diameter = true;
         } else if (c == "shape") {
           const std::string shape = f.string(cv, field);
-          if (shape != "cylinder" && shape != "cuboid")
-            f.fail(field, "expected \"cylinder\" or \"cuboid\", got " + toml_show(cv));
+          if (shape != "cylinder" && shape != "cuboid" && shape != "segment")
+            f.fail(field, "expected \"cylinder\", \"cuboid\" or \"segment\", got " + toml_show(cv));
           r.cuboid = shape == "cuboid";
+          r.segment = shape == "segment";
+        } else if (c == "angle") {
+          r.segment_angle_deg = f.number(cv, field);
+          if (!(r.segment_angle_deg > 0 && r.segment_angle_deg <= 180))
+            f.fail(field, "must be in (0, 180] degrees, got " + toml_show(cv));
+          have_angle = true;
         } else if (c == "size") {
           const std::vector<double> v = numbers(f, cv, field);
           if (v.size() != 3) f.fail(field, "expected [x, y, z] edges, got " + toml_show(cv));
@@ -76,7 +82,7 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
           }
           have_size = true;
         } else {
-          f.fail(field, "unknown key (known: shape, diameter, height, size)");
+          f.fail(field, "unknown key (known: shape, diameter, height, size, angle)");
         }
       }
     } else if (k == "preparation") {
@@ -204,6 +210,11 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
     f.fail("contact.d_ref",
            "needed by stiffness_scaling = \"linear\" (the diameter at which kn "
            "and ks hold)");
+  if (r.segment && !r.compression)
+    f.fail("container.shape",
+           "a segment needs preparation.method = \"compression\" (deposition builds whole "
+           "cylinders)");
+  if (have_angle && !r.segment) f.fail("container.angle", "is for shape = \"segment\"");
   if (r.cuboid && !r.compression)
     f.fail("container.shape",
            "a cuboid needs preparation.method = \"compression\" (deposition "

@@ -19,9 +19,13 @@ struct SizeClass {
 struct SpecimenRecipe {
   std::string path, text;
   std::uint64_t seed = 1;
-  /// [container] shape: "cylinder" (diameter, height) or "cuboid" (size = edges x, y, z; only
-  /// with preparation.method = "compression").
+  /// [container] shape: "cylinder" (diameter, height), "cuboid" (size = edges x, y, z) or
+  /// "segment" (the sector of `angle` degrees, in (0, 180], of the cylinder of diameter and
+  /// height: a chamber cut by two frictionless planes of symmetry through its axis); the last two
+  /// only with preparation.method = "compression".
   bool cuboid = false;
+  bool segment = false;
+  double segment_angle_deg = 90.0;
   double container_diameter = 0.3, container_height = 0.6;  ///< cylinder [m]
   std::array<double, 3> container_size{0.1, 0.1, 0.1};      ///< cuboid edges [m]
   /// [preparation] method: "deposition" (under gravity, quasi-vibration calibration, layers:

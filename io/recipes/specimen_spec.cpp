@@ -38,7 +38,10 @@ dem::CompressionSpec compression_spec(const SpecimenRecipe& r,
                                       std::vector<dem::RockTemplate> templates) {
   const dem::SpecimenSpec s = specimen_spec(r, std::move(templates));
   dem::CompressionSpec c;
-  c.shape = r.cuboid ? dem::CompressionSpec::Shape::cuboid : dem::CompressionSpec::Shape::cylinder;
+  c.shape = r.cuboid    ? dem::CompressionSpec::Shape::cuboid
+            : r.segment ? dem::CompressionSpec::Shape::segment
+                        : dem::CompressionSpec::Shape::cylinder;
+  c.angle = r.segment ? r.segment_angle_deg * M_PI / 180.0 : 0.0;
   c.size = r.cuboid ? Vec3(r.container_size[0], r.container_size[1], r.container_size[2])
                     : Vec3(r.container_diameter, r.container_diameter, r.container_height);
   c.porosity = r.compression_porosity;

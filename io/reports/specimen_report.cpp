@@ -195,6 +195,11 @@ nlohmann::ordered_json compression_report(const SpecimenRecipe& recipe,
                       {"size", {r.hi.x() - r.lo.x(), r.hi.y() - r.lo.y(), r.hi.z() - r.lo.z()}},
                       {"lo", {r.lo.x(), r.lo.y(), r.lo.z()}},
                       {"hi", {r.hi.x(), r.hi.y(), r.hi.z()}}};
+  else if (recipe.segment)
+    j["container"] = {{"shape", "segment"},
+                      {"diameter", 2 * r.radius},
+                      {"height", r.height},
+                      {"angle_deg", recipe.segment_angle_deg}};
   else
     j["container"] = {{"shape", "cylinder"}, {"diameter", 2 * r.radius}, {"height", r.height}};
   j["density"] = {{"rock", recipe.rock_density}, {"soil", recipe.soil_density}};

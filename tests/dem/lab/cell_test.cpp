@@ -97,3 +97,45 @@ TEST(DemCell, CylinderCellSizesAndLoveWeberOfASqueezedSphere) {
   EXPECT_NEAR(lw(0, 0), 0.0, 1e-9 * sa);
   EXPECT_THROW(cell_axis_stress(w, cell), InvalidInput);
 }
+
+TEST(DemCell, SegmentCellSizesStressesAndRecord) {
+  // A sphere of radius r in the corner of a 60° segment, pressed against the cylinder (overlap
+  // δ), not touching the radial planes: the lateral stress is the cylinder's push over the arc
+  // θ·R·h, the axial area θR²/2, and the record keeps the angle.
+  constexpr double kPi = 3.14159265358979323846;
+  WorldOptions o;
+  o.gravity = Vec3::Zero();
+  World w(o);
+  const double r = 0.01, delta = 1e-5, R = 0.1, h = 0.05, angle = kPi / 3.0;
+  const Vec3 dir(std::cos(angle / 2), std::sin(angle / 2), 0.0);  // the bisector
+  w.add_body(make_sphere_body((R - r + delta) * dir + Vec3(0, 0, 0.5 * h), r, 2650));
+  const TestCell cell = add_segment_test_cell(w, R, angle, 0.0, h);
+  ASSERT_EQ(cell.lateral.size(), 3u);
+  EXPECT_EQ(cell_fraction(cell), 1.0 / 6.0);
+  w.step(1);
+  EXPECT_NEAR(cell_volume(w, cell), 0.5 * angle * R * R * h, 1e-18);
+  ASSERT_EQ(w.wall_contacts().size(), 1u);
+  const double push = w.wall_contacts()[0].state.normal_force;
+  EXPECT_NEAR(push, o.contact.kn * delta, 1e-9 * push);
+  EXPECT_NEAR(lateral_stress(w, cell), push / (angle * R * h), 1e-9 * push / (angle * R * h));
+  // The radial planes pass through the axis, inward normals at φ = 0 and φ = θ.
+  EXPECT_EQ(w.walls()[cell.lateral[1]].normal, Vec3::UnitY());
+  EXPECT_NEAR(
+      (w.walls()[cell.lateral[2]].normal - Vec3(std::sin(angle), -std::cos(angle), 0.0)).norm(),
+      0.0, 1e-15);
+  // Love–Weber counts the sphere inside the sector (its branch vector radial: σ_rr only).
+  const Mat3 lw = cell_love_weber_stress(w, cell);
+  EXPECT_GT(lw.trace(), 0.0);
+  StageRecord rec;
+  put_cell(rec, cell);
+  const TestCell back = read_cell(rec, "x");
+  EXPECT_EQ(back.shape, TestCell::Shape::segment);
+  EXPECT_EQ(back.angle, angle);
+  EXPECT_EQ(back.lateral, cell.lateral);
+  EXPECT_THROW(add_segment_test_cell(w, R, 1.2 * kPi, 0.0, h), InvalidInput);
+  // Driven under stress control, the planes of symmetry stay where they are.
+  drive_cell(w, cell, Control{Control::Mode::stress, 1e5, 0.0},
+             Control{Control::Mode::stress, 1e5, 0.0}, ServoGain{0.5, 1.0}, 10);
+  EXPECT_EQ(w.walls()[cell.lateral[1]].point, Vec3::Zero());
+  EXPECT_EQ(w.walls()[cell.lateral[2]].point, Vec3::Zero());
+}

@@ -113,11 +113,15 @@ TEST(DemCpt, ProbeMeetsResistanceWithTheCellHeldSameBytesForOneAndTwoThreadsAndA
   // stay off the short length of shaft below the top).
   for (const CptRow& c : one) {
     EXPECT_GE(c.sleeve_force, 0.0);
-    if (c.fs != 0.0) EXPECT_GT(c.depth, 0.5 * t.probe.diameter * std::sqrt(3.0));
+    if (c.fs != 0.0) {
+      EXPECT_GT(c.depth, 0.5 * t.probe.diameter * std::sqrt(3.0));
+    }
   }
   // One sphere rides on the cone from 1.1 mm on: the tip force never drops to zero again.
   for (const CptRow& c : one)
-    if (c.depth > 0.002) EXPECT_GT(c.tip_force, 0.0) << c.depth;
+    if (c.depth > 0.002) {
+      EXPECT_GT(c.tip_force, 0.0) << c.depth;
+    }
   expect_same_bytes(one, run(t, 2));
   expect_same_bytes(one, run(t, 1, 3));  // stopped at the push's second row, continued
 }
@@ -179,4 +183,25 @@ TEST(CptRecord, StateAndCellRoundTripExactly) {
   bad = cpt_record(st, cell);
   bad.erase("apex0");
   EXPECT_THROW(read_cpt_record(bad, "cpt.ckpt", back, cell_back), InvalidInput);
+}
+
+// CTGU 2017's chamber in a segment: an 18 mm cone among 6 mm spheres. In a 30° segment the
+// radial walls keep the spheres 8.6 mm from the axis, the cone's radius is 9 mm: refused. In a
+// 90° segment they come within 1.2 mm: accepted.
+TEST(DemCpt, ProbeInASegmentMustReachPastTheWallsExclusion) {
+  constexpr double kPi = 3.14159265358979323846;
+  for (const double degrees : {30.0, 90.0}) {
+    World w(WorldOptions{});
+    const double angle = degrees * kPi / 180.0;
+    const Vec3 dir(std::cos(angle / 2), std::sin(angle / 2), 0.0);
+    for (int k = 0; k < 5; ++k)
+      w.add_body(make_sphere_body((0.01 + 0.006 * k) * dir + Vec3(0, 0, 0.05), 0.003, 2650));
+    const TestCell cell = add_segment_test_cell(w, 0.15, angle, 0.0, 0.1);
+    CptSettings t = settings();
+    t.probe.diameter = 0.018;
+    if (degrees == 30.0)
+      EXPECT_THROW(validate_cpt(w, cell, t), InvalidInput);
+    else
+      EXPECT_NO_THROW(validate_cpt(w, cell, t));
+  }
 }

@@ -2,6 +2,7 @@
 // file, field and value in one line.
 #include "io/recipes/specimen_recipe.h"
 #include "geom/errors.h"
+#include "io/recipes/specimen_spec.h"
 
 #include <gtest/gtest.h>
 
@@ -87,4 +88,25 @@ TEST(SpecimenRecipe, BadRecipesFailBeforeSimulation) {
   EXPECT_NE(e.find("the gradation gives 40 %"), std::string::npos) << e;
   e = error_of(with("passing = [100, 80, 60, 40, 20]", "passing = [100, 80, 90, 40, 20]"));
   EXPECT_NE(e.find("must not increase"), std::string::npos) << e;
+}
+
+// A segment of the chamber: compression only, its angle in (0, 180] degrees.
+TEST(SpecimenRecipe, SegmentContainerIsACompressedSectorOfItsCylinder) {
+  const std::string prep = "[preparation]\nmethod = \"compression\"\nporosity = 0.4\n";
+  const std::string seg = "diameter = 0.3\nshape = \"segment\"\nangle = 90";
+  const SpecimenRecipe r =
+      parse_specimen_recipe(with("diameter = 0.3", seg) + prep, kDir + "test.toml");
+  EXPECT_TRUE(r.segment);
+  EXPECT_FALSE(r.cuboid);
+  EXPECT_EQ(r.segment_angle_deg, 90.0);
+  const dem::CompressionSpec c = compression_spec(r, {});
+  EXPECT_EQ(c.shape, dem::CompressionSpec::Shape::segment);
+  EXPECT_NEAR(c.angle, 3.14159265358979323846 / 2, 1e-15);
+  std::string e = error_of(with("diameter = 0.3", seg));  // deposition
+  EXPECT_NE(e.find("container.shape: a segment needs preparation.method"), std::string::npos) << e;
+  e = error_of(with("diameter = 0.3", "diameter = 0.3\nshape = \"segment\"\nangle = 200") + prep);
+  EXPECT_NE(e.find("container.angle: must be in (0, 180] degrees, got 200"), std::string::npos)
+      << e;
+  e = error_of(with("diameter = 0.3", "diameter = 0.3\nangle = 90") + prep);
+  EXPECT_NE(e.find("container.angle: is for shape = \"segment\""), std::string::npos) << e;
 }
