@@ -28,7 +28,7 @@ struct TestSetup {
   std::string fingerprint;    ///< of the test kind, recipe, specimen and version
   std::filesystem::path out;  ///< DIR.partial
   std::unique_ptr<StageFiles> stages;
-  dem::StageControl control;  ///< checkpoints into `stages`
+  dem::StageControl control;   ///< checkpoints into `stages`
   dem::CellSpecimen specimen;  ///< the bodies in their cell, the time step set
 };
 
@@ -38,12 +38,11 @@ struct TestSetup {
 /// number of `strain_rate` (named `rate_field` in the message) above 1e-2 unless
 /// `allow_dynamic`, calls `validate` (which throws for what the test cannot do), and only then
 /// opens DIR.partial (afresh, or kept with `resume`) and its checkpoint store.
-TestSetup setup_test(const std::string& kind, const std::string& specimen_dir,
-                     const TestRecipe& recipe, const std::string& out_dir, bool resume,
-                     double checkpoint_seconds, bool allow_dynamic, double strain_rate,
-                     const std::string& rate_field, const Interrupter& interrupter,
-                     const std::function<void(const nlohmann::json& spec_report,
-                                              const std::string& report_path,
-                                              const dem::CellSpecimen& specimen)>& validate = {});
+TestSetup setup_test(
+    const std::string& kind, const std::string& specimen_dir, const TestRecipe& recipe,
+    const std::string& out_dir, bool resume, double checkpoint_seconds, bool allow_dynamic,
+    double strain_rate, const std::string& rate_field, const Interrupter& interrupter,
+    const std::function<void(const nlohmann::json& spec_report, const std::string& report_path,
+                             const dem::CellSpecimen& specimen)>& validate = {});
 
 }  // namespace clumpkit
