@@ -34,12 +34,6 @@ std::array<double*, kRowFields - 1> row_fields(CptRow& c) {
           &c.fs,    &c.axial_stress, &c.lateral_stress};
 }
 
-std::string row_key(std::size_t k) {
-  char key[32];
-  std::snprintf(key, sizeof key, "curve.%06zu", k);
-  return key;
-}
-
 double fraction_done(const CptState& st, const CptSettings& s) {
   if (st.phase != CptState::Phase::push || st.curve.empty())
     return 0.1 * std::min(1.0, double(st.consolidation_steps) /
@@ -200,13 +194,12 @@ StageRecord cpt_record(const CptState& st, const TestCell& cell) {
   r["probe"] = std::to_string(st.probe);
   r["reached_bottom"] = st.reached_bottom ? "1" : "0";
   put_cell(r, cell);
-  r["curve.rows"] = std::to_string(st.curve.size());
-  for (std::size_t k = 0; k < st.curve.size(); ++k) {
-    CptRow c = st.curve[k];
-    std::string text = format_number(double(c.step));
-    for (double* v : row_fields(c)) text += "," + format_number(*v);
-    r[row_key(k)] = text;
+  std::vector<std::vector<double>> rows;
+  for (CptRow c : st.curve) {
+    rows.push_back({double(c.step)});
+    for (double* v : row_fields(c)) rows.back().push_back(*v);
   }
+  put_curve(r, rows);
   return r;
 }
 
@@ -225,15 +218,8 @@ void read_cpt_record(const StageRecord& r, const std::string& where, CptState& s
   st.probe = static_cast<int>(record_integer(r, "probe", where));
   st.reached_bottom = record_integer(r, "reached_bottom", where) != 0;
   cell = read_cell(r, where);
-  const long long rows = record_integer(r, "curve.rows", where);
-  if (rows < 0) throw InvalidInput(where + ": stage record curve.rows is negative");
   st.curve.clear();
-  for (long long k = 0; k < rows; ++k) {
-    const std::string key = row_key(static_cast<std::size_t>(k));
-    const std::vector<double> v = record_list(r, key, where);
-    if (v.size() != kRowFields)
-      throw InvalidInput(where + ": stage record " + key + ": expected " +
-                         std::to_string(kRowFields) + " numbers");
+  for (const std::vector<double>& v : record_curve(r, kRowFields, where)) {
     CptRow c;
     c.step = static_cast<long long>(v[0]);
     auto fields = row_fields(c);

@@ -27,12 +27,6 @@ std::array<double*, kRowFields - 1> row_fields(CurveRow& c) {
           &c.porosity,     &c.coordination,      &c.unbalanced};
 }
 
-std::string row_key(std::size_t k) {
-  char key[32];
-  std::snprintf(key, sizeof key, "curve.%06zu", k);
-  return key;
-}
-
 // How far the test is (0..1): the consolidation is the first tenth (by its step cap), the
 // loading the rest by its end criterion.
 double fraction_done(const ElementTestState& st, const ElementTestSettings& s) {
@@ -69,13 +63,12 @@ StageRecord element_test_record(const ElementTestState& st, const TestCell& cell
   put_number(r, "solid_volume", st.solid_volume);
   put_number(r, "test_friction", st.test_friction);
   put_cell(r, cell);
-  r["curve.rows"] = std::to_string(st.curve.size());
-  for (std::size_t k = 0; k < st.curve.size(); ++k) {
-    CurveRow c = st.curve[k];
-    std::string text = format_number(double(c.step));
-    for (double* v : row_fields(c)) text += "," + format_number(*v);
-    r[row_key(k)] = text;
+  std::vector<std::vector<double>> rows;
+  for (CurveRow c : st.curve) {
+    rows.push_back({double(c.step)});
+    for (double* v : row_fields(c)) rows.back().push_back(*v);
   }
+  put_curve(r, rows);
   return r;
 }
 
@@ -95,15 +88,8 @@ void read_element_test_record(const StageRecord& r, const std::string& where, El
   st.solid_volume = record_number(r, "solid_volume", where);
   st.test_friction = record_number(r, "test_friction", where);
   cell = read_cell(r, where);
-  const long long rows = record_integer(r, "curve.rows", where);
-  if (rows < 0) throw InvalidInput(where + ": stage record curve.rows is negative");
   st.curve.clear();
-  for (long long k = 0; k < rows; ++k) {
-    const std::string key = row_key(static_cast<std::size_t>(k));
-    const std::vector<double> v = record_list(r, key, where);
-    if (v.size() != kRowFields)
-      throw InvalidInput(where + ": stage record " + key + ": expected " +
-                         std::to_string(kRowFields) + " numbers");
+  for (const std::vector<double>& v : record_curve(r, kRowFields, where)) {
     CurveRow c;
     c.step = static_cast<long long>(v[0]);
     auto fields = row_fields(c);

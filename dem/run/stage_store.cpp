@@ -5,6 +5,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace clumpkit::dem {
 
@@ -59,6 +60,41 @@ std::vector<double> record_list(const StageRecord& record, const std::string& ke
     if (next == end) return out;
     p = next + 1;
   }
+}
+
+namespace {
+
+std::string row_key(std::size_t k) {
+  char key[32];
+  std::snprintf(key, sizeof key, "curve.%06zu", k);
+  return key;
+}
+
+}  // namespace
+
+void put_curve(StageRecord& record, const std::vector<std::vector<double>>& rows) {
+  record["curve.rows"] = std::to_string(rows.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    std::string text;
+    for (std::size_t f = 0; f < rows[k].size(); ++f)
+      text += (f ? "," : "") + format_number(rows[k][f]);
+    record[row_key(k)] = text;
+  }
+}
+
+std::vector<std::vector<double>> record_curve(const StageRecord& record, std::size_t fields,
+                                              const std::string& where) {
+  const long long rows = record_integer(record, "curve.rows", where);
+  if (rows < 0) throw InvalidInput(where + ": stage record curve.rows is negative");
+  std::vector<std::vector<double>> out;
+  for (long long k = 0; k < rows; ++k) {
+    const std::string key = row_key(static_cast<std::size_t>(k));
+    out.push_back(record_list(record, key, where));
+    if (out.back().size() != fields)
+      throw InvalidInput(where + ": stage record " + key + ": expected " + std::to_string(fields) +
+                         " numbers");
+  }
+  return out;
 }
 
 StageCheckpoints::StageCheckpoints(StageStore& store, const StageControl& control,

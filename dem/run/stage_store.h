@@ -83,6 +83,15 @@ long long record_integer(const StageRecord& record, const std::string& key,
 std::vector<double> record_list(const StageRecord& record, const std::string& key,
                                 const std::string& where);
 
+/// A curve kept in a record: "curve.rows" and one key per row ("curve.000000", …) holding the
+/// row's numbers as record_list reads them (exact; a step count as a double is exact to 2^53).
+void put_curve(StageRecord& record, const std::vector<std::vector<double>>& rows);
+
+/// The rows of put_curve, each of `fields` numbers. Throws InvalidInput naming `where` and the
+/// key for a missing or malformed entry.
+std::vector<std::vector<double>> record_curve(const StageRecord& record, std::size_t fields,
+                                              const std::string& where);
+
 /// The checkpoints of one running stage: asked between units of work, it saves the world and
 /// the stage's state every control.checkpoint_every_seconds (when the store keeps checkpoints)
 /// and whenever the interrupter asks to stop.

@@ -61,7 +61,7 @@ void register_test(CLI::App& app) {
   c->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
     const bool cpt = o->kind == "cpt";
-    const dem::TestKind kind = cpt ? dem::TestKind::triaxial : test_kind(o->kind);
+    if (!cpt) test_kind(o->kind);  // an unknown kind is refused before anything is read
     set_threads(o->threads);
     const TestRecipe recipe = read_test_recipe(o->recipe);
     ProgressBar bar("test", o->quiet);
@@ -72,7 +72,7 @@ void register_test(CLI::App& app) {
     jo.save_consolidated = o->save_consolidated;
     const ElementTestJobResult job =
         cpt ? run_cpt_job(o->specimen, recipe, o->out, jo, signal_interrupter(bar, "test"))
-            : run_element_test_job(kind, o->specimen, recipe, o->out, jo,
+            : run_element_test_job(test_kind(o->kind), o->specimen, recipe, o->out, jo,
                                    signal_interrupter(bar, "test"));
     bar.finish();
     if (!job.afresh_reason.empty()) note("started afresh: " + job.afresh_reason);

@@ -98,21 +98,8 @@ ElementTestJobResult run_cpt_job(const std::string& specimen_dir, const TestReci
   for (const dem::CptRow& c : r.curve) plot.x.push_back(c.depth), plot.y.push_back(c.qc / 1e6);
   write_line_plot((out / "curve.png").string(), plot, "depth (m)", "cone resistance qc (MPa)",
                   "CPT, " + format_number(s.cell.confining / 1e3, 4) + " kPa");
-  write_file_atomically((out / "report.json").string(),
-                        [&](std::ostream& f) { f << rep.dump(2) << "\n"; });
-  nlohmann::ordered_json m = manifest_head("test", recipe.path, recipe.text, 0);
-  m["test"] = "cpt";
-  m["specimen"] = specimen_dir;
-  m["files"] = {"curve.csv", "curve.png", "report.json"};
-  write_file_atomically((out / "manifest.json").string(),
-                        [&](std::ostream& f) { f << m.dump(2) << "\n"; });
-  publish_directory(out.string(), out_dir);
-  ElementTestJobResult result;
-  result.report = rep;
-  result.resumed = r.resumed;
-  if (options.resume && !r.resumed)
-    result.afresh_reason = "no checkpoint in " + (out / "checkpoints").string();
-  return result;
+  return finish_test_job(setup, out_dir, recipe, "cpt", specimen_dir, rep,
+                         {"curve.csv", "curve.png", "report.json"}, options.resume, r.resumed);
 }
 
 }  // namespace clumpkit

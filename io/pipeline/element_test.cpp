@@ -250,22 +250,10 @@ ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string&
   write_line_plot(
       (out / "curve.png").string(), plot, x_label, y_label,
       std::string(kind_name(kind)) + " test, " + format_number(s.confining / 1e3, 4) + " kPa");
-  write_file_atomically((out / "report.json").string(),
-                        [&](std::ostream& f) { f << rep.dump(2) << "\n"; });
-  nlohmann::ordered_json m = manifest_head("test", recipe.path, recipe.text, 0);
-  m["test"] = kind_name(kind);
-  m["specimen"] = specimen_dir;
-  m["files"] = {"curve.csv", "curve.png", "report.json"};
-  if (options.save_consolidated) m["files"].push_back("consolidated/");
-  write_file_atomically((out / "manifest.json").string(),
-                        [&](std::ostream& f) { f << m.dump(2) << "\n"; });
-  publish_directory(out.string(), out_dir);
-  ElementTestJobResult result;
-  result.report = rep;
-  result.resumed = r.resumed;
-  if (options.resume && !r.resumed)
-    result.afresh_reason = "no checkpoint in " + (out / "checkpoints").string();
-  return result;
+  std::vector<std::string> files = {"curve.csv", "curve.png", "report.json"};
+  if (options.save_consolidated) files.push_back("consolidated/");
+  return finish_test_job(setup, out_dir, recipe, kind_name(kind), specimen_dir, rep, files,
+                         options.resume, r.resumed);
 }
 
 }  // namespace clumpkit

@@ -156,4 +156,28 @@ TestSetup setup_test(const std::string& kind, const std::string& specimen_dir,
   return setup;
 }
 
+ElementTestJobResult finish_test_job(const TestSetup& setup, const std::string& out_dir,
+                                     const TestRecipe& recipe, const std::string& test,
+                                     const std::string& specimen_dir,
+                                     const nlohmann::ordered_json& report,
+                                     const std::vector<std::string>& files, bool resume,
+                                     bool resumed) {
+  const fs::path& out = setup.out;
+  write_file_atomically((out / "report.json").string(),
+                        [&](std::ostream& f) { f << report.dump(2) << "\n"; });
+  nlohmann::ordered_json m = manifest_head("test", recipe.path, recipe.text, 0);
+  m["test"] = test;
+  m["specimen"] = specimen_dir;
+  m["files"] = files;
+  write_file_atomically((out / "manifest.json").string(),
+                        [&](std::ostream& f) { f << m.dump(2) << "\n"; });
+  publish_directory(out.string(), out_dir);
+  ElementTestJobResult result;
+  result.report = report;
+  result.resumed = resumed;
+  if (resume && !resumed)
+    result.afresh_reason = "no checkpoint in " + (out / "checkpoints").string();
+  return result;
+}
+
 }  // namespace clumpkit

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "dem/lab/element_test.h"
+#include "io/pipeline/element_test.h"
 #include "io/pipeline/job.h"
 #include "io/pipeline/stage_files.h"
 #include "io/recipes/test_recipe.h"
@@ -44,5 +45,16 @@ TestSetup setup_test(
     double strain_rate, const std::string& rate_field, const Interrupter& interrupter,
     const std::function<void(const nlohmann::json& spec_report, const std::string& report_path,
                              const dem::CellSpecimen& specimen)>& validate = {});
+
+/// The end of a test job: report.json and manifest.json (command "test", the recipe, `test`,
+/// the specimen, `files` besides them) written into DIR.partial, DIR.partial published as
+/// `out_dir`, and what the job did (with `resume` but no checkpoint found, the reason it
+/// started afresh).
+ElementTestJobResult finish_test_job(const TestSetup& setup, const std::string& out_dir,
+                                     const TestRecipe& recipe, const std::string& test,
+                                     const std::string& specimen_dir,
+                                     const nlohmann::ordered_json& report,
+                                     const std::vector<std::string>& files, bool resume,
+                                     bool resumed);
 
 }  // namespace clumpkit

@@ -57,7 +57,17 @@ CptSettings settings() {
   t.cell.max_consolidation_steps = 60000;
   t.probe.diameter = 0.01;
   t.probe.velocity = 2.0;
-  t.probe.depth = 0.012;
+  t.probe.depth = 0.009;
+  return t;
+}
+
+// The probe of settings() at 100 kPa, for the checks that need no specimen.
+CptSettings probe_only() {
+  CptSettings t;
+  t.cell.confining = 1e5;
+  t.probe.diameter = 0.01;
+  t.probe.velocity = 2.0;
+  t.probe.depth = 0.01;
   return t;
 }
 
@@ -127,18 +137,20 @@ TEST(DemCpt, ProbeMeetsResistanceWithTheCellHeldSameBytesForOneAndTwoThreadsAndA
 }
 
 TEST(DemCpt, ProbesThatCannotBePushedAreRefused) {
-  CellSpecimen s = setup();
+  CellSpecimen s{World(WorldOptions{}), {}};
+  s.world.add_body(make_sphere_body(Vec3(0.025, 0.025, 0.025), 0.005, 2650));
+  s.cell = add_cuboid_test_cell(s.world, Vec3::Zero(), Vec3::Constant(0.05));
   for (const auto& [diameter, apex, velocity, depth] :
        std::vector<std::array<double, 4>>{{0.0, 60, 1, 0.01},
                                           {0.03, 60, 1, 0.01},  // wider than half the cell
                                           {0.01, 180, 1, 0.01},
                                           {0.01, 60, -1, 0.01},
                                           {0.01, 60, 1, 0.0}}) {
-    CptSettings t = settings();
+    CptSettings t = probe_only();
     t.probe = {diameter, apex, velocity, depth, -1.0};
     EXPECT_THROW(validate_cpt(s.world, s.cell, t), InvalidInput) << diameter << " " << apex;
   }
-  EXPECT_NO_THROW(validate_cpt(s.world, s.cell, settings()));
+  EXPECT_NO_THROW(validate_cpt(s.world, s.cell, probe_only()));
 }
 
 TEST(CptRecord, StateAndCellRoundTripExactly) {
@@ -197,7 +209,7 @@ TEST(DemCpt, ProbeInASegmentMustReachPastTheWallsExclusion) {
     for (int k = 0; k < 5; ++k)
       w.add_body(make_sphere_body((0.01 + 0.006 * k) * dir + Vec3(0, 0, 0.05), 0.003, 2650));
     const TestCell cell = add_segment_test_cell(w, 0.15, angle, 0.0, 0.1);
-    CptSettings t = settings();
+    CptSettings t = probe_only();
     t.probe.diameter = 0.018;
     if (degrees == 30.0)
       EXPECT_THROW(validate_cpt(w, cell, t), InvalidInput);
