@@ -5,6 +5,7 @@
 #include "dem/core/timestep.h"
 #include "dem/specimen/compression.h"
 #include "geom/errors.h"
+#include "tests/dem/compressed_cube.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -18,34 +19,11 @@ using namespace clumpkit::dem;
 namespace {
 
 const CompressionResult& cube() {
-  static const CompressionResult c = [] {
-    CompressionSpec s;
-    s.size = Vec3::Constant(0.05);
-    s.porosity = 0.42;
-    s.classes = {{0.0099, 0.0101, 100.0, false}};
-    s.contact.kn = 8e7;
-    s.contact.ks = 8e5;
-    s.contact.friction = 0.5;
-    s.contact.local_damping = 0.7;
-    s.contact.scaling = StiffnessScaling::linear;
-    s.contact.d_ref = 0.01;
-    s.loose_factor = 1.25;
-    s.strain_per_step = 2e-5;
-    s.relax_max_steps = 2000;
-    s.seed = 7;
-    return compress_specimen(s);
-  }();
-  return c;
+  return test::compressed_cube();
 }
 
 CellSpecimen setup() {
-  const CompressionResult& c = cube();
-  CellSpecimen s{World(element_test_world_options(c.world.bodies(), c.world.options().contact)),
-                 {}};
-  for (const Body& b : c.world.bodies()) s.world.add_body(b);
-  s.cell = add_cuboid_test_cell(s.world, c.lo, c.hi);
-  s.world.options().timestep = 0.2 * critical_timestep(s.world);
-  return s;
+  return test::cube_in_cell();
 }
 
 CptSettings settings() {

@@ -7,6 +7,7 @@
 #include "dem/core/timestep.h"
 #include "dem/specimen/compression.h"
 #include "geom/errors.h"
+#include "tests/dem/compressed_cube.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -20,48 +21,13 @@ using namespace clumpkit::dem;
 
 namespace {
 
-// A 5 d cube of 10 mm spheres at n = 0.42 (the compression tests' specimen, smaller and looser),
-// kn ∝ d.
 const CompressionResult& cube() {
-  static const CompressionResult c = [] {
-    CompressionSpec s;
-    s.size = Vec3::Constant(0.05);
-    s.porosity = 0.42;
-    s.classes = {{0.0099, 0.0101, 100.0, false}};
-    s.contact.kn = 8e7;
-    s.contact.ks = 8e5;
-    s.contact.friction = 0.5;
-    s.contact.local_damping = 0.7;  // as specimens have it: equilibrium in few steps
-    s.contact.scaling = StiffnessScaling::linear;
-    s.contact.d_ref = 0.01;
-    s.loose_factor = 1.25;
-    s.strain_per_step = 2e-5;
-    s.relax_max_steps = 2000;
-    s.seed = 7;
-    return compress_specimen(s);
-  }();
-  return c;
-}
-
-// The cube's bodies in a fresh world with the element-test options inside a cuboid test cell, as
-// the test job sets it up (0.2 of the critical step).
-struct Setup {
-  World world;
-  TestCell cell;
-};
-
-Setup setup() {
-  const CompressionResult& c = cube();
-  Setup s{World(element_test_world_options(c.world.bodies(), c.world.options().contact)), {}};
-  for (const Body& b : c.world.bodies()) s.world.add_body(b);
-  s.cell = add_cuboid_test_cell(s.world, c.lo, c.hi);
-  s.world.options().timestep = 0.2 * critical_timestep(s.world);
-  return s;
+  return test::compressed_cube();
 }
 
 std::vector<CurveRow> run(const ElementTestSettings& settings, int threads) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-  Setup s = setup();
+  CellSpecimen s = test::cube_in_cell();
   const ElementTestResult r = run_element_test(s.world, s.cell, settings);
   EXPECT_TRUE(r.consolidated);
   return r.curve;
