@@ -54,6 +54,13 @@ TEST(SpecimenRecipe, BundledRecipesParse) {
   EXPECT_NEAR(sum, 100.0, 1e-9);
   EXPECT_NEAR(rock, 40.0, 1e-9);
   EXPECT_TRUE(std::filesystem::exists(full.library_recipe));
+  // CTGU 2017's CPT group A: a 90° segment of the 300 mm chamber, 216 mm high, 6 mm spheres.
+  const SpecimenRecipe cpt = read_specimen_recipe(kDir + "cpt-A.toml");
+  EXPECT_TRUE(cpt.segment && cpt.compression);
+  EXPECT_EQ(cpt.segment_angle_deg, 90.0);
+  EXPECT_EQ(cpt.container_diameter, 0.3);
+  EXPECT_EQ(cpt.container_height, 0.216);
+  EXPECT_EQ(cpt.compression_porosity, 0.38);
   const SpecimenRecipe quick = read_specimen_recipe(kDir + "quick-specimen.toml");
   EXPECT_EQ(quick.layers, 2);
   EXPECT_EQ(quick.classes.size(), 2u);
