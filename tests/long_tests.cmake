@@ -14,7 +14,7 @@ set(clumpkit_long_tests
   CliElementTest.IsotropicAndOedometerGiveModuliWithTheOedometerStiffer
   CliElementTest.CompressedCuboidAndItsScaledCopyTestTheSameBitForBit
   CliElementTest.SpecimenScaledByTwoTestsTheSameBitForBit
-  # `test cpt` on the tiny specimen, 1 and 2 threads (35 s in Release) -> DemCpt.* (the same
+  # `test cpt` on the tiny specimen, 1 and 2 threads (24 s in Release) -> DemCpt.* (the same
   # push on a small compressed cube: 1 and 2 threads, stopped and continued) and
   # CliCpt.BadProbesAreRefusedBeforeAnythingIsWritten (the job's checks)
   CliCpt.PushIntoTheTinySpecimenSameBytesForOneAndTwoThreads

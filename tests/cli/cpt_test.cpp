@@ -1,4 +1,4 @@
-// `clumpkit test cpt` on the tiny specimen: a cone pushed 12 mm into it gives a cone resistance
+// `clumpkit test cpt` on the tiny specimen: a cone pushed 9 mm into it gives a cone resistance
 // well above the confining stress, the same bytes for 1 and 2 threads; bad probes are refused
 // before anything is written.
 #include "cli_helpers.h"
@@ -21,7 +21,7 @@ record_every = 2000
 [probe]
 diameter = 0.012
 velocity = 0.08
-depth = 0.012
+depth = 0.009
 )";
 
 // The numeric rows of curve.csv, its header checked.
@@ -70,14 +70,14 @@ TEST(CliCpt, PushIntoTheTinySpecimenSameBytesForOneAndTwoThreads) {
   const auto rows = cpt_rows(d / "c1" / "curve.csv");
   ASSERT_GT(rows.size(), 10u);
   EXPECT_EQ(rows.front()[1], 0.0);
-  EXPECT_GE(rows.back()[1], 0.012);
+  EXPECT_GE(rows.back()[1], 0.009);
   for (std::size_t k = 1; k < rows.size(); ++k) {
     EXPECT_GT(rows[k][1], rows[k - 1][1]);
     EXPECT_NEAR(rows[k][4], rows[k][2] / (3.14159265358979323846 * 0.006 * 0.006),
                 1e-9 * std::abs(rows[k][4]) + 1e-9);
   }
-  // Once the cone is buried (depth ≥ D_c), qc is far above the confining stress (a dense
-  // specimen: about 20 times at 100 kPa, measured on a 40 mm push).
+  // With most of the 10.4 mm cone buried, qc is far above the confining stress (13 times at the
+  // end of this push, measured; about 20 times once buried on a 40 mm push).
   EXPECT_GT(rep["qc_max"].get<double>(), 5.0 * 100e3);
   EXPECT_GT(rows.back()[4], 2.0 * 100e3);
 }
