@@ -38,6 +38,9 @@ struct Body {
   /// 0: World::add_body sets the sphere's diameter for a plain sphere, else (6·volume/π)^(1/3)
   /// (left 0 for a clump without a volume, which only a size-scaled law refuses).
   double diameter = 0.0;
+  /// Zone of a zoned specimen (dem/specimen/zones.h): the index of its region in the layout; 0
+  /// in a specimen without zones. Carried through checkpoints and specimen files.
+  int zone = 0;
 
   Vec3 position = Vec3::Zero();  ///< centroid in the world (m)
   Vec3 velocity = Vec3::Zero();  ///< m/s (at the half step, leapfrog)

@@ -16,7 +16,7 @@ std::vector<std::string> write_vtk_export(const std::vector<SpecimenBody>& bodie
   write_file_atomically(script, [](std::ostream& o) {
     o << R"py(# clumpkit export for ParaView/VTK (python3-vtk9 9.1 or ParaView's pvpython).
 # specimen.vtp holds one point per sphere centre with point arrays radius (m), body (the id of
-# specimen.csv) and kind (1 rock, 0 soil). This script makes the spheres ParaView's Glyph filter
+# specimen.csv), kind (1 rock, 0 soil) and zone (region of a zoned specimen). This script makes the spheres ParaView's Glyph filter
 # makes (Glyph Type Sphere of radius 0.5, Scale Array radius, Scale Factor 2, all points) and
 # writes them as spheres.vtp, a surface coloured by body. In the ParaView GUI: open specimen.vtp,
 # Filters > Glyph with those settings, colour by body.

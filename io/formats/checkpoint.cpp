@@ -160,6 +160,7 @@ struct WorldCodec {
       w.i32(b.template_id);
       w.f64(b.scale);
       w.f64(b.diameter);
+      w.i32(b.zone);
     }
     w.u64(world.walls().size());
     for (const Wall& wall : world.walls()) {
@@ -188,7 +189,8 @@ struct WorldCodec {
     w.i64(lists.filters);
   }
 
-  static World read(Reader& r) {
+  // `version`: kCheckpointVersion, or 7 (bodies without a zone: zone 0).
+  static World read(Reader& r, std::uint32_t version) {
     WorldOptions o;
     o.gravity = r.vec();
     o.timestep = r.f64();
@@ -240,6 +242,7 @@ struct WorldCodec {
       b.template_id = r.i32();
       b.scale = r.f64();
       b.diameter = r.f64();
+      if (version >= 8) b.zone = r.i32();
       const Eigen::Quaterniond q = b.orientation;
       try {
         world.add_body(std::move(b));
@@ -362,7 +365,7 @@ World load_checkpoint(const std::string& path, CheckpointInfo* info) {
   Reader header(bytes, end, path);
   for (std::size_t k = 0; k < sizeof kMagic; ++k) header.u8();
   const std::uint32_t version = header.u32();
-  if (version != kCheckpointVersion)
+  if (version != kCheckpointVersion && version != 7)
     header.fail("unsupported version " + std::to_string(version) + " (expected " +
                 std::to_string(kCheckpointVersion) + ")");
   std::uint64_t stored = 0;
@@ -379,7 +382,7 @@ World load_checkpoint(const std::string& path, CheckpointInfo* info) {
     read_info.state[std::move(key)] = header.str("stage state value");
   }
   if (read_info.state.size() != entries) header.fail("repeated stage state key");
-  World world = WorldCodec::read(header);
+  World world = WorldCodec::read(header, version);
   if (header.position() != end)
     header.fail(std::to_string(end - header.position()) + " unexpected bytes before the checksum");
   if (info) *info = std::move(read_info);

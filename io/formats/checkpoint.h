@@ -11,8 +11,9 @@ namespace clumpkit {
 
 /// Current checkpoint format version (bumped on any layout change, or a change in what a
 /// stored word means: 4 = run_until's height reference is the one after the window test;
-/// 6 = the sort interval, WorldOptions::sort_every; 7 = the stage state as key/value text).
-inline constexpr std::uint32_t kCheckpointVersion = 7;
+/// 6 = the sort interval, WorldOptions::sort_every; 7 = the stage state as key/value text; 8 = each
+/// body's zone after its diameter). Version 7 is still read (every body in zone 0).
+inline constexpr std::uint32_t kCheckpointVersion = 8;
 
 /// Writes `world` and `info` to `path`: magic "CLUMPKITCKPT", version, the stage and its state
 /// (length-prefixed strings: the stage, the number of entries, each key and value), then

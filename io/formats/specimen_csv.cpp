@@ -27,6 +27,7 @@ std::vector<SpecimenBody> specimen_bodies(const dem::World& world) {
     s.volume = b.volume;
     s.scale = b.scale;
     s.moments = b.moments;
+    s.zone = b.zone;
     s.spheres.reserve(b.spheres.size());
     for (const Sphere& sp : b.spheres)
       s.spheres.push_back({b.orientation * sp.center + b.position, sp.radius});
@@ -53,6 +54,7 @@ dem::Body dem_body(const SpecimenBody& b) {
   body.kind = b.kind;
   body.template_id = b.template_id;
   body.scale = b.scale;
+  body.zone = b.zone;
   body.position = b.position;
   body.orientation = b.orientation;
   return body;
@@ -63,8 +65,9 @@ void write_specimen_csv(const std::string& path, const std::vector<SpecimenBody>
     o << "# clumpkit specimen format " << kSpecimenCsvFormat
       << ", SI units, world frame (x_world = q x_body + position). Bodies, then their spheres.\n"
          "# I1,I2,I3: principal moments (kg m2) about the body frame axes (the template's "
-         "principal frame); scale: template length scale (1 for soil)\n# bodies\n";
-    o << "body,kind,template,x,y,z,qw,qx,qy,qz,mass,volume,scale,I1,I2,I3\n";
+         "principal frame); scale: template length scale (1 for soil); zone: region of a zoned "
+         "specimen (0 without zones)\n# bodies\n";
+    o << "body,kind,template,x,y,z,qw,qx,qy,qz,mass,volume,scale,I1,I2,I3,zone\n";
     for (const SpecimenBody& b : bodies) {
       o << b.id << "," << dem::kind_name(b.kind) << "," << b.template_id << ","
         << format_number(b.position.x()) << "," << format_number(b.position.y()) << ","
@@ -73,7 +76,7 @@ void write_specimen_csv(const std::string& path, const std::vector<SpecimenBody>
         << format_number(b.orientation.z()) << "," << format_number(b.mass) << ","
         << format_number(b.volume) << "," << format_number(b.scale) << ","
         << format_number(b.moments.x()) << "," << format_number(b.moments.y()) << ","
-        << format_number(b.moments.z()) << "\n";
+        << format_number(b.moments.z()) << "," << b.zone << "\n";
     }
     o << "# spheres\nsphere,body,x,y,z,r\n";
     std::size_t n = 0;
@@ -108,15 +111,20 @@ std::vector<SpecimenBody> read_specimen_csv(const std::string& path) {
       bad("field " + std::string(field) + ": integer out of range: '" + cell + "'");
     return static_cast<long>(v);
   };
-  const std::string format_line =
-      "# clumpkit specimen format " + std::to_string(kSpecimenCsvFormat);
+  // Format 3 had no zone column: still read, every body in zone 0.
+  const std::string format_line = "# clumpkit specimen format ";
+  std::size_t body_fields = 17;
   enum class Section { head, bodies, spheres } section = Section::head;
   while (std::getline(in, line)) {
     ++line_no;
     if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line_no == 1 && line.rfind(format_line + ",", 0) != 0)
-      bad("not a clumpkit specimen.csv of format " + std::to_string(kSpecimenCsvFormat) +
-          " (first line '" + line.substr(0, 40) + "')");
+    if (line_no == 1) {
+      const bool v4 = line.rfind(format_line + std::to_string(kSpecimenCsvFormat) + ",", 0) == 0;
+      if (!v4 && line.rfind(format_line + "3,", 0) != 0)
+        bad("not a clumpkit specimen.csv of format " + std::to_string(kSpecimenCsvFormat) +
+            " or 3 (first line '" + line.substr(0, 40) + "')");
+      body_fields = v4 ? 17 : 16;
+    }
     if (line.empty()) continue;
     if (line == "# bodies") {
       section = Section::bodies;
@@ -129,7 +137,9 @@ std::vector<SpecimenBody> read_specimen_csv(const std::string& path) {
     if (line[0] == '#' || line.rfind("body,", 0) == 0 || line.rfind("sphere,", 0) == 0) continue;
     const std::vector<std::string> c = split_csv(line);
     if (section == Section::bodies) {
-      if (c.size() != 16) bad("a body row has 16 fields, found " + std::to_string(c.size()));
+      if (c.size() != body_fields)
+        bad("a body row has " + std::to_string(body_fields) + " fields, found " +
+            std::to_string(c.size()));
       SpecimenBody b;
       b.id = integer(c[0], "body");
       if (b.id != static_cast<long>(bodies.size()) + 1)
@@ -156,6 +166,11 @@ std::vector<SpecimenBody> read_specimen_csv(const std::string& path) {
       b.moments = Vec3(number(c[13], "I1"), number(c[14], "I2"), number(c[15], "I3"));
       if (!(b.mass > 0) || !(b.volume > 0) || !(b.scale > 0) || !(b.moments.minCoeff() > 0))
         bad("fields mass, volume, scale, I1..I3 must be positive");
+      if (body_fields == 17) {
+        const long zone = integer(c[16], "zone");
+        if (zone < 0 || zone > 1000) bad("field zone: out of range [0, 1000]: '" + c[16] + "'");
+        b.zone = static_cast<int>(zone);
+      }
       bodies.push_back(std::move(b));
     } else if (section == Section::spheres) {
       if (c.size() != 6) bad("a sphere row has 6 fields, found " + std::to_string(c.size()));

@@ -28,6 +28,9 @@ void write_specimen_vtp(const std::string& path, const std::vector<SpecimenBody>
     for (const SpecimenBody& b : bodies)
       for (std::size_t s = 0; s < b.spheres.size(); ++s)
         o << (b.kind == dem::BodyKind::rock ? 1 : 0) << "\n";
+    o << "</DataArray>\n<DataArray type=\"Int32\" Name=\"zone\" format=\"ascii\">\n";
+    for (const SpecimenBody& b : bodies)
+      for (std::size_t s = 0; s < b.spheres.size(); ++s) o << b.zone << "\n";
     o << "</DataArray>\n</PointData>\n<Verts>\n"
       << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
     for (std::size_t k = 0; k < n; ++k) o << k << "\n";

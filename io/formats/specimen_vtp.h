@@ -9,7 +9,8 @@
 namespace clumpkit {
 
 /// specimen.vtp: VTK XML PolyData, one point per sphere with point data radius, body (the id of
-/// specimen.csv, from 1) and kind (0 soil, 1 rock); in ParaView use a Glyph filter (sphere, scale
+/// specimen.csv, from 1), kind (0 soil, 1 rock) and zone (the region of a zoned specimen); in
+/// ParaView use a Glyph filter (sphere, scale
 /// by radius, factor 2).
 void write_specimen_vtp(const std::string& path, const std::vector<SpecimenBody>& bodies);
 

@@ -138,7 +138,9 @@ TEST(ProbeWall, JunctionKeepsAContinuousForceOnOnePartAtATime) {
     const WallHit hit = wall_hit(wall, c, r);
     ASSERT_TRUE(hit.touching) << k;
     EXPECT_NEAR(hit.overlap, delta, 1e-12) << k;
-    if (k > 0) EXPECT_LT((hit.normal - last_normal).norm(), 0.03) << k;  // ≤ 1.75° per step
+    if (k > 0) {
+      EXPECT_LT((hit.normal - last_normal).norm(), 0.03) << k;  // ≤ 1.75° per step
+    }
     if (k > 0 && hit.part != last) ++switches;
     last = hit.part;
     last_normal = hit.normal;

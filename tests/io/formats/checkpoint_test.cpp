@@ -387,12 +387,34 @@ namespace clumpkit::dem {
 // decoding behind the version check (a format change must regenerate it).
 TEST(DemCheckpoint, FuzzCorpusSeedIsOfTheCurrentFormat) {
   CheckpointInfo info;
-  const World w = load_checkpoint(
-      std::string(CLUMPKIT_SOURCE_DIR) + "/tests/fuzz/corpus/checkpoint/sorted-servo-v7.ckpt",
-      &info);
+  const std::string corpus = std::string(CLUMPKIT_SOURCE_DIR) + "/tests/fuzz/corpus/checkpoint/";
+  const World w = load_checkpoint(corpus + "sorted-servo-v8.ckpt", &info);
+  EXPECT_EQ(read_bytes(corpus + "sorted-servo-v8.ckpt").substr(12, 4),
+            std::string("\x08\0\0\0", 4));
   EXPECT_GT(w.bodies().size(), 0u);
   EXPECT_FALSE(w.walls().empty());
   EXPECT_EQ(info.state.at("phase"), "2");
+  // Version 7, the same state without zones, still loads: every body in zone 0, the rest equal.
+  CheckpointInfo info7;
+  const World w7 = load_checkpoint(corpus + "sorted-servo-v7.ckpt", &info7);
+  ASSERT_EQ(w7.bodies().size(), w.bodies().size());
+  for (std::size_t k = 0; k < w.bodies().size(); ++k) {
+    EXPECT_EQ(w7.bodies()[k].zone, 0);
+    EXPECT_EQ(w7.bodies()[k].position, w.bodies()[k].position);
+  }
+  EXPECT_EQ(info7.state, info.state);
+}
+
+TEST(DemCheckpoint, BodyZonesSurviveASaveAndLoad) {
+  World world = make_deposition(30);
+  for (std::size_t k = 0; k < world.bodies().size(); ++k) world.bodies()[k].zone = int(k % 3);
+  const std::string path = temp_path("zones.ckpt");
+  save_checkpoint(path, world, {"zones", {}});
+  const World loaded = load_checkpoint(path);
+  ASSERT_EQ(loaded.bodies().size(), world.bodies().size());
+  for (std::size_t k = 0; k < world.bodies().size(); ++k)
+    EXPECT_EQ(loaded.bodies()[k].zone, int(k % 3));
+  std::filesystem::remove(path);
 }
 
 }  // namespace clumpkit::dem
