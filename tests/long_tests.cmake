@@ -45,6 +45,8 @@ set(clumpkit_long_tests
   # DemCompression.FiveDiameterCubeIsExactForAnyThreadsAndAtTwiceTheSize
   DemCompression.ReachesTheTargetPorosityWithoutGradientAndIsThreadIndependent
   DemCompression.ACopyAtTwiceTheSizeIsTheSameSpecimenScaledExactly
+  # zoned compression of ~300 spheres twice (1 and 2 threads) -> ZonedPacking.*
+  DemCompression.ZonedCylinderKeepsItsZonesForAnyThreads
 )
 foreach(t IN LISTS clumpkit_long_tests)
   set_tests_properties(${t} PROPERTIES LABELS long)

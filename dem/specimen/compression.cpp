@@ -2,13 +2,16 @@
 
 #include "dem/core/timestep.h"
 #include "dem/lab/cell.h"
+#include "dem/measure/sampled_porosity.h"
 #include "dem/measure/stress.h"
+#include "dem/specimen/zoned_packing.h"
 #include "geom/errors.h"
 #include "geom/format.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -45,6 +48,27 @@ double container_volume(const CompressionSpec& spec, const Vec3& size) {
   return spec.shape == CompressionSpec::Shape::cuboid
              ? size.prod()
              : disk * 0.25 * size.x() * size.x() * size.z();
+}
+
+Prism prism_of(const CompressionSpec& spec, const Vec3& size) {
+  Prism p;
+  p.shape = spec.shape == CompressionSpec::Shape::cuboid     ? Prism::Shape::cuboid
+            : spec.shape == CompressionSpec::Shape::cylinder ? Prism::Shape::cylinder
+                                                             : Prism::Shape::segment;
+  p.size = size;
+  p.angle = spec.angle;
+  return p;
+}
+
+bool zoned(const CompressionSpec& spec) {
+  return !spec.zones.regions.empty();
+}
+
+// The largest class size: the core's largest particle.
+double largest_size(const CompressionSpec& spec) {
+  double d = 0;
+  for (const ParticleClass& c : spec.classes) d = std::max(d, c.max_size);
+  return d;
 }
 
 // The largest rectangle |y'| ≤ w, x0 ≤ x' ≤ x1 inside the sector |φ'| ≤ angle/2 of the disk of
@@ -102,20 +126,37 @@ void validate(const CompressionSpec& spec) {
     throw InvalidInput("compression: timestep_safety must be in (0, 1]");
   if (spec.relax_max_steps < 0 || !(spec.relax_unbalanced >= 0))
     throw InvalidInput("compression: relaxation limits must not be negative");
+  if (!(spec.wall_excess >= 0.0 && spec.wall_excess < 1.0))
+    throw InvalidInput("compression: wall_excess must be in [0, 1), got " +
+                       format_number(spec.wall_excess));
+  if (zoned(spec)) {
+    validate_zones(spec.zones, largest_size(spec));
+    if (!(spec.mixed_porosity >= 0.0 && spec.mixed_porosity < 1.0))
+      throw InvalidInput("compression: mixed_porosity must be in [0, 1), got " +
+                         format_number(spec.mixed_porosity));
+  }
 }
 
-// The loose packing of `drawn` in the container of `size` enlarged by `factor` (more while too
+// The loose packing of `bodies` in the container of `size` enlarged by `factor` (more while too
 // crowded; the same stream goes on, so the result stays fixed by the seed): the world with the
 // cell's walls there and its time step; `factor` and `cell` as built.
-World loose_packing(const CompressionSpec& spec, LayerParticles drawn, const Vec3& size,
-                    double& factor, TestCell& cell) {
+// A zoned specimen (`in_zones` not null) places each body in its zone's pre-image (place_zoned),
+// so its bodies are not turned by the segment's bisector rotation.
+World loose_packing(const CompressionSpec& spec, std::vector<Body> bodies,
+                    const ZonedParticles* in_zones, const Vec3& size, double& factor,
+                    TestCell& cell) {
   const bool cuboid = spec.shape == CompressionSpec::Shape::cuboid;
   const bool segment = spec.shape == CompressionSpec::Shape::segment;
   Rng place_rng = Rng::stream(spec.seed, placement_stream);
-  const std::vector<PlacementItem> items = placement_items(drawn.bodies);
+  const std::vector<PlacementItem> items = placement_items(bodies);
   std::vector<Placement> placed;
   for (int tries = 0; placed.empty(); ++tries) {
     if (tries == 40) throw InvalidInput("compression: no room for the loose packing");
+    if (in_zones) {
+      placed = place_zoned(*in_zones, spec.zones, prism_of(spec, size), factor, place_rng);
+      if (placed.empty()) factor *= 1.1;
+      continue;
+    }
     const Box loose = container(size * factor);
     Vec3 lo = loose.lo, hi = loose.hi;
     if (segment) {  // a box inside the sector, about its bisector (turned onto it below)
@@ -140,15 +181,15 @@ World loose_packing(const CompressionSpec& spec, LayerParticles drawn, const Vec
   // kinetic energy of 1,100 spheres grew to 600 J, ~30 m/s). The specimen keeps the spec's.
   o.contact.local_damping = std::max(spec.contact.local_damping, 0.7);
   double r_min = 1e300;
-  for (const Body& b : drawn.bodies)
+  for (const Body& b : bodies)
     for (const Sphere& s : b.spheres) r_min = std::min(r_min, s.radius);
   o.skin = 0.2 * r_min;  // a length of the specimen: similar specimens scale exactly
   World world(o);
-  for (std::size_t k = 0; k < drawn.bodies.size(); ++k) {
-    Body b = std::move(drawn.bodies[k]);
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    Body b = std::move(bodies[k]);
     b.position = placed[k].position;
     b.orientation = placed[k].orientation;
-    if (segment) {  // from the bisector's frame into the sector
+    if (segment && !in_zones) {  // from the bisector's frame into the sector
       const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.5 * spec.angle, Vec3::UnitZ()));
       b.position = turn * b.position;
       b.orientation = turn * b.orientation;
@@ -164,6 +205,39 @@ World loose_packing(const CompressionSpec& spec, LayerParticles drawn, const Vec
   return world;
 }
 
+// Re-tags every body by the zone of its final centre (counting those that left the zone they
+// were placed in) and measures each zone's porosity one of its largest diameters from the walls.
+void measure_zones(const CompressionSpec& spec, const Prism& prism, World& world,
+                   CompressionResult& r) {
+  const ZoneLayout& layout = spec.zones;
+  const int n = static_cast<int>(layout.regions.size());
+  double r_min = std::numeric_limits<double>::infinity();
+  for (Body& b : world.bodies()) {
+    const double c = zone_coordinate(layout, b.position);
+    const int k = region_of(layout, c);
+    if (k != b.zone) {
+      ZoneResult& placed = r.zones[b.zone];
+      ++placed.left_zone, ++r.left_zone;
+      const double beyond =
+          std::max(b.zone > 0 ? placed.inner - c : 0.0, b.zone + 1 < n ? c - placed.outer : 0.0);
+      if (beyond > 2.0 * b.bounding_radius()) ++placed.mis_zoned, ++r.mis_zoned;
+    }
+    b.zone = k;
+    ++r.zones[k].count;
+    r.zones[k].margin = std::max(r.zones[k].margin, 2.0 * b.bounding_radius());
+    for (const Sphere& s : b.spheres) r_min = std::min(r_min, s.radius);
+  }
+  Vec3 lo, hi;
+  prism.bounds(lo, hi);
+  const std::vector<SampledRegion> sampled =
+      sampled_regions(world, lo, hi, 0.2 * r_min, n, [&](const Vec3& p) {
+        if (!prism.holds(p)) return -1;
+        const int k = region_of(layout, zone_coordinate(layout, p));
+        return prism.wall_distance(p) >= r.zones[k].margin ? k : -1;
+      });
+  for (int k = 0; k < n; ++k) r.zones[k].porosity = sampled[k].porosity();
+}
+
 }  // namespace
 
 CompressionResult compress_specimen(const CompressionSpec& spec, const StageControl& control) {
@@ -176,15 +250,39 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const StageCont
   // The particles for the requested container, then the container resized so that they fill it
   // at exactly the target porosity (the drawn volume misses the goal by part of a particle).
   // Drawn on a resume too: the size follows from them.
+  // Zoned: each region drawn for its own volume and porosity (zoned_particles).
   Rng particle_rng = Rng::stream(spec.seed, particles_stream);
-  const double goal = (1.0 - spec.porosity) * container_volume(spec, spec.size);
-  LayerParticles drawn = layer_particles(spec.classes, spec.templates, goal, spec.soil_density,
-                                         spec.rock_density, particle_rng);
-  if (drawn.bodies.empty()) throw InvalidInput("compression: the container holds no particle");
+  double goal = (1.0 - spec.porosity) * container_volume(spec, spec.size);
+  ZonedParticles in_zones;
+  std::vector<ZoneResult> zones;
+  if (zoned(spec)) {
+    const ZoneVolumes v = zone_volumes(spec.zones, prism_of(spec, spec.size));
+    const double n_mixed = spec.mixed_porosity > 0.0 ? spec.mixed_porosity : spec.porosity;
+    in_zones = zoned_particles(spec.zones, v, spec.classes, spec.templates, spec.porosity, n_mixed,
+                               spec.wall_excess, spec.soil_density, spec.rock_density, spec.seed);
+    goal = 0;
+    zones.resize(spec.zones.regions.size());
+    for (std::size_t k = 0; k < zones.size(); ++k) {
+      ZoneResult& z = zones[k];
+      z.inner = k > 0 ? spec.zones.regions[k - 1].outer : 0.0;
+      z.outer = spec.zones.regions[k].outer;
+      z.volume = v.volume[k];
+      z.target_porosity = spec.zones.regions[k].mixed ? n_mixed : spec.porosity;
+      z.solid_goal = in_zones.goal[k];
+      goal += in_zones.goal[k];
+    }
+    for (const Body& b : in_zones.bodies) zones[b.zone].solid_drawn += b.volume;
+  } else {
+    in_zones.bodies = layer_particles(spec.classes, spec.templates, goal, spec.soil_density,
+                                      spec.rock_density, particle_rng)
+                          .bodies;
+  }
+  if (in_zones.bodies.empty()) throw InvalidInput("compression: the container holds no particle");
   double solid = 0;
-  for (const Body& b : drawn.bodies) solid += b.volume;
-  const Vec3 size =
-      spec.size * std::cbrt(solid / (1.0 - spec.porosity) / container_volume(spec, spec.size));
+  for (const Body& b : in_zones.bodies) solid += b.volume;
+  const Vec3 size = zoned(spec) ? Vec3(spec.size * std::cbrt(solid / goal))
+                                : Vec3(spec.size * std::cbrt(solid / (1.0 - spec.porosity) /
+                                                             container_volume(spec, spec.size)));
 
   CompressionResult r;
   World& world = r.world;
@@ -212,7 +310,8 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const StageCont
     s = record_number(info.state, "scale", kStage);
     relax = static_cast<long>(record_integer(info.state, "relax_steps", kStage));
   } else {
-    world = loose_packing(spec, std::move(drawn), size, factor, cell);
+    world =
+        loose_packing(spec, in_zones.bodies, zoned(spec) ? &in_zones : nullptr, size, factor, cell);
     s = factor;
   }
   // The checkpointed state: where the closing and the relaxation are.
@@ -291,6 +390,10 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const StageCont
   r.coordination = coordination_number(world);
   r.mean_stress = mean_stress(love_weber_stress(
       world, [](const Vec3&) { return true; }, volume));
+  if (zoned(spec)) {
+    r.zones = std::move(zones);
+    measure_zones(spec, prism_of(spec, size), world, r);
+  }
   return r;
 }
 

@@ -6,6 +6,7 @@
 #include "dem/core/world.h"
 #include "dem/run/stage_store.h"
 #include "dem/specimen/specimen_particles.h"
+#include "dem/specimen/zones.h"
 
 #include <cstdint>
 #include <string>
@@ -44,6 +45,37 @@ struct CompressionSpec {
   /// relax_max_steps.
   double relax_unbalanced = 1e-3;
   long relax_max_steps = 50000;
+  /// Variable particle-size zones (CTGU 2017; no regions: one uniform specimen). Each uniform
+  /// zone holds `classes` scaled by its λ at `porosity` (similar packings have equal porosity),
+  /// a mixed layer both neighbours' particles at mixed_porosity (0: `porosity`); bodies are
+  /// placed loose in the pre-image of their zone under the compression's map, so each ends in
+  /// its zone up to the relaxation's moves, and carry Body::zone (re-tagged at the end by their
+  /// final centre). Bounds in metres of the requested container (`size`).
+  ZoneLayout zones;
+  double mixed_porosity = 0.0;
+  /// Zoned specimens' porosities hold away from walls: each zone's solid is drawn for its volume
+  /// less wall_excess × its mean diameter × its wall area (zoned_particles). 0.09 measured: one
+  /// zone of 6 mm spheres in a 90° segment (200 mm across, 60 mm high, 2,500 spheres) compressed
+  /// to n = 0.39 and 0.38 overall gave 0.3615 and 0.3523 one diameter from the walls, an excess
+  /// of 0.094 and 0.091 diameters.
+  double wall_excess = 0.09;
+};
+
+/// One region of a zoned specimen, as built.
+struct ZoneResult {
+  double inner = 0, outer = 0;  ///< bounds of the zone coordinate (m)
+  double volume = 0;            ///< inside the container (m³)
+  double target_porosity = 0;
+  double solid_goal = 0, solid_drawn = 0;  ///< m³
+  /// Measured by sampled_regions (points a tenth of the smallest diameter apart) over the part of
+  /// the region at least `margin` (its largest body diameter) from every wall; NaN when nothing is
+  /// left.
+  double porosity = 0, margin = 0;
+  long count = 0;      ///< bodies whose final centre lies in the region (their zone)
+  long left_zone = 0;  ///< bodies placed in this region whose centre ended in another
+  /// Of those, the ones that ended more than their own diameter beyond the region's bounds
+  /// (migrated, not just nudged across a bound).
+  long mis_zoned = 0;
 };
 
 /// The built specimen.
@@ -57,8 +89,10 @@ struct CompressionResult {
   double mean_stress = 0;         ///< Love–Weber mean stress at the end (Pa, compression +)
   double coordination = 0;        ///< mean contacts per body at the end
   long compression_steps = 0, relax_steps = 0;
-  std::string relaxed_by;  ///< "unbalanced_ratio" or "step_cap"
-  double timestep = 0;     ///< s
+  std::string relaxed_by;             ///< "unbalanced_ratio" or "step_cap"
+  double timestep = 0;                ///< s
+  std::vector<ZoneResult> zones;      ///< zoned specimens only, innermost first
+  long mis_zoned = 0, left_zone = 0;  ///< Σ over the zones
 };
 
 /// Draws the particles of spec.classes for the target porosity (layer_particles with the solid
@@ -74,7 +108,9 @@ struct CompressionResult {
 /// control.checkpoint_every_seconds and when the interrupter, told "compression" and the
 /// fraction done, asks to stop (then Interrupted is thrown); the world at the end of the
 /// relaxation is kept with the finished stage. Continued from the store, it ends with the bytes
-/// of a run never stopped. Throws InvalidInput for a bad spec.
+/// of a run never stopped. Zoned specimens: see CompressionSpec::zones (dem/specimen/
+/// zoned_packing.h draws and places them). Throws InvalidInput for a bad spec (validate_zones
+/// for the layout, with the largest class size as the core diameter).
 CompressionResult compress_specimen(const CompressionSpec& spec, const StageControl& control = {});
 
 /// The resume fingerprint of a compression: FNV-1a 64 (16 hex digits) of the program version and

@@ -205,6 +205,28 @@ std::vector<Placement> place_in_box(const std::vector<PlacementItem>& items, con
   double max_sphere = 0.0, max_bound = 0.0;
   const std::vector<double> bound = bounding_radii(items, "place_in_box", max_sphere, max_bound);
   const Vec3 size = hi - lo;
+  for (std::size_t i = 0; i < items.size(); ++i)
+    if (2.0 * bound[i] >= size.minCoeff())
+      throw InvalidInput("place_in_box: item " + std::to_string(i) + " (bounding radius " +
+                         std::to_string(bound[i]) + ") does not fit in the box");
+  const CandidateCentre uniform = [&](std::size_t, double b, Rng& r) -> std::optional<Vec3> {
+    return r.uniform(lo + Vec3::Constant(b), hi - Vec3::Constant(b));
+  };
+  return place_by_candidates(items, lo, hi, uniform, rng, max_trials);
+}
+
+std::vector<Placement> place_by_candidates(const std::vector<PlacementItem>& items, const Vec3& lo,
+                                           const Vec3& hi, const CandidateCentre& candidate,
+                                           Rng& rng, int max_trials) {
+  if (!lo.allFinite() || !hi.allFinite() || !((hi - lo).minCoeff() > 0.0))
+    throw InvalidInput("place_by_candidates: the box must have positive, finite edges");
+  if (max_trials < 1)
+    throw InvalidInput("place_by_candidates: max_trials must be at least 1, got " +
+                       std::to_string(max_trials));
+  double max_sphere = 0.0, max_bound = 0.0;
+  const std::vector<double> bound =
+      bounding_radii(items, "place_by_candidates", max_sphere, max_bound);
+  const Vec3 size = hi - lo;
   std::vector<Placement> placements;
   placements.reserve(items.size());
   if (items.empty()) return placements;
@@ -212,16 +234,13 @@ std::vector<Placement> place_in_box(const std::vector<PlacementItem>& items, con
   std::vector<Vec3> world;  // candidate sphere centres
   for (std::size_t i = 0; i < items.size(); ++i) {
     const PlacementItem& item = items[i];
-    const double b = bound[i];
-    if (2.0 * b >= size.minCoeff())
-      throw InvalidInput("place_in_box: item " + std::to_string(i) + " (bounding radius " +
-                         std::to_string(b) + ") does not fit in the box");
     bool placed = false;
     for (int t = 0; t < max_trials && !placed; ++t) {
-      const Vec3 position = rng.uniform(lo + Vec3::Constant(b), hi - Vec3::Constant(b));
+      const std::optional<Vec3> position = candidate(i, bound[i], rng);
+      if (!position) continue;
       const Eigen::Quaterniond orientation = uniform_orientation(rng);
-      if (!try_place(item, position, orientation, grid, world)) continue;
-      placements.push_back({position, orientation});
+      if (!try_place(item, *position, orientation, grid, world)) continue;
+      placements.push_back({*position, orientation});
       placed = true;
     }
     if (!placed) return {};  // too crowded: the caller enlarges the box

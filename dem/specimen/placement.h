@@ -6,6 +6,9 @@
 
 #include <Eigen/Geometry>
 
+#include <cstddef>
+#include <functional>
+#include <optional>
 #include <vector>
 
 namespace clumpkit::dem {
@@ -51,5 +54,19 @@ std::vector<Placement> place_in_cylinder(const std::vector<PlacementItem>& items
 /// bad item, or an item wider than the box.
 std::vector<Placement> place_in_box(const std::vector<PlacementItem>& items, const Vec3& lo,
                                     const Vec3& hi, Rng& rng, int max_trials = 1000);
+
+/// A candidate centroid for item `item` of bounding radius `bound`, drawn from `rng`, or nothing
+/// when the region it belongs to yielded none; the item's bounding ball must lie in [lo, hi] of
+/// place_by_candidates.
+using CandidateCentre =
+    std::function<std::optional<Vec3>(std::size_t item, double bound, Rng& rng)>;
+
+/// place_in_box with the centroids drawn by `candidate` (then an orientation from `rng`), so that
+/// each item can be kept to its own region (a zone of the container): up to `max_trials` trials
+/// per item, an empty result when some item found no room. [lo, hi] bounds the collision grid.
+/// Deterministic for a given Rng state.
+std::vector<Placement> place_by_candidates(const std::vector<PlacementItem>& items, const Vec3& lo,
+                                           const Vec3& hi, const CandidateCentre& candidate,
+                                           Rng& rng, int max_trials = 1000);
 
 }  // namespace clumpkit::dem

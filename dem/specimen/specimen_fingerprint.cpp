@@ -128,6 +128,17 @@ std::string compression_fingerprint(const CompressionSpec& s) {
   line("relax_unbalanced", format_number(s.relax_unbalanced));
   line("relax_max_steps", std::to_string(s.relax_max_steps));
   particle_lines(line, s.classes, s.templates);
+  if (!s.zones.regions.empty()) {  // absent for unzoned specimens: their fingerprints stay
+    line("zones.coordinate", std::to_string(static_cast<int>(s.zones.coordinate)));
+    line("zones.origin", vec(s.zones.origin));
+    for (const ZoneRegion& z : s.zones.regions)
+      line("zones.region", std::string(z.mixed ? "mixed " : "uniform ") + format_number(z.outer) +
+                               " " + format_number(z.scale) + " " +
+                               format_number(z.small_fraction) + " " +
+                               format_number(z.small_fraction_outer));
+    line("zones.mixed_porosity", format_number(s.mixed_porosity));
+    line("zones.wall_excess", format_number(s.wall_excess));
+  }
   return fingerprint(line.text());
 }
 

@@ -32,6 +32,85 @@ double positive(const TomlFields& f, const toml::node& n, const std::string& fie
   return x;
 }
 
+// One [[zones.region]] table.
+dem::ZoneRegion zone_region(const TomlFields& f, const toml::node& n, const std::string& at) {
+  dem::ZoneRegion z;
+  bool have_outer = false, have_scale = false, have_fraction = false;
+  for (const auto& [key, v] : f.table(n, at)) {
+    const std::string k(key.str()), field = at + "." + k;
+    if (k == "outer") {
+      z.outer = positive(f, v, field);
+      have_outer = true;
+    } else if (k == "scale") {
+      z.scale = positive(f, v, field);
+      have_scale = true;
+    } else if (k == "mixed") {
+      const auto* b = v.as_boolean();
+      if (!b) f.fail(field, "expected true or false, got " + toml_show(v));
+      z.mixed = b->get();
+    } else if (k == "small_volume_fraction") {
+      have_fraction = true;
+      if (v.is_array()) {
+        const std::vector<double> ends = numbers(f, v, field);
+        if (ends.size() != 2)
+          f.fail(field, "expected one number or [inner, outer], got " + toml_show(v));
+        z.small_fraction = ends[0], z.small_fraction_outer = ends[1];
+      } else {
+        z.small_fraction = z.small_fraction_outer = f.number(v, field);
+      }
+      for (const double x : {z.small_fraction, z.small_fraction_outer})
+        if (!(x >= 0 && x <= 1)) f.fail(field, "must be in [0, 1], got " + toml_show(v));
+    } else {
+      f.fail(field, "unknown key (known: outer, scale, mixed, small_volume_fraction)");
+    }
+  }
+  if (!have_outer) f.fail(at + ".outer", "missing (the region's outer bound, m)");
+  if (z.mixed && have_scale)
+    f.fail(at + ".scale", "a mixed layer takes its neighbours' sizes, not a scale");
+  if (z.mixed && !have_fraction)
+    f.fail(at + ".small_volume_fraction", "missing (the small particles' share of the layer)");
+  if (!z.mixed && have_fraction)
+    f.fail(at + ".small_volume_fraction", "is for mixed layers (mixed = true)");
+  return z;
+}
+
+// The [zones] section; `have_origin` tells whether the origin was given.
+void read_zones(const TomlFields& f, const toml::node& n, SpecimenRecipe& r, bool& have_origin) {
+  for (const auto& [key, v] : f.table(n, "zones")) {
+    const std::string k(key.str()), field = "zones." + k;
+    if (k == "coordinate") {
+      const std::string c = f.string(v, field);
+      if (c == "radial")
+        r.zones.coordinate = dem::ZoneCoordinate::radial;
+      else if (c == "depth")
+        r.zones.coordinate = dem::ZoneCoordinate::depth;
+      else if (c == "spherical")
+        r.zones.coordinate = dem::ZoneCoordinate::spherical;
+      else
+        f.fail(field, "expected \"radial\", \"depth\" or \"spherical\", got " + toml_show(v));
+    } else if (k == "origin") {
+      const std::vector<double> o = numbers(f, v, field);
+      if (o.size() != 3) f.fail(field, "expected [x, y, z] in m, got " + toml_show(v));
+      r.zones.origin = Vec3(o[0], o[1], o[2]);
+      have_origin = true;
+    } else if (k == "mixed_porosity") {
+      r.mixed_porosity = f.number(v, field);
+      if (!(r.mixed_porosity > 0.2 && r.mixed_porosity < 0.9))
+        f.fail(field, "must be in (0.2, 0.9), got " + toml_show(v));
+    } else if (k == "region") {
+      const auto* a = v.as_array();
+      if (!a || a->empty())
+        f.fail(field, "expected [[zones.region]] tables, innermost first, got " + toml_show(v));
+      for (std::size_t i = 0; i < a->size(); ++i)
+        r.zones.regions.push_back(
+            zone_region(f, *a->get(i), "zones.region[" + std::to_string(i + 1) + "]"));
+    } else {
+      f.fail(field, "unknown key (known: coordinate, origin, mixed_porosity, region)");
+    }
+  }
+  if (r.zones.regions.empty()) f.fail("zones.region", "missing (at least the core)");
+}
+
 }  // namespace
 
 SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string& path) {
@@ -43,6 +122,7 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
   bool have_gradation = false;
   std::vector<std::string> deposition_keys;  // keys that only the deposition method uses
   bool have_diameter = false, have_size = false, have_angle = false;
+  bool have_zones = false, have_zone_origin = false;
   for (const auto& [key, val] : root) {
     const std::string k(key.str());
     if (k == "target_relative_density" || k == "layers" || k == "calibration_frictions")
@@ -105,6 +185,9 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
           f.fail(field, "unknown key (known: method, porosity, friction)");
         }
       }
+    } else if (k == "zones") {
+      have_zones = true;
+      read_zones(f, val, r, have_zone_origin);
     } else if (k == "gradation") {
       have_gradation = true;
       for (const auto& [gk, gv] : f.table(val, k)) {
@@ -200,7 +283,7 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
       f.fail(
           k,
           "unknown key (known: seed, name, description, container, gradation, soil_rock_threshold, "
-          "rock_mass_fraction, fines, rock, density, contact, preparation, "
+          "rock_mass_fraction, fines, rock, density, contact, preparation, zones, "
           "target_relative_density, layers, calibration_frictions)");
     }
   }
@@ -291,6 +374,25 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
   for (double mu : r.calibration_frictions)
     if (mu < 0)
       f.fail("calibration_frictions", "friction must not be negative, got " + format_number(mu));
+
+  // Zones: the layout's guard rails (dem/specimen/zones.h), with the core's largest particle.
+  if (have_zones) {
+    if (!r.compression)
+      f.fail("zones",
+             "need preparation.method = \"compression\" (zones are placed loose and "
+             "compressed)");
+    if (r.zones.coordinate == dem::ZoneCoordinate::spherical && !have_zone_origin)
+      f.fail("zones.origin", "needed by coordinate = \"spherical\" (the centre, m)");
+    if (!have_zone_origin && r.zones.coordinate == dem::ZoneCoordinate::depth)
+      r.zones.origin = Vec3(0, 0, r.cuboid ? r.container_size[2] : r.container_height);
+    try {
+      r.zone_warnings = dem::validate_zones(r.zones, r.sieves.front());
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(path + ": " + e.what());
+    }
+  }
+  if (r.mixed_porosity > 0 && !have_zones)
+    f.fail("zones.mixed_porosity", "is for recipes with zones");
 
   // The rock library: an existing `clumpkit library` directory, or a recipe to make one.
   const fs::path base = fs::path(path).parent_path();

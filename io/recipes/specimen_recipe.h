@@ -2,6 +2,8 @@
 // target relative density of a DEM specimen (Jin et al. 2017 §4).
 #pragma once
 
+#include "dem/specimen/zones.h"
+
 #include <array>
 #include <cstdint>
 #include <string>
@@ -34,6 +36,16 @@ struct SpecimenRecipe {
   /// tests).
   bool compression = false;
   double compression_porosity = 0.37, compression_friction = 0.0;
+  /// [zones] (compression only): variable particle-size zones, innermost first (CTGU 2017) —
+  /// coordinate "radial" (distance to the axis through origin), "depth" (below origin's z) or
+  /// "spherical" (distance to origin); [[zones.region]] tables with `outer` (m) and `scale` (λ;
+  /// the first is the core, λ = 1), or `mixed = true` with `small_volume_fraction` (one number,
+  /// or [inner, outer] for a linear change). origin defaults to the axis (radial) or the
+  /// container's top (depth); spherical zones need it. mixed_porosity: the mixed layers' target
+  /// (default: preparation.porosity). zone_warnings: λ ratios above 2.
+  dem::ZoneLayout zones;
+  double mixed_porosity = 0.0;
+  std::vector<std::string> zone_warnings;
   std::vector<double> sieves;         ///< sieve sizes [m], descending
   std::vector<double> passing;        ///< percent passing each sieve, descending, first = 100
   std::vector<SizeClass> classes;     ///< derived from sieves and passing

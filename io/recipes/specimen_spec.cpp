@@ -52,6 +52,8 @@ dem::CompressionSpec compression_spec(const SpecimenRecipe& r,
   c.rock_density = r.rock_density;
   c.contact = s.contact;
   c.seed = r.seed;
+  c.zones = r.zones;
+  c.mixed_porosity = r.mixed_porosity;
   return c;
 }
 

@@ -212,6 +212,49 @@ nlohmann::ordered_json compression_report(const SpecimenRecipe& recipe,
   j["timestep"] = r.timestep;
   j["steps"] = {{"compression", r.compression_steps}, {"relaxation", r.relax_steps}};
   j["relaxed_by"] = r.relaxed_by;
+  if (!r.zones.empty()) {
+    const dem::ZoneLayout& layout = recipe.zones;
+    const char* coordinate = layout.coordinate == dem::ZoneCoordinate::radial  ? "radial"
+                             : layout.coordinate == dem::ZoneCoordinate::depth ? "depth"
+                                                                               : "spherical";
+    nlohmann::ordered_json zones = nlohmann::ordered_json::array();
+    for (std::size_t k = 0; k < r.zones.size(); ++k) {
+      const dem::ZoneResult& z = r.zones[k];
+      const dem::ZoneRegion& region = layout.regions[k];
+      nlohmann::ordered_json e;
+      e["zone"] = k;
+      e["kind"] = region.mixed ? "mixed" : "uniform";
+      e["inner"] = z.inner;
+      e["outer"] = z.outer;
+      if (region.mixed) {
+        e["scale_small"] = dem::small_scale(layout, int(k));
+        e["scale_large"] = dem::large_scale(layout, int(k));
+        e["small_volume_fraction"] = {region.small_fraction, region.small_fraction_outer};
+      } else {
+        e["scale"] = region.scale;
+      }
+      e["volume"] = z.volume;
+      e["target_porosity"] = z.target_porosity;
+      // NaN (no region left away from the walls) is written as null.
+      e["porosity"] = std::isfinite(z.porosity) ? nlohmann::ordered_json(z.porosity)
+                                                : nlohmann::ordered_json(nullptr);
+      e["porosity_margin"] = z.margin;
+      e["solid_goal"] = z.solid_goal;
+      e["solid_drawn"] = z.solid_drawn;
+      e["count"] = z.count;
+      e["left_zone"] = z.left_zone;
+      e["mis_zoned"] = z.mis_zoned;
+      zones.push_back(std::move(e));
+    }
+    j["zones"] = {{"coordinate", coordinate},
+                  {"origin", {layout.origin.x(), layout.origin.y(), layout.origin.z()}},
+                  {"wall_excess_diameters", dem::CompressionSpec().wall_excess},
+                  {"left_zone", r.left_zone},
+                  {"mis_zoned", r.mis_zoned},
+                  {"mis_zoned_fraction", double(r.mis_zoned) / double(r.world.bodies().size())},
+                  {"regions", std::move(zones)}};
+    if (!recipe.zone_warnings.empty()) j["zones"]["warnings"] = recipe.zone_warnings;
+  }
   return j;
 }
 

@@ -92,6 +92,18 @@ TEST(CliCpt, BadProbesAreRefusedBeforeAnythingIsWritten) {
   write(d / "nodepth.toml", test + "[probe]\ndiameter = 0.01\n");
   write(d / "unknown.toml", test + "[probe]\ndepth = 0.01\nspeed = 1\n");
   write(d / "fast.toml", test + "[probe]\ndiameter = 0.01\ndepth = 0.01\nvelocity = 10\n");
+  write(d / "probe.toml", std::string(kCpt));
+  // The tiny specimen as if zoned radially, with a core of 30 mm (under 4 probe diameters of
+  // 12 mm) and of 5 mm (narrower than the probe): the guard reads the specimen's report.
+  for (const auto& [name, core] :
+       {std::pair<const char*, double>{"core30", 0.03}, {"core5", 0.005}}) {
+    fs::copy(d / "spec", d / name, fs::copy_options::recursive);
+    nlohmann::json report = nlohmann::json::parse(slurp(d / name / "report.json"));
+    report["zones"] = {
+        {"coordinate", "radial"},
+        {"regions", {{{"outer", core}, {"scale", 1}}, {{"outer", 1}, {"scale", 2}}}}};
+    write(d / name / "report.json", report.dump(2));
+  }
   const std::string spec = " --specimen " + (d / "spec").string();
   const std::string out = (d / "out").string();
   struct Case {
@@ -112,6 +124,12 @@ TEST(CliCpt, BadProbesAreRefusedBeforeAnythingIsWritten) {
        "probe.velocity"},
       {"test triaxial" + spec + " --recipe " + (d / "wide.toml").string() + " --out " + out,
        "test cpt"},
+      {"test cpt --specimen " + (d / "core30").string() + " --recipe " +
+           (d / "probe.toml").string() + " --out " + out,
+       "smaller than 4 probe diameters"},
+      {"test cpt --specimen " + (d / "core5").string() + " --recipe " +
+           (d / "probe.toml").string() + " --out " + out,
+       "wider than the specimen's core"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.args);

@@ -60,7 +60,8 @@ TEST(SpecimenRecipe, BundledRecipesParse) {
   EXPECT_EQ(cpt.segment_angle_deg, 90.0);
   EXPECT_EQ(cpt.container_diameter, 0.3);
   EXPECT_EQ(cpt.container_height, 0.216);
-  EXPECT_EQ(cpt.compression_porosity, 0.38);
+  EXPECT_EQ(cpt.compression_porosity, 0.36);
+  EXPECT_EQ(cpt.zones.regions.size(), 1u);
   const SpecimenRecipe quick = read_specimen_recipe(kDir + "quick-specimen.toml");
   EXPECT_EQ(quick.layers, 2);
   EXPECT_EQ(quick.classes.size(), 2u);
@@ -116,4 +117,89 @@ TEST(SpecimenRecipe, SegmentContainerIsACompressedSectorOfItsCylinder) {
       << e;
   e = error_of(with("diameter = 0.3", "diameter = 0.3\nangle = 90") + prep);
   EXPECT_NE(e.find("container.angle: is for shape = \"segment\""), std::string::npos) << e;
+}
+
+// [zones]: CTGU 2017's group E layout reaches the spec; every bad layout fails naming the field.
+TEST(SpecimenRecipe, ZonesReachTheSpecAndBadLayoutsFailBeforeSimulation) {
+  const std::string cpt = R"(
+soil_rock_threshold = 1.0
+rock_mass_fraction = 0.0
+[container]
+shape = "segment"
+angle = 90
+diameter = 0.3
+height = 0.216
+[preparation]
+method = "compression"
+porosity = 0.36
+[gradation]
+sieves = [0.00601, 0.00599]
+passing = [100, 0]
+[zones]
+coordinate = "radial"
+mixed_porosity = 0.33
+[[zones.region]]
+outer = 0.075
+scale = 1
+[[zones.region]]
+mixed = true
+outer = 0.115
+small_volume_fraction = 0.37
+[[zones.region]]
+outer = 0.150
+scale = 3
+)";
+  const SpecimenRecipe r = parse_specimen_recipe(cpt, kDir + "test.toml");
+  ASSERT_EQ(r.zones.regions.size(), 3u);
+  EXPECT_EQ(r.zones.regions[1].mixed, true);
+  EXPECT_EQ(r.zones.regions[1].small_fraction, 0.37);
+  EXPECT_EQ(r.zones.regions[1].small_fraction_outer, 0.37);
+  EXPECT_EQ(r.zones.regions[2].scale, 3.0);
+  EXPECT_EQ(r.zone_warnings.size(), 1u);  // λ 3 next to 1: allowed, with a warning
+  const dem::CompressionSpec c = compression_spec(r, {});
+  EXPECT_EQ(c.zones.regions.size(), 3u);
+  EXPECT_EQ(c.mixed_porosity, 0.33);
+  // A depth layout defaults its origin to the container's top.
+  std::string depth = cpt;
+  depth.replace(depth.find("\"radial\""), 8, "\"depth\"");
+  EXPECT_EQ(parse_specimen_recipe(depth, kDir + "test.toml").zones.origin.z(), 0.216);
+
+  // Each case: (from, to) edits of the recipe, then the expected message.
+  const auto error = [&](const std::vector<std::string>& edits) {
+    std::string s = cpt;
+    for (std::size_t k = 0; k + 1 < edits.size(); k += 2)
+      s.replace(s.find(edits[k]), edits[k].size(), edits[k + 1]);
+    try {
+      parse_specimen_recipe(s, kDir + "test.toml");
+    } catch (const InvalidInput& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string file = kDir + "test.toml: ";
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"outer = 0.115", "outer = 0.07"}, "zones: region 2: outer bound 0.07 m must exceed"},
+      {{"scale = 3", "scale = 4", "outer = 0.115", "outer = 0.125"},
+       "neighbouring zones' sizes may differ 3 times at most"},
+      {{"outer = 0.115", "outer = 0.100"}, "narrower than two of its large particles"},
+      {{"scale = 1\n", "scale = 2\n"}, "the core's scale must be 1"},
+      {{"small_volume_fraction = 0.37", "small_volume_fraction = 1.5"},
+       "zones.region[2].small_volume_fraction: must be in [0, 1]"},
+      {{"small_volume_fraction = 0.37", "scale = 2"}, "zones.region[2].scale: a mixed layer"},
+      {{"coordinate = \"radial\"", "coordinate = \"polar\""}, "zones.coordinate: expected"},
+      {{"coordinate = \"radial\"", "coordinate = \"spherical\""}, "zones.origin: needed by"},
+      {{"mixed_porosity = 0.33", "mixed_porosity = 1.2"}, "zones.mixed_porosity: must be in"},
+      {{"mixed_porosity = 0.33", "thickness = 3"}, "zones.thickness: unknown key"},
+      {{"method = \"compression\"", "method = \"deposition\"", "shape = \"segment\"\nangle = 90\n",
+        "", "porosity = 0.36\n", ""},
+       "zones: need preparation.method"},
+  };
+  for (const auto& [edit, expected] : cases) {
+    const std::string e = error(edit);
+    EXPECT_EQ(e.rfind(file, 0), 0u) << e;  // one line naming the file first
+    EXPECT_NE(e.find(expected), std::string::npos) << edit[1] << ": " << e;
+    if (edit[1] == "scale = 4") {
+      EXPECT_NE(e.find("zones: region 3: scale 4 next to 1"), std::string::npos) << e;
+    }
+  }
 }
