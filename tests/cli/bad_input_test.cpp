@@ -85,6 +85,19 @@ struct Inputs {
     write(d / "spec_nan.toml", edited(spec, "diameter = 0.060", "diameter = nan"));
     write(d / "spec_negative.toml", edited(spec, "height = 0.100", "height = -0.1"));
     write(d / "spec_huge.toml", edited(spec, "diameter = 0.060", "diameter = 1e300"));
+    // Zoned chambers (CTGU 2017): overlapping zones, sizes 4 times apart, a mixed layer thinner
+    // than two large particles, a segment angle outside (0, 180].
+    const std::string zoned =
+        "soil_rock_threshold = 1.0\nrock_mass_fraction = 0.0\n[container]\nshape = "
+        "\"segment\"\nangle = 90\ndiameter = 0.3\nheight = 0.2\n[preparation]\nmethod = "
+        "\"compression\"\nporosity = 0.36\n[gradation]\nsieves = [0.00601, 0.00599]\npassing = "
+        "[100, 0]\n[zones]\n[[zones.region]]\nouter = 0.075\nscale = 1\n[[zones.region]]\n"
+        "mixed = true\nouter = 0.125\nsmall_volume_fraction = 0.4\n[[zones.region]]\nouter = "
+        "0.15\nscale = 3\n";
+    write(d / "zones_overlap.toml", edited(zoned, "outer = 0.125", "outer = 0.07"));
+    write(d / "zones_ratio.toml", edited(zoned, "scale = 3", "scale = 4"));
+    write(d / "zones_thin.toml", edited(zoned, "outer = 0.125", "outer = 0.09"));
+    write(d / "segment_angle.toml", edited(zoned, "angle = 90", "angle = 270"));
     write(d / "parent_file", "a file, not a directory\n");
     fs::create_directories(d / "a_dir");
   }
@@ -173,6 +186,12 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
   for (const char* f : {"missing.toml", "a_dir", "empty.toml", "garbage.toml", "trunc.toml",
                         "spec_nan.toml", "spec_negative.toml", "spec_huge.toml"})
     cases.push_back({"specimen --quiet --recipe " + in(f) + " --out " + out, f, out});
+  for (const auto& [f, needle] :
+       std::vector<std::pair<const char*, const char*>>{{"zones_overlap.toml", "zones overlap"},
+                                                        {"zones_ratio.toml", "scale 4 next to 1"},
+                                                        {"zones_thin.toml", "narrower than two"},
+                                                        {"segment_angle.toml", "container.angle"}})
+    cases.push_back({"specimen --quiet --recipe " + in(f) + " --out " + out, needle, out});
   // A request over the memory budget is refused before anything is built, with the estimate.
   cases.push_back(
       {"specimen --quiet --max-memory 0.000001 --recipe " + in("tiny.toml") + " --out " + out,
