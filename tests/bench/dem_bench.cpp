@@ -24,9 +24,14 @@
 //   --sort 1000 by default; 0 times the unsorted orders only.
 //   FILE: output of run.sh (SUMMARY lines), for the ratio column. Env CLUMPKIT_DEM_BENCH_FULL=1
 //   is --full.
+//   --cases zoned (not in the default set): the neighbour-list build of a zoned chamber at size
+//   ratio 3 (CTGU 2017: a 6 mm core to R/2, 18 mm spheres beyond, compressed to n = 0.36 away
+//   from the walls) against a monodisperse 6 mm chamber of about the same count: the time of a
+//   step that rebuilds the list minus that of one that does not, over 20 steps each.
 #include "tests/bench/dem_bench_common.h"
 
 #include "dem/core/state_hash.h"
+#include "dem/specimen/compression.h"
 #include "dem/core/world.h"
 #include "geom/random.h"
 #include "io/formats/checkpoint.h"
@@ -335,6 +340,44 @@ std::map<std::string, double> read_lammps(const std::string& path) {
   return out;
 }
 
+// A cylinder of 6 mm spheres compressed gravity-free: zoned (a core to r = 0.25·D, λ 3 beyond)
+// or monodisperse, of diameter D and height H.
+World compressed_chamber(bool zoned, double diameter, double height) {
+  CompressionSpec s;
+  s.shape = CompressionSpec::Shape::cylinder;
+  s.size = Vec3(diameter, diameter, height);
+  s.porosity = zoned ? 0.36 : 0.38;
+  s.classes = {{0.00599, 0.00601, 100.0, false}};
+  s.contact.kn = s.contact.ks = 5e5;
+  s.contact.friction = 0.5;
+  s.seed = 3;
+  if (zoned) {
+    s.zones.coordinate = ZoneCoordinate::radial;
+    s.zones.regions = {{false, 0.25 * diameter, 1.0, 0, 0}, {false, diameter, 3.0, 0, 0}};
+  }
+  return compress_specimen(s).world;
+}
+
+// Seconds of a list build on `w`: a step after marking the list stale minus a plain step, the
+// mean over `repeats` pairs.
+double list_build_seconds(World w, int threads, int repeats) {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+  w.step(2);
+  double rebuild = 0, plain = 0;
+  for (int k = 0; k < repeats; ++k) {
+    World::ListState s = w.list_state();
+    s.stale = true;
+    w.restore(s, w.contacts(), w.wall_contacts());
+    double t0 = now();
+    w.step(1);
+    rebuild += now() - t0;
+    t0 = now();
+    w.step(1);
+    plain += now() - t0;
+  }
+  return (rebuild - plain) / repeats;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -432,6 +475,26 @@ int main(int argc, char** argv) {
       World run = *v.world;
       run.options().sort_every = v.sort;
       for (int t : threads) rows.push_back(timed(name + v.label, "dense-spheres", run, t, dense));
+    }
+  }
+
+  if (wanted("zoned")) {
+    // 240 × 96 mm zoned: ~6,100 small + ~700 large spheres; the monodisperse chamber's size is
+    // chosen for the same count (6 mm at n = 0.38 overall).
+    const World zoned = compressed_chamber(true, 0.240, 0.096);
+    const double count = double(zoned.bodies().size());
+    const double volume = count * (kPi / 6 * 0.006 * 0.006 * 0.006) / (1 - 0.38);
+    const double d = std::cbrt(volume / (kPi / 4 * 0.4));  // height 0.4 D
+    const World mono = compressed_chamber(false, d, 0.4 * d);
+    std::printf("(z) neighbour-list build: zoned chamber %zu spheres (size ratio 3), "
+                "monodisperse %zu spheres\n",
+                zoned.bodies().size(), mono.bodies().size());
+    for (int t : threads) {
+      const double a = list_build_seconds(zoned, t, 20), b = list_build_seconds(mono, t, 20);
+      std::printf("  %d thread(s): build %.3f ms zoned, %.3f ms monodisperse; per sphere %.3f / "
+                  "%.3f us, ratio %.2f\n",
+                  t, 1e3 * a, 1e3 * b, 1e6 * a / count, 1e6 * b / double(mono.bodies().size()),
+                  (a / count) / (b / double(mono.bodies().size())));
     }
   }
 
