@@ -110,6 +110,8 @@ TestSetup setup_test(const std::string& kind, const std::string& specimen_dir,
   double z_lo = 1e300, z_hi = -1e300;
   for (const SpecimenBody& b : rows) {
     bodies.push_back(dem_body(b));
+    bodies.back().mass *= recipe.density_scaling;  // [test] density_scaling (1: none)
+    bodies.back().moments *= recipe.density_scaling;
     for (const Sphere& s : b.spheres) {
       z_lo = std::min(z_lo, s.center.z() - s.radius);
       z_hi = std::max(z_hi, s.center.z() + s.radius);
@@ -163,8 +165,10 @@ ElementTestJobResult finish_test_job(const TestSetup& setup, const std::string& 
                                      const std::vector<std::string>& files, bool resume,
                                      bool resumed) {
   const fs::path& out = setup.out;
+  nlohmann::ordered_json full = report;
+  full["density_scaling"] = recipe.density_scaling;
   write_file_atomically((out / "report.json").string(),
-                        [&](std::ostream& f) { f << report.dump(2) << "\n"; });
+                        [&](std::ostream& f) { f << full.dump(2) << "\n"; });
   nlohmann::ordered_json m = manifest_head("test", recipe.path, recipe.text, 0);
   m["test"] = test;
   m["specimen"] = specimen_dir;
@@ -173,7 +177,7 @@ ElementTestJobResult finish_test_job(const TestSetup& setup, const std::string& 
                         [&](std::ostream& f) { f << m.dump(2) << "\n"; });
   publish_directory(out.string(), out_dir);
   ElementTestJobResult result;
-  result.report = report;
+  result.report = std::move(full);
   result.resumed = resumed;
   if (resume && !resumed)
     result.afresh_reason = "no checkpoint in " + (out / "checkpoints").string();

@@ -75,9 +75,14 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
           r.modulus_range = range;
         } else if (t == "consolidation_tolerance") {
           s.consolidation_tolerance = positive(f, tv, field);
+        } else if (t == "density_scaling") {
+          r.density_scaling = f.number(tv, field);
+          if (!(r.density_scaling >= 1 && r.density_scaling <= 1e6))
+            f.fail(field, "must be in [1, 1e6], got " + toml_show(tv));
         } else {
           f.fail(field,
                  "unknown key (known: confining, final_stress, strain_rate, stress_rate, "
+                 "density_scaling, "
                  "max_axial_strain, critical_fraction, friction, consolidation_friction, "
                  "servo_strain_rate, record_every, timestep_safety, modulus_range, "
                  "consolidation_tolerance)");

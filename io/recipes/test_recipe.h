@@ -29,6 +29,10 @@ struct TestRecipe {
   dem::ElementTestSettings settings;
   double critical_fraction = 0.1;
   double timestep_safety = 0.2;
+  /// [test] density_scaling λ ≥ 1: every body's mass and moments × λ for the test, so the time
+  /// step grows by √λ (long CPT pushes); quasi-static results keep their stresses while the
+  /// inertial number, checked on the scaled masses, grows by √λ. Reported.
+  double density_scaling = 1.0;
   std::optional<std::pair<double, double>> modulus_range;
   // [contact] overrides: unset fields keep the specimen's values.
   std::optional<dem::StiffnessScaling> scaling;

@@ -63,6 +63,8 @@ TEST(TestRecipe, DefaultsLeaveConsolidationAndServoToTheTest) {
   EXPECT_LT(r.settings.consolidation_friction, 0.0);  // the test's μ
   EXPECT_EQ(r.settings.servo_strain_rate, 0.0);       // the per-step default
   EXPECT_FALSE(r.scaling.has_value());
+  EXPECT_EQ(r.density_scaling, 1.0);
+  EXPECT_EQ(parse_test_recipe("[test]\ndensity_scaling = 25\n", "t.toml").density_scaling, 25.0);
 }
 
 TEST(TestRecipe, BadValuesNameFileFieldAndValue) {
@@ -75,4 +77,9 @@ TEST(TestRecipe, BadValuesNameFileFieldAndValue) {
   const std::string e3 = error_of("[test]\nservo_rate = 1\n");
   EXPECT_NE(e3.find("unknown key"), std::string::npos) << e3;
   EXPECT_NE(e3.find("servo_strain_rate"), std::string::npos) << e3;  // the known keys listed
+  for (const char* bad : {"0.5", "nan", "-2"}) {
+    const std::string e = error_of(std::string("[test]\ndensity_scaling = ") + bad + "\n");
+    EXPECT_NE(e.find("t.toml: test.density_scaling: "), std::string::npos) << e;
+    EXPECT_NE(e.find(bad), std::string::npos) << e;
+  }
 }
