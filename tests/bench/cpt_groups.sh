@@ -4,7 +4,7 @@
 # the residual of each qc–depth curve against A's of the same seed (`clumpkit compare-curves`,
 # 200 points), the mean qc at depths 5–8 D_c, and wall times.
 #   tests/bench/cpt_groups.sh [OUT]   (default /tmp/clumpkit-cpt-groups)
-# Environment: SEEDS (default "1 2 3"), GROUPS (default "A B C D E"), DENSITY_SCALING (default 1:
+# Environment: SEEDS (default "1 2 3"), CPT_GROUPS (default "A B C D E"), DENSITY_SCALING (default 1:
 # none; the masses × λ shorten the push by √λ steps — check it against λ = 1 first), DEPTH (push
 # depth, default the recipe's 0.144 m), THREADS (default 2). Hours on 2 cores at λ = 1.
 set -euo pipefail
@@ -12,7 +12,7 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 bin=${CLUMPKIT:-$root/build/io/clumpkit}
 out=${1:-/tmp/clumpkit-cpt-groups}
 seeds=${SEEDS:-1 2 3}
-groups=${GROUPS:-A B C D E}
+groups=${CPT_GROUPS:-A B C D E}
 lambda=${DENSITY_SCALING:-1}
 depth=${DEPTH:-0.144}
 threads=${THREADS:-2}
