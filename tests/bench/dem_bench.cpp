@@ -31,8 +31,8 @@
 #include "tests/bench/dem_bench_common.h"
 
 #include "dem/core/state_hash.h"
-#include "dem/specimen/compression.h"
 #include "dem/core/world.h"
+#include "dem/specimen/compression.h"
 #include "geom/random.h"
 #include "io/formats/checkpoint.h"
 
@@ -486,15 +486,17 @@ int main(int argc, char** argv) {
     const double volume = count * (kPi / 6 * 0.006 * 0.006 * 0.006) / (1 - 0.38);
     const double d = std::cbrt(volume / (kPi / 4 * 0.4));  // height 0.4 D
     const World mono = compressed_chamber(false, d, 0.4 * d);
-    std::printf("(z) neighbour-list build: zoned chamber %zu spheres (size ratio 3), "
-                "monodisperse %zu spheres\n",
-                zoned.bodies().size(), mono.bodies().size());
+    std::printf(
+        "(z) neighbour-list build: zoned chamber %zu spheres (size ratio 3), "
+        "monodisperse %zu spheres\n",
+        zoned.bodies().size(), mono.bodies().size());
     for (int t : threads) {
       const double a = list_build_seconds(zoned, t, 20), b = list_build_seconds(mono, t, 20);
-      std::printf("  %d thread(s): build %.3f ms zoned, %.3f ms monodisperse; per sphere %.3f / "
-                  "%.3f us, ratio %.2f\n",
-                  t, 1e3 * a, 1e3 * b, 1e6 * a / count, 1e6 * b / double(mono.bodies().size()),
-                  (a / count) / (b / double(mono.bodies().size())));
+      std::printf(
+          "  %d thread(s): build %.3f ms zoned, %.3f ms monodisperse; per sphere %.3f / "
+          "%.3f us, ratio %.2f\n",
+          t, 1e3 * a, 1e3 * b, 1e6 * a / count, 1e6 * b / double(mono.bodies().size()),
+          (a / count) / (b / double(mono.bodies().size())));
     }
   }
 
