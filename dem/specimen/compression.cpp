@@ -264,7 +264,7 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const StageCont
     zones.resize(spec.zones.regions.size());
     for (std::size_t k = 0; k < zones.size(); ++k) {
       ZoneResult& z = zones[k];
-      z.inner = k > 0 ? spec.zones.regions[k - 1].outer : 0.0;
+      z.inner = inner_bound(spec.zones, int(k));
       z.outer = spec.zones.regions[k].outer;
       z.volume = v.volume[k];
       z.target_porosity = spec.zones.regions[k].mixed ? n_mixed : spec.porosity;

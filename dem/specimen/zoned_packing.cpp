@@ -21,11 +21,6 @@ std::string region_name(int k) {
   return "zones: region " + std::to_string(k + 1);
 }
 
-// Regions' inner bounds (the previous outer bound, 0 for the first).
-double inner_bound(const ZoneLayout& layout, int k) {
-  return k > 0 ? layout.regions[k - 1].outer : 0.0;
-}
-
 // Maximum of the small (or large) particles' acceptance weight over a mixed layer: the fraction
 // is linear, so its extremes are at the bounds.
 double largest_share(const ZoneRegion& r, bool small) {
@@ -98,11 +93,15 @@ ZoneVolumes zone_volumes(const ZoneLayout& layout, const Prism& prism) {
   Vec3 lo, hi;
   prism.bounds(lo, hi);
   const double h = prism.size.z();
-  // Adds the volume dv at coordinate c.
+  // Adds the volume dv at coordinate c; returns its region.
   const auto add = [&](double c, double dv) {
     const int k = region_of(layout, c);
     v.volume[k] += dv;
     if (layout.regions[k].mixed) v.small_volume[k] += small_fraction_at(layout, k, c) * dv;
+    return k;
+  };
+  const auto region_at = [&](const Vec3& p) {
+    return region_of(layout, zone_coordinate(layout, p));
   };
   // Calls f(x, y, dA) at the midpoints of an m × m grid of the cross-section inside the prism.
   const auto cross_section = [&](int m, const auto& f) {
@@ -116,8 +115,7 @@ ZoneVolumes zone_volumes(const ZoneLayout& layout, const Prism& prism) {
   switch (layout.coordinate) {
     case ZoneCoordinate::radial:
       cross_section(2048, [&](const Vec3& p, double da) {
-        add(zone_coordinate(layout, p), da * h);
-        v.wall_area[region_of(layout, zone_coordinate(layout, p))] += 2.0 * da;  // floor, top
+        v.wall_area[add(zone_coordinate(layout, p), da * h)] += 2.0 * da;  // floor, top
       });
       break;
     case ZoneCoordinate::depth: {
@@ -128,8 +126,8 @@ ZoneVolumes zone_volumes(const ZoneLayout& layout, const Prism& prism) {
         const Vec3 p(0.0, 0.0, (k + 0.5) * h / m);
         add(zone_coordinate(layout, p), area * h / m);
       }
-      v.wall_area[region_of(layout, zone_coordinate(layout, Vec3(0, 0, 0)))] += area;
-      v.wall_area[region_of(layout, zone_coordinate(layout, Vec3(0, 0, h)))] += area;
+      v.wall_area[region_at(Vec3(0, 0, 0))] += area;
+      v.wall_area[region_at(Vec3(0, 0, h))] += area;
       break;
     }
     case ZoneCoordinate::spherical: {
@@ -137,8 +135,7 @@ ZoneVolumes zone_volumes(const ZoneLayout& layout, const Prism& prism) {
       cross_section(m, [&](const Vec3& p, double da) {
         for (int k = 0; k < m; ++k)
           add(zone_coordinate(layout, Vec3(p.x(), p.y(), (k + 0.5) * h / m)), da * h / m);
-        for (const double z : {0.0, h})
-          v.wall_area[region_of(layout, zone_coordinate(layout, Vec3(p.x(), p.y(), z)))] += da;
+        for (const double z : {0.0, h}) v.wall_area[region_at(Vec3(p.x(), p.y(), z))] += da;
       });
       break;
     }
@@ -159,7 +156,7 @@ ZoneVolumes zone_volumes(const ZoneLayout& layout, const Prism& prism) {
               : Eigen::Vector2d(a + t * (b - a));
       for (int k = 0; k < heights; ++k) {
         const Vec3 p(q.x(), q.y(), (k + 0.5) * h / heights);
-        v.wall_area[region_of(layout, zone_coordinate(layout, p))] += length / m * h / heights;
+        v.wall_area[region_at(p)] += length / m * h / heights;
       }
     }
   };

@@ -27,6 +27,10 @@ int region_of(const ZoneLayout& layout, double c) {
   return n - 1;
 }
 
+double inner_bound(const ZoneLayout& layout, int k) {
+  return k > 0 ? layout.regions.at(k - 1).outer : 0.0;
+}
+
 double small_scale(const ZoneLayout& layout, int k) {
   return std::min(layout.regions.at(k - 1).scale, layout.regions.at(k + 1).scale);
 }
@@ -37,7 +41,7 @@ double large_scale(const ZoneLayout& layout, int k) {
 
 double small_fraction_at(const ZoneLayout& layout, int k, double c) {
   const ZoneRegion& r = layout.regions.at(k);
-  const double inner = k > 0 ? layout.regions[k - 1].outer : 0.0;
+  const double inner = inner_bound(layout, k);
   const double t = std::clamp((c - inner) / (r.outer - inner), 0.0, 1.0);
   return r.small_fraction + t * (r.small_fraction_outer - r.small_fraction);
 }

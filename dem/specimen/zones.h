@@ -40,6 +40,9 @@ struct ZoneLayout {
 /// The layout's coordinate of the point x (m).
 double zone_coordinate(const ZoneLayout& layout, const Vec3& x);
 
+/// Region k's inner bound: the previous region's outer one, 0 for the first.
+double inner_bound(const ZoneLayout& layout, int k);
+
 /// The region holding coordinate c: the first whose outer bound exceeds c, the last one for c
 /// beyond every bound.
 int region_of(const ZoneLayout& layout, double c);
