@@ -2,6 +2,7 @@
 // packing (CTGU 2017 eqs. 1–3): a hidden absolute length anywhere in the engine breaks it.
 #include "dem/core/contact.h"
 #include "dem/core/scale.h"
+#include "dem/core/timestep.h"
 #include "dem/core/world.h"
 #include "dem/measure/stress.h"
 #include "geom/errors.h"
@@ -163,4 +164,64 @@ TEST(DemStiffnessScaling, PackingScaledByThreeIsSimilarWithinRounding) {
       "λ = 3: worst position difference %.2e of the cell after 1,000 steps; stresses "
       "%.6g / %.6g after 4,000\n",
       worst, sb[2], sa[2]);
+}
+
+namespace {
+
+// Steps during which a sphere of radius r (linear law, d_ref = 6 mm) touches its partner in a
+// head-on bounce at 0.1 m/s: a plane wall, or an equal sphere coming the other way.
+double contact_time(bool wall, double r, double dt) {
+  WorldOptions o;
+  o.gravity = Vec3::Zero();
+  o.contact.scaling = StiffnessScaling::linear;
+  o.contact.kn = 5e5;
+  o.contact.d_ref = 0.006;
+  o.timestep = dt;
+  World w(o);
+  Body a = make_sphere_body(Vec3(0, 0, r + 1e-5), r, 2650);
+  a.velocity = Vec3(0, 0, -0.1);
+  w.add_body(a);
+  if (wall) {
+    w.add_wall(Wall::plane(Vec3::Zero(), Vec3::UnitZ()));
+  } else {
+    Body b = make_sphere_body(Vec3(0, 0, -r - 1e-5), r, 2650);
+    b.velocity = Vec3(0, 0, 0.1);
+    w.add_body(b);
+  }
+  int touching = 0;
+  for (int k = 0; k < 200000; ++k) {
+    w.step(1);
+    const bool on = wall ? !w.wall_contacts().empty() && w.wall_contacts()[0].state.overlap > 0
+                         : !w.contacts().empty() && w.contacts()[0].state.overlap > 0;
+    if (!on && touching > 0) break;  // separated
+    touching += on;
+  }
+  EXPECT_NEAR(w.bodies()[0].velocity.z(), 0.1, 1e-4);  // undamped: it leaves as it came
+  return touching * dt;
+}
+
+}  // namespace
+
+TEST(DemStiffnessScaling, TimestepRuleSeesTheSameFastestContactUnderBothLaws) {
+  // Linear law: a wall contact (2·kn_ref·d/d_ref, the sphere alone on the spring) and an equal
+  // pair (kn_ref·d/d_ref, reduced mass m/2) have the same frequency ω² = 2·k/m, k = kn_ref·d/d_ref:
+  // both bounces last π/ω. The step rule uses k, as the constant law uses kn.
+  const double r = 0.009, m = 2650 * 4.0 / 3.0 * M_PI * r * r * r;
+  const double k = 5e5 * (2 * r) / 0.006;
+  const double expected = M_PI * std::sqrt(m / (2 * k));
+  const double dt = expected / 2000;
+  EXPECT_NEAR(contact_time(true, r, dt) / expected, 1.0, 2e-3);
+  EXPECT_NEAR(contact_time(false, r, dt) / expected, 1.0, 2e-3);
+  // The world's critical step is that of a constant-law world with kn = ks = k.
+  WorldOptions lin;
+  lin.contact.scaling = StiffnessScaling::linear;
+  lin.contact.kn = lin.contact.ks = 5e5;
+  lin.contact.d_ref = 0.006;
+  WorldOptions con;
+  con.contact.kn = con.contact.ks = k;
+  World a(lin), b(con);
+  a.add_body(make_sphere_body(Vec3::Zero(), r, 2650));
+  b.add_body(make_sphere_body(Vec3::Zero(), r, 2650));
+  EXPECT_DOUBLE_EQ(critical_timestep(a), critical_timestep(b));
+  EXPECT_NEAR(critical_timestep(a), std::sqrt(0.4 * m / k), 1e-15);  // the rotation bound
 }
