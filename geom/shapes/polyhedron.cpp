@@ -3,12 +3,11 @@
 #include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"
 #include "geom/limits.h"
-#include "geom/mesh/cgal_mesh.h"
+#include "geom/shapes/halfspaces.h"
 #include "geom/shapes/primitives.h"
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <string>
 
 namespace clumpkit {
@@ -48,45 +47,15 @@ void validate(const PolyhedronParams& p) {
 Mesh make_polyhedron(const PolyhedronParams& p, Rng& rng) {
   validate(p);
   // Half-spaces n·x <= h: tangent planes of the sphere, then the random cuts.
-  std::vector<std::pair<Vec3, double>> halfspaces;
+  std::vector<Halfspace> halfspaces;
   const Mesh sphere = make_icosphere(p.sphere_level);
-  for (const auto& n : sphere.vertices) halfspaces.emplace_back(n, 1.0);
+  for (const auto& n : sphere.vertices) halfspaces.push_back({n, 1.0});
   for (int i = 0; i < p.planes; ++i) {
     const Vec3 n = rng.unit_vector();
     const double h = rng.uniform(p.offset_min, p.offset_max);
-    halfspaces.emplace_back(n, h);
+    halfspaces.push_back({n, h});
   }
-  // Polar duality (the origin is strictly inside, all h > 0): plane i maps to the point n_i/h_i,
-  // and each facet of the hull of those points is a corner of the polyhedron where its three
-  // planes meet. Solving each corner from its planes in index order makes the result independent
-  // of how the hull code orders its work.
-  std::vector<Vec3> dual;
-  std::map<std::array<double, 3>, int> plane_of;
-  for (std::size_t i = 0; i < halfspaces.size(); ++i) {
-    dual.push_back(halfspaces[i].first / halfspaces[i].second);
-    plane_of.emplace(std::array<double, 3>{dual.back().x(), dual.back().y(), dual.back().z()},
-                     static_cast<int>(i));
-  }
-  const Mesh dual_hull = convex_hull(dual);
-  std::vector<int> plane(dual_hull.vertices.size());
-  for (std::size_t i = 0; i < plane.size(); ++i) {
-    const Vec3& d = dual_hull.vertices[i];
-    plane[i] = plane_of.at({d.x(), d.y(), d.z()});
-  }
-  std::vector<Vec3> corners;
-  corners.reserve(dual_hull.triangles.size());
-  for (const auto& t : dual_hull.triangles) {
-    std::array<int, 3> ids{plane[t[0]], plane[t[1]], plane[t[2]]};
-    std::sort(ids.begin(), ids.end());
-    Mat3 a;
-    Vec3 b;
-    for (int k = 0; k < 3; ++k) {
-      a.row(k) = halfspaces[ids[k]].first.transpose();
-      b[k] = halfspaces[ids[k]].second;
-    }
-    corners.push_back(a.fullPivLu().solve(b));
-  }
-  Mesh m = convex_hull(corners);  // deduplicates corners shared by 4+ planes
+  Mesh m = intersect_halfspaces(halfspaces, Vec3::Zero());  // the origin is inside: all h > 0
 
   // Stretch along the principal axes to E and F (Hu et al. 2023: E = I/L, F = S/I).
   PrincipalFrame f;

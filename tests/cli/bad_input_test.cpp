@@ -98,6 +98,11 @@ struct Inputs {
     write(d / "zones_ratio.toml", edited(zoned, "scale = 3", "scale = 4"));
     write(d / "zones_thin.toml", edited(zoned, "outer = 0.125", "outer = 0.09"));
     write(d / "segment_angle.toml", edited(zoned, "angle = 90", "angle = 270"));
+    // A unit cube with one corner pushed in: closed, but not convex (for `cells`).
+    write(d / "dented.obj",
+          "v 0.3 0.3 0.3\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+          "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 4 8 7\nf 4 7 3\nf 1 5 8\n"
+          "f 1 8 4\nf 2 3 7\nf 2 7 6\n");
     write(d / "parent_file", "a file, not a directory\n");
     fs::create_directories(d / "a_dir");
   }
@@ -216,6 +221,23 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
       {"import lammps " + in("run") + " --specimen " + in("run") + " --out " + in("run"),
        "would replace", ""});
 
+  // cells MESH --count N --out DIR: unreadable meshes, a non-convex one, a cell as large as the
+  // parent, both or neither of --count and --cell-size, bad steps and spreads, a bad --out.
+  for (const char* f :
+       {"missing.stl", "a_dir", "empty.stl", "garbage.stl", "nan.obj", "flat.obj", "dented.obj"})
+    cases.push_back({"cells " + in(f) + " --count 8 --out " + out, f, out});
+  const std::string box = in("box.stl");
+  cases.push_back({"cells " + in("dented.obj") + " --count 8 --out " + out, "not convex", out});
+  cases.push_back({"cells " + box + " --cell-size 10 --out " + out, "fewer than two cells", out});
+  cases.push_back({"cells " + box + " --cell-size -0.5 --out " + out, "-0.5", out});
+  cases.push_back({"cells " + box + " --count 8 --cell-size 0.5 --out " + out, "--count", out});
+  cases.push_back({"cells " + box + " --out " + out, "exactly one", out});
+  cases.push_back({"cells " + box + " --count 1 --out " + out, "count", out});
+  cases.push_back({"cells " + box + " --count 8 --lloyd -1 --out " + out, "lloyd", out});
+  cases.push_back({"cells " + box + " --count 8 --strength-sd -1 --out " + out, "-1", out});
+  cases.push_back({"cells " + box + " --count 8 --out " + pf, "parent_file", ""});
+  cases.push_back({"cells " + box + " --count 8 --out " + box, "box.stl", ""});
+
   // compare-curves A B: missing or unreadable files, a missing column, a cell that is not a
   // number, x that goes back, one row, ranges that do not overlap, too few points
   write(d / "qc_a.csv", "step,depth_m,qc_pa\n1,0,0\n2,0.1,1e6\n3,0.2,2e6\n");
@@ -244,5 +266,5 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
   // The inputs are untouched.
   EXPECT_EQ(slurp(d / "rocks.toml"), std::string(kTinyRocks));
   EXPECT_TRUE(fs::is_regular_file(d / "box.stl"));
-  std::printf("bad-input matrix: %zu cases over 11 commands\n", cases.size());
+  std::printf("bad-input matrix: %zu cases over 12 commands\n", cases.size());
 }
