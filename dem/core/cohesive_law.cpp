@@ -1,0 +1,61 @@
+#include "dem/core/cohesive_law.h"
+
+#include "geom/errors.h"
+#include "geom/format.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace clumpkit::dem {
+
+void validate(const CohesiveParams& p, double max_factor) {
+  const std::pair<const char*, double> fields[] = {{"kn", p.kn},           {"kt", p.kt},
+                                                   {"sigma_n", p.sigma_n}, {"sigma_t", p.sigma_t},
+                                                   {"g_n", p.g_n},         {"g_t", p.g_t}};
+  for (const auto& [name, v] : fields)
+    if (!(v > 0.0) || !std::isfinite(v))
+      throw InvalidInput(std::string("cohesive law: ") + name +
+                         " must be positive and finite, got " + format_number(v));
+  const double en = 0.5 * std::pow(max_factor * p.sigma_n, 2) / p.kn;
+  const double et = 0.5 * std::pow(max_factor * p.sigma_t, 2) / p.kt;
+  if (p.g_n <= en)
+    throw InvalidInput("cohesive law: g_n " + format_number(p.g_n) +
+                       " is not above the elastic energy at onset σ²/(2K) = " + format_number(en) +
+                       " (strengths × " + format_number(max_factor) + ")");
+  if (p.g_t <= et)
+    throw InvalidInput("cohesive law: g_t " + format_number(p.g_t) +
+                       " is not above the elastic energy at onset σ²/(2K) = " + format_number(et) +
+                       " (strengths × " + format_number(max_factor) + ")");
+}
+
+MixedMode mixed_mode(const CohesiveParams& p, double factor, double c2, double s2) {
+  const double de_n = factor * p.sigma_n / p.kn, de_t = factor * p.sigma_t / p.kt;
+  MixedMode m;
+  m.onset = 1.0 / std::sqrt(c2 / (de_n * de_n) + s2 / (de_t * de_t));
+  m.failure = 2.0 / (m.onset * (c2 * p.kn / p.g_n + s2 * p.kt / p.g_t));
+  return m;
+}
+
+CohesiveTraction cohesive_traction(const CohesiveParams& p, double factor, double dn,
+                                   const Vec3& dt, CohesiveState& state) {
+  const double open = std::max(dn, 0.0);
+  const double slip2 = dt.squaredNorm();
+  const double d2 = open * open + slip2;
+  if (d2 > 0.0 && state.damage < 1.0) {
+    const double d = std::sqrt(d2);
+    const MixedMode m = mixed_mode(p, factor, open * open / d2, slip2 / d2);
+    if (d > m.onset) {
+      const double damage =
+          d >= m.failure ? 1.0 : m.failure * (d - m.onset) / (d * (m.failure - m.onset));
+      state.damage = std::max(state.damage, std::min(damage, 1.0));
+    }
+  }
+  const double keep = 1.0 - state.damage;
+  CohesiveTraction t;
+  t.normal = dn > 0.0 ? keep * p.kn * dn : p.kn * dn;
+  t.shear = keep * p.kt * dt;
+  return t;
+}
+
+}  // namespace clumpkit::dem
