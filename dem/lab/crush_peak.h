@@ -1,0 +1,45 @@
+// The crushing peak of a single-particle compression curve (Hu et al. 2023 §3.2 after Huillca
+// et al. 2021): the largest force before a load drop of at least 35 % with the particle split or
+// collapsed; strength σ = Fp/D² (eq. 13).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace clumpkit::dem {
+
+/// The rule's numbers.
+struct PeakRule {
+  double drop = 0.35;  ///< the load drop that marks failure, as a fraction of the running peak
+  /// Collapse without a split: the force stays below (1 − drop) of the running peak over this
+  /// much further platen travel, as a fraction of the particle's diameter.
+  double collapse_travel = 0.02;
+};
+
+/// One sample of a crushing test: platen travel (m), force (N), and whether the particle's
+/// bonded cells had already separated into two or more large fragments.
+struct CrushSample {
+  double travel = 0.0;
+  double force = 0.0;
+  bool split = false;
+};
+
+struct CrushPeak {
+  bool found = false;
+  std::size_t index = 0;     ///< sample of the peak force
+  double force = 0.0;        ///< Fp (N)
+  double travel = 0.0;       ///< platen travel at the peak (m)
+  std::size_t detected = 0;  ///< sample where the rule was met
+  std::string by;            ///< "split" or "collapse" ("" when not found)
+};
+
+/// Scans the samples in order with the running maximum F* (its first sample on ties): the peak is
+/// F* at the first sample where F ≤ (1 − drop)·F* and the particle is split ("split"), or where F
+/// has stayed ≤ (1 − drop)·F* over collapse_travel·D of travel ("collapse"). A drop that recovers
+/// above (1 − drop)·F* before either is not a failure; a later, higher maximum replaces F*.
+/// Throws InvalidInput for a rule outside (0, 1) / (0, 1], or D not positive.
+CrushPeak crushing_peak(const std::vector<CrushSample>& samples, double diameter,
+                        const PeakRule& rule = {});
+
+}  // namespace clumpkit::dem
