@@ -28,6 +28,31 @@ Mesh make_box(const Vec3& size) {
   return m;
 }
 
+Mesh make_cylinder(double diameter, double height, int sides) {
+  check_size(diameter, "cylinder diameter");
+  check_size(height, "cylinder height");
+  if (sides < 3 || sides > 100000)
+    throw InvalidInput("cylinder sides: must be in [3, 100000], got " + std::to_string(sides));
+  Mesh m;
+  const double r = 0.5 * diameter, h = 0.5 * height;
+  for (const double z : {-h, h})
+    for (int k = 0; k < sides; ++k) {
+      const double a = 2.0 * M_PI * k / sides;
+      m.vertices.emplace_back(r * std::cos(a), r * std::sin(a), z);
+    }
+  const int bottom = 2 * sides, top = bottom + 1;
+  m.vertices.emplace_back(0.0, 0.0, -h);
+  m.vertices.emplace_back(0.0, 0.0, h);
+  for (int k = 0; k < sides; ++k) {
+    const int a = k, b = (k + 1) % sides;  // ring indices, counter-clockwise seen from +z
+    m.triangles.push_back({bottom, b, a});
+    m.triangles.push_back({top, sides + a, sides + b});
+    m.triangles.push_back({a, b, sides + b});
+    m.triangles.push_back({a, sides + b, sides + a});
+  }
+  return m;
+}
+
 Mesh make_icosphere(int level) {
   if (level < 0 || level > 8)
     throw InvalidInput("icosphere level must be in [0, 8], got " + std::to_string(level));

@@ -1,4 +1,5 @@
-// Primitive closed meshes: box, icosphere and ellipsoid, for tests and simple particles.
+// Primitive closed meshes: box, cylinder, icosphere and ellipsoid, for tests, simple particles
+// and test specimens (the Brazilian disc).
 #pragma once
 
 #include "geom/mesh/mesh.h"
@@ -7,6 +8,13 @@ namespace clumpkit {
 
 /// Axis-aligned box with edge lengths `size`, centred at the origin; 12 outward triangles.
 Mesh make_box(const Vec3& size);
+
+/// Right prism over a regular polygon of `sides` sides inscribed in the circle of `diameter`
+/// (vertex at +x), axis along z, centred at the origin: a cylinder to within
+/// 1 − sin(2π/n)/(2π/n) of its volume (0.16 % at 64 sides). The caps are fans from their
+/// centres. Throws InvalidInput for sizes that are not positive lengths or fewer than 3 sides
+/// (at most 100000).
+Mesh make_cylinder(double diameter, double height, int sides = 64);
 
 /// Unit-radius icosphere: an icosahedron whose triangles are split in four `level` times,
 /// vertices pushed to the sphere. 20·4^level triangles.

@@ -1,4 +1,4 @@
-// `clumpkit shape <block|hull|polyhedron|ellipsoid|box>`: one particle to a mesh file.
+// `clumpkit shape <block|hull|polyhedron|ellipsoid|cylinder|box>`: one particle to a mesh file.
 #include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"
 #include "geom/shapes/block.h"
@@ -147,6 +147,21 @@ void register_shape(CLI::App& app) {
     add_common(c, *o, false);
     c->callback(
         [o, axes, level] { finish(make_ellipsoid(parse_triple(*axes, "--axes"), *level), *o); });
+  }
+  {
+    auto o = std::make_shared<Common>();
+    auto d = std::make_shared<double>(0.0), h = std::make_shared<double>(0.0);
+    auto sides = std::make_shared<int>(64);
+    auto* c = shape->add_subcommand(
+        "cylinder",
+        "Cylinder (a prism over a regular polygon inscribed in the circle) along z, centred at "
+        "the origin; e.g. the Brazilian disc of Hu et al. 2023: --diameter 0.05 --height 0.05");
+    c->add_option("--diameter", *d, "Diameter of the circle through the polygon's corners")
+        ->required();
+    c->add_option("--height", *h, "Height along z")->required();
+    c->add_option("--sides", *sides, "Sides of the polygon, at least 3")->capture_default_str();
+    add_common(c, *o, false);
+    c->callback([o, d, h, sides] { finish(make_cylinder(*d, *h, *sides), *o); });
   }
   {
     auto o = std::make_shared<Common>();
