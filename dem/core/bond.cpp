@@ -1,0 +1,81 @@
+#include "dem/core/bond.h"
+
+#include "geom/errors.h"
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+
+namespace clumpkit::dem {
+
+bool Bond::holds() const {
+  for (const BondPoint& p : points)
+    if (p.state.damage < 1.0) return true;
+  return false;
+}
+
+Bond make_bond(const Body& a, const Body& b, int ia, int ib, const Vec3& normal,
+               const std::vector<Vec3>& points, const std::vector<double>& areas, double factor) {
+  if (points.size() != areas.size() || points.empty())
+    throw InvalidInput("bond: needs one area per point and at least one point, got " +
+                       std::to_string(points.size()) + " points and " +
+                       std::to_string(areas.size()) + " areas");
+  Bond bond;
+  bond.a = ia;
+  bond.b = ib;
+  bond.factor = factor;
+  bond.normal_in_a = (a.orientation.conjugate() * normal).normalized();
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    BondPoint p;
+    p.in_a = a.orientation.conjugate() * (points[k] - a.position);
+    p.in_b = b.orientation.conjugate() * (points[k] - b.position);
+    p.area = areas[k];
+    bond.points.push_back(p);
+  }
+  return bond;
+}
+
+BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Body& a, const Body& b) {
+  BondWrench w;
+  const Vec3 n = a.orientation * bond.normal_in_a;
+  for (BondPoint& p : bond.points) {
+    const Vec3 xa = a.position + a.orientation * p.in_a;
+    const Vec3 xb = b.position + b.orientation * p.in_b;
+    const Vec3 jump = xb - xa;
+    const double dn = jump.dot(n);
+    const Vec3 dt = jump - dn * n;
+    const CohesiveTraction t = cohesive_traction(law, bond.factor, dn, dt, p.state);
+    const Vec3 f = -p.area * (t.normal * n + t.shear);  // on b
+    const Vec3 at = 0.5 * (xa + xb);
+    w.force_b += f;
+    w.torque_b += (at - b.position).cross(f);
+    w.force_a -= f;
+    w.torque_a -= (at - a.position).cross(f);
+  }
+  return w;
+}
+
+double bond_stiffness(const Bond& bond, const CohesiveParams& law) {
+  double area = 0.0;
+  for (const BondPoint& p : bond.points) area += p.area;
+  return area * std::max(law.kn, law.kt);
+}
+
+std::vector<int> fragments(int bodies, const std::vector<Bond>& bonds) {
+  std::vector<int> parent(bodies);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const Bond& bond : bonds) {
+    if (!bond.holds()) continue;
+    const int ra = find(bond.a), rb = find(bond.b);
+    if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);  // the root is the smallest index
+  }
+  std::vector<int> label(bodies);
+  for (int i = 0; i < bodies; ++i) label[i] = find(i);
+  return label;
+}
+
+}  // namespace clumpkit::dem

@@ -1,0 +1,61 @@
+// Cohesive bonds between two rigid bodies (the faces shared by the Voronoi cells of a crushable
+// particle, Hu et al. 2023): integration points fixed in both bodies, the cohesive law at each,
+// and the fragments that the intact bonds hold together.
+#pragma once
+
+#include "dem/core/body.h"
+#include "dem/core/cohesive_law.h"
+
+#include <vector>
+
+namespace clumpkit::dem {
+
+/// One integration point of a bond: the same material point as seen from each body's frame
+/// (equal in the world when the bond is made), the face area it stands for, and its damage.
+struct BondPoint {
+  Vec3 in_a = Vec3::Zero();  ///< body frame of a (m)
+  Vec3 in_b = Vec3::Zero();  ///< body frame of b (m)
+  double area = 0.0;         ///< m²
+  CohesiveState state;
+};
+
+/// A bond between bodies a and b across their shared face.
+struct Bond {
+  int a = 0, b = 0;
+  Vec3 normal_in_a = Vec3::UnitZ();  ///< the face's unit normal from a towards b, a's frame
+  double factor = 1.0;               ///< factor on the strengths σ_eI and σ_eII of this face
+  std::vector<BondPoint> points;
+  /// Whether any point still holds (damage below 1).
+  bool holds() const;
+};
+
+/// A bond between two bodies at their present poses from the face's integration points given in
+/// the world (cell_bonds of geom/cells): each point stored in both body frames; the normal
+/// (world, from a towards b) stored in a's frame.
+Bond make_bond(const Body& a, const Body& b, int ia, int ib, const Vec3& normal,
+               const std::vector<Vec3>& points, const std::vector<double>& areas, double factor);
+
+/// What a bond does to its two bodies: forces (N) and torques about each centroid (N·m), world
+/// frame.
+struct BondWrench {
+  Vec3 force_a = Vec3::Zero(), torque_a = Vec3::Zero();
+  Vec3 force_b = Vec3::Zero(), torque_b = Vec3::Zero();
+};
+
+/// The bond's wrench at the bodies' poses, updating each point's damage: at each point the
+/// displacement jump Δ = x_b − x_a of its two copies, split along the face normal (a's, rotated
+/// to the world) into opening and slip, gives the cohesive stresses (cohesive_traction); b feels
+/// −area·(σ_n·n + τ) at the midpoint of the two copies and a the opposite. A rigid motion of the
+/// two bodies together leaves every Δ zero: no force.
+BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Body& a, const Body& b);
+
+/// The stiffness the bond adds to a body it joins, for the critical time step: Σ area·max(K_I,
+/// K_II) over its points (N/m).
+double bond_stiffness(const Bond& bond, const CohesiveParams& law);
+
+/// Connected components of `bodies` bodies under the bonds that hold: the label of each body is
+/// the smallest body index of its component (a fragment), so labels are the same for any bond
+/// order.
+std::vector<int> fragments(int bodies, const std::vector<Bond>& bonds);
+
+}  // namespace clumpkit::dem
