@@ -36,11 +36,16 @@ Bond make_bond(const Body& a, const Body& b, int ia, int ib, const Vec3& normal,
 }
 
 BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Body& a, const Body& b) {
+  return bond_wrench(bond, law, a.position, a.orientation, b.position, b.orientation);
+}
+
+BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Vec3& pa,
+                       const Eigen::Quaterniond& qa, const Vec3& pb, const Eigen::Quaterniond& qb) {
   BondWrench w;
-  const Vec3 n = a.orientation * bond.normal_in_a;
+  const Vec3 n = qa * bond.normal_in_a;
   for (BondPoint& p : bond.points) {
-    const Vec3 xa = a.position + a.orientation * p.in_a;
-    const Vec3 xb = b.position + b.orientation * p.in_b;
+    const Vec3 xa = pa + qa * p.in_a;
+    const Vec3 xb = pb + qb * p.in_b;
     const Vec3 jump = xb - xa;
     const double dn = jump.dot(n);
     const Vec3 dt = jump - dn * n;
@@ -48,9 +53,9 @@ BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Body& a, con
     const Vec3 f = -p.area * (t.normal * n + t.shear);  // on b
     const Vec3 at = 0.5 * (xa + xb);
     w.force_b += f;
-    w.torque_b += (at - b.position).cross(f);
+    w.torque_b += (at - pb).cross(f);
     w.force_a -= f;
-    w.torque_a -= (at - a.position).cross(f);
+    w.torque_a -= (at - pa).cross(f);
   }
   return w;
 }

@@ -48,6 +48,9 @@ struct BondWrench {
 /// −area·(σ_n·n + τ) at the midpoint of the two copies and a the opposite. A rigid motion of the
 /// two bodies together leaves every Δ zero: no force.
 BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Body& a, const Body& b);
+/// The same for the poses (centroid, orientation) of a and b.
+BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Vec3& pa,
+                       const Eigen::Quaterniond& qa, const Vec3& pb, const Eigen::Quaterniond& qb);
 
 /// The stiffness the bond adds to a body it joins, for the critical time step: Σ area·max(K_I,
 /// K_II) over its points (N/m).

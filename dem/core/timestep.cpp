@@ -42,9 +42,18 @@ double critical_timestep(const World& world) {
   // m/2) under both laws, and under linear scaling also a wall (2·k, the body alone on the spring)
   // or a much larger body (the same series limit). Using the wall's 2·k here would make the
   // linear law's step √2 shorter than the constant law's for the same fastest frequency.
-  for (const Body& b : world.bodies()) {
+  // A bonded body also carries the stiffness of its bonds (their springs act in parallel with
+  // its contacts).
+  std::vector<double> bonded(world.bodies().size(), 0.0);
+  for (const Bond& bond : world.bonds()) {
+    const double k = bond_stiffness(bond, world.options().cohesive);
+    bonded[bond.a] += k;
+    bonded[bond.b] += k;
+  }
+  for (std::size_t i = 0; i < world.bodies().size(); ++i) {
+    const Body& b = world.bodies()[i];
     const double f = pair_stiffness_factor(p, b.diameter, b.diameter);
-    dt = std::min(dt, body_critical_timestep(b, p.kn * f, p.ks * f));
+    dt = std::min(dt, body_critical_timestep(b, p.kn * f + bonded[i], p.ks * f + bonded[i]));
   }
   return dt;
 }

@@ -22,7 +22,8 @@ double body_critical_timestep(const Body& body, double kn, double ks);
 /// the stiffness of each body's contact with an equal body (kn; under linear scaling kn·d/d_ref,
 /// so that both laws give the same margin on the fastest contact frequency, ω² = 2·k/m for an
 /// equal pair or, under linear scaling, a wall; bodies added to the world, whose diameter is
-/// set); +∞ for a world without bodies.
+/// set), plus the stiffness of each body's bonds (bond_stiffness, summed); +∞ for a world
+/// without bodies.
 /// The one time-step rule of clumpkit: multiply by a safety factor (0.2 for general use, 0.35
 /// measured stable for the specimen's settling runs) for the step.
 double critical_timestep(const World& world);

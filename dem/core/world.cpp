@@ -133,6 +133,48 @@ void World::build_neighbours() {
   sphere_at_build_ = sphere_world_;
   find_skin_pairs(sphere_world_, sphere_radius_, sphere_body_, options_.skin, sc.grid_,
                   neighbours_);
+  // The spheres of two bodies whose bond holds never touch.
+  if (!bonded_.empty())
+    neighbours_.erase(
+        std::remove_if(neighbours_.begin(), neighbours_.end(),
+                       [&](const std::pair<int, int>& p) {
+                         const int a = sphere_body_[p.first], b = sphere_body_[p.second];
+                         return std::binary_search(bonded_.begin(), bonded_.end(),
+                                                   std::make_pair(std::min(a, b), std::max(a, b)));
+                       }),
+        neighbours_.end());
+}
+
+int World::add_bond(Bond bond) {
+  StepCache& sc = cache_.get();
+  const int n = static_cast<int>(bodies_.size());
+  if (bond.a < 0 || bond.a >= n || bond.b < 0 || bond.b >= n || bond.a == bond.b)
+    throw InvalidInput("DEM world: a bond must join two different bodies of the world, got " +
+                       std::to_string(bond.a) + " and " + std::to_string(bond.b) + " of " +
+                       std::to_string(n));
+  if (bond.points.empty()) throw InvalidInput("DEM world: a bond needs at least one point");
+  if (!(bond.factor > 0.0) || !std::isfinite(bond.factor))
+    throw InvalidInput("DEM world: a bond's strength factor must be positive and finite, got " +
+                       std::to_string(bond.factor));
+  if (!(std::abs(bond.normal_in_a.norm() - 1.0) < 1e-9))
+    throw InvalidInput("DEM world: a bond's normal must be a unit vector");
+  for (const BondPoint& p : bond.points)
+    if (!(p.area >= 0.0) || !std::isfinite(p.area) || !p.in_a.allFinite() || !p.in_b.allFinite())
+      throw InvalidInput("DEM world: a bond point needs a finite position and area ≥ 0");
+  validate(options_.cohesive, bond.factor);
+  bonds_.push_back(std::move(bond));
+  update_bonded();
+  dirty_ = true;
+  sc.pairs_valid_ = false;
+  return static_cast<int>(bonds_.size()) - 1;
+}
+
+void World::update_bonded() {
+  bonded_.clear();
+  for (const Bond& bond : bonds_)
+    if (bond.holds()) bonded_.emplace_back(std::min(bond.a, bond.b), std::max(bond.a, bond.b));
+  std::sort(bonded_.begin(), bonded_.end());
+  bonded_.erase(std::unique(bonded_.begin(), bonded_.end()), bonded_.end());
 }
 
 // Called once a sphere has moved more than sqrt(near_limit_) since the last filter (or there is

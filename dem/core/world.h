@@ -3,6 +3,7 @@
 #pragma once
 
 #include "dem/core/body.h"
+#include "dem/core/bond.h"
 #include "dem/core/contact.h"
 #include "dem/core/neighbour_search.h"
 #include "dem/core/wall.h"
@@ -56,6 +57,8 @@ struct WorldOptions {
   /// in another order).
   int sort_every = 0;
   ContactParams contact;
+  /// The law of every bond (dem/core/bond.h); unused in a world without bonds.
+  CohesiveParams cohesive;
 };
 
 /// A contact between sphere `i` and sphere `j` (global sphere indices, i < j, different bodies);
@@ -95,6 +98,14 @@ class World {
   int add_body(Body body);
   /// Adds a wall and returns its index.
   int add_wall(const Wall& wall);
+  /// Adds a bond between bodies bond.a and bond.b and returns its index. Each step adds its
+  /// wrench to the two bodies (after their contacts, bonds in index order); while it holds, the
+  /// spheres of the two bodies never touch (the pair is kept out of the neighbour lists, which
+  /// are rebuilt once it breaks). A bonded body's orientation is always integrated (its bond
+  /// points turn with it). Throws InvalidInput for bodies the world does not have, a = b, or a
+  /// bond without points.
+  int add_bond(Bond bond);
+  const std::vector<Bond>& bonds() const { return bonds_; }
 
   /// Bodies may be edited between steps (positions, velocities, orientations).
   std::vector<Body>& bodies() { return bodies_; }
@@ -195,6 +206,9 @@ class World {
   bool near_valid_ = false;                      // candidates_ filtered for sphere_at_filter_
   std::int64_t filters_ = 0;
   bool dirty_ = true;
+  std::vector<Bond> bonds_;
+  std::vector<std::pair<int, int>> bonded_;  // sorted (a, b), a < b, of the bonds that hold
+  void update_bonded();
   std::vector<PairContact> contacts_;       // sorted (i, j)
   std::vector<WallContact> wall_contacts_;  // sorted (sphere, wall)
   double time_ = 0.0;

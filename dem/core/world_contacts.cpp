@@ -6,6 +6,7 @@
 #include "dem/core/world_step_cache.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace clumpkit::dem {
@@ -256,6 +257,26 @@ void World::compute_forces() {
     if (wall.friction >= 0.0) q.friction = wall.friction;
     update_contact(state, hit.normal, hit.overlap, hit.point, vb - vw, b.mass, q, dt);
   });
+
+  // Bonds, one wrench slot per bond. One that stops holding lets its bodies' spheres touch from
+  // the next step: the neighbour lists are built again (dirty_ makes integrate() report a move).
+  if (!bonds_.empty()) {
+    sc.bond_wrench_.resize(bonds_.size());
+    std::atomic<bool> broke{false};
+    parallel_items(bonds_.size(), [&](std::size_t k) {
+      Bond& bond = bonds_[k];
+      const bool held = bond.holds();
+      sc.bond_wrench_[k] =
+          bond_wrench(bond, options_.cohesive, sc.kinematics_[bond.a].position,
+                      sc.rotation_[bond.a].orientation, sc.kinematics_[bond.b].position,
+                      sc.rotation_[bond.b].orientation);
+      if (held && !bond.holds()) broke.store(true, std::memory_order_relaxed);
+    });
+    if (broke.load()) {
+      update_bonded();
+      dirty_ = true;
+    }
+  }
 
   // The sums per body are made by integrate(), in the same pass that advances the body.
 }

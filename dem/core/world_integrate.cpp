@@ -31,6 +31,19 @@ void World::load_bodies() {
   sc.rotation_.resize(nb);
   sc.body_touched_.assign(nb, 0);
   sc.body_diameter_.resize(nb);
+  // Each body's bonds in index order (counting sort), and which bodies have any.
+  sc.body_bond_begin_.assign(nb + 1, 0);
+  for (const Bond& bond : bonds_)
+    ++sc.body_bond_begin_[bond.a + 1], ++sc.body_bond_begin_[bond.b + 1];
+  for (std::size_t k = 0; k < nb; ++k) sc.body_bond_begin_[k + 1] += sc.body_bond_begin_[k];
+  sc.body_bond_items_.resize(sc.body_bond_begin_[nb]);
+  {
+    std::vector<std::size_t> at(sc.body_bond_begin_.begin(), sc.body_bond_begin_.end() - 1);
+    for (std::size_t i = 0; i < bonds_.size(); ++i) {
+      sc.body_bond_items_[at[bonds_[i].a]++] = 2 * i;
+      sc.body_bond_items_[at[bonds_[i].b]++] = 2 * i + 1;
+    }
+  }
   parallel_items(nb, [&](std::size_t k) {
     const Body& b = bodies_[k];
     sc.body_diameter_[k] = b.diameter;
@@ -40,8 +53,10 @@ void World::load_bodies() {
     if (b.rotation_locked)
       spin = Spin::locked;
     else if (b.moments.x() == b.moments.y() && b.moments.y() == b.moments.z())
-      spin = b.spheres.size() == 1 && b.spheres[0].center.isZero(0.0) ? Spin::plain_sphere
-                                                                      : Spin::isotropic;
+      spin = b.spheres.size() == 1 && b.spheres[0].center.isZero(0.0) &&
+                     sc.body_bond_begin_[k] == sc.body_bond_begin_[k + 1]
+                 ? Spin::plain_sphere
+                 : Spin::isotropic;
     sc.rotation_[k] = Rotation{b.orientation, b.moments, spin};
   });
   sc.sphere_body64_.assign(sphere_body_.begin(), sphere_body_.end());
@@ -63,7 +78,8 @@ void World::store_bodies() {
 }
 
 // Net wrench on body k: gravity, then its pair contacts in (i, j) order, then its wall contacts
-// in (sphere, wall) order — a fixed order, whatever the thread count (see body_touched_).
+// in (sphere, wall) order, then its bonds in index order — a fixed order, whatever the thread count
+// (see body_touched_).
 static inline Wrench sum_wrench(const StepCache& sc, const Vec3& gravity, std::size_t k) {
   const Kinematics& b = sc.kinematics_[k];
   Vec3 force = b.mass * gravity;
@@ -84,6 +100,12 @@ static inline Wrench sum_wrench(const StepCache& sc, const Vec3& gravity, std::s
     const Vec3 f = s.force();
     force += f;
     torque += (s.point - b.position).cross(f);
+  }
+  for (std::size_t e = sc.body_bond_begin_[k]; e < sc.body_bond_begin_[k + 1]; ++e) {
+    const std::uint64_t item = sc.body_bond_items_[e];
+    const BondWrench& w = sc.bond_wrench_[item >> 1];
+    force += item & 1 ? w.force_b : w.force_a;
+    torque += item & 1 ? w.torque_b : w.torque_a;
   }
   return Wrench{force, torque};
 }

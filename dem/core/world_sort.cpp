@@ -91,6 +91,13 @@ bool World::sort_bodies() {
     return std::make_pair(a.i, a.j) < std::make_pair(b.i, b.j);
   });
   for (WallContact& c : wall_contacts_) c.sphere = sphere_map[c.sphere];
+  // Bonds keep their order and sides (a, b): only the body indices change.
+  if (!bonds_.empty()) {
+    std::vector<int> body_map(nb);  // old body -> new body
+    for (std::size_t k = 0; k < nb; ++k) body_map[order[k]] = static_cast<int>(k);
+    for (Bond& bond : bonds_) bond.a = body_map[bond.a], bond.b = body_map[bond.b];
+    update_bonded();
+  }
   std::sort(wall_contacts_.begin(), wall_contacts_.end(),
             [](const WallContact& a, const WallContact& b) {
               return std::make_pair(a.sphere, a.wall) < std::make_pair(b.sphere, b.wall);

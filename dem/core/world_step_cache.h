@@ -97,13 +97,18 @@ struct StepCache {
   std::vector<ContactState> wall_slot_state_;   // per wall candidate
   std::vector<std::uint8_t> wall_slot_active_;  // per wall candidate
   std::vector<std::size_t> body_wall_begin_;    // per body: range in wall_cand_
-  std::vector<Wall> walls_at_build_;            // walls when wall_cand_ was built
-  std::vector<std::size_t> scratch_;            // counts / offsets
-  std::vector<std::uint8_t> filter_keep_;       // scratch of filter_candidates
-  bool positions_fresh_ = false;  // sphere_world_ and moved_ set by integrate this call
-  bool moved_ = true;             // a sphere moved more than sqrt(near_limit_) since the filter
-  bool pairs_valid_ = false;      // slots mirror contacts_ for the current candidates_
-  bool walls_valid_ = false;      // wall slots mirror wall_contacts_ for the current wall_cand_
+  // Bonds: per bond its wrench of this step; per body its bonds in index order (range in
+  // body_bond_items_, each 2·bond + 1 when the body is the bond's b), built by load_bodies.
+  std::vector<BondWrench> bond_wrench_;
+  std::vector<std::size_t> body_bond_begin_;
+  std::vector<std::uint64_t> body_bond_items_;
+  std::vector<Wall> walls_at_build_;       // walls when wall_cand_ was built
+  std::vector<std::size_t> scratch_;       // counts / offsets
+  std::vector<std::uint8_t> filter_keep_;  // scratch of filter_candidates
+  bool positions_fresh_ = false;           // sphere_world_ and moved_ set by integrate this call
+  bool moved_ = true;         // a sphere moved more than sqrt(near_limit_) since the filter
+  bool pairs_valid_ = false;  // slots mirror contacts_ for the current candidates_
+  bool walls_valid_ = false;  // wall slots mirror wall_contacts_ for the current wall_cand_
 };
 }  // namespace detail
 

@@ -11,7 +11,7 @@
 namespace clumpkit {
 
 /// An integration point of a bond: a position on the face and the face area it stands for.
-struct BondPoint {
+struct FacePoint {
   Vec3 position = Vec3::Zero();
   double area = 0.0;
 };
@@ -22,7 +22,7 @@ struct CellBond {
   double area = 0.0;              ///< face area (as seen from cell a)
   Vec3 centroid = Vec3::Zero();   ///< face centroid
   Vec3 normal = Vec3::Zero();     ///< unit normal from a towards b
-  std::vector<BondPoint> points;  ///< one per fan triangle (face centroid, v_k, v_k+1)
+  std::vector<FacePoint> points;  ///< one per fan triangle (face centroid, v_k, v_k+1)
   /// Factor on the bond's strengths σ_I and σ_II (the paper's heterogeneity: each interface's
   /// strengths times a factor drawn from a normal distribution within [0.75, 1.25]).
   double strength_factor = 1.0;

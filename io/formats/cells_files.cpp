@@ -99,7 +99,7 @@ void write_bonds_csv(const std::string& bonds_path, const std::string& points_pa
   write_file_atomically(points_path, [&](std::ostream& o) {
     o << "bond,x,y,z,area\n";
     for (std::size_t k = 0; k < bonds.size(); ++k)
-      for (const BondPoint& p : bonds[k].points)
+      for (const FacePoint& p : bonds[k].points)
         o << k << "," << num(p.position.x()) << "," << num(p.position.y()) << ","
           << num(p.position.z()) << "," << num(p.area) << "\n";
   });

@@ -141,6 +141,8 @@ struct WorldCodec {
     w.f64(o.contact.kn), w.f64(o.contact.ks), w.f64(o.contact.friction);
     w.f64(o.contact.damping_ratio), w.f64(o.contact.local_damping);
     w.u8(o.contact.scaling == StiffnessScaling::none ? 0 : 1), w.f64(o.contact.d_ref);
+    w.f64(o.cohesive.kn), w.f64(o.cohesive.kt), w.f64(o.cohesive.sigma_n);
+    w.f64(o.cohesive.sigma_t), w.f64(o.cohesive.g_n), w.f64(o.cohesive.g_t);
     w.i64(lists.steps);
     w.f64(lists.time);
     w.i64(lists.builds);
@@ -173,6 +175,13 @@ struct WorldCodec {
         w.i32(wall.sleeve_from);
       }
     }
+    w.u64(world.bonds().size());
+    for (const Bond& bond : world.bonds()) {
+      w.i32(bond.a), w.i32(bond.b), w.vec(bond.normal_in_a), w.f64(bond.factor);
+      w.u64(bond.points.size());
+      for (const BondPoint& p : bond.points)
+        w.vec(p.in_a), w.vec(p.in_b), w.f64(p.area), w.f64(p.state.damage);
+    }
     w.u64(world.contacts().size());
     for (const PairContact& c : world.contacts()) w.i32(c.i), w.i32(c.j), w.state(c.state);
     w.u64(world.wall_contacts().size());
@@ -189,7 +198,8 @@ struct WorldCodec {
     w.i64(lists.filters);
   }
 
-  // `version`: kCheckpointVersion, or 7 (bodies without a zone: zone 0).
+  // `version`: kCheckpointVersion, 8 (no bonds, no cohesive law) or 7 (also bodies without a
+  // zone: zone 0).
   static World read(Reader& r, std::uint32_t version) {
     WorldOptions o;
     o.gravity = r.vec();
@@ -204,6 +214,10 @@ struct WorldCodec {
     if (scaling > 1) r.fail("unknown stiffness scaling " + std::to_string(scaling));
     o.contact.scaling = scaling == 0 ? StiffnessScaling::none : StiffnessScaling::linear;
     o.contact.d_ref = r.f64();
+    if (version >= 9) {
+      o.cohesive.kn = r.f64(), o.cohesive.kt = r.f64(), o.cohesive.sigma_n = r.f64();
+      o.cohesive.sigma_t = r.f64(), o.cohesive.g_n = r.f64(), o.cohesive.g_t = r.f64();
+    }
     const std::int64_t steps = r.i64();
     const double time = r.f64();
     const std::int64_t builds = r.i64();
@@ -274,6 +288,27 @@ struct WorldCodec {
         }
       }
       world.add_wall(wall);
+    }
+
+    if (version >= 9) {
+      const std::size_t bonds = r.count(8 + 24 + 8 + 8, "bond");
+      for (std::size_t k = 0; k < bonds; ++k) {
+        Bond bond;
+        bond.a = r.i32(), bond.b = r.i32();
+        bond.normal_in_a = r.vec();
+        bond.factor = r.f64();
+        bond.points.resize(r.count(8 * 8, "bond point"));
+        for (BondPoint& p : bond.points) {
+          p.in_a = r.vec(), p.in_b = r.vec(), p.area = r.f64(), p.state.damage = r.f64();
+          if (!(p.state.damage >= 0.0 && p.state.damage <= 1.0))
+            r.fail("bond " + std::to_string(k) + " has a damage outside [0, 1]");
+        }
+        try {
+          world.add_bond(std::move(bond));
+        } catch (const InvalidInput& e) {
+          r.fail("bond " + std::to_string(k) + ": " + e.what());
+        }
+      }
     }
 
     const int n_spheres = world.sphere_count();
@@ -365,7 +400,7 @@ World load_checkpoint(const std::string& path, CheckpointInfo* info) {
   Reader header(bytes, end, path);
   for (std::size_t k = 0; k < sizeof kMagic; ++k) header.u8();
   const std::uint32_t version = header.u32();
-  if (version != kCheckpointVersion && version != 7)
+  if (version != kCheckpointVersion && version != 8 && version != 7)
     header.fail("unsupported version " + std::to_string(version) + " (expected " +
                 std::to_string(kCheckpointVersion) + ")");
   std::uint64_t stored = 0;

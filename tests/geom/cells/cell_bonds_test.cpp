@@ -39,7 +39,7 @@ TEST(CellBonds, OneBondPerSharedFaceWithExactIntegrationPoints) {
     EXPECT_GE(b.points.size(), 3u);
     double area = 0;
     Vec3 moment = Vec3::Zero();
-    for (const BondPoint& p : b.points) {
+    for (const FacePoint& p : b.points) {
       area += p.area;
       moment += p.area * p.position;
       EXPECT_NEAR(b.normal.dot(p.position - b.centroid), 0.0, 1e-12);  // on the face

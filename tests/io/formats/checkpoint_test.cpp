@@ -7,6 +7,7 @@
 #include "dem/run/run.h"
 #include "geom/errors.h"
 #include "geom/random.h"
+#include "tests/dem/bonded_column.h"
 #include "tests/dem/deposition_world.h"
 
 #include <gtest/gtest.h>
@@ -385,12 +386,53 @@ namespace clumpkit::dem {
 
 // The checkpoint seed of the fuzz corpus is of the current format, so fuzzing reaches the
 // decoding behind the version check (a format change must regenerate it).
+TEST(DemCheckpoint, BondsSurviveASaveAndLoadAndContinueBitIdentically) {
+  // Bonded cells pulled past the onset of damage (so points carry damage), saved, loaded and
+  // run on to failure: the same bits as the run that was never stopped.
+  World straight = test::bonded_column(0.05);
+  World first = test::bonded_column(0.05);
+  // Three interfaces opened to 1.2 onset openings each (δ_u is 1.78 of it).
+  const double onset = first.options().cohesive.sigma_n / first.options().cohesive.kn;
+  const int half = static_cast<int>(3 * 1.2 * onset / 0.05 / first.options().timestep);
+  first.step(half);
+  int partial = 0;  // points part-way down the softening branch
+  for (const Bond& b : first.bonds())
+    for (const BondPoint& p : b.points) partial += p.state.damage > 0.0 && p.state.damage < 1.0;
+  ASSERT_GT(partial, 0);
+  const std::string path = temp_path("bonds.ckpt");
+  save_checkpoint(path, first, {"crush", {}});
+  World resumed = load_checkpoint(path);
+  ASSERT_EQ(resumed.bonds().size(), first.bonds().size());
+  for (std::size_t k = 0; k < first.bonds().size(); ++k) {
+    const Bond &a = first.bonds()[k], &b = resumed.bonds()[k];
+    EXPECT_EQ(a.a, b.a);
+    EXPECT_EQ(a.b, b.b);
+    EXPECT_EQ(a.factor, b.factor);
+    ASSERT_EQ(a.points.size(), b.points.size());
+    for (std::size_t q = 0; q < a.points.size(); ++q)
+      EXPECT_EQ(a.points[q].state.damage, b.points[q].state.damage);
+  }
+  EXPECT_EQ(resumed.options().cohesive.g_t, first.options().cohesive.g_t);
+  straight.step(2 * half);
+  resumed.step(half);
+  expect_identical(straight, resumed);
+  std::filesystem::remove(path);
+}
+
 TEST(DemCheckpoint, FuzzCorpusSeedIsOfTheCurrentFormat) {
   CheckpointInfo info;
   const std::string corpus = std::string(CLUMPKIT_SOURCE_DIR) + "/tests/fuzz/corpus/checkpoint/";
-  const World w = load_checkpoint(corpus + "sorted-servo-v8.ckpt", &info);
-  EXPECT_EQ(read_bytes(corpus + "sorted-servo-v8.ckpt").substr(12, 4),
-            std::string("\x08\0\0\0", 4));
+  const World w = load_checkpoint(corpus + "sorted-servo-v9.ckpt", &info);
+  EXPECT_EQ(read_bytes(corpus + "sorted-servo-v9.ckpt").substr(12, 4),
+            std::string("\x09\0\0\0", 4));
+  // The bonded seed: bonds and their damage come back.
+  const World bonded = load_checkpoint(corpus + "bonded-cells-v9.ckpt");
+  EXPECT_EQ(bonded.bonds().size(), 28u);
+  // Version 8, the same state without the cohesive law and bonds, still loads.
+  const World w8 = load_checkpoint(corpus + "sorted-servo-v8.ckpt");
+  ASSERT_EQ(w8.bodies().size(), w.bodies().size());
+  for (std::size_t k = 0; k < w.bodies().size(); ++k)
+    EXPECT_EQ(w8.bodies()[k].position, w.bodies()[k].position);
   EXPECT_GT(w.bodies().size(), 0u);
   EXPECT_FALSE(w.walls().empty());
   EXPECT_EQ(info.state.at("phase"), "2");

@@ -1,0 +1,56 @@
+// Test fixture: a 2 × 2 × 4 column of bonded cubic cells (geom/cells) with driven end layers,
+// shared by the bond tests of the World and of checkpoints.
+#pragma once
+
+#include "dem/core/timestep.h"
+#include "dem/core/world.h"
+#include "geom/cells/cell_bonds.h"
+#include "geom/shapes/primitives.h"
+
+namespace clumpkit::dem::test {
+
+constexpr double kCellEdge = 0.0065;  // m: Hu et al. 2023's cell size
+
+// A 2 × 2 × 4 column of cubic cells of edge a (Voronoi cells of grid seeds in a box), each body
+// a sphere inscribed in its cube with the cube's mass and moments, bonded on every shared face.
+// The bottom and top layers are driven (huge mass, no rotation): the top at `velocity` along z.
+inline World bonded_column(double velocity) {
+  const double a = kCellEdge, rho = 2650;
+  std::vector<Vec3> seeds;
+  for (int k = 0; k < 4; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) seeds.emplace_back((i - 0.5) * a, (j - 0.5) * a, (k - 1.5) * a);
+  const Tessellation cells = voronoi_cells(make_box(Vec3(2 * a, 2 * a, 4 * a)), seeds);
+  Rng rng(1);
+  const std::vector<CellBond> faces = cell_bonds(cells, constant(1.0), rng);
+  WorldOptions o;
+  o.gravity = Vec3::Zero();
+  World w(o);
+  for (std::size_t c = 0; c < cells.cells.size(); ++c) {
+    Body b;
+    b.spheres = {Sphere{Vec3::Zero(), 0.5 * a}};
+    b.volume = a * a * a;
+    b.mass = rho * b.volume;
+    b.moments = Vec3::Constant(b.mass * a * a / 6.0);
+    b.position = cells.cells[c].mass.centroid;
+    const int layer = static_cast<int>(c) / 4;
+    if (layer == 0 || layer == 3) {
+      b.mass *= 1e12;
+      b.moments *= 1e12;
+      b.rotation_locked = true;
+      if (layer == 3) b.velocity = Vec3(0, 0, velocity);
+    }
+    w.add_body(b);
+  }
+  for (const CellBond& f : faces) {
+    std::vector<Vec3> points;
+    std::vector<double> areas;
+    for (const FacePoint& p : f.points) points.push_back(p.position), areas.push_back(p.area);
+    w.add_bond(make_bond(w.bodies()[f.a], w.bodies()[f.b], f.a, f.b, f.normal, points, areas,
+                         f.strength_factor));
+  }
+  w.options().timestep = 0.2 * critical_timestep(w);
+  return w;
+}
+
+}  // namespace clumpkit::dem::test
