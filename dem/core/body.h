@@ -38,6 +38,10 @@ struct Body {
   /// 0: World::add_body sets the sphere's diameter for a plain sphere, else (6·volume/π)^(1/3)
   /// (left 0 for a clump without a volume, which only a size-scaled law refuses).
   double diameter = 0.0;
+  /// Corners of a convex polyhedron in the body frame (m), for a body that meets plane walls
+  /// with its corners (a Voronoi cell of a crushable particle between platens); empty for the
+  /// rest, whose spheres meet every wall. Its spheres still meet other bodies and other walls.
+  std::vector<Vec3> vertices;
   /// Zone of a zoned specimen (dem/specimen/zones.h): the index of its region in the layout; 0
   /// in a specimen without zones. Carried through checkpoints and specimen files.
   int zone = 0;

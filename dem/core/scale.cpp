@@ -21,8 +21,14 @@ World scaled_world(const World& world, double lambda) {
     o.contact.kn *= lambda;
     o.contact.ks *= lambda;
   }
+  o.vertex_stiffness *= lambda;  // a corner's spring, like a constant kn
+  if (!world.bonds().empty())
+    throw InvalidInput(
+        "scaled copy: a world with bonds has no similar copy (the cohesive law's "
+        "strengths and energies do not scale with lengths)");
   World out(o);
   for (Body b : world.bodies()) {
+    for (Vec3& v : b.vertices) v *= lambda;
     for (Sphere& s : b.spheres) {
       s.center *= lambda;
       s.radius *= lambda;
@@ -61,6 +67,9 @@ World scaled_world(const World& world, double lambda) {
   for (Vec3& x : lists.filter_positions) x *= lambda;
   lists.near_limit *= l2;
   out.restore(std::move(lists), std::move(contacts), std::move(wall_contacts));
+  std::vector<VertexContact> corners = world.vertex_contacts();
+  for (VertexContact& c : corners) scale_state(c.state);
+  out.restore_vertex_contacts(std::move(corners));
   return out;
 }
 

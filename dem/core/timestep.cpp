@@ -29,6 +29,10 @@ double body_critical_timestep(const Body& body, double kn, double ks) {
       off[a] = 0.0;
       arm = std::max(arm, off.norm() + s.radius);
     }
+    for (Vec3 off : body.vertices) {  // a polyhedral body's corners reach further
+      off[a] = 0.0;
+      arm = std::max(arm, off.norm());
+    }
     dt = std::min(dt, critical_timestep(body.moments[a], k * arm * arm));
   }
   return dt;
@@ -53,7 +57,10 @@ double critical_timestep(const World& world) {
   for (std::size_t i = 0; i < world.bodies().size(); ++i) {
     const Body& b = world.bodies()[i];
     const double f = pair_stiffness_factor(p, b.diameter, b.diameter);
-    dt = std::min(dt, body_critical_timestep(b, p.kn * f + bonded[i], p.ks * f + bonded[i]));
+    // A polyhedral body on a platen: two corners' springs (an edge) at once.
+    const double corners = b.vertices.empty() ? 0.0 : 2.0 * world.options().vertex_stiffness;
+    dt = std::min(dt, body_critical_timestep(b, p.kn * f + bonded[i] + corners,
+                                             p.ks * f + bonded[i] + corners));
   }
   return dt;
 }

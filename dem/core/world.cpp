@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <tuple>
 
 namespace clumpkit::dem {
 
@@ -167,6 +168,21 @@ int World::add_bond(Bond bond) {
   dirty_ = true;
   sc.pairs_valid_ = false;
   return static_cast<int>(bonds_.size()) - 1;
+}
+
+void World::restore_vertex_contacts(std::vector<VertexContact> contacts) {
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const VertexContact& c = contacts[k];
+    if (c.body < 0 || c.body >= static_cast<int>(bodies_.size()) || c.vertex < 0 ||
+        c.vertex >= static_cast<int>(bodies_[c.body].vertices.size()) || c.wall < 0 ||
+        c.wall >= static_cast<int>(walls_.size()))
+      throw InvalidInput("DEM world: corner contact " + std::to_string(k) +
+                         " names a body, corner or wall the world does not have");
+    if (k > 0 && std::make_tuple(contacts[k - 1].body, contacts[k - 1].vertex,
+                                 contacts[k - 1].wall) >= std::make_tuple(c.body, c.vertex, c.wall))
+      throw InvalidInput("DEM world: corner contacts out of order at " + std::to_string(k));
+  }
+  vertex_contacts_ = std::move(contacts);
 }
 
 void World::update_bonded() {

@@ -59,6 +59,10 @@ struct WorldOptions {
   ContactParams contact;
   /// The law of every bond (dem/core/bond.h); unused in a world without bonds.
   CohesiveParams cohesive;
+  /// Normal and shear stiffness (N/m) of one corner of a polyhedral body on a plane wall
+  /// (Body::vertices); friction is the wall's, else the contact law's; the dashpot is the
+  /// contact law's damping ratio. Unused without such bodies.
+  double vertex_stiffness = 1e8;
 };
 
 /// A contact between sphere `i` and sphere `j` (global sphere indices, i < j, different bodies);
@@ -73,6 +77,15 @@ struct PairContact {
 /// sphere, which receives state.force().
 struct WallContact {
   int sphere = 0;
+  int wall = 0;
+  ContactState state;
+};
+
+/// A contact between corner `vertex` of body `body` (Body::vertices) and plane wall `wall`; the
+/// normal is the wall's, and the body receives state.force() at state.point.
+struct VertexContact {
+  int body = 0;
+  int vertex = 0;
   int wall = 0;
   ContactState state;
 };
@@ -131,6 +144,11 @@ class World {
 
   const std::vector<PairContact>& contacts() const { return contacts_; }
   const std::vector<WallContact>& wall_contacts() const { return wall_contacts_; }
+  /// Corners of polyhedral bodies on plane walls, sorted (body, vertex, wall).
+  const std::vector<VertexContact>& vertex_contacts() const { return vertex_contacts_; }
+  /// Restores vertex contacts saved from vertex_contacts() (after restore()). Throws
+  /// InvalidInput for bodies, corners or walls the world does not have, or a list out of order.
+  void restore_vertex_contacts(std::vector<VertexContact> contacts);
   /// Body owning global sphere `sphere` (spheres are numbered body by body, in insertion order).
   int sphere_body(int sphere) const { return sphere_body_[sphere]; }
   int sphere_count() const { return static_cast<int>(sphere_body_.size()); }
@@ -209,8 +227,10 @@ class World {
   std::vector<Bond> bonds_;
   std::vector<std::pair<int, int>> bonded_;  // sorted (a, b), a < b, of the bonds that hold
   void update_bonded();
-  std::vector<PairContact> contacts_;       // sorted (i, j)
-  std::vector<WallContact> wall_contacts_;  // sorted (sphere, wall)
+  std::vector<PairContact> contacts_;           // sorted (i, j)
+  std::vector<WallContact> wall_contacts_;      // sorted (sphere, wall)
+  std::vector<VertexContact> vertex_contacts_;  // sorted (body, vertex, wall)
+  void vertex_wall_contacts();
   double time_ = 0.0;
   std::int64_t steps_ = 0;
   std::int64_t builds_ = 0;

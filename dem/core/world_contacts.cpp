@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <tuple>
 
 namespace clumpkit::dem {
 
@@ -150,6 +151,8 @@ void World::build_wall_candidates() {
   const double skin = options_.skin;
   auto candidate = [&](std::size_t s, std::size_t w) {
     const Wall& wall = walls_[w];
+    // A polyhedral body meets plane walls with its corners (vertex_wall_contacts).
+    if (wall.kind == Wall::Kind::plane && !bodies_[sphere_body_[s]].vertices.empty()) return false;
     const Vec3& x = sphere_at_build_[s];
     const double r = sphere_radius_[s];
     const double slack = 1e-9 * (skin + r) + 1e-12 * (x.norm() + wall.point.norm() + wall.radius);
@@ -201,6 +204,52 @@ void World::export_walls() {
     c.wall = sc.wall_cand_[k].second;
     c.state = sc.wall_slot_state_[k];
   }
+}
+
+// Corners of polyhedral bodies below plane walls: a linear spring-dashpot contact with Coulomb
+// friction per corner, its history carried from the last step through vertex_contacts_ (sorted
+// (body, vertex, wall), merged in order). Serial: few bodies have corners.
+void World::vertex_wall_contacts() {
+  StepCache& sc = cache_.get();
+  bool any = false;
+  for (std::uint8_t h : sc.body_has_vertices_) any = any || h;
+  if (!any) return;
+  const double dt = options_.timestep;
+  std::vector<VertexContact> next;
+  std::size_t old = 0;
+  auto key = [](const VertexContact& c) { return std::make_tuple(c.body, c.vertex, c.wall); };
+  for (std::size_t k = 0; k < bodies_.size(); ++k) {
+    if (!sc.body_has_vertices_[k]) continue;
+    Wrench total{Vec3::Zero(), Vec3::Zero()};
+    const Kinematics& b = sc.kinematics_[k];
+    const Eigen::Quaterniond& q = sc.rotation_[k].orientation;
+    const std::vector<Vec3>& corners = bodies_[k].vertices;
+    for (std::size_t v = 0; v < corners.size(); ++v) {
+      const Vec3 x = b.position + q * corners[v];
+      for (std::size_t w = 0; w < walls_.size(); ++w) {
+        const Wall& wall = walls_[w];
+        if (wall.kind != Wall::Kind::plane) continue;
+        const double d = wall.normal.dot(x - wall.point);
+        if (!(d < 0.0)) continue;
+        VertexContact c{static_cast<int>(k), static_cast<int>(v), static_cast<int>(w), {}};
+        while (old < vertex_contacts_.size() && key(vertex_contacts_[old]) < key(c)) ++old;
+        if (old < vertex_contacts_.size() && key(vertex_contacts_[old]) == key(c))
+          c.state = vertex_contacts_[old].state;
+        ContactParams p = options_.contact;
+        p.scaling = StiffnessScaling::none;
+        p.kn = p.ks = options_.vertex_stiffness;
+        if (wall.friction >= 0.0) p.friction = wall.friction;
+        const Vec3 vb = b.velocity + b.angular_velocity.cross(x - b.position);
+        update_contact(c.state, wall.normal, -d, x, vb - wall.velocity, b.mass, p, dt);
+        const Vec3 f = c.state.force();
+        total.force += f;
+        total.torque += (x - b.position).cross(f);
+        next.push_back(c);
+      }
+    }
+    sc.vertex_wrench_[k] = total;
+  }
+  vertex_contacts_ = std::move(next);
 }
 
 void World::compute_forces() {
@@ -257,6 +306,8 @@ void World::compute_forces() {
     if (wall.friction >= 0.0) q.friction = wall.friction;
     update_contact(state, hit.normal, hit.overlap, hit.point, vb - vw, b.mass, q, dt);
   });
+
+  vertex_wall_contacts();
 
   // Bonds, one wrench slot per bond. One that stops holding lets its bodies' spheres touch from
   // the next step: the neighbour lists are built again (dirty_ makes integrate() report a move).

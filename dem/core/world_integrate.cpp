@@ -31,6 +31,9 @@ void World::load_bodies() {
   sc.rotation_.resize(nb);
   sc.body_touched_.assign(nb, 0);
   sc.body_diameter_.resize(nb);
+  sc.body_has_vertices_.assign(nb, 0);
+  sc.vertex_wrench_.assign(nb, Wrench{Vec3::Zero(), Vec3::Zero()});
+  for (std::size_t k = 0; k < nb; ++k) sc.body_has_vertices_[k] = !bodies_[k].vertices.empty();
   // Each body's bonds in index order (counting sort), and which bodies have any.
   sc.body_bond_begin_.assign(nb + 1, 0);
   for (const Bond& bond : bonds_)
@@ -78,8 +81,8 @@ void World::store_bodies() {
 }
 
 // Net wrench on body k: gravity, then its pair contacts in (i, j) order, then its wall contacts
-// in (sphere, wall) order, then its bonds in index order — a fixed order, whatever the thread count
-// (see body_touched_).
+// in (sphere, wall) order, then its corners on walls, then its bonds in index order — a fixed
+// order, whatever the thread count (see body_touched_).
 static inline Wrench sum_wrench(const StepCache& sc, const Vec3& gravity, std::size_t k) {
   const Kinematics& b = sc.kinematics_[k];
   Vec3 force = b.mass * gravity;
@@ -100,6 +103,10 @@ static inline Wrench sum_wrench(const StepCache& sc, const Vec3& gravity, std::s
     const Vec3 f = s.force();
     force += f;
     torque += (s.point - b.position).cross(f);
+  }
+  if (sc.body_has_vertices_[k]) {
+    force += sc.vertex_wrench_[k].force;
+    torque += sc.vertex_wrench_[k].torque;
   }
   for (std::size_t e = sc.body_bond_begin_[k]; e < sc.body_bond_begin_[k + 1]; ++e) {
     const std::uint64_t item = sc.body_bond_items_[e];

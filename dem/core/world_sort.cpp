@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <tuple>
 #include <utility>
 
 namespace clumpkit::dem {
@@ -91,12 +92,19 @@ bool World::sort_bodies() {
     return std::make_pair(a.i, a.j) < std::make_pair(b.i, b.j);
   });
   for (WallContact& c : wall_contacts_) c.sphere = sphere_map[c.sphere];
-  // Bonds keep their order and sides (a, b): only the body indices change.
-  if (!bonds_.empty()) {
+  // Bonds keep their order and sides (a, b): only the body indices change; corner contacts
+  // are renumbered and sorted again.
+  if (!bonds_.empty() || !vertex_contacts_.empty()) {
     std::vector<int> body_map(nb);  // old body -> new body
     for (std::size_t k = 0; k < nb; ++k) body_map[order[k]] = static_cast<int>(k);
     for (Bond& bond : bonds_) bond.a = body_map[bond.a], bond.b = body_map[bond.b];
     update_bonded();
+    for (VertexContact& c : vertex_contacts_) c.body = body_map[c.body];
+    std::sort(vertex_contacts_.begin(), vertex_contacts_.end(),
+              [](const VertexContact& a, const VertexContact& b) {
+                return std::make_tuple(a.body, a.vertex, a.wall) <
+                       std::make_tuple(b.body, b.vertex, b.wall);
+              });
   }
   std::sort(wall_contacts_.begin(), wall_contacts_.end(),
             [](const WallContact& a, const WallContact& b) {

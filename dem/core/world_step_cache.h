@@ -100,6 +100,10 @@ struct StepCache {
   // Bonds: per bond its wrench of this step; per body its bonds in index order (range in
   // body_bond_items_, each 2·bond + 1 when the body is the bond's b), built by load_bodies.
   std::vector<BondWrench> bond_wrench_;
+  // Polyhedral bodies: which bodies have corners (by load_bodies), and per body the wrench of
+  // its corner contacts of this step, summed in (vertex, wall) order.
+  std::vector<std::uint8_t> body_has_vertices_;
+  std::vector<Wrench> vertex_wrench_;
   std::vector<std::size_t> body_bond_begin_;
   std::vector<std::uint64_t> body_bond_items_;
   std::vector<Wall> walls_at_build_;       // walls when wall_cand_ was built

@@ -143,6 +143,7 @@ struct WorldCodec {
     w.u8(o.contact.scaling == StiffnessScaling::none ? 0 : 1), w.f64(o.contact.d_ref);
     w.f64(o.cohesive.kn), w.f64(o.cohesive.kt), w.f64(o.cohesive.sigma_n);
     w.f64(o.cohesive.sigma_t), w.f64(o.cohesive.g_n), w.f64(o.cohesive.g_t);
+    w.f64(o.vertex_stiffness);
     w.i64(lists.steps);
     w.f64(lists.time);
     w.i64(lists.builds);
@@ -163,6 +164,8 @@ struct WorldCodec {
       w.f64(b.scale);
       w.f64(b.diameter);
       w.i32(b.zone);
+      w.u64(b.vertices.size());
+      for (const Vec3& v : b.vertices) w.vec(v);
     }
     w.u64(world.walls().size());
     for (const Wall& wall : world.walls()) {
@@ -187,6 +190,9 @@ struct WorldCodec {
     w.u64(world.wall_contacts().size());
     for (const WallContact& c : world.wall_contacts())
       w.i32(c.sphere), w.i32(c.wall), w.state(c.state);
+    w.u64(world.vertex_contacts().size());
+    for (const VertexContact& c : world.vertex_contacts())
+      w.i32(c.body), w.i32(c.vertex), w.i32(c.wall), w.state(c.state);
     w.u64(lists.build_positions.size());
     for (const Vec3& x : lists.build_positions) w.vec(x);
     w.u64(lists.skin_pairs.size());
@@ -217,6 +223,7 @@ struct WorldCodec {
     if (version >= 9) {
       o.cohesive.kn = r.f64(), o.cohesive.kt = r.f64(), o.cohesive.sigma_n = r.f64();
       o.cohesive.sigma_t = r.f64(), o.cohesive.g_n = r.f64(), o.cohesive.g_t = r.f64();
+      o.vertex_stiffness = r.f64();
     }
     const std::int64_t steps = r.i64();
     const double time = r.f64();
@@ -257,6 +264,10 @@ struct WorldCodec {
       b.scale = r.f64();
       b.diameter = r.f64();
       if (version >= 8) b.zone = r.i32();
+      if (version >= 9) {
+        b.vertices.resize(r.count(24, "body corner"));
+        for (Vec3& v : b.vertices) v = r.vec();
+      }
       const Eigen::Quaterniond q = b.orientation;
       try {
         world.add_body(std::move(b));
@@ -337,6 +348,15 @@ struct WorldCodec {
       c.state = r.state();
     }
 
+    std::vector<VertexContact> corner_list;
+    if (version >= 9) {
+      corner_list.resize(r.count(12 + kStateBytes, "corner contact"));
+      for (VertexContact& c : corner_list) {
+        c.body = r.i32(), c.vertex = r.i32(), c.wall = r.i32();
+        c.state = r.state();
+      }
+    }
+
     // Reference positions of a neighbour list: none (never built) or one per sphere.
     auto read_positions = [&](std::vector<Vec3>& out, const std::string& list) {
       const std::size_t count = r.count(24, (list + " position").c_str());
@@ -364,6 +384,7 @@ struct WorldCodec {
     lists.stale = dirty == 1;
     try {
       world.restore(std::move(lists), std::move(pair_contacts), std::move(wall_list));
+      world.restore_vertex_contacts(std::move(corner_list));
     } catch (const InvalidInput& e) {
       r.fail(e.what());
     }

@@ -12,9 +12,10 @@ namespace clumpkit {
 /// Current checkpoint format version (bumped on any layout change, or a change in what a
 /// stored word means: 4 = run_until's height reference is the one after the window test;
 /// 6 = the sort interval, WorldOptions::sort_every; 7 = the stage state as key/value text; 8 = each
-/// body's zone after its diameter; 9 = the cohesive law after the contact parameters and the
-/// bonds after the walls). Versions 8 (no bonds) and 7 (also every body in zone 0) are still
-/// read.
+/// body's zone after its diameter; 9 = the cohesive law and the corner stiffness after the
+/// contact parameters, each body's corners after its zone, the bonds after the walls, the corner
+/// contacts after the wall contacts). Versions 8 (no bonds) and 7 (also every body in zone 0) are
+/// still read.
 inline constexpr std::uint32_t kCheckpointVersion = 9;
 
 /// Writes `world` and `info` to `path`: magic "CLUMPKITCKPT", version, the stage and its state
@@ -23,12 +24,11 @@ inline constexpr std::uint32_t kCheckpointVersion = 9;
 /// integers and raw IEEE-754 doubles — options (gravity, timestep, skin, near-skin fraction,
 /// sort interval, contact parameters, cohesive law), step count, time, every body (spheres, mass,
 /// moments, position, velocity, orientation, angular velocity, force, torque, rotation lock,
-/// volume, kind, template id, scale, diameter, zone), walls (moving planes with their current
-/// point), bonds (bodies, normal, strength factor, points in both frames with area and damage),
-/// pair and wall contacts with their full state (shear history
-/// included), the neighbour lists (build positions and pairs, filter positions and limit) and a
-/// trailing FNV-1a 64 checksum.
-/// Written atomically (write_file_atomically), so a reader never sees a partial file.
+/// volume, kind, template id, scale, diameter, zone, corners), walls (moving planes with their
+/// current point), bonds (bodies, normal, strength factor, points in both frames with area and
+/// damage), pair, wall and corner contacts with their full state (shear history included), the
+/// neighbour lists (build positions and pairs, filter positions and limit) and a trailing FNV-1a 64
+/// checksum. Written atomically (write_file_atomically), so a reader never sees a partial file.
 /// Throws IoError when the file cannot be written.
 void save_checkpoint(const std::string& path, const dem::World& world,
                      const dem::CheckpointInfo& info = {});

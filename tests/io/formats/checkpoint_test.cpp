@@ -419,6 +419,45 @@ TEST(DemCheckpoint, BondsSurviveASaveAndLoadAndContinueBitIdentically) {
   std::filesystem::remove(path);
 }
 
+TEST(DemCheckpoint, CornerContactsSurviveASaveAndLoad) {
+  // A cube with corners, tilted, pressed and sliding on a platen: the corner contacts' shear
+  // history survives the checkpoint, and the run continues bit for bit.
+  auto make = [] {
+    WorldOptions o;
+    o.gravity = Vec3(0, 0, -9.81);
+    o.timestep = 1e-7;
+    World w(o);
+    Body b = make_sphere_body(Vec3::Zero(), 0.005, 2650);
+    b.mass *= 1e6;  // heavy: it ploughs on into the platen, its corners loaded all along
+    b.moments = Vec3::Constant(b.mass * 0.01 * 0.01 / 6.0);
+    for (int i = 0; i < 8; ++i)
+      b.vertices.emplace_back(i & 1 ? 0.005 : -0.005, i & 2 ? 0.005 : -0.005,
+                              i & 4 ? 0.005 : -0.005);
+    b.orientation = Eigen::AngleAxisd(0.3, Vec3::UnitX()) * Eigen::AngleAxisd(0.2, Vec3::UnitY());
+    double lowest = 0;
+    for (const Vec3& v : b.vertices) lowest = std::min(lowest, (b.orientation * v).z());
+    b.position = Vec3(0, 0, -lowest - 1e-6);  // one corner 1 µm into the platen
+    b.velocity = Vec3(0.05, 0, -0.05);
+    w.add_body(b);
+    w.add_wall(Wall::plane(Vec3::Zero(), Vec3::UnitZ()));
+    return w;
+  };
+  World straight = make(), first = make();
+  straight.step(4000);
+  first.step(2000);
+  ASSERT_FALSE(first.vertex_contacts().empty());
+  const std::string path = temp_path("corners.ckpt");
+  save_checkpoint(path, first, {"crush", {}});
+  World resumed = load_checkpoint(path);
+  ASSERT_EQ(resumed.vertex_contacts().size(), first.vertex_contacts().size());
+  EXPECT_EQ(resumed.vertex_contacts()[0].state.shear, first.vertex_contacts()[0].state.shear);
+  EXPECT_EQ(resumed.bodies()[0].vertices, first.bodies()[0].vertices);
+  resumed.step(2000);
+  expect_identical(straight, resumed);
+  EXPECT_EQ(resumed.vertex_contacts().size(), straight.vertex_contacts().size());
+  std::filesystem::remove(path);
+}
+
 TEST(DemCheckpoint, FuzzCorpusSeedIsOfTheCurrentFormat) {
   CheckpointInfo info;
   const std::string corpus = std::string(CLUMPKIT_SOURCE_DIR) + "/tests/fuzz/corpus/checkpoint/";
