@@ -1,0 +1,62 @@
+#include "dem/lab/crushable.h"
+
+#include "geom/errors.h"
+#include "geom/format.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <limits>
+
+namespace clumpkit::dem {
+
+Body cell_body(const Cell& cell, double density) {
+  if (!(density > 0.0) || !std::isfinite(density))
+    throw InvalidInput("crushable particle: density must be positive, got " +
+                       format_number(density));
+  if (!(cell.mass.volume > 0.0)) throw InvalidInput("crushable particle: a cell has no volume");
+  Eigen::SelfAdjointEigenSolver<Mat3> es(cell.mass.inertia);
+  Mat3 axes = es.eigenvectors();  // ascending moments
+  for (int k = 0; k < 3; ++k) {   // a sign rule, so the frame does not depend on the solver
+    int big = 0;
+    for (int q = 1; q < 3; ++q)
+      if (std::abs(axes(q, k)) > std::abs(axes(big, k))) big = q;
+    if (axes(big, k) < 0) axes.col(k) *= -1.0;
+  }
+  if (axes.determinant() < 0) axes.col(2) *= -1.0;
+  const Vec3& c = cell.mass.centroid;
+  Body b;
+  b.kind = BodyKind::rock;
+  b.volume = cell.mass.volume;
+  b.mass = density * cell.mass.volume;
+  b.moments = density * es.eigenvalues();
+  b.position = c;
+  b.orientation = Eigen::Quaterniond(axes).normalized();
+  for (const Vec3& v : cell.vertices) b.vertices.push_back(axes.transpose() * (v - c));
+  // The largest sphere about the centroid inside the cell: its distance to the nearest face.
+  double r = std::numeric_limits<double>::infinity();
+  for (const CellFace& f : cell.faces) {
+    const PolygonProperties p = polygon_properties(cell.vertices, f.vertices);
+    if (p.area > 0.0) r = std::min(r, p.normal.dot(p.centroid - c));
+  }
+  if (!(r > 0.0) || !std::isfinite(r))
+    throw InvalidInput("crushable particle: a cell's centroid is not inside it");
+  b.spheres = {Sphere{Vec3::Zero(), r}};
+  return b;
+}
+
+World crushable_particle(const Tessellation& cells, const std::vector<CellBond>& bonds,
+                         double density, const WorldOptions& options) {
+  World w(options);
+  for (const Cell& cell : cells.cells) w.add_body(cell_body(cell, density));
+  for (const CellBond& f : bonds) {
+    std::vector<Vec3> points;
+    std::vector<double> areas;
+    for (const FacePoint& p : f.points) points.push_back(p.position), areas.push_back(p.area);
+    w.add_bond(make_bond(w.bodies()[f.a], w.bodies()[f.b], f.a, f.b, f.normal, points, areas,
+                         f.strength_factor));
+  }
+  return w;
+}
+
+}  // namespace clumpkit::dem

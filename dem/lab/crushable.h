@@ -1,0 +1,29 @@
+// A crushable particle in the DEM (Hu et al. 2023): each Voronoi cell a rigid body with its exact
+// mass properties, its corners for the platens and a sphere inside it for contacts between
+// fragments, bonded to its neighbours on their shared faces.
+#pragma once
+
+#include "dem/core/world.h"
+#include "geom/cells/cell_bonds.h"
+#include "geom/cells/voronoi_cells.h"
+
+#include <vector>
+
+namespace clumpkit::dem {
+
+/// The body of one cell at `density` (kg/m³), in its principal frame (centroid at the origin,
+/// inertia axes along x, y, z with ascending moments, right-handed), placed where the cell is:
+/// mass ρ·V, principal moments ρ·I, its corners (Body::vertices), and one sphere: the largest
+/// centred on the centroid inside the cell (radius the centroid's distance to the nearest face
+/// plane), so that two cells' spheres never overlap while the cells do not. Lengths in the
+/// cell's units (metres for the DEM). Throws InvalidInput for a density that is not positive, or
+/// a cell without volume.
+Body cell_body(const Cell& cell, double density);
+
+/// A world holding the particle: one body per cell (cell_body, in cell order) and one bond per
+/// shared face (make_bond with the face's integration points and strength factor), with the
+/// given options (their cohesive law). Throws InvalidInput from add_body and add_bond.
+World crushable_particle(const Tessellation& cells, const std::vector<CellBond>& bonds,
+                         double density, const WorldOptions& options);
+
+}  // namespace clumpkit::dem

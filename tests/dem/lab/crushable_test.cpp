@@ -1,0 +1,90 @@
+// A crushable particle in the World: its cells' bodies carry the parent's exact mass and place
+// their corners where the cells are; moved as one rigid piece it carries no bond force.
+#include "dem/lab/crushable.h"
+
+#include "dem/core/timestep.h"
+#include "geom/errors.h"
+#include "geom/shapes/polyhedron.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace clumpkit;
+using namespace clumpkit::dem;
+
+namespace {
+
+struct Particle {
+  Tessellation cells;
+  std::vector<CellBond> bonds;
+};
+
+Particle particle() {
+  PolyhedronParams pp;
+  pp.diameter = 0.0275;
+  Rng shape(3);
+  const Mesh parent = make_polyhedron(pp, shape);
+  CellOptions o;
+  o.cell_size = 0.0065;
+  Rng seeds(4), factors(5);
+  Particle p;
+  p.cells = voronoi_cells(parent, o, seeds);
+  p.bonds = cell_bonds(p.cells, default_strength_factor(), factors);
+  return p;
+}
+
+}  // namespace
+
+TEST(CrushableParticle, CellBodiesCarryTheExactMassAndSitWhereTheCellsAre) {
+  const Particle p = particle();
+  WorldOptions o;
+  o.gravity = Vec3::Zero();
+  const World w = crushable_particle(p.cells, p.bonds, 2650, o);
+  ASSERT_EQ(w.bodies().size(), p.cells.cells.size());
+  ASSERT_EQ(w.bonds().size(), p.bonds.size());
+  double mass = 0;
+  Vec3 moment = Vec3::Zero();
+  for (std::size_t k = 0; k < w.bodies().size(); ++k) {
+    const Body& b = w.bodies()[k];
+    const Cell& c = p.cells.cells[k];
+    mass += b.mass;
+    moment += b.mass * b.position;
+    // Corners back in the parent's frame, and the inertia tensor back from the principal one.
+    ASSERT_EQ(b.vertices.size(), c.vertices.size());
+    for (std::size_t v = 0; v < c.vertices.size(); ++v)
+      EXPECT_LT((b.position + b.orientation * b.vertices[v] - c.vertices[v]).norm(), 1e-15);
+    const Mat3 r = b.orientation.toRotationMatrix();
+    const Mat3 inertia = r * b.moments.asDiagonal() * r.transpose();
+    EXPECT_LT((inertia - 2650 * c.mass.inertia).norm(), 1e-9 * (2650 * c.mass.inertia).norm());
+    EXPECT_LE(b.moments.x(), b.moments.y());
+    EXPECT_LE(b.moments.y(), b.moments.z());
+    // The sphere lies inside its cell: below every face plane.
+    const double radius = b.spheres[0].radius;
+    for (const CellFace& f : c.faces) {
+      const PolygonProperties pp = polygon_properties(c.vertices, f.vertices);
+      if (pp.area > 0) {
+        EXPECT_GE(pp.normal.dot(pp.centroid - b.position), radius * (1 - 1e-12));
+      }
+    }
+  }
+  EXPECT_NEAR(mass / (2650 * p.cells.parent_volume), 1.0, 1e-12);
+  EXPECT_THROW(cell_body(p.cells.cells[0], -1.0), InvalidInput);
+}
+
+TEST(CrushableParticle, MovedAsOneRigidPieceItCarriesNoBondForce) {
+  const Particle p = particle();
+  WorldOptions o;
+  o.gravity = Vec3::Zero();
+  World w = crushable_particle(p.cells, p.bonds, 2650, o);
+  w.options().timestep = 0.2 * critical_timestep(w);
+  for (Body& b : w.bodies()) b.velocity = Vec3(0.3, -0.2, 0.1);
+  w.step(2000);
+  const double scale = 1e-9 * w.options().cohesive.sigma_n * 0.0065 * 0.0065;
+  for (const Body& b : w.bodies()) {
+    EXPECT_LT(b.force.norm(), scale);
+    EXPECT_LT(b.torque.norm(), scale * 0.0065);
+  }
+  EXPECT_TRUE(w.contacts().empty());
+  for (const Bond& b : w.bonds()) EXPECT_EQ(b.points[0].state.damage, 0.0);
+}
