@@ -163,8 +163,12 @@ int World::add_bond(Bond bond) {
     if (!(p.area >= 0.0) || !std::isfinite(p.area) || !p.in_a.allFinite() || !p.in_b.allFinite())
       throw InvalidInput("DEM world: a bond point needs a finite position and area ≥ 0");
   validate(options_.cohesive, bond.factor);
+  if (bond.holds()) {  // one more pair in the sorted set (update_bonded for all would be O(n²))
+    const std::pair<int, int> pair(std::min(bond.a, bond.b), std::max(bond.a, bond.b));
+    const auto at = std::lower_bound(bonded_.begin(), bonded_.end(), pair);
+    if (at == bonded_.end() || *at != pair) bonded_.insert(at, pair);
+  }
   bonds_.push_back(std::move(bond));
-  update_bonded();
   dirty_ = true;
   sc.pairs_valid_ = false;
   return static_cast<int>(bonds_.size()) - 1;

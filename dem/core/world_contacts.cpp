@@ -211,10 +211,11 @@ void World::export_walls() {
 // (body, vertex, wall), merged in order). Serial: few bodies have corners.
 void World::vertex_wall_contacts() {
   StepCache& sc = cache_.get();
-  bool any = false;
-  for (std::uint8_t h : sc.body_has_vertices_) any = any || h;
-  if (!any) return;
+  if (!sc.any_vertices_) return;  // the common world: no pass over the bodies
   const double dt = options_.timestep;
+  ContactParams corner = options_.contact;  // the corner spring, with the law's damping
+  corner.scaling = StiffnessScaling::none;
+  corner.kn = corner.ks = options_.vertex_stiffness;
   std::vector<VertexContact> next;
   std::size_t old = 0;
   auto key = [](const VertexContact& c) { return std::make_tuple(c.body, c.vertex, c.wall); };
@@ -235,9 +236,7 @@ void World::vertex_wall_contacts() {
         while (old < vertex_contacts_.size() && key(vertex_contacts_[old]) < key(c)) ++old;
         if (old < vertex_contacts_.size() && key(vertex_contacts_[old]) == key(c))
           c.state = vertex_contacts_[old].state;
-        ContactParams p = options_.contact;
-        p.scaling = StiffnessScaling::none;
-        p.kn = p.ks = options_.vertex_stiffness;
+        ContactParams p = corner;
         if (wall.friction >= 0.0) p.friction = wall.friction;
         const Vec3 vb = b.velocity + b.angular_velocity.cross(x - b.position);
         update_contact(c.state, wall.normal, -d, x, vb - wall.velocity, b.mass, p, dt);

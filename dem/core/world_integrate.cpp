@@ -33,7 +33,11 @@ void World::load_bodies() {
   sc.body_diameter_.resize(nb);
   sc.body_has_vertices_.assign(nb, 0);
   sc.vertex_wrench_.assign(nb, Wrench{Vec3::Zero(), Vec3::Zero()});
-  for (std::size_t k = 0; k < nb; ++k) sc.body_has_vertices_[k] = !bodies_[k].vertices.empty();
+  sc.any_vertices_ = false;
+  for (std::size_t k = 0; k < nb; ++k) {
+    sc.body_has_vertices_[k] = !bodies_[k].vertices.empty();
+    sc.any_vertices_ = sc.any_vertices_ || sc.body_has_vertices_[k];
+  }
   // Each body's bonds in index order (counting sort), and which bodies have any.
   sc.body_bond_begin_.assign(nb + 1, 0);
   for (const Bond& bond : bonds_)

@@ -103,6 +103,7 @@ struct StepCache {
   // Polyhedral bodies: which bodies have corners (by load_bodies), and per body the wrench of
   // its corner contacts of this step, summed in (vertex, wall) order.
   std::vector<std::uint8_t> body_has_vertices_;
+  bool any_vertices_ = false;
   std::vector<Wrench> vertex_wrench_;
   std::vector<std::size_t> body_bond_begin_;
   std::vector<std::uint64_t> body_bond_items_;

@@ -3,7 +3,7 @@
 #include "geom/errors.h"
 #include "geom/format.h"
 
-#include <Eigen/Eigenvalues>
+#include "geom/template/clump_template.h"
 
 #include <algorithm>
 #include <limits>
@@ -15,21 +15,14 @@ Body cell_body(const Cell& cell, double density) {
     throw InvalidInput("crushable particle: density must be positive, got " +
                        format_number(density));
   if (!(cell.mass.volume > 0.0)) throw InvalidInput("crushable particle: a cell has no volume");
-  Eigen::SelfAdjointEigenSolver<Mat3> es(cell.mass.inertia);
-  Mat3 axes = es.eigenvectors();  // ascending moments
-  for (int k = 0; k < 3; ++k) {   // a sign rule, so the frame does not depend on the solver
-    int big = 0;
-    for (int q = 1; q < 3; ++q)
-      if (std::abs(axes(q, k)) > std::abs(axes(big, k))) big = q;
-    if (axes(big, k) < 0) axes.col(k) *= -1.0;
-  }
-  if (axes.determinant() < 0) axes.col(2) *= -1.0;
+  Vec3 moments;
+  const Mat3 axes = principal_axes(cell.mass.inertia, moments);
   const Vec3& c = cell.mass.centroid;
   Body b;
   b.kind = BodyKind::rock;
   b.volume = cell.mass.volume;
   b.mass = density * cell.mass.volume;
-  b.moments = density * es.eigenvalues();
+  b.moments = density * moments;
   b.position = c;
   b.orientation = Eigen::Quaterniond(axes).normalized();
   for (const Vec3& v : cell.vertices) b.vertices.push_back(axes.transpose() * (v - c));
@@ -45,10 +38,7 @@ Body cell_body(const Cell& cell, double density) {
   return b;
 }
 
-World crushable_particle(const Tessellation& cells, const std::vector<CellBond>& bonds,
-                         double density, const WorldOptions& options) {
-  World w(options);
-  for (const Cell& cell : cells.cells) w.add_body(cell_body(cell, density));
+void add_cell_bonds(World& w, const std::vector<CellBond>& bonds) {
   for (const CellBond& f : bonds) {
     std::vector<Vec3> points;
     std::vector<double> areas;
@@ -56,6 +46,13 @@ World crushable_particle(const Tessellation& cells, const std::vector<CellBond>&
     w.add_bond(make_bond(w.bodies()[f.a], w.bodies()[f.b], f.a, f.b, f.normal, points, areas,
                          f.strength_factor));
   }
+}
+
+World crushable_particle(const Tessellation& cells, const std::vector<CellBond>& bonds,
+                         double density, const WorldOptions& options) {
+  World w(options);
+  for (const Cell& cell : cells.cells) w.add_body(cell_body(cell, density));
+  add_cell_bonds(w, bonds);
   return w;
 }
 

@@ -20,9 +20,14 @@ namespace clumpkit::dem {
 /// a cell without volume.
 Body cell_body(const Cell& cell, double density);
 
+/// Adds one bond per shared face to `world`, whose bodies 0… are the cells in order at the
+/// cells' positions (make_bond with the face's integration points and strength factor). Throws
+/// InvalidInput from add_bond.
+void add_cell_bonds(World& world, const std::vector<CellBond>& bonds);
+
 /// A world holding the particle: one body per cell (cell_body, in cell order) and one bond per
-/// shared face (make_bond with the face's integration points and strength factor), with the
-/// given options (their cohesive law). Throws InvalidInput from add_body and add_bond.
+/// shared face (add_cell_bonds), with the given options (their cohesive law). Throws InvalidInput
+/// from add_body and add_bond.
 World crushable_particle(const Tessellation& cells, const std::vector<CellBond>& bonds,
                          double density, const WorldOptions& options);
 

@@ -6,9 +6,8 @@
 
 namespace clumpkit {
 
-ClumpTemplate make_clump_template(const Clump& clump, double mesh_volume) {
-  const UnionProperties u = union_properties(clump);
-  Eigen::SelfAdjointEigenSolver<Mat3> es(u.mass.inertia);
+Mat3 principal_axes(const Mat3& inertia, Vec3& moments) {
+  Eigen::SelfAdjointEigenSolver<Mat3> es(inertia);
   Mat3 axes = es.eigenvectors();  // ascending eigenvalues
   for (int k = 0; k < 3; ++k) {
     int big = 0;
@@ -17,11 +16,16 @@ ClumpTemplate make_clump_template(const Clump& clump, double mesh_volume) {
     if (axes(big, k) < 0) axes.col(k) *= -1.0;
   }
   if (axes.determinant() < 0) axes.col(2) *= -1.0;
+  moments = es.eigenvalues();
+  return axes;
+}
 
+ClumpTemplate make_clump_template(const Clump& clump, double mesh_volume) {
+  const UnionProperties u = union_properties(clump);
   ClumpTemplate t;
+  const Mat3 axes = principal_axes(u.mass.inertia, t.principal_moments);
   t.orientation = Eigen::Quaterniond(axes).normalized();
   t.position = u.mass.centroid;
-  t.principal_moments = es.eigenvalues();
   t.mass.volume = u.mass.volume;
   t.mass.centroid = Vec3::Zero();
   t.mass.inertia = t.principal_moments.asDiagonal();

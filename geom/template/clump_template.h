@@ -23,6 +23,11 @@ struct ClumpTemplate {
   double density_factor = 1.0;
 };
 
+/// Principal axes of an inertia tensor: the eigenvectors as columns (ascending moments), each
+/// with its largest component positive, the third flipped if needed for a right-handed frame, so
+/// that the frame does not depend on the eigen-solver's signs; `moments` gets the eigenvalues.
+Mat3 principal_axes(const Mat3& inertia, Vec3& moments);
+
 /// Builds the template from a clump with exact union mass properties (union_properties).
 /// Axes: eigenvectors of the inertia tensor, ascending moments, each with its largest component
 /// positive, the third flipped if needed for a right-handed frame. mesh_volume ≤ 0 means unknown.

@@ -4,6 +4,7 @@
 
 #include "dem/core/timestep.h"
 #include "dem/core/world.h"
+#include "dem/lab/crushable.h"
 #include "geom/cells/cell_bonds.h"
 #include "geom/shapes/primitives.h"
 
@@ -42,13 +43,7 @@ inline World bonded_column(double velocity) {
     }
     w.add_body(b);
   }
-  for (const CellBond& f : faces) {
-    std::vector<Vec3> points;
-    std::vector<double> areas;
-    for (const FacePoint& p : f.points) points.push_back(p.position), areas.push_back(p.area);
-    w.add_bond(make_bond(w.bodies()[f.a], w.bodies()[f.b], f.a, f.b, f.normal, points, areas,
-                         f.strength_factor));
-  }
+  add_cell_bonds(w, faces);
   w.options().timestep = 0.2 * critical_timestep(w);
   return w;
 }
