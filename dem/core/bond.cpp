@@ -48,9 +48,10 @@ BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Vec3& pa,
     const Vec3 xb = pb + qb * p.in_b;
     const Vec3 jump = xb - xa;
     const double dn = jump.dot(n);
-    const Vec3 dt = jump - dn * n;
+    // The slip of a crack is kept in a's frame, so that the pair turning together moves it along.
+    const Vec3 dt = qa.conjugate() * (jump - dn * n);
     const CohesiveTraction t = cohesive_traction(law, bond.factor, dn, dt, p.state);
-    const Vec3 f = -p.area * (t.normal * n + t.shear);  // on b
+    const Vec3 f = -p.area * (t.normal * n + qa * t.shear);  // on b
     const Vec3 at = 0.5 * (xa + xb);
     w.force_b += f;
     w.torque_b += (at - pb).cross(f);

@@ -17,6 +17,9 @@ void validate(const CohesiveParams& p, double max_factor) {
     if (!(v > 0.0) || !std::isfinite(v))
       throw InvalidInput(std::string("cohesive law: ") + name +
                          " must be positive and finite, got " + format_number(v));
+  if (!(p.friction >= 0.0) || !std::isfinite(p.friction))
+    throw InvalidInput("cohesive law: friction must be non-negative and finite, got " +
+                       format_number(p.friction));
   const double en = 0.5 * std::pow(max_factor * p.sigma_n, 2) / p.kn;
   const double et = 0.5 * std::pow(max_factor * p.sigma_t, 2) / p.kt;
   if (p.g_n <= en)
@@ -55,6 +58,18 @@ CohesiveTraction cohesive_traction(const CohesiveParams& p, double factor, doubl
   CohesiveTraction t;
   t.normal = dn > 0.0 ? keep * p.kn * dn : p.kn * dn;
   t.shear = keep * p.kt * dt;
+  if (state.damage > 0.0) {
+    // The crack's faces: Coulomb friction in compression, elastic up to the limit (Hu et al.
+    // 2023: broken contacts become frictional); open, they slide freely.
+    const double limit = dn < 0.0 ? p.friction * p.kn * -dn : 0.0;
+    Vec3 tf = p.kt * (dt - state.slip);
+    const double norm = tf.norm();
+    if (norm > limit) {
+      tf *= norm > 0.0 ? limit / norm : 0.0;
+      state.slip = dt - tf / p.kt;
+    }
+    t.shear += state.damage * tf;
+  }
   return t;
 }
 

@@ -16,9 +16,13 @@ struct CohesiveParams {
   double sigma_t = 11.5e6;  ///< σ_eII: shear strength (Pa)
   double g_n = 900.0;       ///< G_I: mode I fracture energy (J/m²)
   double g_t = 1125.0;      ///< G_II: mode II fracture energy (J/m²)
+  /// Coulomb coefficient of the damaged part of a face in compression (the paper's "ν = 0.3",
+  /// read as the friction between cells: a crack that closes slides with friction).
+  double friction = 0.3;
 };
 
-/// Throws InvalidInput naming the field for a parameter that is not positive and finite, or a
+/// Throws InvalidInput naming the field for a parameter that is not positive and finite (friction:
+/// not negative and finite), or a
 /// fracture energy below the elastic energy at onset (G < σ²/(2K) at `max_factor` times the
 /// strengths: the softening branch would run backwards).
 void validate(const CohesiveParams& p, double max_factor = 1.0);
@@ -36,17 +40,22 @@ struct MixedMode {
 /// criterion of eq. 10, G_mI/G_I + G_mII/G_II = 1). Pure modes give δ_e = σ_e/K and δ_u = 2G/σ_e.
 MixedMode mixed_mode(const CohesiveParams& p, double factor, double c2, double s2);
 
-/// State of a bond point: its damage D in [0, 1], which never decreases (1: broken).
+/// State of a bond point: its damage D in [0, 1], which never decreases (1: broken), and the
+/// slip of its crack: the part of the tangential jump Δt that friction no longer resists (in
+/// the frame Δt is given in).
 struct CohesiveState {
   double damage = 0.0;
+  Vec3 slip = Vec3::Zero();
 };
 
 /// Stresses of a bond point for the displacement jump Δ = Δn·n + Δt of one side relative to
 /// the other (Δn opening positive, Δt tangential): damage D = δ_um(δ − δ_em)/(δ(δ_um − δ_em))
 /// once the effective opening δ = sqrt(Δn⁺² + |Δt|²) passes δ_em (eq. 5 generalised to the mode
 /// mix), kept as the largest reached; normal stress (1 − D)·K_I·Δn in tension and K_I·Δn in
-/// compression (compression never damages and is never lost), shear stress (1 − D)·K_II·Δt.
-/// The side displaced by Δ feels −(normal·n + shear)·area. Updates `state`.
+/// compression (compression never damages and is never lost), shear stress (1 − D)·K_II·Δt plus,
+/// on the damaged part, friction: D·τ_f with τ_f = K_II·(Δt − slip) held to |τ_f| ≤ μ·K_I·|Δn|
+/// in compression (the slip follows when it is exceeded; an open crack carries none and slips
+/// freely). The side displaced by Δ feels −(normal·n + shear)·area. Updates `state`.
 struct CohesiveTraction {
   double normal = 0.0;        ///< Pa, positive in tension
   Vec3 shear = Vec3::Zero();  ///< Pa, along Δt

@@ -24,6 +24,8 @@ Vec3 wall_force(const World& world, int wall) {
   Vec3 f = Vec3::Zero();
   for (const WallContact& c : world.wall_contacts())
     if (c.wall == wall) f -= c.state.force();
+  for (const VertexContact& c : world.vertex_contacts())
+    if (c.wall == wall) f -= c.state.force();
   return f;
 }
 

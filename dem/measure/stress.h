@@ -7,8 +7,9 @@
 
 namespace clumpkit::dem {
 
-/// Force the spheres exert on wall `wall` (N): minus the sum of the forces of its contacts
-/// (WallContact::state.force() acts on the sphere), in contact order.
+/// Force the bodies exert on wall `wall` (N): minus the sum of the forces of its contacts
+/// (WallContact::state.force() acts on the sphere), in contact order, then of the corners of
+/// polyhedral bodies on it (VertexContact).
 Vec3 wall_force(const World& world, int wall);
 
 /// Forces the spheres exert on a probe wall (N), apart by the part each contact touches: the

@@ -143,6 +143,7 @@ struct WorldCodec {
     w.u8(o.contact.scaling == StiffnessScaling::none ? 0 : 1), w.f64(o.contact.d_ref);
     w.f64(o.cohesive.kn), w.f64(o.cohesive.kt), w.f64(o.cohesive.sigma_n);
     w.f64(o.cohesive.sigma_t), w.f64(o.cohesive.g_n), w.f64(o.cohesive.g_t);
+    w.f64(o.cohesive.friction);
     w.f64(o.vertex_stiffness);
     w.i64(lists.steps);
     w.f64(lists.time);
@@ -183,7 +184,7 @@ struct WorldCodec {
       w.i32(bond.a), w.i32(bond.b), w.vec(bond.normal_in_a), w.f64(bond.factor);
       w.u64(bond.points.size());
       for (const BondPoint& p : bond.points)
-        w.vec(p.in_a), w.vec(p.in_b), w.f64(p.area), w.f64(p.state.damage);
+        w.vec(p.in_a), w.vec(p.in_b), w.f64(p.area), w.f64(p.state.damage), w.vec(p.state.slip);
     }
     w.u64(world.contacts().size());
     for (const PairContact& c : world.contacts()) w.i32(c.i), w.i32(c.j), w.state(c.state);
@@ -204,8 +205,8 @@ struct WorldCodec {
     w.i64(lists.filters);
   }
 
-  // `version`: kCheckpointVersion, 8 (no bonds, no cohesive law) or 7 (also bodies without a
-  // zone: zone 0).
+  // `version`: kCheckpointVersion, 9 (bonds without friction: a crack's faces slid freely), 8
+  // (no bonds, no cohesive law) or 7 (also bodies without a zone: zone 0).
   static World read(Reader& r, std::uint32_t version) {
     WorldOptions o;
     o.gravity = r.vec();
@@ -223,6 +224,9 @@ struct WorldCodec {
     if (version >= 9) {
       o.cohesive.kn = r.f64(), o.cohesive.kt = r.f64(), o.cohesive.sigma_n = r.f64();
       o.cohesive.sigma_t = r.f64(), o.cohesive.g_n = r.f64(), o.cohesive.g_t = r.f64();
+      o.cohesive.friction = version >= 10 ? r.f64() : 0.0;
+      if (!(o.cohesive.friction >= 0.0) || !std::isfinite(o.cohesive.friction))
+        r.fail("cohesive friction " + std::to_string(o.cohesive.friction) + " is not valid");
       o.vertex_stiffness = r.f64();
     }
     const std::int64_t steps = r.i64();
@@ -308,9 +312,10 @@ struct WorldCodec {
         bond.a = r.i32(), bond.b = r.i32();
         bond.normal_in_a = r.vec();
         bond.factor = r.f64();
-        bond.points.resize(r.count(8 * 8, "bond point"));
+        bond.points.resize(r.count(version >= 10 ? 11 * 8 : 8 * 8, "bond point"));
         for (BondPoint& p : bond.points) {
           p.in_a = r.vec(), p.in_b = r.vec(), p.area = r.f64(), p.state.damage = r.f64();
+          if (version >= 10) p.state.slip = r.vec();
           if (!(p.state.damage >= 0.0 && p.state.damage <= 1.0))
             r.fail("bond " + std::to_string(k) + " has a damage outside [0, 1]");
         }
@@ -421,7 +426,7 @@ World load_checkpoint(const std::string& path, CheckpointInfo* info) {
   Reader header(bytes, end, path);
   for (std::size_t k = 0; k < sizeof kMagic; ++k) header.u8();
   const std::uint32_t version = header.u32();
-  if (version != kCheckpointVersion && version != 8 && version != 7)
+  if (version != kCheckpointVersion && version != 9 && version != 8 && version != 7)
     header.fail("unsupported version " + std::to_string(version) + " (expected " +
                 std::to_string(kCheckpointVersion) + ")");
   std::uint64_t stored = 0;

@@ -14,9 +14,10 @@ namespace clumpkit {
 /// 6 = the sort interval, WorldOptions::sort_every; 7 = the stage state as key/value text; 8 = each
 /// body's zone after its diameter; 9 = the cohesive law and the corner stiffness after the
 /// contact parameters, each body's corners after its zone, the bonds after the walls, the corner
-/// contacts after the wall contacts). Versions 8 (no bonds) and 7 (also every body in zone 0) are
-/// still read.
-inline constexpr std::uint32_t kCheckpointVersion = 9;
+/// contacts after the wall contacts; 10 = the cohesive law's friction after its fracture energies,
+/// each bond point's crack slip after its damage). Versions 9 (friction 0), 8 (no bonds) and 7
+/// (also every body in zone 0) are still read.
+inline constexpr std::uint32_t kCheckpointVersion = 10;
 
 /// Writes `world` and `info` to `path`: magic "CLUMPKITCKPT", version, the stage and its state
 /// (length-prefixed strings: the stage, the number of entries, each key and value), then
@@ -26,10 +27,10 @@ inline constexpr std::uint32_t kCheckpointVersion = 9;
 /// moments, position, velocity, orientation, angular velocity, force, torque, rotation lock,
 /// volume, kind, template id, scale, diameter, zone, corners), walls (moving planes with their
 /// current point), bonds (bodies, normal, strength factor, points in both frames with area and
-/// damage), pair, wall and corner contacts with their full state (shear history included), the
-/// neighbour lists (build positions and pairs, filter positions and limit) and a trailing FNV-1a 64
-/// checksum. Written atomically (write_file_atomically), so a reader never sees a partial file.
-/// Throws IoError when the file cannot be written.
+/// damage and crack slip), pair, wall and corner contacts with their full state (shear history
+/// included), the neighbour lists (build positions and pairs, filter positions and limit) and a
+/// trailing FNV-1a 64 checksum. Written atomically (write_file_atomically), so a reader never sees
+/// a partial file. Throws IoError when the file cannot be written.
 void save_checkpoint(const std::string& path, const dem::World& world,
                      const dem::CheckpointInfo& info = {});
 

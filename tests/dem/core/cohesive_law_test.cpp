@@ -142,3 +142,37 @@ TEST(CohesiveLaw, BadParametersAreRefused) {
       EXPECT_THROW(validate(q), InvalidInput);
     }
 }
+
+TEST(CohesiveLaw, ACrackSlidesWithCoulombFrictionInCompressionAndFreelyWhenOpen) {
+  CohesiveParams p;
+  p.friction = 0.3;
+  const MixedMode n = mixed_mode(p, 1.0, 1.0, 0.0);
+  CohesiveState s;
+  cohesive_traction(p, 1.0, 2 * n.failure, Vec3::Zero(), s);  // broken in tension
+  ASSERT_EQ(s.damage, 1.0);
+  // Closed by dn = −1 µm: a small slip is held elastically (K_II·Δt), a large one at
+  // μ·K_I·|Δn|, and the crack keeps the slip it made.
+  const double dn = -1e-6, limit = p.friction * p.kn * 1e-6;
+  const double small = 0.5 * limit / p.kt;
+  CohesiveTraction t = cohesive_traction(p, 1.0, dn, Vec3(small, 0, 0), s);
+  EXPECT_NEAR(t.shear.x(), p.kt * small, 1e-9 * limit);
+  EXPECT_DOUBLE_EQ(t.normal, p.kn * dn);
+  t = cohesive_traction(p, 1.0, dn, Vec3(10 * small, 0, 0), s);
+  EXPECT_NEAR(t.shear.x(), limit, 1e-9 * limit);
+  EXPECT_NEAR(s.slip.x(), 10 * small - limit / p.kt, 1e-12 * small);
+  // Back by 2·small: elastic unloading from the slipped state, the other way.
+  t = cohesive_traction(p, 1.0, dn, Vec3(8 * small, 0, 0), s);
+  EXPECT_NEAR(t.shear.x(), limit - 2 * p.kt * small, 1e-9 * limit);
+  // Opened: no friction, and the crack slides with the faces.
+  t = cohesive_traction(p, 1.0, 1e-6, Vec3(3 * small, 0, 0), s);
+  EXPECT_EQ(t.shear.norm(), 0.0);
+  EXPECT_EQ(t.normal, 0.0);
+  t = cohesive_traction(p, 1.0, dn, Vec3(3 * small, 0, 0), s);
+  EXPECT_NEAR(t.shear.norm(), 0.0, 1e-9 * limit);
+  // An intact point carries no friction term: its shear is K_II·Δt alone.
+  CohesiveState intact;
+  t = cohesive_traction(p, 1.0, dn, Vec3(small, 0, 0), intact);
+  EXPECT_DOUBLE_EQ(t.shear.x(), p.kt * small);
+  p.friction = -0.1;
+  EXPECT_THROW(validate(p), InvalidInput);
+}

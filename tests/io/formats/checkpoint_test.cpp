@@ -409,10 +409,13 @@ TEST(DemCheckpoint, BondsSurviveASaveAndLoadAndContinueBitIdentically) {
     EXPECT_EQ(a.b, b.b);
     EXPECT_EQ(a.factor, b.factor);
     ASSERT_EQ(a.points.size(), b.points.size());
-    for (std::size_t q = 0; q < a.points.size(); ++q)
+    for (std::size_t q = 0; q < a.points.size(); ++q) {
       EXPECT_EQ(a.points[q].state.damage, b.points[q].state.damage);
+      EXPECT_EQ(a.points[q].state.slip, b.points[q].state.slip);
+    }
   }
   EXPECT_EQ(resumed.options().cohesive.g_t, first.options().cohesive.g_t);
+  EXPECT_EQ(resumed.options().cohesive.friction, first.options().cohesive.friction);
   straight.step(2 * half);
   resumed.step(half);
   expect_identical(straight, resumed);
@@ -461,12 +464,21 @@ TEST(DemCheckpoint, CornerContactsSurviveASaveAndLoad) {
 TEST(DemCheckpoint, FuzzCorpusSeedIsOfTheCurrentFormat) {
   CheckpointInfo info;
   const std::string corpus = std::string(CLUMPKIT_SOURCE_DIR) + "/tests/fuzz/corpus/checkpoint/";
-  const World w = load_checkpoint(corpus + "sorted-servo-v9.ckpt", &info);
-  EXPECT_EQ(read_bytes(corpus + "sorted-servo-v9.ckpt").substr(12, 4),
-            std::string("\x09\0\0\0", 4));
-  // The bonded seed: bonds and their damage come back.
-  const World bonded = load_checkpoint(corpus + "bonded-cells-v9.ckpt");
+  const World w = load_checkpoint(corpus + "sorted-servo-v10.ckpt", &info);
+  EXPECT_EQ(read_bytes(corpus + "sorted-servo-v10.ckpt").substr(12, 4),
+            std::string("\x0a\0\0\0", 4));
+  // The bonded seed: bonds, their damage and the law's friction come back.
+  const World bonded = load_checkpoint(corpus + "bonded-cells-v10.ckpt");
   EXPECT_EQ(bonded.bonds().size(), 28u);
+  EXPECT_EQ(bonded.options().cohesive.friction, 0.3);
+  // Version 9, the same bonds before cracks had friction, still loads, frictionless as it ran.
+  const World bonded9 = load_checkpoint(corpus + "bonded-cells-v9.ckpt");
+  ASSERT_EQ(bonded9.bonds().size(), 28u);
+  EXPECT_EQ(bonded9.options().cohesive.friction, 0.0);
+  for (std::size_t k = 0; k < 28; ++k)
+    EXPECT_EQ(bonded9.bonds()[k].points[0].state.damage, bonded.bonds()[k].points[0].state.damage);
+  const World w9 = load_checkpoint(corpus + "sorted-servo-v9.ckpt");
+  EXPECT_EQ(w9.bodies().size(), w.bodies().size());
   // Version 8, the same state without the cohesive law and bonds, still loads.
   const World w8 = load_checkpoint(corpus + "sorted-servo-v8.ckpt");
   ASSERT_EQ(w8.bodies().size(), w.bodies().size());

@@ -1,0 +1,143 @@
+#include "dem/lab/crush.h"
+
+#include "dem/core/bond.h"
+#include "dem/core/timestep.h"
+#include "dem/measure/stress.h"
+#include "geom/errors.h"
+#include "geom/format.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace clumpkit::dem {
+
+namespace {
+
+void require(bool ok, const char* field, double value, const char* range) {
+  if (!ok)
+    throw InvalidInput(std::string("crushing test: ") + field + " must be " + range + ", got " +
+                       format_number(value));
+}
+
+// Number of fragments holding at least `large` of the mass, the largest one's fraction and the
+// count of all fragments.
+struct FragmentCount {
+  int large = 0;
+  int all = 0;
+  double largest = 0.0;
+};
+
+FragmentCount count_fragments(const World& world, double large) {
+  const std::vector<Body>& bodies = world.bodies();
+  const std::vector<int> label = fragments(static_cast<int>(bodies.size()), world.bonds());
+  std::vector<double> mass(bodies.size(), 0.0);
+  double total = 0.0;
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    mass[label[k]] += bodies[k].mass;
+    total += bodies[k].mass;
+  }
+  FragmentCount c;
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    if (label[k] != static_cast<int>(k)) continue;
+    ++c.all;
+    c.largest = std::max(c.largest, mass[k] / total);
+    if (mass[k] >= large * total) ++c.large;
+  }
+  return c;
+}
+
+}  // namespace
+
+void validate(const CrushOptions& o) {
+  require(o.axis >= 0 && o.axis <= 2, "axis", o.axis, "0, 1 or 2");
+  require(o.strain_rate > 0 && std::isfinite(o.strain_rate), "strain_rate", o.strain_rate,
+          "positive");
+  require(o.platen_friction >= 0 && std::isfinite(o.platen_friction), "platen_friction",
+          o.platen_friction, "≥ 0");
+  require(o.platen_stiffness > 0 && std::isfinite(o.platen_stiffness), "platen_stiffness",
+          o.platen_stiffness, "positive");
+  require(o.local_damping >= 0 && o.local_damping < 1, "local_damping", o.local_damping,
+          "in [0, 1)");
+  require(o.timestep_safety > 0 && o.timestep_safety <= 1, "timestep_safety", o.timestep_safety,
+          "in (0, 1]");
+  require(o.density_scaling >= 1 && std::isfinite(o.density_scaling), "density_scaling",
+          o.density_scaling, "≥ 1");
+  require(o.max_strain > 0 && o.max_strain < 1, "max_strain", o.max_strain, "in (0, 1)");
+  require(o.sample_strain > 0 && o.sample_strain < o.max_strain, "sample_strain", o.sample_strain,
+          "positive and below max_strain");
+  require(o.large_fragment > 0 && o.large_fragment < 0.5, "large_fragment", o.large_fragment,
+          "in (0, 0.5)");
+}
+
+CrushResult crush_particle(World& world, double diameter, const CrushOptions& o,
+                           const Interrupter& interrupter) {
+  validate(o);
+  require(diameter > 0 && std::isfinite(diameter), "diameter", diameter, "positive");
+  if (!world.walls().empty()) throw InvalidInput("crushing test: the world already has walls");
+  const int axis = o.axis;
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (const Body& b : world.bodies())
+    for (const Vec3& v : b.vertices) {
+      const double x = (b.position + b.orientation * v)[axis];
+      low = std::min(low, x);
+      high = std::max(high, x);
+    }
+  if (!(high > low)) throw InvalidInput("crushing test: the particle has no corners");
+
+  WorldOptions& wo = world.options();
+  wo.gravity = Vec3::Zero();
+  wo.vertex_stiffness = o.platen_stiffness;
+  wo.contact.friction = o.platen_friction;
+  wo.contact.local_damping = o.local_damping;
+  for (Body& b : world.bodies()) {
+    b.mass *= o.density_scaling;
+    b.moments *= o.density_scaling;
+    b.velocity = b.angular_velocity = Vec3::Zero();
+  }
+  CrushResult r;
+  r.gap = high - low;
+  const double speed = o.strain_rate * r.gap;  // closing speed, half on each platen
+  const Vec3 n = Vec3::Unit(axis);
+  Wall bottom = Wall::plane(n * low, n, 0.5 * speed * n);
+  Wall top = Wall::plane(n * high, -n, -0.5 * speed * n);
+  bottom.friction = top.friction = o.platen_friction;
+  const int wb = world.add_wall(bottom), wt = world.add_wall(top);
+  r.timestep = o.timestep_safety * critical_timestep(world);
+  wo.timestep = r.timestep;
+
+  const double travel_per_sample = o.sample_strain * r.gap;
+  const int steps_per_sample =
+      std::max(1, static_cast<int>(std::ceil(travel_per_sample / (speed * r.timestep))));
+  const double max_travel = o.max_strain * r.gap;
+  r.samples.push_back({0.0, 0.0, false});
+  std::vector<double> difference{0.0};
+  for (;;) {
+    world.step(steps_per_sample);
+    r.steps += steps_per_sample;
+    const double travel = speed * world.time();
+    const double lower = -wall_force(world, wb).dot(n), upper = wall_force(world, wt).dot(n);
+    const double force = 0.5 * (lower + upper);
+    difference.push_back(std::abs(lower - upper));
+    const FragmentCount f = count_fragments(world, o.large_fragment);
+    r.samples.push_back({travel, force, f.large >= 2});
+    r.peak = crushing_peak(r.samples, diameter, o.rule);
+    if (r.peak.found || travel >= max_travel) break;
+    if (interrupted(interrupter, "crush", travel / max_travel))
+      throw Interrupted("crushing test interrupted");
+  }
+  const std::size_t last = r.peak.found ? r.peak.index : r.samples.size() - 1;
+  double fmax = 0.0, dsum = 0.0;
+  for (std::size_t i = 0; i <= last; ++i) {
+    fmax = std::max(fmax, r.samples[i].force);
+    dsum += difference[i];
+  }
+  r.imbalance = fmax > 0.0 ? dsum / static_cast<double>(last + 1) / fmax : 0.0;
+  const FragmentCount f = count_fragments(world, o.large_fragment);
+  r.fragments = f.all;
+  r.largest_fragment = f.largest;
+  return r;
+}
+
+}  // namespace clumpkit::dem
