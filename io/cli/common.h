@@ -24,6 +24,7 @@ void register_import(CLI::App& app);
 void register_test(CLI::App& app);
 void register_compare_curves(CLI::App& app);
 void register_cells(CLI::App& app);
+void register_crush(CLI::App& app);
 void register_specimen_scale(CLI::App& app);
 
 void register_repair(CLI::App& app);

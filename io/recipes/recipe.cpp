@@ -19,50 +19,6 @@ std::string show(const toml::node& n) {
 }
 
 struct Parser : TomlFields {
-  Distribution distribution(const toml::node& n, const std::string& field) const {
-    if (n.is_number()) return constant(number(n, field));
-    const auto* t = n.as_table();
-    if (!t || t->size() != 1)
-      fail(field,
-           "expected a number or one of {uniform|integers|normal|lognormal = ...}, got " + show(n));
-    const auto first = t->begin();
-    const std::string k(first->first.str());
-    const toml::node& val = first->second;
-    Distribution d;
-    if (k == "uniform" || k == "integers") {
-      d.kind = k == "uniform" ? Distribution::Kind::Uniform : Distribution::Kind::Integers;
-      std::tie(d.a, d.b) = pair(val, field + "." + k);
-    } else if (k == "normal" || k == "lognormal") {
-      d.kind = k == "normal" ? Distribution::Kind::Normal : Distribution::Kind::Lognormal;
-      const auto* p = val.as_table();
-      if (!p)
-        fail(field + "." + k,
-             "expected { mu = .., sigma = .., min = .., max = .. }, got " + show(val));
-      bool mu = false, sigma = false;
-      for (const auto& [pk, pv] : *p) {
-        const std::string name(pk.str());
-        const std::string f = field + "." + k + "." + name;
-        if (name == "mu") {
-          d.a = number(pv, f);
-          mu = true;
-        } else if (name == "sigma") {
-          d.b = number(pv, f);
-          sigma = true;
-        } else if (name == "min") {
-          d.min = number(pv, f);
-        } else if (name == "max") {
-          d.max = number(pv, f);
-        } else {
-          fail(f, "unknown key (known: mu, sigma, min, max)");
-        }
-      }
-      if (!mu || !sigma) fail(field + "." + k, "needs both mu and sigma");
-    } else {
-      fail(field + "." + k, "unknown distribution (known: uniform, integers, normal, lognormal)");
-    }
-    return d;
-  }
-
   FractionSpec fraction(const toml::table& t, const std::string& prefix) const {
     FractionSpec f;
     for (const auto& [key, val] : t) {

@@ -1,6 +1,8 @@
 // Typed reads of TOML values with the one-line "FILE: FIELD: what, got VALUE" errors recipes use.
 #pragma once
 
+#include "geom/shapes/distribution.h"
+
 #include <toml++/toml.h>
 
 #include <string>
@@ -21,6 +23,9 @@ struct TomlFields {
   long long integer(const toml::node& n, const std::string& field) const;
   std::string string(const toml::node& n, const std::string& field) const;
   const toml::table& table(const toml::node& n, const std::string& field) const;
+  /// A number, or one of { uniform = [a, b] }, { integers = [a, b] }, { normal = { mu, sigma,
+  /// min, max } }, { lognormal = { mu, sigma, min, max } } (geom/shapes/distribution.h).
+  Distribution distribution(const toml::node& n, const std::string& field) const;
 };
 
 /// Parses TOML text; a syntax error throws InvalidInput "FILE:LINE: TOML syntax error: ...".

@@ -253,6 +253,27 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
   cases.push_back({"compare-curves " + qa + " " + in("qc_far.csv"), "do not overlap", ""});
   cases.push_back({"compare-curves " + qa + " " + qa + " --points 1", "points", ""});
 
+  // crush --recipe R --out D: unknown keys, negative energies, a cell size above the particle,
+  // no sets, a bad axis, a NaN rate, a missing file; nothing is simulated or written.
+  const std::string crush_set = "[[set]]\nname = \"a\"\ndiameter = 0.016\nsamples = 3\n";
+  const std::pair<const char*, std::string> crush_recipes[] = {
+      {"unknown", "[crush]\nbogus = 1\n" + crush_set},
+      {"energy", "[bond]\ng_n = -5\n" + crush_set},
+      {"big_cell", "[cells]\ncell_size = 0.05\n" + crush_set},
+      {"no_set", "[crush]\nseed = 2\n"},
+      {"axis", crush_set + "axis = \"diagonal\"\n"},
+      {"rate", "[crush]\nstrain_rate = nan\n" + crush_set},
+      {"low_energy", "[bond]\ng_n = 100\n" + crush_set}};
+  const char* crush_needles[] = {"bogus",       "g_n", "fewer than 2 cells", "[[set]]", "diagonal",
+                                 "strain_rate", "g_n"};
+  for (std::size_t k = 0; k < std::size(crush_recipes); ++k) {
+    const std::string f = std::string("crush_") + crush_recipes[k].first + ".toml";
+    write(d / f, crush_recipes[k].second);
+    cases.push_back({"crush --quiet --recipe " + in(f) + " --out " + out, crush_needles[k], out});
+  }
+  cases.push_back(
+      {"crush --quiet --recipe " + in("missing.toml") + " --out " + out, "missing.toml", out});
+
   for (const Case& c : cases) {
     SCOPED_TRACE(c.command);
     expect_one_line_error(run_cli(c.command, d), c.needle);
@@ -266,5 +287,5 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
   // The inputs are untouched.
   EXPECT_EQ(slurp(d / "rocks.toml"), std::string(kTinyRocks));
   EXPECT_TRUE(fs::is_regular_file(d / "box.stl"));
-  std::printf("bad-input matrix: %zu cases over 12 commands\n", cases.size());
+  std::printf("bad-input matrix: %zu cases over 13 commands\n", cases.size());
 }

@@ -1,0 +1,277 @@
+#include "io/recipes/crush_recipe.h"
+
+#include "geom/errors.h"
+#include "geom/format.h"
+#include "io/base/text.h"
+#include "io/recipes/toml_fields.h"
+
+#include <cmath>
+#include <set>
+
+namespace clumpkit {
+
+namespace {
+
+double positive(const TomlFields& f, const toml::node& n, const std::string& field) {
+  const double v = f.number(n, field);
+  if (!(v > 0)) f.fail(field, "must be positive, got " + toml_show(n));
+  return v;
+}
+
+double non_negative(const TomlFields& f, const toml::node& n, const std::string& field) {
+  const double v = f.number(n, field);
+  if (!(v >= 0)) f.fail(field, "must be non-negative, got " + toml_show(n));
+  return v;
+}
+
+double fraction(const TomlFields& f, const toml::node& n, const std::string& field) {
+  const double v = f.number(n, field);
+  if (!(v > 0 && v < 1)) f.fail(field, "must be in (0, 1), got " + toml_show(n));
+  return v;
+}
+
+int bounded(const TomlFields& f, const toml::node& n, const std::string& field, long long lo,
+            long long hi) {
+  const long long v = f.integer(n, field);
+  if (v < lo || v > hi)
+    f.fail(field, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+                      toml_show(n));
+  return static_cast<int>(v);
+}
+
+void read_crush(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
+  dem::CrushOptions& o = r.rig;
+  for (const auto& [key, v] : t) {
+    const std::string k(key.str()), field = "crush." + k;
+    if (k == "seed") {
+      const long long s = f.integer(v, field);
+      if (s < 0) f.fail(field, "must be non-negative, got " + toml_show(v));
+      r.seed = static_cast<std::uint64_t>(s);
+    } else if (k == "density") {
+      r.density = positive(f, v, field);
+    } else if (k == "strain_rate") {
+      o.strain_rate = positive(f, v, field);
+    } else if (k == "platen_friction") {
+      o.platen_friction = non_negative(f, v, field);
+    } else if (k == "platen_stiffness") {
+      o.platen_stiffness = positive(f, v, field);
+    } else if (k == "local_damping") {
+      o.local_damping = non_negative(f, v, field);
+      if (o.local_damping >= 1) f.fail(field, "must be below 1, got " + toml_show(v));
+    } else if (k == "timestep_safety") {
+      o.timestep_safety = positive(f, v, field);
+      if (o.timestep_safety > 0.5) f.fail(field, "must be at most 0.5, got " + toml_show(v));
+    } else if (k == "density_scaling") {
+      o.density_scaling = f.number(v, field);
+      if (!(o.density_scaling >= 1 && o.density_scaling <= 1e6))
+        f.fail(field, "must be in [1, 1e6], got " + toml_show(v));
+    } else if (k == "max_strain") {
+      o.max_strain = fraction(f, v, field);
+    } else if (k == "sample_strain") {
+      o.sample_strain = fraction(f, v, field);
+    } else if (k == "drop") {
+      o.rule.drop = fraction(f, v, field);
+    } else if (k == "large_fragment") {
+      o.large_fragment = fraction(f, v, field);
+      if (o.large_fragment >= 0.5) f.fail(field, "must be below 0.5, got " + toml_show(v));
+    } else if (k == "bootstrap") {
+      r.bootstrap = bounded(f, v, field, 100, 100000);
+    } else {
+      f.fail(field,
+             "unknown key (known: seed, density, strain_rate, platen_friction, "
+             "platen_stiffness, local_damping, timestep_safety, density_scaling, max_strain, "
+             "sample_strain, drop, large_fragment, bootstrap)");
+    }
+  }
+  if (!(o.sample_strain < o.max_strain))
+    f.fail("crush.sample_strain", "must be below crush.max_strain");
+}
+
+void read_cells(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
+  for (const auto& [key, v] : t) {
+    const std::string k(key.str()), field = "cells." + k;
+    if (k == "cell_size") {
+      r.cells.cell_size = positive(f, v, field);
+    } else if (k == "lloyd") {
+      r.cells.lloyd = bounded(f, v, field, 0, 100);
+    } else if (k == "strength_factor") {
+      r.strength = f.distribution(v, field);
+      try {
+        validate(r.strength, field);
+      } catch (const InvalidInput& e) {
+        f.fail(field, e.what());
+      }
+      if (!(lower_bound(r.strength) > 0))
+        f.fail(field, "must draw positive factors (set min > 0), got " + toml_show(v));
+    } else {
+      f.fail(field, "unknown key (known: cell_size, lloyd, strength_factor)");
+    }
+  }
+}
+
+void read_bond(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
+  dem::CohesiveParams& p = r.law;
+  for (const auto& [key, v] : t) {
+    const std::string k(key.str()), field = "bond." + k;
+    if (k == "kn") {
+      p.kn = positive(f, v, field);
+    } else if (k == "kt") {
+      p.kt = positive(f, v, field);
+    } else if (k == "sigma_n") {
+      p.sigma_n = positive(f, v, field);
+    } else if (k == "sigma_t") {
+      p.sigma_t = positive(f, v, field);
+    } else if (k == "g_n") {
+      p.g_n = positive(f, v, field);
+    } else if (k == "g_t") {
+      p.g_t = positive(f, v, field);
+    } else if (k == "friction") {
+      p.friction = non_negative(f, v, field);
+    } else if (k == "scale") {
+      r.scale = positive(f, v, field);
+    } else {
+      f.fail(field, "unknown key (known: kn, kt, sigma_n, sigma_t, g_n, g_t, friction, scale)");
+    }
+  }
+}
+
+CrushSet read_set(const TomlFields& f, const toml::table& t, const std::string& prefix) {
+  CrushSet s;
+  bool have_diameter = false;
+  for (const auto& [key, v] : t) {
+    const std::string k(key.str()), field = prefix + "." + k;
+    if (k == "name") {
+      s.name = f.string(v, field);
+      if (s.name.empty()) f.fail(field, "must not be empty");
+    } else if (k == "shape") {
+      s.shape = f.string(v, field);
+      if (s.shape != "polyhedron" && s.shape != "cylinder")
+        f.fail(field, "expected \"polyhedron\" or \"cylinder\", got " + toml_show(v));
+    } else if (k == "diameter") {
+      s.polyhedron.diameter = positive(f, v, field);
+      have_diameter = true;
+    } else if (k == "samples") {
+      s.samples = bounded(f, v, field, 3, 100000);
+    } else if (k == "axis") {
+      const std::string a = f.string(v, field);
+      if (a == "long" || a == "x")
+        s.axis = 0;
+      else if (a == "intermediate" || a == "y")
+        s.axis = 1;
+      else if (a == "short" || a == "z")
+        s.axis = 2;
+      else
+        f.fail(field, "expected long, intermediate, short, x, y or z, got " + toml_show(v));
+    } else if (k == "rest") {
+      const std::string a = f.string(v, field);
+      if (a != "face" && a != "corner")
+        f.fail(field, "expected \"face\" or \"corner\", got " + toml_show(v));
+      s.rest_on_face = a == "face";
+    } else if (k == "size_law") {
+      const auto* b = v.as_boolean();
+      if (!b) f.fail(field, "expected true or false, got " + toml_show(v));
+      s.size_law = b->get();
+    } else if (k == "planes") {
+      s.polyhedron.planes = bounded(f, v, field, 4, 10000);
+    } else if (k == "E") {
+      s.polyhedron.E = f.number(v, field);
+    } else if (k == "F") {
+      s.polyhedron.F = f.number(v, field);
+    } else if (k == "offset_min") {
+      s.polyhedron.offset_min = f.number(v, field);
+    } else if (k == "offset_max") {
+      s.polyhedron.offset_max = f.number(v, field);
+    } else if (k == "height") {
+      s.height = positive(f, v, field);
+    } else if (k == "sides") {
+      s.sides = bounded(f, v, field, 3, 4096);
+    } else {
+      f.fail(field,
+             "unknown key (known: name, shape, diameter, samples, axis, rest, size_law, planes, "
+             "E, F, offset_min, offset_max, height, sides)");
+    }
+  }
+  if (s.name.empty()) f.fail(prefix + ".name", "is required");
+  if (!have_diameter) f.fail(prefix + ".diameter", "is required (m)");
+  if (s.shape == "polyhedron") {
+    try {
+      validate(s.polyhedron);
+    } catch (const InvalidInput& e) {
+      f.fail(prefix, e.what());
+    }
+  } else if (!(s.height > 0)) {
+    f.fail(prefix + ".height", "is required for a cylinder (m)");
+  }
+  return s;
+}
+
+}  // namespace
+
+CrushRecipe parse_crush_recipe(const std::string& text, const std::string& path) {
+  const TomlFields f{path};
+  const toml::table root = parse_toml(text, path);
+  CrushRecipe r;
+  r.path = path;
+  r.text = text;
+  r.strength = default_strength_factor();
+  r.cells.cell_size = 0.0065;
+  for (const auto& [key, val] : root) {
+    const std::string k(key.str());
+    if (k == "name") {
+      r.name = f.string(val, k);
+    } else if (k == "description") {
+      f.string(val, k);
+    } else if (k == "crush") {
+      read_crush(f, f.table(val, k), r);
+    } else if (k == "cells") {
+      read_cells(f, f.table(val, k), r);
+    } else if (k == "bond") {
+      read_bond(f, f.table(val, k), r);
+    } else if (k == "set") {
+      const auto* sets = val.as_array();
+      if (!sets) f.fail(k, "expected [[set]] tables, got " + toml_show(val));
+      for (std::size_t i = 0; i < sets->size(); ++i) {
+        const std::string prefix = "set[" + std::to_string(i) + "]";
+        r.sets.push_back(read_set(f, f.table((*sets)[i], prefix), prefix));
+      }
+    } else {
+      f.fail(k, "unknown key (known: name, description, crush, cells, bond, set)");
+    }
+  }
+  if (r.sets.empty()) f.fail("set", "at least one [[set]] is required");
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < r.sets.size(); ++i) {
+    const CrushSet& s = r.sets[i];
+    const std::string prefix = "set[" + std::to_string(i) + "]";
+    if (!names.insert(s.name).second) f.fail(prefix + ".name", "repeats \"" + s.name + "\"");
+    // The number of cells, before any cutting: at least 2 (voronoi_cells refuses fewer).
+    const double d = s.polyhedron.diameter;
+    const double d_eq = s.shape == "cylinder" ? std::cbrt(1.5 * d * d * s.height) : d;
+    const double cells = std::round(std::pow(d_eq / r.cells.cell_size, 3));
+    if (cells < 2)
+      f.fail("cells.cell_size", format_number(r.cells.cell_size) + " leaves set \"" + s.name +
+                                    "\" (diameter " + format_number(d_eq) + ") fewer than 2 cells");
+    if (cells > 100000)
+      f.fail("cells.cell_size", format_number(r.cells.cell_size) + " gives set \"" + s.name +
+                                    "\" more than 100000 cells");
+  }
+  // The calibration factor s (the paper's single factor on σ and G): strengths × s, energies ×
+  // s², so that the openings at onset and at failure both scale by s and the softening keeps its
+  // shape (G × s would leave less than the elastic energy at onset for s above about 1.1).
+  r.law.sigma_n *= r.scale;
+  r.law.sigma_t *= r.scale;
+  r.law.g_n *= r.scale * r.scale;
+  r.law.g_t *= r.scale * r.scale;
+  try {
+    dem::validate(r.law, upper_bound(r.strength));
+  } catch (const InvalidInput& e) {
+    f.fail("bond", e.what());
+  }
+  return r;
+}
+
+CrushRecipe read_crush_recipe(const std::string& path) {
+  return parse_crush_recipe(read_file(path, "recipe file"), path);
+}
+
+}  // namespace clumpkit

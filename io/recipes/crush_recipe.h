@@ -1,0 +1,63 @@
+// Crushing recipes (`clumpkit crush`): particle sets, their Voronoi cells, the bond law and the
+// rig, read from TOML.
+#pragma once
+
+#include "dem/core/cohesive_law.h"
+#include "dem/lab/crush.h"
+#include "geom/cells/cell_bonds.h"
+#include "geom/cells/voronoi_cells.h"
+#include "geom/shapes/distribution.h"
+#include "geom/shapes/polyhedron.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace clumpkit {
+
+/// One set of samples: a parent shape drawn per sample, loaded along one axis.
+struct CrushSet {
+  std::string name;
+  std::string shape = "polyhedron";  ///< "polyhedron" (make_polyhedron) or "cylinder"
+  PolyhedronParams polyhedron;       ///< diameter and shape (polyhedron)
+  double height = 0.0;               ///< cylinder height (m); its diameter is polyhedron.diameter
+  int sides = 64;                    ///< cylinder facets
+  int samples = 30;
+  /// Loading axis of the parent's frame: 0 x (long axis of a polyhedron), 1 y (intermediate),
+  /// 2 z (short; a cylinder's axis).
+  int axis = 2;
+  /// The parent turned so that its largest face within 30° of the lower platen lies flat on it
+  /// (as a particle set down on a platen rests), rather than touching at a corner.
+  bool rest_on_face = true;
+  bool size_law = true;  ///< part of the size law σ0 = k·D^−α fitted over the sets
+};
+
+/// A crushing recipe. [crush]: seed, density (kg/m³), the rig (dem::CrushOptions: strain_rate,
+/// platen_friction, platen_stiffness, local_damping, timestep_safety, density_scaling,
+/// max_strain, sample_strain, drop, large_fragment), bootstrap (resamples of the 90 %
+/// intervals). [cells]: cell_size (m), lloyd, strength_factor (a distribution). [bond]: kn, kt
+/// (N/m³), sigma_n, sigma_t (Pa), g_n, g_t (J/m²), friction, scale (Hu et al. 2023's one
+/// Brazilian calibration factor s: strengths × s, energies × s², openings × s). [[set]]: name,
+/// shape, diameter (m), samples, axis ("long" | "intermediate" | "short" | "x" | "y" | "z"), rest
+/// ("face" | "corner"), size_law, and the shape's parameters (planes, E, F, offset_min, offset_max
+/// for a polyhedron; height, sides for a cylinder).
+struct CrushRecipe {
+  std::string path, text;
+  std::string name;
+  std::uint64_t seed = 1;
+  double density = 2650.0;
+  dem::CrushOptions rig;
+  int bootstrap = 1000;
+  CellOptions cells;
+  Distribution strength;
+  dem::CohesiveParams law;  ///< with `scale` applied (σ × s, G × s²)
+  double scale = 1.0;
+  std::vector<CrushSet> sets;
+};
+
+/// Parses a crushing recipe; throws InvalidInput naming the file, the field and the value for an
+/// unknown key, a wrong type or a value out of range, and IoError for a missing file.
+CrushRecipe parse_crush_recipe(const std::string& text, const std::string& path);
+CrushRecipe read_crush_recipe(const std::string& path);
+
+}  // namespace clumpkit
