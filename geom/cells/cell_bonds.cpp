@@ -1,6 +1,9 @@
 #include "geom/cells/cell_bonds.h"
 
+#include "geom/errors.h"
+
 #include <algorithm>
+#include <string>
 #include <utility>
 
 namespace clumpkit {
@@ -15,8 +18,32 @@ Distribution default_strength_factor() {
   return d;
 }
 
-std::vector<CellBond> cell_bonds(const Tessellation& t, const Distribution& strength, Rng& rng) {
+namespace {
+
+// The integration points of triangle (a, b, c): its centroid with its area, or those of its four
+// midpoint children, `level` times over.
+void add_points(std::vector<FacePoint>& out, const Vec3& a, const Vec3& b, const Vec3& c,
+                int level) {
+  if (level > 0) {
+    const Vec3 ab = 0.5 * (a + b), bc = 0.5 * (b + c), ca = 0.5 * (c + a);
+    add_points(out, a, ab, ca, level - 1);
+    add_points(out, ab, b, bc, level - 1);
+    add_points(out, ca, bc, c, level - 1);
+    add_points(out, ab, bc, ca, level - 1);
+    return;
+  }
+  const double area = 0.5 * (b - a).cross(c - a).norm();
+  if (area > 0.0) out.push_back({(a + b + c) / 3.0, area});
+}
+
+}  // namespace
+
+std::vector<CellBond> cell_bonds(const Tessellation& t, const Distribution& strength, Rng& rng,
+                                 int subdivisions) {
   validate(strength, "strength factor");
+  if (subdivisions < 0 || subdivisions > 3)
+    throw InvalidInput("cell bonds: subdivisions must be in [0, 3], got " +
+                       std::to_string(subdivisions));
   std::vector<CellBond> bonds;
   for (std::size_t a = 0; a < t.cells.size(); ++a) {
     const Cell& cell = t.cells[a];
@@ -36,8 +63,7 @@ std::vector<CellBond> cell_bonds(const Tessellation& t, const Distribution& stre
       for (std::size_t k = 0; k < n; ++k) {
         const Vec3& p = cell.vertices[f.vertices[k]];
         const Vec3& q = cell.vertices[f.vertices[(k + 1) % n]];
-        const double area = 0.5 * (p - pp.centroid).cross(q - pp.centroid).norm();
-        if (area > 0.0) b.points.push_back({(pp.centroid + p + q) / 3.0, area});
+        add_points(b.points, pp.centroid, p, q, subdivisions);
       }
       bonds.push_back(std::move(b));
     }

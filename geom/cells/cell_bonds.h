@@ -37,7 +37,10 @@ Distribution default_strength_factor();
 /// centroid weighted by its area, so the points' areas sum to the face's and their first moment
 /// is the face centroid's (a face's bending and twisting come from the spread of the points).
 /// Faces of zero area bound nothing and carry no bond. Strength factors are drawn from
-/// `strength` with `rng` in bond order.
-std::vector<CellBond> cell_bonds(const Tessellation& cells, const Distribution& strength, Rng& rng);
+/// `strength` with `rng` in bond order. `subdivisions` s splits each fan triangle 4^s times at
+/// its edge midpoints (more points per face, the same area and centroid: a numerical control).
+/// Throws InvalidInput for s outside [0, 3].
+std::vector<CellBond> cell_bonds(const Tessellation& cells, const Distribution& strength, Rng& rng,
+                                 int subdivisions = 0);
 
 }  // namespace clumpkit

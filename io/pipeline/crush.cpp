@@ -90,7 +90,8 @@ nlohmann::ordered_json crush_one(const CrushRecipe& recipe, const Job& job, std:
   Rng rng = Rng::stream(recipe.seed, id);
   const Mesh parent = make_parent(s, rng);
   const Tessellation cells = voronoi_cells(parent, recipe.cells, rng);
-  const std::vector<CellBond> bonds = cell_bonds(cells, recipe.strength, rng);
+  const std::vector<CellBond> bonds =
+      cell_bonds(cells, recipe.strength, rng, recipe.face_subdivision);
   dem::WorldOptions wo;
   wo.cohesive = recipe.law;
   dem::World world = dem::crushable_particle(cells, bonds, recipe.density, wo);

@@ -94,6 +94,8 @@ void read_cells(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
       r.cells.cell_size = positive(f, v, field);
     } else if (k == "lloyd") {
       r.cells.lloyd = bounded(f, v, field, 0, 100);
+    } else if (k == "face_subdivision") {
+      r.face_subdivision = bounded(f, v, field, 0, 3);
     } else if (k == "strength_factor") {
       r.strength = f.distribution(v, field);
       try {
@@ -104,7 +106,7 @@ void read_cells(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
       if (!(lower_bound(r.strength) > 0))
         f.fail(field, "must draw positive factors (set min > 0), got " + toml_show(v));
     } else {
-      f.fail(field, "unknown key (known: cell_size, lloyd, strength_factor)");
+      f.fail(field, "unknown key (known: cell_size, lloyd, face_subdivision, strength_factor)");
     }
   }
 }

@@ -35,7 +35,8 @@ struct CrushSet {
 /// A crushing recipe. [crush]: seed, density (kg/m³), the rig (dem::CrushOptions: strain_rate,
 /// platen_friction, platen_stiffness, local_damping, timestep_safety, density_scaling,
 /// max_strain, sample_strain, drop, large_fragment), bootstrap (resamples of the 90 %
-/// intervals). [cells]: cell_size (m), lloyd, strength_factor (a distribution). [bond]: kn, kt
+/// intervals). [cells]: cell_size (m), lloyd,
+/// face_subdivision (4^s points per fan triangle), strength_factor (a distribution). [bond]: kn, kt
 /// (N/m³), sigma_n, sigma_t (Pa), g_n, g_t (J/m²), friction, scale (Hu et al. 2023's one
 /// Brazilian calibration factor s: strengths × s, energies × s², openings × s). [[set]]: name,
 /// shape, diameter (m), samples, axis ("long" | "intermediate" | "short" | "x" | "y" | "z"), rest
@@ -49,6 +50,7 @@ struct CrushRecipe {
   dem::CrushOptions rig;
   int bootstrap = 1000;
   CellOptions cells;
+  int face_subdivision = 0;  ///< integration points per fan triangle: 4^s (cell_bonds)
   Distribution strength;
   dem::CohesiveParams law;  ///< with `scale` applied (σ × s, G × s²)
   double scale = 1.0;

@@ -2,6 +2,7 @@
 // exactly (area and first moment), and strength factors from the recipe's distribution.
 #include "geom/cells/cell_bonds.h"
 
+#include "geom/errors.h"
 #include "geom/shapes/polyhedron.h"
 #include "geom/shapes/primitives.h"
 
@@ -59,6 +60,22 @@ TEST(CellBonds, OneBondPerSharedFaceWithExactIntegrationPoints) {
             bonds[7].strength_factor);
   Rng any(5);
   for (const CellBond& b : cell_bonds(t, constant(1.0), any)) EXPECT_EQ(b.strength_factor, 1.0);
+  // Subdivided fans: 4^s times the points, the same area, first and second moments of the face
+  // within rounding (the points' spread grows toward the face's own).
+  Rng fine_draw(3);
+  const std::vector<CellBond> fine = cell_bonds(t, default_strength_factor(), fine_draw, 1);
+  ASSERT_EQ(fine.size(), bonds.size());
+  for (std::size_t k = 0; k < bonds.size(); ++k) {
+    ASSERT_EQ(fine[k].points.size(), 4 * bonds[k].points.size());
+    EXPECT_EQ(fine[k].strength_factor, bonds[k].strength_factor);
+    double area = 0;
+    Vec3 moment = Vec3::Zero();
+    for (const FacePoint& p : fine[k].points) area += p.area, moment += p.area * p.position;
+    EXPECT_NEAR(area / bonds[k].area, 1.0, 1e-12);
+    EXPECT_LT((moment / area - bonds[k].centroid).norm(), 1e-12);
+  }
+  Rng bad(3);
+  EXPECT_THROW(cell_bonds(t, default_strength_factor(), bad, 4), InvalidInput);
 }
 
 TEST(CellBonds, EightCubesHaveTwelveSquareBonds) {
