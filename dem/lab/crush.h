@@ -19,7 +19,7 @@ struct CrushOptions {
   /// Normal and shear stiffness of a corner on a platen (N/m); WorldOptions::vertex_stiffness.
   double platen_stiffness = 1e7;
   /// PFC local damping α of every cell (quasi-static loading of an explicit model).
-  double local_damping = 0.7;
+  double local_damping = 0.35;
   double timestep_safety = 0.2;  ///< dt = safety × critical_timestep(world)
   /// Mass scaling λ: every cell's mass and moments × λ (dt × √λ). Quasi-static while the
   /// platen speed stays far below the particle's wave speed; reported with the results.

@@ -39,7 +39,10 @@ TEST(CrushRecipe, BundledRecipesHoldThePapersSets) {
     EXPECT_EQ(t1.sets[k].polyhedron.planes, 30);
     EXPECT_NEAR(std::pow(sizes[k] / t1.cells.cell_size, 3), cells[k], 1.5);
   }
-  EXPECT_EQ(t1.law.g_n, 900.0);
+  // The paper's law as read, times the Brazilian calibration s (σ × s, G × s²).
+  EXPECT_EQ(t1.scale, 1.85);
+  EXPECT_DOUBLE_EQ(t1.law.sigma_n, 9e6 * 1.85);
+  EXPECT_DOUBLE_EQ(t1.law.g_n, 900.0 * 1.85 * 1.85);
   EXPECT_EQ(t1.law.friction, 0.3);
   EXPECT_EQ(t1.rig.strain_rate, 0.4);
   EXPECT_EQ(t1.rig.platen_friction, 0.3);
