@@ -4,7 +4,6 @@
 #include "dem/lab/weibull.h"
 #include "geom/cells/cell_bonds.h"
 #include "geom/errors.h"
-#include "geom/hash.h"
 #include "geom/shapes/primitives.h"
 #include "io/base/atomic_file.h"
 #include "io/base/text.h"
@@ -27,12 +26,6 @@ namespace fs = std::filesystem;
 namespace clumpkit {
 
 namespace {
-
-std::string record_checksum(const nlohmann::ordered_json& rec) {
-  Fnv1a h;
-  h.add(std::string_view(rec.dump()));
-  return h.hex();
-}
 
 // The parent turned so that its largest face within 30° of the lower platen (normal −axis)
 // lies flat on it; with no face that close, the face closest to it. A convex parent's faces are
@@ -128,10 +121,7 @@ nlohmann::ordered_json crush_one(const CrushRecipe& recipe, const Job& job, std:
   rec["largest_fragment"] = r.largest_fragment;
   rec["imbalance"] = r.imbalance;
   rec["curve_file"] = "particles/" + stem + ".csv";
-  nlohmann::ordered_json sealed = rec;
-  sealed["checksum"] = record_checksum(rec);
-  write_file_atomically((parts / (stem + ".json")).string(),
-                        [&](std::ostream& o) { o << sealed.dump(1) << "\n"; });
+  write_sealed_record((parts / (stem + ".json")).string(), rec);
   return rec;
 }
 
@@ -182,16 +172,9 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
   for (std::size_t i = 0; i < total; ++i) {
     const fs::path rec = parts / (id_name(i) + ".json");
     if (fs::exists(rec) && fs::exists(parts / (id_name(i) + ".csv"))) {
-      try {
-        nlohmann::ordered_json r = nlohmann::ordered_json::parse(read_file(rec.string()));
-        const std::string stored = r.value("checksum", std::string());
-        r.erase("checksum");
-        if (stored == record_checksum(r)) {
-          records[i] = std::move(r);
-          ++result.resumed;
-          continue;
-        }
-      } catch (const nlohmann::json::exception&) {
+      if (read_sealed_record(rec.string(), records[i])) {
+        ++result.resumed;
+        continue;
       }
       result.redone.push_back("particles/" + id_name(i) + ".json");
     }

@@ -1,6 +1,8 @@
 #include "io/pipeline/job.h"
 
 #include "geom/errors.h"
+#include "geom/hash.h"
+#include "io/base/atomic_file.h"
 #include "io/base/text.h"
 #include "io/reports/report.h"
 
@@ -128,6 +130,31 @@ void for_each_particle(const ShapeRecipe& recipe, const std::vector<int>& fracti
   if (stop)
     throw Interrupted(recipe.path + ": " + std::string(stage) + " stopped on request after " +
                       std::to_string(done.load()) + " of " + std::to_string(total) + " particles");
+}
+
+std::string record_checksum(const nlohmann::ordered_json& record) {
+  Fnv1a h;
+  h.add(std::string_view(record.dump()));
+  return h.hex();
+}
+
+void write_sealed_record(const std::string& path, const nlohmann::ordered_json& record) {
+  nlohmann::ordered_json sealed = record;
+  sealed["checksum"] = record_checksum(record);
+  write_file_atomically(path, [&](std::ostream& o) { o << sealed.dump(1) << "\n"; });
+}
+
+bool read_sealed_record(const std::string& path, nlohmann::ordered_json& record) {
+  try {
+    nlohmann::ordered_json r = nlohmann::ordered_json::parse(read_file(path));
+    const std::string stored = r.value("checksum", std::string());
+    r.erase("checksum");
+    if (stored != record_checksum(r)) return false;
+    record = std::move(r);
+    return true;
+  } catch (const nlohmann::json::exception&) {
+    return false;
+  }
 }
 
 nlohmann::json read_json_file(const std::string& path) {

@@ -25,6 +25,18 @@ void for_each_particle(const ShapeRecipe& recipe, const std::vector<int>& fracti
                        const std::function<void(std::size_t)>& work, std::string_view stage,
                        const Interrupter& interrupter);
 
+/// The checksum of a per-particle record: FNV-1a 64 of its compact JSON without the field. A
+/// record changed on disk (a flipped byte, an edit) no longer matches and is redone, never reused.
+std::string record_checksum(const nlohmann::ordered_json& record);
+
+/// Writes `record` to `path` atomically, as indented JSON with its "checksum" added last.
+void write_sealed_record(const std::string& path, const nlohmann::ordered_json& record);
+
+/// Reads a record written by write_sealed_record into `record` (its checksum removed); false when
+/// it does not parse or fails its checksum (atomic writes cannot leave one, but disks and users
+/// can). Throws IoError when the file cannot be read.
+bool read_sealed_record(const std::string& path, nlohmann::ordered_json& record);
+
 /// A JSON file of a clumpkit output (report.json, manifest.json). Throws IoError when it cannot
 /// be opened and InvalidInput naming it when it is not JSON.
 nlohmann::json read_json_file(const std::string& path);

@@ -4,7 +4,6 @@
 #include "geom/errors.h"
 #include "geom/fill/fidelity.h"
 #include "geom/fill/fill.h"
-#include "geom/hash.h"
 #include "geom/mesh/refine.h"
 #include "geom/template/clump_template.h"
 #include "io/base/atomic_file.h"
@@ -29,14 +28,6 @@ namespace fs = std::filesystem;
 namespace clumpkit {
 
 namespace {
-
-// A particle record's checksum: FNV-1a 64 of its compact JSON without the field. A record
-// changed on disk (a flipped byte, an edit) no longer matches and is redone, never reused.
-std::string record_checksum(const nlohmann::ordered_json& rec) {
-  Fnv1a h;
-  h.add(std::string_view(rec.dump()));
-  return h.hex();
-}
 
 // The memory one fill may use: the budget shared by the fills running at once.
 double fill_memory_share(const LibraryOptions& options) {
@@ -176,10 +167,7 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
   t["spheres_file"] = "particles/" + stem + ".template.csv";
   f["voxel"] = filled.voxel;
   f["stopped_by"] = filled.stopped_by;
-  nlohmann::ordered_json sealed = rec;
-  sealed["checksum"] = record_checksum(rec);
-  write_file_atomically((dir / (stem + ".json")).string(),
-                        [&](std::ostream& o) { o << sealed.dump(1) << "\n"; });
+  write_sealed_record((dir / (stem + ".json")).string(), rec);
   return rec;
 }
 
@@ -213,19 +201,11 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
   for (std::size_t i = 0; i < total; ++i) {
     const fs::path rec = parts / (id_name(i) + ".json");
     if (!fs::exists(rec)) continue;
-    // A record that does not parse or fails its checksum (atomic writes cannot leave one, but
-    // disks and users can) is redone and reported, never used.
-    try {
-      nlohmann::ordered_json r = nlohmann::ordered_json::parse(read_file(rec.string()));
-      const std::string stored = r.value("checksum", std::string());
-      r.erase("checksum");
-      if (stored == record_checksum(r)) {
-        records[i] = std::move(r);
-        todo[i] = 0;
-        ++result.resumed;
-        continue;
-      }
-    } catch (const nlohmann::json::exception&) {
+    // A record that does not parse or fails its checksum is redone and reported, never used.
+    if (read_sealed_record(rec.string(), records[i])) {
+      todo[i] = 0;
+      ++result.resumed;
+      continue;
     }
     result.redone.push_back("particles/" + id_name(i) + ".json");
   }

@@ -12,18 +12,6 @@ namespace clumpkit {
 
 namespace {
 
-double positive(const TomlFields& f, const toml::node& n, const std::string& field) {
-  const double v = f.number(n, field);
-  if (!(v > 0)) f.fail(field, "must be positive, got " + toml_show(n));
-  return v;
-}
-
-double non_negative(const TomlFields& f, const toml::node& n, const std::string& field) {
-  const double v = f.number(n, field);
-  if (!(v >= 0)) f.fail(field, "must be non-negative, got " + toml_show(n));
-  return v;
-}
-
 double fraction(const TomlFields& f, const toml::node& n, const std::string& field) {
   const double v = f.number(n, field);
   if (!(v > 0 && v < 1)) f.fail(field, "must be in (0, 1), got " + toml_show(n));
@@ -48,18 +36,18 @@ void read_crush(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
       if (s < 0) f.fail(field, "must be non-negative, got " + toml_show(v));
       r.seed = static_cast<std::uint64_t>(s);
     } else if (k == "density") {
-      r.density = positive(f, v, field);
+      r.density = f.positive(v, field);
     } else if (k == "strain_rate") {
-      o.strain_rate = positive(f, v, field);
+      o.strain_rate = f.positive(v, field);
     } else if (k == "platen_friction") {
-      o.platen_friction = non_negative(f, v, field);
+      o.platen_friction = f.non_negative(v, field);
     } else if (k == "platen_stiffness") {
-      o.platen_stiffness = positive(f, v, field);
+      o.platen_stiffness = f.positive(v, field);
     } else if (k == "local_damping") {
-      o.local_damping = non_negative(f, v, field);
+      o.local_damping = f.non_negative(v, field);
       if (o.local_damping >= 1) f.fail(field, "must be below 1, got " + toml_show(v));
     } else if (k == "timestep_safety") {
-      o.timestep_safety = positive(f, v, field);
+      o.timestep_safety = f.positive(v, field);
       if (o.timestep_safety > 0.5) f.fail(field, "must be at most 0.5, got " + toml_show(v));
     } else if (k == "density_scaling") {
       o.density_scaling = f.number(v, field);
@@ -91,7 +79,7 @@ void read_cells(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
   for (const auto& [key, v] : t) {
     const std::string k(key.str()), field = "cells." + k;
     if (k == "cell_size") {
-      r.cells.cell_size = positive(f, v, field);
+      r.cells.cell_size = f.positive(v, field);
     } else if (k == "lloyd") {
       r.cells.lloyd = bounded(f, v, field, 0, 100);
     } else if (k == "face_subdivision") {
@@ -116,21 +104,21 @@ void read_bond(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
   for (const auto& [key, v] : t) {
     const std::string k(key.str()), field = "bond." + k;
     if (k == "kn") {
-      p.kn = positive(f, v, field);
+      p.kn = f.positive(v, field);
     } else if (k == "kt") {
-      p.kt = positive(f, v, field);
+      p.kt = f.positive(v, field);
     } else if (k == "sigma_n") {
-      p.sigma_n = positive(f, v, field);
+      p.sigma_n = f.positive(v, field);
     } else if (k == "sigma_t") {
-      p.sigma_t = positive(f, v, field);
+      p.sigma_t = f.positive(v, field);
     } else if (k == "g_n") {
-      p.g_n = positive(f, v, field);
+      p.g_n = f.positive(v, field);
     } else if (k == "g_t") {
-      p.g_t = positive(f, v, field);
+      p.g_t = f.positive(v, field);
     } else if (k == "friction") {
-      p.friction = non_negative(f, v, field);
+      p.friction = f.non_negative(v, field);
     } else if (k == "scale") {
-      r.scale = positive(f, v, field);
+      r.scale = f.positive(v, field);
     } else {
       f.fail(field, "unknown key (known: kn, kt, sigma_n, sigma_t, g_n, g_t, friction, scale)");
     }
@@ -150,7 +138,7 @@ CrushSet read_set(const TomlFields& f, const toml::table& t, const std::string& 
       if (s.shape != "polyhedron" && s.shape != "cylinder")
         f.fail(field, "expected \"polyhedron\" or \"cylinder\", got " + toml_show(v));
     } else if (k == "diameter") {
-      s.polyhedron.diameter = positive(f, v, field);
+      s.polyhedron.diameter = f.positive(v, field);
       have_diameter = true;
     } else if (k == "samples") {
       s.samples = bounded(f, v, field, 3, 100000);
@@ -184,7 +172,7 @@ CrushSet read_set(const TomlFields& f, const toml::table& t, const std::string& 
     } else if (k == "offset_max") {
       s.polyhedron.offset_max = f.number(v, field);
     } else if (k == "height") {
-      s.height = positive(f, v, field);
+      s.height = f.positive(v, field);
     } else if (k == "sides") {
       s.sides = bounded(f, v, field, 3, 4096);
     } else {

@@ -26,12 +26,6 @@ std::vector<double> numbers(const TomlFields& f, const toml::node& n, const std:
   return v;
 }
 
-double positive(const TomlFields& f, const toml::node& n, const std::string& field) {
-  const double x = f.number(n, field);
-  if (!(x > 0.0)) f.fail(field, "must be positive, got " + toml_show(n));
-  return x;
-}
-
 // One [[zones.region]] table.
 dem::ZoneRegion zone_region(const TomlFields& f, const toml::node& n, const std::string& at) {
   dem::ZoneRegion z;
@@ -39,10 +33,10 @@ dem::ZoneRegion zone_region(const TomlFields& f, const toml::node& n, const std:
   for (const auto& [key, v] : f.table(n, at)) {
     const std::string k(key.str()), field = at + "." + k;
     if (k == "outer") {
-      z.outer = positive(f, v, field);
+      z.outer = f.positive(v, field);
       have_outer = true;
     } else if (k == "scale") {
-      z.scale = positive(f, v, field);
+      z.scale = f.positive(v, field);
       have_scale = true;
     } else if (k == "mixed") {
       const auto* b = v.as_boolean();
@@ -137,10 +131,10 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
       for (const auto& [ck, cv] : f.table(val, k)) {
         const std::string c(ck.str()), field = "container." + c;
         if (c == "diameter") {
-          r.container_diameter = positive(f, cv, field);
+          r.container_diameter = f.positive(cv, field);
           have_diameter = true;
         } else if (c == "height") {
-          r.container_height = positive(f, cv, field);
+          r.container_height = f.positive(cv, field);
           have_diameter = true;
         } else if (c == "shape") {
           const std::string shape = f.string(cv, field);
@@ -200,7 +194,7 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
           f.fail(field, "unknown key (known: sieves, passing)");
       }
     } else if (k == "soil_rock_threshold") {
-      r.soil_rock_threshold = positive(f, val, k);
+      r.soil_rock_threshold = f.positive(val, k);
     } else if (k == "rock_mass_fraction") {
       r.rock_mass_fraction = f.number(val, k);
       if (r.rock_mass_fraction < 0 || r.rock_mass_fraction > 1)
@@ -209,7 +203,7 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
       for (const auto& [fk, fv] : f.table(val, k)) {
         const std::string g(fk.str()), field = "fines." + g;
         if (g == "below")
-          r.fines_below = positive(f, fv, field);
+          r.fines_below = f.positive(fv, field);
         else if (g == "replace_with")
           std::tie(r.fines_min, r.fines_max) = f.pair(fv, field);
         else
@@ -232,9 +226,9 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
       for (const auto& [dk, dv] : f.table(val, k)) {
         const std::string g(dk.str()), field = "density." + g;
         if (g == "soil")
-          r.soil_density = positive(f, dv, field);
+          r.soil_density = f.positive(dv, field);
         else if (g == "rock")
-          r.rock_density = positive(f, dv, field);
+          r.rock_density = f.positive(dv, field);
         else
           f.fail(field, "unknown key (known: soil, rock)");
       }
@@ -242,9 +236,9 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
       for (const auto& [ck, cv] : f.table(val, k)) {
         const std::string g(ck.str()), field = "contact." + g;
         if (g == "kn") {
-          r.kn = positive(f, cv, field);
+          r.kn = f.positive(cv, field);
         } else if (g == "ks") {
-          r.ks = positive(f, cv, field);
+          r.ks = f.positive(cv, field);
         } else if (g == "friction") {
           r.friction = f.number(cv, field);
           if (r.friction < 0) f.fail(field, "must not be negative, got " + toml_show(cv));
@@ -262,7 +256,7 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
             f.fail(field, "expected \"none\" or \"linear\", got " + toml_show(cv));
           r.linear_scaling = m == "linear";
         } else if (g == "d_ref") {
-          r.d_ref = positive(f, cv, field);
+          r.d_ref = f.positive(cv, field);
         } else {
           f.fail(field,
                  "unknown key (known: kn, ks, friction, damping_ratio, local_damping, "

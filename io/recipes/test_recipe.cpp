@@ -9,22 +9,6 @@
 
 namespace clumpkit {
 
-namespace {
-
-double positive(const TomlFields& f, const toml::node& n, const std::string& field) {
-  const double v = f.number(n, field);
-  if (!(v > 0.0)) f.fail(field, "must be positive, got " + toml_show(n));
-  return v;
-}
-
-double non_negative(const TomlFields& f, const toml::node& n, const std::string& field) {
-  const double v = f.number(n, field);
-  if (!(v >= 0.0)) f.fail(field, "must be >= 0, got " + toml_show(n));
-  return v;
-}
-
-}  // namespace
-
 TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
   const TomlFields f{path};
   const toml::table root = parse_toml(text, path);
@@ -41,32 +25,32 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
       for (const auto& [tk, tv] : f.table(val, k)) {
         const std::string t(tk.str()), field = "test." + t;
         if (t == "confining") {
-          s.confining = positive(f, tv, field);
+          s.confining = f.positive(tv, field);
         } else if (t == "final_stress") {
-          s.final_stress = positive(f, tv, field);
+          s.final_stress = f.positive(tv, field);
           have_final = true;
         } else if (t == "strain_rate") {
-          s.strain_rate = positive(f, tv, field);
+          s.strain_rate = f.positive(tv, field);
         } else if (t == "stress_rate") {
-          s.stress_rate = positive(f, tv, field);
+          s.stress_rate = f.positive(tv, field);
         } else if (t == "max_axial_strain") {
-          s.max_axial_strain = positive(f, tv, field);
+          s.max_axial_strain = f.positive(tv, field);
           if (s.max_axial_strain >= 0.9) f.fail(field, "must be below 0.9, got " + toml_show(tv));
         } else if (t == "critical_fraction") {
-          r.critical_fraction = positive(f, tv, field);
+          r.critical_fraction = f.positive(tv, field);
           if (r.critical_fraction > 1) f.fail(field, "must be in (0, 1], got " + toml_show(tv));
         } else if (t == "friction") {
-          s.friction = non_negative(f, tv, field);
+          s.friction = f.non_negative(tv, field);
         } else if (t == "servo_strain_rate") {
-          s.servo_strain_rate = positive(f, tv, field);
+          s.servo_strain_rate = f.positive(tv, field);
         } else if (t == "consolidation_friction") {
-          s.consolidation_friction = non_negative(f, tv, field);
+          s.consolidation_friction = f.non_negative(tv, field);
         } else if (t == "record_every") {
           const long long n = f.integer(tv, field);
           if (n < 1 || n > 1000000) f.fail(field, "must be in [1, 1e6], got " + toml_show(tv));
           s.record_every = static_cast<int>(n);
         } else if (t == "timestep_safety") {
-          r.timestep_safety = positive(f, tv, field);
+          r.timestep_safety = f.positive(tv, field);
           if (r.timestep_safety > 0.5) f.fail(field, "must be at most 0.5, got " + toml_show(tv));
         } else if (t == "modulus_range") {
           const auto range = f.pair(tv, field);
@@ -74,7 +58,7 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
             f.fail(field, "must be [lo, hi] with 0 <= lo < hi, got " + toml_show(tv));
           r.modulus_range = range;
         } else if (t == "consolidation_tolerance") {
-          s.consolidation_tolerance = positive(f, tv, field);
+          s.consolidation_tolerance = f.positive(tv, field);
         } else if (t == "density_scaling") {
           r.density_scaling = f.number(tv, field);
           if (!(r.density_scaling >= 1 && r.density_scaling <= 1e6))
@@ -100,16 +84,16 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
           else
             f.fail(field, "expected \"none\" or \"linear\", got " + toml_show(cv));
         } else if (c == "kn_ref") {
-          r.kn_ref = positive(f, cv, field);
+          r.kn_ref = f.positive(cv, field);
         } else if (c == "d_ref") {
-          r.d_ref = positive(f, cv, field);
+          r.d_ref = f.positive(cv, field);
         } else if (c == "ks_over_kn") {
-          r.ks_over_kn = non_negative(f, cv, field);
+          r.ks_over_kn = f.non_negative(cv, field);
         } else if (c == "damping_ratio") {
-          r.damping_ratio = non_negative(f, cv, field);
+          r.damping_ratio = f.non_negative(cv, field);
           if (*r.damping_ratio >= 1) f.fail(field, "must be below 1, got " + toml_show(cv));
         } else if (c == "local_damping") {
-          r.local_damping = non_negative(f, cv, field);
+          r.local_damping = f.non_negative(cv, field);
           if (*r.local_damping >= 1) f.fail(field, "must be below 1, got " + toml_show(cv));
         } else {
           f.fail(field,
@@ -123,17 +107,17 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
       for (const auto& [pk, pv] : f.table(val, k)) {
         const std::string q(pk.str()), field = "probe." + q;
         if (q == "diameter") {
-          p.diameter = positive(f, pv, field);
+          p.diameter = f.positive(pv, field);
         } else if (q == "apex_deg") {
-          p.apex_deg = positive(f, pv, field);
+          p.apex_deg = f.positive(pv, field);
           if (!(p.apex_deg < 180.0)) f.fail(field, "must be in (0, 180), got " + toml_show(pv));
         } else if (q == "velocity") {
-          p.velocity = positive(f, pv, field);
+          p.velocity = f.positive(pv, field);
         } else if (q == "depth") {
-          p.depth = positive(f, pv, field);
+          p.depth = f.positive(pv, field);
           have_depth = true;
         } else if (q == "friction") {
-          p.friction = non_negative(f, pv, field);
+          p.friction = f.non_negative(pv, field);
         } else {
           f.fail(field, "unknown key (known: diameter, apex_deg, velocity, depth, friction)");
         }

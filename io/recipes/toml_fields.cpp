@@ -71,6 +71,18 @@ toml::table parse_toml(const std::string& text, const std::string& path) {
   }
 }
 
+double TomlFields::positive(const toml::node& n, const std::string& field) const {
+  const double v = number(n, field);
+  if (!(v > 0.0)) fail(field, "must be positive, got " + toml_show(n));
+  return v;
+}
+
+double TomlFields::non_negative(const toml::node& n, const std::string& field) const {
+  const double v = number(n, field);
+  if (!(v >= 0.0)) fail(field, "must be >= 0, got " + toml_show(n));
+  return v;
+}
+
 Distribution TomlFields::distribution(const toml::node& n, const std::string& field) const {
   if (n.is_number()) return constant(number(n, field));
   const auto* t = n.as_table();

@@ -18,7 +18,9 @@ struct TomlFields {
   std::string file;
 
   [[noreturn]] void fail(const std::string& field, const std::string& why) const;
-  double number(const toml::node& n, const std::string& field) const;  ///< finite int or float
+  double number(const toml::node& n, const std::string& field) const;    ///< finite int or float
+  double positive(const toml::node& n, const std::string& field) const;  ///< number > 0
+  double non_negative(const toml::node& n, const std::string& field) const;  ///< number >= 0
   std::pair<double, double> pair(const toml::node& n, const std::string& field) const;
   long long integer(const toml::node& n, const std::string& field) const;
   std::string string(const toml::node& n, const std::string& field) const;
