@@ -21,15 +21,13 @@ void require(bool ok, const char* field, double value, const char* range) {
                        format_number(value));
 }
 
-// Number of fragments holding at least `large` of the mass, the largest one's fraction and the
-// count of all fragments.
+// The number of fragments and the largest one's mass fraction.
 struct FragmentCount {
-  int large = 0;
   int all = 0;
   double largest = 0.0;
 };
 
-FragmentCount count_fragments(const World& world, double large) {
+FragmentCount count_fragments(const World& world) {
   const std::vector<Body>& bodies = world.bodies();
   const std::vector<int> label = fragments(static_cast<int>(bodies.size()), world.bonds());
   std::vector<double> mass(bodies.size(), 0.0);
@@ -43,7 +41,6 @@ FragmentCount count_fragments(const World& world, double large) {
     if (label[k] != static_cast<int>(k)) continue;
     ++c.all;
     c.largest = std::max(c.largest, mass[k] / total);
-    if (mass[k] >= large * total) ++c.large;
   }
   return c;
 }
@@ -67,8 +64,8 @@ void validate(const CrushOptions& o) {
   require(o.max_strain > 0 && o.max_strain < 1, "max_strain", o.max_strain, "in (0, 1)");
   require(o.sample_strain > 0 && o.sample_strain < o.max_strain, "sample_strain", o.sample_strain,
           "positive and below max_strain");
-  require(o.large_fragment > 0 && o.large_fragment < 0.5, "large_fragment", o.large_fragment,
-          "in (0, 0.5)");
+  require(o.intact_fraction > 0.5 && o.intact_fraction < 1, "intact_fraction", o.intact_fraction,
+          "in (0.5, 1)");
 }
 
 CrushResult crush_particle(World& world, double diameter, const CrushOptions& o,
@@ -120,8 +117,8 @@ CrushResult crush_particle(World& world, double diameter, const CrushOptions& o,
     const double lower = -wall_force(world, wb).dot(n), upper = wall_force(world, wt).dot(n);
     const double force = 0.5 * (lower + upper);
     difference.push_back(std::abs(lower - upper));
-    const FragmentCount f = count_fragments(world, o.large_fragment);
-    r.samples.push_back({travel, force, f.large >= 2});
+    const FragmentCount f = count_fragments(world);
+    r.samples.push_back({travel, force, f.largest < o.intact_fraction});
     r.peak = crushing_peak(r.samples, diameter, o.rule);
     if (r.peak.found || travel >= max_travel) break;
     if (interrupted(interrupter, "crush", travel / max_travel))
@@ -134,7 +131,7 @@ CrushResult crush_particle(World& world, double diameter, const CrushOptions& o,
     dsum += difference[i];
   }
   r.imbalance = fmax > 0.0 ? dsum / static_cast<double>(last + 1) / fmax : 0.0;
-  const FragmentCount f = count_fragments(world, o.large_fragment);
+  const FragmentCount f = count_fragments(world);
   r.fragments = f.all;
   r.largest_fragment = f.largest;
   return r;

@@ -24,11 +24,11 @@ struct CrushOptions {
   /// Mass scaling λ: every cell's mass and moments × λ (dt × √λ). Quasi-static while the
   /// platen speed stays far below the particle's wave speed; reported with the results.
   double density_scaling = 1.0;
-  double max_strain = 0.15;     ///< travel at which the test stops without a failure (× gap)
+  double max_strain = 0.3;      ///< travel at which the test stops without a failure (× gap)
   double sample_strain = 2e-4;  ///< travel between samples (× gap)
-  /// A fragment is large when it holds at least this fraction of the particle's mass; the
-  /// particle is split when two are.
-  double large_fragment = 0.1;
+  /// The particle counts as split once no fragment (cells joined by intact bonds) holds this
+  /// fraction of its mass (Huillca et al. 2021's rule: no component of ≥ 90 % of the volume).
+  double intact_fraction = 0.9;
   PeakRule rule;
 };
 

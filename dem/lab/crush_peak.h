@@ -18,7 +18,7 @@ struct PeakRule {
 };
 
 /// One sample of a crushing test: platen travel (m), force (N), and whether the particle's
-/// bonded cells had already separated into two or more large fragments.
+/// bonded cells had already come apart (crush.h: no piece holds 90 % of the mass).
 struct CrushSample {
   double travel = 0.0;
   double force = 0.0;

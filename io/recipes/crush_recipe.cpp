@@ -59,16 +59,16 @@ void read_crush(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
       o.sample_strain = fraction(f, v, field);
     } else if (k == "drop") {
       o.rule.drop = fraction(f, v, field);
-    } else if (k == "large_fragment") {
-      o.large_fragment = fraction(f, v, field);
-      if (o.large_fragment >= 0.5) f.fail(field, "must be below 0.5, got " + toml_show(v));
+    } else if (k == "intact_fraction") {
+      o.intact_fraction = fraction(f, v, field);
+      if (o.intact_fraction <= 0.5) f.fail(field, "must be above 0.5, got " + toml_show(v));
     } else if (k == "bootstrap") {
       r.bootstrap = bounded(f, v, field, 100, 100000);
     } else {
       f.fail(field,
              "unknown key (known: seed, density, strain_rate, platen_friction, "
              "platen_stiffness, local_damping, timestep_safety, density_scaling, max_strain, "
-             "sample_strain, drop, large_fragment, bootstrap)");
+             "sample_strain, drop, intact_fraction, bootstrap)");
     }
   }
   if (!(o.sample_strain < o.max_strain))

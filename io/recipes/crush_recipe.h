@@ -34,7 +34,7 @@ struct CrushSet {
 
 /// A crushing recipe. [crush]: seed, density (kg/m³), the rig (dem::CrushOptions: strain_rate,
 /// platen_friction, platen_stiffness, local_damping, timestep_safety, density_scaling,
-/// max_strain, sample_strain, drop, large_fragment), bootstrap (resamples of the 90 %
+/// max_strain, sample_strain, drop, intact_fraction), bootstrap (resamples of the 90 %
 /// intervals). [cells]: cell_size (m), lloyd,
 /// face_subdivision (4^s points per fan triangle), strength_factor (a distribution). [bond]: kn, kt
 /// (N/m³), sigma_n, sigma_t (Pa), g_n, g_t (J/m²), friction, scale (Hu et al. 2023's one

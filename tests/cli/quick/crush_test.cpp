@@ -62,7 +62,7 @@ TEST(CliQuickCrush, ReportHoldsEachSetsWeibullFitAndTheSizeLaw) {
   for (const auto& s : rep["sets"]) {
     SCOPED_TRACE(s["name"].get<std::string>());
     ASSERT_EQ(s["samples"].get<int>(), 3);
-    ASSERT_EQ(s["failed"].get<int>(), 3);  // every particle breaks within 30 % strain
+    ASSERT_EQ(s["failed"].get<int>(), 3);  // every particle breaks within 30 % of the gap
     const double sigma0 = s["sigma0"].get<double>();
     // σ0 in Pa, inside its own bootstrap interval; strengths of the order of the bonds' 9 MPa.
     EXPECT_GE(sigma0, s["sigma0_ci90"][0].get<double>());
