@@ -18,6 +18,7 @@ CrushPeak crushing_peak(const std::vector<CrushSample>& samples, double diameter
   std::size_t best = 0;
   bool low = false;  // below (1 − drop)·F* since sample `low_from`
   std::size_t low_from = 0;
+  double free_travel = 0.0;  // travel since then with no force (no contact)
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const CrushSample& s = samples[i];
     if (s.force > samples[best].force) best = i;
@@ -30,8 +31,12 @@ CrushPeak crushing_peak(const std::vector<CrushSample>& samples, double diameter
     if (!low) {
       low = true;
       low_from = i;
+      free_travel = 0.0;
+    } else if (!(s.force > 0.0)) {
+      free_travel += s.travel - samples[i - 1].travel;
     }
-    const bool collapsed = s.travel - samples[low_from].travel >= rule.collapse_travel * diameter;
+    const bool collapsed =
+        s.travel - samples[low_from].travel - free_travel >= rule.collapse_travel * diameter;
     if (s.split || collapsed) {
       p.found = true;
       p.index = best;

@@ -36,7 +36,9 @@ struct CrushPeak {
 
 /// Scans the samples in order with the running maximum F* (its first sample on ties): the peak is
 /// F* at the first sample where F ≤ (1 − drop)·F* and the particle is split ("split"), or where F
-/// has stayed ≤ (1 − drop)·F* over collapse_travel·D of travel ("collapse"). A drop that recovers
+/// has stayed ≤ (1 − drop)·F* over collapse_travel·D of travel in contact ("collapse": travel
+/// with F = 0, a platen gone free when a corner cell chipped off, is not counted, or the chip of
+/// the first touching corner would pass for the particle's failure). A drop that recovers
 /// above (1 − drop)·F* before either is not a failure; a later, higher maximum replaces F*.
 /// Throws InvalidInput for a rule outside (0, 1) / (0, 1], or D not positive.
 CrushPeak crushing_peak(const std::vector<CrushSample>& samples, double diameter,

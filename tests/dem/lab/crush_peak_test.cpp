@@ -82,6 +82,22 @@ TEST(CrushPeak, DropThatRecoversBeforeCollapseIsNotFailure) {
   EXPECT_FALSE(crushing_peak(curve({0, 2000, 4000, 2400, 2400, 3000, 4500}), kD).found);
 }
 
+TEST(CrushPeak, APlatenGoneFreeAfterAChipIsNotACollapse) {
+  // The first touching corner chips off at 140 N and the platen travels free (F = 0) for more
+  // than 0.02·D before it meets the particle again: that travel is not in contact, so no
+  // collapse; the particle's own failure comes later.
+  std::vector<double> f = {0, 60, 100, 140, 90, 40};
+  for (int i = 0; i < 100; ++i) f.push_back(0.0);
+  for (double x : {50.0, 500.0, 1500.0, 3000.0, 4000.0, 1000.0}) f.push_back(x);
+  const CrushPeak p = crushing_peak(curve(f), kD);
+  EXPECT_FALSE(p.found);  // no split and no long low tail in contact yet
+  for (int i = 0; i < 100; ++i) f.push_back(1000.0);
+  const CrushPeak q = crushing_peak(curve(f), kD);
+  ASSERT_TRUE(q.found);
+  EXPECT_EQ(q.by, "collapse");
+  EXPECT_DOUBLE_EQ(q.force, 4000.0);
+}
+
 TEST(CrushPeak, BadRule) {
   EXPECT_THROW(crushing_peak({}, kD, PeakRule{1.0, 0.02}), clumpkit::InvalidInput);
   EXPECT_THROW(crushing_peak({}, kD, PeakRule{0.35, 0.0}), clumpkit::InvalidInput);
