@@ -15,6 +15,9 @@ struct PeakRule {
   /// Collapse without a split: the force stays below (1 − drop) of the running peak over this
   /// much further platen travel, as a fraction of the particle's diameter.
   double collapse_travel = 0.02;
+  /// Travel counts toward a collapse only while the force is at least this fraction of the
+  /// running peak: below it the platens are not loading the particle but brushing a chip.
+  double contact = 0.1;
 };
 
 /// One sample of a crushing test: platen travel (m), force (N), and whether the particle's
@@ -36,11 +39,11 @@ struct CrushPeak {
 
 /// Scans the samples in order with the running maximum F* (its first sample on ties): the peak is
 /// F* at the first sample where F ≤ (1 − drop)·F* and the particle is split ("split"), or where F
-/// has stayed ≤ (1 − drop)·F* over collapse_travel·D of travel in contact ("collapse": travel
-/// with F = 0, a platen gone free when a corner cell chipped off, is not counted, or the chip of
-/// the first touching corner would pass for the particle's failure). A drop that recovers
-/// above (1 − drop)·F* before either is not a failure; a later, higher maximum replaces F*.
-/// Throws InvalidInput for a rule outside (0, 1) / (0, 1], or D not positive.
+/// has stayed ≤ (1 − drop)·F* over collapse_travel·D of travel with F ≥ contact·F* ("collapse":
+/// the travel of a platen gone free, or pushing a loose chip aside, after the touching corner
+/// cell broke off is not counted, or that chip would pass for the particle's failure). A drop that
+/// recovers above (1 − drop)·F* before either is not a failure; a later, higher maximum replaces
+/// F*. Throws InvalidInput for a rule outside (0, 1) / (0, 1] / [0, 1 − drop), or D not positive.
 CrushPeak crushing_peak(const std::vector<CrushSample>& samples, double diameter,
                         const PeakRule& rule = {});
 

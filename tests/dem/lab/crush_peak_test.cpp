@@ -96,11 +96,21 @@ TEST(CrushPeak, APlatenGoneFreeAfterAChipIsNotACollapse) {
   ASSERT_TRUE(q.found);
   EXPECT_EQ(q.by, "collapse");
   EXPECT_DOUBLE_EQ(q.force, 4000.0);
+  // Brushing a loose chip (10 N, under 10 % of the 140 N peak) is not loading the particle
+  // either; with the contact fraction 0 it would be, and the chip would be the peak.
+  std::vector<double> g = {0, 60, 100, 140, 90, 40};
+  for (int i = 0; i < 100; ++i) g.push_back(10.0);
+  g.push_back(3000.0);
+  EXPECT_FALSE(crushing_peak(curve(g), kD).found);
+  const CrushPeak chip = crushing_peak(curve(g), kD, PeakRule{0.35, 0.02, 0.0});
+  ASSERT_TRUE(chip.found);
+  EXPECT_DOUBLE_EQ(chip.force, 140.0);
 }
 
 TEST(CrushPeak, BadRule) {
   EXPECT_THROW(crushing_peak({}, kD, PeakRule{1.0, 0.02}), clumpkit::InvalidInput);
   EXPECT_THROW(crushing_peak({}, kD, PeakRule{0.35, 0.0}), clumpkit::InvalidInput);
+  EXPECT_THROW(crushing_peak({}, kD, PeakRule{0.35, 0.02, 0.7}), clumpkit::InvalidInput);
   EXPECT_THROW(crushing_peak({}, -1.0), clumpkit::InvalidInput);
   EXPECT_FALSE(crushing_peak({}, kD).found);
 }
