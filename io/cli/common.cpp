@@ -104,6 +104,11 @@ double max_memory_bytes(double gib) {
   return 0.5 * double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
 }
 
+void warn_redone(const std::string& out, const std::vector<std::string>& redone) {
+  for (const std::string& f : redone)
+    warning(out + ".partial/" + f + " was damaged (checksum): particle redone");
+}
+
 void warning(const std::string& message) {
   std::fprintf(stderr, "clumpkit: warning: %s\n", message.c_str());
 }

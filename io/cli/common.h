@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace clumpkit::cli {
 
@@ -74,5 +75,9 @@ double max_memory_bytes(double gib);
 
 /// Writes one warning line "clumpkit: warning: ..." to stderr (the command still succeeds).
 void warning(const std::string& message);
+
+/// One warning per damaged per-particle record of an earlier run in OUT.partial (`redone`,
+/// paths inside it) that a resumed job redid.
+void warn_redone(const std::string& out, const std::vector<std::string>& redone);
 
 }  // namespace clumpkit::cli

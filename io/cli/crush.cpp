@@ -42,10 +42,7 @@ void register_crush(CLI::App& app) {
     ProgressBar bar("crush", o->quiet);
     const CrushJobResult r = run_crush(recipe, o->out, signal_interrupter(bar, "crush"));
     bar.finish();
-    for (const std::string& f : r.redone)
-      std::fprintf(stderr,
-                   "clumpkit: warning: %s.partial/%s was damaged (checksum): particle redone\n",
-                   o->out.c_str(), f.c_str());
+    warn_redone(o->out, r.redone);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (o->json) {

@@ -54,10 +54,7 @@ void register_library(CLI::App& app) {
     lo.max_memory_bytes = max_memory_bytes(o->max_memory_gib);
     const auto r = run_library(recipe, o->out, lo, signal_interrupter(bar, "library"));
     bar.finish();
-    for (const std::string& f : r.redone)
-      std::fprintf(stderr,
-                   "clumpkit: warning: %s.partial/%s was damaged (checksum): particle redone\n",
-                   o->out.c_str(), f.c_str());
+    warn_redone(o->out, r.redone);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (o->json) {

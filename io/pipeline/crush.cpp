@@ -238,9 +238,9 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
   report["density_scaling"] = recipe.rig.density_scaling;
   std::vector<std::vector<double>> strengths(recipe.sets.size());
   std::vector<double> set_diameter(recipe.sets.size(), 0.0), set_force(recipe.sets.size(), 0.0);
-  for (const auto& r : records) {
-    std::size_t s = 0;
-    while (recipe.sets[s].name != r["set"].get<std::string>()) ++s;
+  for (std::size_t i = 0; i < total; ++i) {
+    const auto& r = records[i];
+    const std::size_t s = jobs[i].set;
     set_diameter[s] += r["diameter"].get<double>() / recipe.sets[s].samples;
     if (r["failed"].get<bool>()) {
       strengths[s].push_back(r["strength"].get<double>());
