@@ -66,32 +66,32 @@ TEST(CrushPeak, DoublePeakTakesTheOneThatFails) {
 }
 
 TEST(CrushPeak, DropThatRecoversBeforeCollapseIsNotFailure) {
-  // A 40 % drop without a split that recovers within 0.02·D of travel (55 samples): not failure;
-  // the later drop that stays low for 0.02·D is a collapse.
+  // A 40 % drop without a split that recovers within 0.05·D of travel (137 samples): not
+  // failure; the later drop that stays low for 0.05·D is a collapse.
   std::vector<double> f = {0, 2000, 4000, 2400, 2400, 3000, 4500};
-  for (int i = 0; i < 100; ++i) f.push_back(2000.0);
+  for (int i = 0; i < 200; ++i) f.push_back(2000.0);
   const CrushPeak p = crushing_peak(curve(f), kD);
   ASSERT_TRUE(p.found);
   EXPECT_EQ(p.by, "collapse");
   EXPECT_DOUBLE_EQ(p.force, 4500.0);
   EXPECT_EQ(p.index, 6u);
-  // The collapse is declared once 0.02·D = 0.55 mm of travel has passed below the threshold.
-  EXPECT_GE((p.detected - 7) * kStep, 0.02 * kD - 1e-12);
-  EXPECT_LT((p.detected - 8) * kStep, 0.02 * kD);
+  // The collapse is declared once 0.05·D = 1.375 mm of travel has passed below the threshold.
+  EXPECT_GE((p.detected - 7) * kStep, 0.05 * kD - 1e-12);
+  EXPECT_LT((p.detected - 8) * kStep, 0.05 * kD);
   // Without the long low tail nothing is found.
   EXPECT_FALSE(crushing_peak(curve({0, 2000, 4000, 2400, 2400, 3000, 4500}), kD).found);
 }
 
 TEST(CrushPeak, APlatenGoneFreeAfterAChipIsNotACollapse) {
   // The first touching corner chips off at 140 N and the platen travels free (F = 0) for more
-  // than 0.02·D before it meets the particle again: that travel is not in contact, so no
+  // than 0.05·D before it meets the particle again: that travel is not in contact, so no
   // collapse; the particle's own failure comes later.
   std::vector<double> f = {0, 60, 100, 140, 90, 40};
-  for (int i = 0; i < 100; ++i) f.push_back(0.0);
+  for (int i = 0; i < 200; ++i) f.push_back(0.0);
   for (double x : {50.0, 500.0, 1500.0, 3000.0, 4000.0, 1000.0}) f.push_back(x);
   const CrushPeak p = crushing_peak(curve(f), kD);
   EXPECT_FALSE(p.found);  // no split and no long low tail in contact yet
-  for (int i = 0; i < 100; ++i) f.push_back(1000.0);
+  for (int i = 0; i < 200; ++i) f.push_back(1000.0);
   const CrushPeak q = crushing_peak(curve(f), kD);
   ASSERT_TRUE(q.found);
   EXPECT_EQ(q.by, "collapse");
@@ -99,10 +99,10 @@ TEST(CrushPeak, APlatenGoneFreeAfterAChipIsNotACollapse) {
   // Brushing a loose chip (10 N, under 10 % of the 140 N peak) is not loading the particle
   // either; with the contact fraction 0 it would be, and the chip would be the peak.
   std::vector<double> g = {0, 60, 100, 140, 90, 40};
-  for (int i = 0; i < 100; ++i) g.push_back(10.0);
+  for (int i = 0; i < 200; ++i) g.push_back(10.0);
   g.push_back(3000.0);
   EXPECT_FALSE(crushing_peak(curve(g), kD).found);
-  const CrushPeak chip = crushing_peak(curve(g), kD, PeakRule{0.35, 0.02, 0.0});
+  const CrushPeak chip = crushing_peak(curve(g), kD, PeakRule{0.35, 0.05, 0.0});
   ASSERT_TRUE(chip.found);
   EXPECT_DOUBLE_EQ(chip.force, 140.0);
 }
