@@ -113,7 +113,8 @@ void validate(const FillOptions& o) {
     throw InvalidInput("ridge threshold must be in (0, 1], got " + std::to_string(o.ridge));
 }
 
-FillResult fill(const MeshIndex& distance, const DistanceField& field, const FillOptions& options) {
+FillResult fill(const MeshIndex& distance, const DistanceField& field, const FillOptions& options,
+                const Interrupter& interrupter) {
   validate(options);
   FillResult r;
   r.voxel = field.h;
@@ -265,6 +266,14 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
   accept(first);
   // The sphere budget and the coverage target end either strategy; sets stopped_by.
   auto budget_or_coverage_met = [&] {
+    const double placed = static_cast<double>(r.clump.spheres.size());
+    const double reached =
+        options.coverage > 0 && !r.coverage_curve.empty()
+            ? std::max(placed / budget, r.coverage_curve.back() / options.coverage)
+            : placed / budget;
+    if (interrupted(interrupter, "fill", std::min(1.0, reached)))
+      throw Interrupted("fill: interrupted after " + std::to_string(r.clump.spheres.size()) +
+                        " spheres");
     if (static_cast<int>(r.clump.spheres.size()) >= budget) {
       r.stopped_by = "spheres";
       return true;
@@ -335,10 +344,10 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
   return r;
 }
 
-FillResult fill(const Mesh& mesh, const FillOptions& options) {
+FillResult fill(const Mesh& mesh, const FillOptions& options, const Interrupter& interrupter) {
   validate(options);
   const MeshIndex index(mesh);
-  return fill(index, make_distance_field(index, options.field), options);
+  return fill(index, make_distance_field(index, options.field), options, interrupter);
 }
 
 }  // namespace clumpkit

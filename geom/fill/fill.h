@@ -3,6 +3,7 @@
 #pragma once
 
 #include "geom/fill/distance_field.h"
+#include "geom/progress.h"
 #include "geom/sphere.h"
 
 #include <vector>
@@ -66,9 +67,12 @@ void validate(const FillOptions& options);
 /// medial candidate whose ball covers the most still-uncovered interior voxels. Coverage gains
 /// only decrease as spheres are added, so a lazy priority queue (re-evaluate the top, accept if
 /// still the best) picks exactly the greedy choice. Ties go to the lower candidate index.
-FillResult fill(const MeshIndex& index, const DistanceField& field, const FillOptions& options);
+/// The interrupter is told ("fill", the fraction of the budget or coverage target reached) before
+/// each sphere; asked to stop, the fill throws Interrupted.
+FillResult fill(const MeshIndex& index, const DistanceField& field, const FillOptions& options,
+                const Interrupter& interrupter = {});
 
 /// Index + field + fill.
-FillResult fill(const Mesh& mesh, const FillOptions& options);
+FillResult fill(const Mesh& mesh, const FillOptions& options, const Interrupter& interrupter = {});
 
 }  // namespace clumpkit

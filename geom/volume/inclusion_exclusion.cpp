@@ -226,12 +226,48 @@ Measure four_balls(const std::array<Sphere, 4>& b) {
 }
 
 // Running signed sums of the inclusion–exclusion terms.
-struct Sum {
-  double volume = 0.0, area = 0.0;
-  void add(const Measure& m, int sign) {
-    volume += sign * m.volume;
-    area += sign * m.area;
+// The inclusion–exclusion sum over the simplices of the dual complex, added up in the order of
+// their sorted vertex indices, each simplex's measure computed with its balls in that order. CGAL
+// inserts points in a spatial order shuffled by its process-wide random generator, so the complex
+// is enumerated in an order that depends on the triangulations made before in the process: summed
+// as enumerated, the same balls gave areas differing in the last bits from one call to the next.
+class Sum {
+ public:
+  explicit Sum(const std::vector<Sphere>& ball) : ball_(ball) {}
+  // A simplex of `count` (1–4) balls, indices into `ball`.
+  void add(std::array<int, 4> ids, int count) {
+    std::sort(ids.begin(), ids.begin() + count);
+    for (int k = count; k < 4; ++k) ids[k] = -1;
+    simplices_.push_back(ids);
   }
+  Measure total() {
+    std::sort(simplices_.begin(), simplices_.end());
+    Measure sum;
+    for (const auto& ids : simplices_) {
+      const auto& b = ball_;
+      Measure m;
+      int sign = 1;
+      if (ids[1] < 0) {
+        const double r = b[ids[0]].radius;
+        m = {4.0 / 3.0 * kPi * r * r * r, 4.0 * kPi * r * r};
+      } else if (ids[2] < 0) {
+        m = two_balls(b[ids[0]], b[ids[1]]);
+        sign = -1;
+      } else if (ids[3] < 0) {
+        m = three_balls({b[ids[0]], b[ids[1]], b[ids[2]]});
+      } else {
+        m = four_balls({b[ids[0]], b[ids[1]], b[ids[2]], b[ids[3]]});
+        sign = -1;
+      }
+      sum.volume += sign * m.volume;
+      sum.area += sign * m.area;
+    }
+    return sum;
+  }
+
+ private:
+  const std::vector<Sphere>& ball_;
+  std::vector<std::array<int, 4>> simplices_;
 };
 
 // Dual complex of a triangulation of dimension 0, 1 or 2 (Fixed_alpha_shape_3 needs dimension
@@ -244,9 +280,7 @@ void lower_dimensional(const RegularTriangulation& rt, const std::vector<Sphere>
   const auto radius_cmp = rt.geom_traits().compare_weighted_squared_radius_3_object();
   const auto side = rt.geom_traits().power_side_of_bounded_power_sphere_3_object();
   if (dim == 0) {
-    sum.add({4.0 / 3.0 * kPi * std::pow(ball[rt.finite_vertices_begin()->info()].radius, 3),
-             4.0 * kPi * std::pow(ball[rt.finite_vertices_begin()->info()].radius, 2)},
-            1);
+    sum.add({rt.finite_vertices_begin()->info(), 0, 0, 0}, 1);
     return;
   }
   struct EdgeState {
@@ -271,7 +305,7 @@ void lower_dimensional(const RegularTriangulation& rt, const std::vector<Sphere>
       VertexHandle v[3];
       for (int j = 0; j < 3; ++j) v[j] = f->first->vertex((f->second + j + 1) & 3);
       const bool in = radius_cmp(v[0]->point(), v[1]->point(), v[2]->point(), zero) != CGAL::LARGER;
-      if (in) sum.add(three_balls({ball[v[0]->info()], ball[v[1]->info()], ball[v[2]->info()]}), 1);
+      if (in) sum.add({v[0]->info(), v[1]->info(), v[2]->info(), 0}, 3);
       for (int j = 0; j < 3; ++j) {
         EdgeState& es = edges[key(v[(j + 1) % 3]->info(), v[(j + 2) % 3]->info())];
         es.opposite.push_back(v[j]);
@@ -292,7 +326,7 @@ void lower_dimensional(const RegularTriangulation& rt, const std::vector<Sphere>
       });
     }
     if (!in) continue;
-    sum.add(two_balls(ball[es.a->info()], ball[es.b->info()]), -1);
+    sum.add({es.a->info(), es.b->info(), 0, 0}, 2);
     vertex_in[es.a->info()] = vertex_in[es.b->info()] = 1;
   }
   for (auto v = rt.finite_vertices_begin(); v != rt.finite_vertices_end(); ++v) {
@@ -303,10 +337,7 @@ void lower_dimensional(const RegularTriangulation& rt, const std::vector<Sphere>
         return side(v->point(), u->point()) == CGAL::ON_BOUNDED_SIDE;
       });
     }
-    if (in)
-      sum.add(
-          {4.0 / 3.0 * kPi * std::pow(ball[i].radius, 3), 4.0 * kPi * std::pow(ball[i].radius, 2)},
-          1);
+    if (in) sum.add({i, 0, 0, 0}, 1);
   }
 }
 
@@ -330,7 +361,7 @@ UnionMeasure union_measure_inclusion_exclusion(const Clump& clump) {
   RegularTriangulation rt;
   rt.insert(points.begin(), points.end());
 
-  Sum sum;
+  Sum sum(ball);
   if (rt.dimension() < 3) {
     lower_dimensional(rt, ball, sum);
   } else {
@@ -340,31 +371,29 @@ UnionMeasure union_measure_inclusion_exclusion(const Clump& clump) {
     const auto out = AlphaComplex::EXTERIOR;
     for (auto v = complex.finite_vertices_begin(); v != complex.finite_vertices_end(); ++v) {
       if (complex.classify(VertexHandle(v)) == out) continue;
-      const double r = ball[v->info()].radius;
-      sum.add({4.0 / 3.0 * kPi * r * r * r, 4.0 * kPi * r * r}, 1);
+      sum.add({v->info(), 0, 0, 0}, 1);
     }
     for (auto e = complex.finite_edges_begin(); e != complex.finite_edges_end(); ++e) {
       if (complex.classify(*e) == out) continue;
-      sum.add(two_balls(ball[e->first->vertex(e->second)->info()],
-                        ball[e->first->vertex(e->third)->info()]),
-              -1);
+      sum.add({e->first->vertex(e->second)->info(), e->first->vertex(e->third)->info(), 0, 0}, 2);
     }
     for (auto f = complex.finite_facets_begin(); f != complex.finite_facets_end(); ++f) {
       if (complex.classify(*f) == out) continue;
-      std::array<Sphere, 3> tri;
-      for (int j = 0; j < 3; ++j) tri[j] = ball[f->first->vertex((f->second + j + 1) & 3)->info()];
-      sum.add(three_balls(tri), 1);
+      std::array<int, 4> tri{};
+      for (int j = 0; j < 3; ++j) tri[j] = f->first->vertex((f->second + j + 1) & 3)->info();
+      sum.add(tri, 3);
     }
     for (auto c = complex.finite_cells_begin(); c != complex.finite_cells_end(); ++c) {
       if (complex.classify(AlphaComplex::Cell_handle(c)) == out) continue;
-      std::array<Sphere, 4> tet;
-      for (int j = 0; j < 4; ++j) tet[j] = ball[c->vertex(j)->info()];
-      sum.add(four_balls(tet), -1);
+      std::array<int, 4> tet{};
+      for (int j = 0; j < 4; ++j) tet[j] = c->vertex(j)->info();
+      sum.add(tet, 4);
     }
   }
-  if (!(sum.volume > 0.0) || !std::isfinite(sum.volume) || !std::isfinite(sum.area))
+  const Measure total = sum.total();
+  if (!(total.volume > 0.0) || !std::isfinite(total.volume) || !std::isfinite(total.area))
     throw NumericError("union_measure_inclusion_exclusion: volume is not positive and finite");
-  return {sum.volume, sum.area};
+  return {total.volume, total.area};
 }
 
 }  // namespace clumpkit

@@ -17,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -391,11 +392,36 @@ Piece ball_piece(double r, const std::vector<HalfSpace>& planes, Scratch& w) {
   return piece;
 }
 
+// The interrupter of union_properties, asked by the chunks' threads one at a time with the
+// fraction of the balls done; a stop asked once stops every chunk.
+class Poll {
+ public:
+  Poll(const Interrupter& interrupter, std::size_t total)
+      : interrupter_(interrupter), total_(total) {}
+  void operator()(std::size_t done_now) {
+    if (!interrupter_) return;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    done_ += done_now;
+    if (stop_ || interrupted(interrupter_, "union", double(done_) / double(total_))) {
+      stop_ = true;
+      throw Interrupted("union_properties: interrupted");
+    }
+  }
+
+ private:
+  const Interrupter& interrupter_;
+  const std::size_t total_;
+  std::mutex mutex_;
+  std::size_t done_ = 0;
+  bool stop_ = false;
+};
+
 // The pieces of the balls owned by one chunk (`owned`, indices into `balls`), from the regular
 // triangulation of `local` (owned first, then the halo; indices into `balls`). Pieces of other
 // balls are not touched.
 void chunk_pieces(const std::vector<Sphere>& s, const std::vector<int>& balls,
-                  const std::vector<int>& local, std::size_t owned, std::vector<Piece>& pieces) {
+                  const std::vector<int>& local, std::size_t owned, std::vector<Piece>& pieces,
+                  Poll& poll) {
   const int n = static_cast<int>(local.size());
   // Regular triangulation of the weighted centres (weight r²); info = index into `local`.
   std::vector<std::pair<K::Weighted_point_3, int>> points;
@@ -409,6 +435,7 @@ void chunk_pieces(const std::vector<Sphere>& s, const std::vector<int>& balls,
   RegularTriangulation rt;
   rt.insert(points.begin(), points.end());
   std::vector<std::pair<K::Weighted_point_3, int>>().swap(points);
+  poll(0);
 
   // Power-diagram neighbours of the owned balls = edges of the regular triangulation (any
   // dimension 0–3). The vertices are renumbered in the triangulation's own order (spatially
@@ -484,8 +511,11 @@ void chunk_pieces(const std::vector<Sphere>& s, const std::vector<int>& balls,
   std::vector<int> seen(nv, -1);
   std::vector<std::pair<int, int>> neighbours;  // (index into `balls`, vertex id)
   std::vector<HalfSpace> planes;
+  constexpr std::size_t kPollEvery = 1 << 12;
+  std::size_t since_poll = owned - std::count(is_vertex.begin(), is_vertex.end(), char(1));
   for (int id = 0; id < nv; ++id) {
     if (!is_owned(id)) continue;
+    if (++since_poll >= kPollEvery) poll(std::exchange(since_poll, 0));
     // Each neighbour once, in index order (the half-spaces' order, so a ball's piece does not
     // depend on the chunking).
     neighbours.clear();
@@ -513,15 +543,17 @@ void chunk_pieces(const std::vector<Sphere>& s, const std::vector<int>& balls,
     }
     pieces[index[id]] = ball_piece(bi.radius, planes, scratch);
   }
+  poll(since_poll);
 }
 
 }  // namespace
 
-UnionProperties union_properties(const Clump& clump) {
-  return union_properties_in_chunks(clump, kChunk);
+UnionProperties union_properties(const Clump& clump, const Interrupter& interrupter) {
+  return union_properties_in_chunks(clump, kChunk, interrupter);
 }
 
-UnionProperties union_properties_in_chunks(const Clump& clump, int chunk) {
+UnionProperties union_properties_in_chunks(const Clump& clump, int chunk,
+                                           const Interrupter& interrupter) {
   if (chunk < 1) throw InvalidInput("union_properties: chunk size must be positive");
   validate(clump);
   const std::vector<Sphere>& s = clump.spheres;
@@ -552,6 +584,7 @@ UnionProperties union_properties_in_chunks(const Clump& clump, int chunk) {
   });
   const int chunks = std::max(1, (n + chunk - 1) / chunk);
   std::vector<Piece> pieces(n);
+  Poll poll(interrupter, static_cast<std::size_t>(n));
   tbb::parallel_for(tbb::blocked_range<int>(0, chunks, 1), [&](const tbb::blocked_range<int>& r) {
     for (int c = r.begin(); c != r.end(); ++c) {
       const int first = static_cast<int>(static_cast<long long>(n) * c / chunks);
@@ -562,7 +595,7 @@ UnionProperties union_properties_in_chunks(const Clump& clump, int chunk) {
       std::vector<int> local(order.begin() + first, order.begin() + last);
       for (int k = first - 1; k >= 0 && key(order[k]) >= from; --k) local.push_back(order[k]);
       for (int k = last; k < n && key(order[k]) <= to; ++k) local.push_back(order[k]);
-      chunk_pieces(s, balls, local, static_cast<std::size_t>(last - first), pieces);
+      chunk_pieces(s, balls, local, static_cast<std::size_t>(last - first), pieces, poll);
     }
   });
 

@@ -1,6 +1,7 @@
 // Exact volume, area, centroid and inertia of a union of balls (a clump) via the power diagram.
 #pragma once
 
+#include "geom/progress.h"
 #include "geom/sphere.h"
 
 namespace clumpkit {
@@ -30,15 +31,18 @@ struct UnionProperties {
 /// centres, fewer than four balls), duplicates, hidden balls and tangencies are handled exactly.
 /// Large inputs are triangulated in chunks of 2¹⁸ balls (slabs along the longest axis with a
 /// halo of 2·r_max, in parallel): the pieces are exactly those of one triangulation, in half the
-/// memory or less.
+/// memory or less. The interrupter is told ("union", the fraction of the balls integrated) after
+/// each chunk's triangulation and every 2¹² balls, from one thread at a time; asked to stop, the
+/// work throws Interrupted.
 ///
 /// Throws InvalidInput for an empty clump or a non-finite centre or non-positive radius.
-UnionProperties union_properties(const Clump& clump);
+UnionProperties union_properties(const Clump& clump, const Interrupter& interrupter = {});
 
 /// union_properties with chunks of `chunk` balls instead of 2¹⁸ (for tests: small chunks on a
 /// small clump exercise the stitching). Same results for any chunk size (up to the rounding of
 /// degenerate triangulations: four or more cospherical weighted points).
-UnionProperties union_properties_in_chunks(const Clump& clump, int chunk);
+UnionProperties union_properties_in_chunks(const Clump& clump, int chunk,
+                                           const Interrupter& interrupter = {});
 
 /// Estimated peak bytes of union_properties: the program, the balls and their pieces, and the
 /// regular triangulations of the chunks built at once (one per thread). 10⁶ balls on 2 threads: 652

@@ -83,6 +83,20 @@ Mesh read_mesh_raw(const std::string& path, const MeshReadOptions& options,
 Mesh read_mesh(const std::string& path, MeshReadReport* report, const MeshReadOptions& options) {
   MeshReadReport read;
   Mesh mesh = read_mesh_raw(path, options, &read);
+  validate_solid(mesh, path, &read);
+  if (report) *report = read;
+  return mesh;
+}
+
+void validate_solid(Mesh& mesh, const std::string& path, MeshReadReport* report) {
+  MeshReadReport local;
+  MeshReadReport& read = report ? *report : local;
+  const long n = static_cast<long>(mesh.vertices.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (const int v : mesh.triangles[t])
+      if (v < 0 || v >= n)
+        bad(path, "triangle " + std::to_string(t) + " (counting from 0) has vertex index " +
+                      std::to_string(v) + ", outside 0.." + std::to_string(n - 1));
   for (size_t i = 0; i < mesh.vertices.size(); ++i) {
     const Vec3& p = mesh.vertices[i];
     if (!p.allFinite() || !(p.cwiseAbs().maxCoeff() <= kMaxLength))
@@ -133,8 +147,6 @@ Mesh read_mesh(const std::string& path, MeshReadReport* report, const MeshReadOp
     bad(path, "mesh encloses no volume: signed volume " + format_number(volume, 6) +
                   " after orientation");
   read.reoriented = reoriented;
-  if (report) *report = read;
-  return mesh;
 }
 
 std::vector<std::string> mesh_read_notes(const std::string& path, const MeshReadReport& r) {

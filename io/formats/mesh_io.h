@@ -67,6 +67,11 @@ Mesh read_mesh_raw(const std::string& path, const MeshReadOptions& options = {},
 Mesh read_mesh(const std::string& path, MeshReadReport* report = nullptr,
                const MeshReadOptions& options = {});
 
+/// The checks and repairs of read_mesh on a mesh made in memory (`name` stands for the path in
+/// the messages): indices in range, finite coordinates, zero-area triangles collapsed, closed,
+/// manifold, oriented outward (in place; `report` says what changed), enclosing a volume.
+void validate_solid(Mesh& mesh, const std::string& name, MeshReadReport* report = nullptr);
+
 /// What the user should hear about a read (one line each, "<path>: ..."): vertices merged,
 /// degenerate triangles removed, triangles re-oriented, several shells.
 std::vector<std::string> mesh_read_notes(const std::string& path, const MeshReadReport& report);

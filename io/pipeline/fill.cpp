@@ -32,6 +32,64 @@ nlohmann::ordered_json fidelity_json(const Fidelity& f) {
   return j;
 }
 
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+std::string inside_outside(const FillOptions& fo) {
+  return fo.field.vote_sign ? "Embree ray-parity voting (mesh not watertight)"
+                            : "ray parity along the grid rows (watertight mesh)";
+}
+
+}  // namespace
+
+SolidFill fill_solid(const Mesh& mesh, FillOptions fo, const std::string& name,
+                     const std::function<void(const std::string&)>& note,
+                     const Interrupter& interrupter) {
+  validate(fo);
+  // Phase times, so a user sees what grows with the triangle count (indexing) apart from what
+  // should not (field, fill).
+  SolidFill out;
+  auto t = std::chrono::steady_clock::now();
+  const MeshIndex index(mesh);
+  out.seconds_index = seconds_since(t);
+  t = std::chrono::steady_clock::now();
+  const DistanceField field = make_distance_field(index, fo.field);
+  out.seconds_field = seconds_since(t);
+  // The contract holds by construction on a watertight mesh (the fill's ledger keeps 10 % in
+  // hand); where the report's measure disagrees with the fill's (a mesh that is not watertight:
+  // voting against the field's sign), the fill runs again with a budget scaled down by the
+  // miss, twice at most, and a clump that still breaks the contract is refused: no report shows
+  // an overshoot above max_overshoot with exit 0.
+  const double contract = fo.max_overshoot;
+  for (int attempt = 0;; ++attempt) {
+    t = std::chrono::steady_clock::now();
+    out.fill = fill(index, field, fo, interrupter);
+    out.seconds_fill += seconds_since(t);
+    if (out.fill.clump.spheres.empty())
+      throw InvalidInput(name + ": no sphere fits with --min-radius " +
+                         format_number(fo.min_radius));
+    t = std::chrono::steady_clock::now();
+    out.fidelity = fo.field.vote_sign ? assess_fidelity(mesh, out.fill.clump, out.fill.voxel)
+                                      : assess_fidelity(index, out.fill.clump, out.fill.voxel);
+    out.seconds_fidelity += seconds_since(t);
+    const double measured = out.fidelity.overshoot_fraction;
+    if (!(measured > contract)) break;
+    if (attempt == 2 || fo.max_overshoot == 0)
+      throw InvalidInput(name + ": the clump puts " + format_number(measured, 3) +
+                         " of the volume outside the mesh, over --max-overshoot " +
+                         format_number(contract) + " (" + inside_outside(fo) +
+                         "); close the mesh (clumpkit repair) or allow more");
+    fo.max_overshoot *= 0.5 * contract / measured;
+    note("the clump put " + format_number(measured, 3) + " of the volume outside the mesh (" +
+         inside_outside(fo) + "), over --max-overshoot " + format_number(contract) +
+         "; filled again with a smaller budget");
+  }
+  return out;
+}
+
 FillJobResult run_fill_job(const FillJobOptions& options,
                            const std::function<void(const std::string&)>& note,
                            const std::function<void(const std::string&)>& warn) {
@@ -58,7 +116,6 @@ FillJobResult run_fill_job(const FillJobOptions& options,
   }
   MeshReadReport report;
   Mesh mesh;
-  std::string inside_outside = "ray parity along the grid rows (watertight mesh)";
   try {
     mesh = read_mesh(options.mesh, &report, options.read);
   } catch (const InvalidInput& e) {
@@ -67,53 +124,14 @@ FillJobResult run_fill_job(const FillJobOptions& options,
     mesh = read_mesh_raw(options.mesh, options.read, &report);
     if (mesh.triangles.empty()) throw;
     fo.field.vote_sign = true;
-    inside_outside = "Embree ray-parity voting (mesh not watertight)";
     note(std::string(e.what()) + "; deciding inside/outside by ray-parity voting");
   }
   for (const std::string& line : mesh_read_notes(options.mesh, report)) note(line);
-  // Phase times, so a user sees what grows with the triangle count (reading, indexing) apart
-  // from what should not (field, fill).
-  auto since = [](std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  };
-  const double t_read = since(t0);
-  auto t = std::chrono::steady_clock::now();
-  const MeshIndex index(mesh);
-  const double t_index = since(t);
-  t = std::chrono::steady_clock::now();
-  const DistanceField field = make_distance_field(index, fo.field);
-  const double t_field = since(t);
-  // The contract holds by construction on a watertight mesh (the fill's ledger keeps 10 % in
-  // hand); where the report's measure disagrees with the fill's (a mesh that is not watertight:
-  // voting against the field's sign), the fill runs again with a budget scaled down by the
-  // miss, twice at most, and a clump that still breaks the contract is refused: no report shows
-  // an overshoot above max_overshoot with exit 0.
-  const double contract = fo.max_overshoot;
+  const double t_read = seconds_since(t0);
+  SolidFill solid = fill_solid(mesh, fo, options.mesh, note);
   FillJobResult out;
-  double t_fill = 0, t_fidelity = 0;
-  for (int attempt = 0;; ++attempt) {
-    t = std::chrono::steady_clock::now();
-    out.fill = fill(index, field, fo);
-    t_fill += since(t);
-    if (out.fill.clump.spheres.empty())
-      throw InvalidInput(options.mesh + ": no sphere fits with --min-radius " +
-                         format_number(fo.min_radius));
-    t = std::chrono::steady_clock::now();
-    out.fidelity = fo.field.vote_sign ? assess_fidelity(mesh, out.fill.clump, out.fill.voxel)
-                                      : assess_fidelity(index, out.fill.clump, out.fill.voxel);
-    t_fidelity += since(t);
-    const double measured = out.fidelity.overshoot_fraction;
-    if (!(measured > contract)) break;
-    if (attempt == 2 || fo.max_overshoot == 0)
-      throw InvalidInput(options.mesh + ": the clump puts " + format_number(measured, 3) +
-                         " of the volume outside the mesh, over --max-overshoot " +
-                         format_number(contract) + " (" + inside_outside +
-                         "); close the mesh (clumpkit repair) or allow more");
-    fo.max_overshoot *= 0.5 * contract / measured;
-    note("the clump put " + format_number(measured, 3) + " of the volume outside the mesh (" +
-         inside_outside + "), over --max-overshoot " + format_number(contract) +
-         "; filled again with a smaller budget");
-  }
+  out.fill = std::move(solid.fill);
+  out.fidelity = solid.fidelity;
   const FillResult& r = out.fill;
   const Fidelity& f = out.fidelity;
   if (fo.spheres > 0 && static_cast<int>(r.clump.spheres.size()) < fo.spheres)
@@ -133,18 +151,18 @@ FillJobResult run_fill_job(const FillJobOptions& options,
                            format_fixed(f.overshoot_fraction, 4) + " of the volume",
                        450, false);
   nlohmann::ordered_json& j = out.report = fidelity_json(f);
-  j["inside_outside"] = inside_outside;
+  j["inside_outside"] = inside_outside(fo);
   j["voxel"] = r.voxel;
   j["candidates"] = r.candidates;
   j["stopped_by"] = r.stopped_by;
-  j["max_overshoot"] = contract;
-  j["seconds"] = since(t0);
+  j["max_overshoot"] = fo.max_overshoot;
+  j["seconds"] = seconds_since(t0);
   nlohmann::ordered_json phases;
   phases["read"] = t_read;  // reading, welding and checking the mesh
-  phases["index"] = t_index;
-  phases["field"] = t_field;
-  phases["fill"] = t_fill;
-  phases["fidelity"] = t_fidelity;
+  phases["index"] = solid.seconds_index;
+  phases["field"] = solid.seconds_field;
+  phases["fill"] = solid.seconds_fill;
+  phases["fidelity"] = solid.seconds_fidelity;
   j["seconds_by_phase"] = phases;
   j["triangles"] = mesh.triangles.size();
   return out;

@@ -34,6 +34,19 @@ struct FillJobResult {
   nlohmann::ordered_json report;
 };
 
+/// The fill and fidelity of a mesh that read_mesh or validate_solid accepted (with
+/// options.field.vote_sign: one that read_mesh_raw read), made as the fill job makes them:
+/// index, field, fill, assessment, and the overshoot contract of run_fill_job below. `name`
+/// stands for the mesh in messages; the interrupter is the fill's (geom/fill/fill.h).
+struct SolidFill {
+  FillResult fill;
+  Fidelity fidelity;
+  double seconds_index = 0, seconds_field = 0, seconds_fill = 0, seconds_fidelity = 0;
+};
+SolidFill fill_solid(const Mesh& mesh, FillOptions options, const std::string& name,
+                     const std::function<void(const std::string&)>& note,
+                     const Interrupter& interrupter = {});
+
 /// Reads the mesh, fills it (geom/fill/fill.h), assesses the clump (geom/fill/fidelity.h) and
 /// writes the outputs. Every output's folder is checked, and no output may be the input or
 /// another output, before the work starts, so a refusal leaves nothing behind. `note` hears

@@ -34,6 +34,15 @@ nlohmann::ordered_json mass_json(const MassProperties& m) {
 }  // namespace
 
 VolumeJobResult run_volume_job(const VolumeJobOptions& options) {
+  check_volume_options(options);
+  const Clump clump = read_clump(options.clump);
+  VolumeJobResult result;
+  result.spheres = clump.spheres.size();
+  result.methods = measure_volume(clump, options, options.clump);
+  return result;
+}
+
+void check_volume_options(const VolumeJobOptions& options) {
   const std::vector<std::string> known = {
       "exact", "inclusion-exclusion", "analytic-slice", "pixel-slice", "voxel", "all"};
   if (std::find(known.begin(), known.end(), options.method) == known.end())
@@ -42,8 +51,13 @@ VolumeJobResult run_volume_job(const VolumeJobOptions& options) {
         "' (known: exact, inclusion-exclusion, analytic-slice, pixel-slice, voxel, all)");
   if (options.rule != "centre" && options.rule != "center" && options.rule != "touch")
     throw InvalidInput("--rule: expected centre or touch, got '" + options.rule + "'");
+}
+
+nlohmann::ordered_json measure_volume(const Clump& clump, const VolumeJobOptions& options,
+                                      const std::string& name, const Interrupter& interrupter) {
+  check_volume_options(options);
+  validate(clump);
   const double budget = options.max_bytes;
-  const Clump clump = read_clump(options.clump);
   auto want = [&](const char* m) { return options.method == m || options.method == "all"; };
   PixelSliceOptions po;
   po.slices_across_smallest = options.slices;
@@ -58,7 +72,7 @@ VolumeJobResult run_volume_job(const VolumeJobOptions& options) {
   // Every method asked for is checked before the first one runs, so a refusal costs nothing.
   auto check = [&](const char* method, double need, const std::string& advice) {
     if (!(need <= budget))
-      throw InvalidInput("volume --method " + std::string(method) + " on " + options.clump +
+      throw InvalidInput("volume --method " + std::string(method) + " on " + name +
                          " would need an estimated " + format_number(need / 1073741824.0, 3) +
                          " GiB, more than --max-memory " + format_number(budget / 1073741824.0, 3) +
                          " GiB: " + advice);
@@ -70,12 +84,10 @@ VolumeJobResult run_volume_job(const VolumeJobOptions& options) {
     check("pixel-slice", pixel_slice_bytes_estimate(clump, po),
           "use fewer --slices or a larger --pixel");
   if (want("voxel")) check("voxel", voxel_volume_bytes_estimate(clump, h), "use a larger --voxel");
-  VolumeJobResult result;
-  result.spheres = clump.spheres.size();
-  nlohmann::ordered_json& out = result.methods;
+  nlohmann::ordered_json out;
   if (want("exact")) {
     const double t0 = now();
-    const UnionProperties u = union_properties(clump);
+    const UnionProperties u = union_properties(clump, interrupter);
     auto j = mass_json(u.mass);
     j["area"] = u.area;
     j["hidden_spheres"] = u.hidden;
@@ -120,7 +132,7 @@ VolumeJobResult run_volume_job(const VolumeJobOptions& options) {
                     {"voxel", v.voxel},
                     {"seconds", now() - t0}};
   }
-  return result;
+  return out;
 }
 
 }  // namespace clumpkit

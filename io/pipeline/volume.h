@@ -2,6 +2,9 @@
 // methods asked for (exact power diagram, inclusion–exclusion, analytic and pixel slicing, voxels).
 #pragma once
 
+#include "geom/progress.h"
+#include "geom/sphere.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
@@ -35,5 +38,12 @@ struct VolumeJobResult {
 /// Checks the options and the memory estimate of every method asked for before the first runs
 /// (InvalidInput naming the option, method and estimate), then runs them.
 VolumeJobResult run_volume_job(const VolumeJobOptions& options);
+/// Throws InvalidInput for an unknown method or pixel rule.
+void check_volume_options(const VolumeJobOptions& options);
+/// The measures of run_volume_job on a clump in memory (options.clump unused; `name` stands for
+/// it in messages): the `methods` object. The interrupter is the exact method's
+/// (geom/volume/union_of_balls.h).
+nlohmann::ordered_json measure_volume(const Clump& clump, const VolumeJobOptions& options,
+                                      const std::string& name, const Interrupter& interrupter = {});
 
 }  // namespace clumpkit

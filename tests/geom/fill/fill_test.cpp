@@ -213,3 +213,29 @@ TEST(Fill, OpenMeshByRayVoting) {
   EXPECT_NEAR(voted.mesh_volume, truth.mesh_volume, 0.01 * truth.mesh_volume);
   EXPECT_NEAR(voted.covered_fraction, truth.covered_fraction, 0.01);
 }
+
+TEST(Fill, InterrupterHearsTheBudgetFractionAndStopsTheFill) {
+  Mesh box = make_box(Vec3(3, 2, 1));
+  FillOptions o;
+  o.spheres = 40;
+  o.field.voxels = 20;
+  std::vector<double> heard;
+  const FillResult full = fill(box, o, [&](std::string_view stage, double fraction) {
+    EXPECT_EQ(stage, "fill");
+    heard.push_back(fraction);
+    return false;
+  });
+  ASSERT_EQ(full.clump.spheres.size(), 40u);
+  // Before each sphere after the first (the largest inscribed one), and at the budget: 1/40, …, 1.
+  ASSERT_EQ(heard.size(), 40u);
+  for (std::size_t i = 0; i < heard.size(); ++i) EXPECT_DOUBLE_EQ(heard[i], (i + 1) / 40.0);
+  // Without an interrupter, the same spheres; stopped at the 10th, Interrupted.
+  const FillResult plain = fill(box, o);
+  ASSERT_EQ(plain.clump.spheres.size(), 40u);
+  for (std::size_t i = 0; i < 40; ++i)
+    EXPECT_EQ(plain.clump.spheres[i].center, full.clump.spheres[i].center);
+  int calls = 0;
+  EXPECT_THROW(fill(box, o, [&](std::string_view, double) { return ++calls == 10; }),
+               clumpkit::Interrupted);
+  EXPECT_EQ(calls, 10);
+}

@@ -476,5 +476,38 @@ TEST(UnionOfBalls, TimingPrinted) {
   EXPECT_GT(p.mass.volume, 0.0);
 }
 
+TEST(InclusionExclusion, SameBitsWhateverRanBeforeInTheProcess) {
+  // CGAL shuffles the insertion order with a process-wide generator, so the complex comes out
+  // enumerated differently after other triangulations; the sum must not notice.
+  const Clump c = random_clump(60, 3, 0.4, 1.0);
+  const UnionMeasure first = union_measure_inclusion_exclusion(c);
+  for (int k = 0; k < 3; ++k) {
+    union_properties(random_clump(200 + k, 5 + k));
+    const UnionMeasure again = union_measure_inclusion_exclusion(c);
+    EXPECT_EQ(again.volume, first.volume);
+    EXPECT_EQ(again.area, first.area);
+  }
+}
+
+TEST(UnionOfBalls, InterrupterHearsEveryBallOnceAndStopsTheWork) {
+  const Clump c = random_clump(20000, 11, 0.3, 0.6);
+  std::vector<double> heard;
+  const UnionProperties plain = union_properties_in_chunks(c, 4096);
+  const UnionProperties told =
+      union_properties_in_chunks(c, 4096, [&](std::string_view stage, double fraction) {
+        EXPECT_EQ(stage, "union");
+        heard.push_back(fraction);
+        return false;
+      });
+  EXPECT_EQ(told.mass.volume, plain.mass.volume);
+  ASSERT_FALSE(heard.empty());
+  EXPECT_TRUE(std::is_sorted(heard.begin(), heard.end()));
+  EXPECT_DOUBLE_EQ(heard.back(), 1.0);  // every distinct ball counted once, hidden ones too
+  int calls = 0;
+  EXPECT_THROW(
+      union_properties_in_chunks(c, 4096, [&](std::string_view, double) { return ++calls == 3; }),
+      clumpkit::Interrupted);
+}
+
 }  // namespace
 }  // namespace clumpkit
