@@ -82,46 +82,10 @@ inline void expect_one_line_error(const Result& r, const std::string& needle) {
   EXPECT_NE(r.err.find(needle), std::string::npos) << "missing '" << needle << "' in: " << r.err;
 }
 
-// A tiny specimen recipe (a 60 mm cylinder, about 600 bodies) with its rock-library recipe.
-
-inline const char* kTinyRocks = R"(name = "tiny-rocks"
-seed = 3
-
-[[fraction]]
-name = "rock 10-15 mm"
-method = "block"
-count = 6
-W = { uniform = [0.010, 0.015] }
-L_over_H = { uniform = [1.2, 2.0] }
-W_split = { uniform = [0.3, 0.7] }
-
-[fill]
-spheres = 8
-voxels = 16
-)";
-
-inline const char* kTinySpecimen = R"(name = "tiny-specimen"
-seed = 5
-soil_rock_threshold = 0.010
-rock_mass_fraction = 0.30
-target_relative_density = 0.5
-layers = 2
-
-[container]
-diameter = 0.060
-height = 0.100
-
-[gradation]
-sieves = [0.015, 0.010, 0.006]
-passing = [100, 70, 0]
-
-[fines]
-below = 0.005
-replace_with = [0.005, 0.010]
-
-[rock]
-recipe = "rocks.toml"
-)";
+// A tiny specimen recipe (a 60 mm cylinder, about 600 bodies) with its rock-library recipe, from
+// tests/cli/tiny/ (the Python suite builds the same specimen).
+inline const std::string kTinyRocks = slurp(CLUMPKIT_SOURCE_DIR "/tests/cli/tiny/rocks.toml");
+inline const std::string kTinySpecimen = slurp(CLUMPKIT_SOURCE_DIR "/tests/cli/tiny/tiny.toml");
 
 inline fs::path tiny_specimen_recipe(const fs::path& d) {
   write(d / "rocks.toml", kTinyRocks);
