@@ -97,7 +97,8 @@ void bind_geometry(py::module_& m) {
           "Centroid of the enclosed solid")
       .def(
           "write", [](const Mesh& mesh, const std::string& path) { write_mesh(path, mesh); },
-          "path"_a, "Writes .stl (binary), .obj or .ply by the extension, atomically")
+          "path"_a, py::call_guard<py::gil_scoped_release>(),
+          "Writes .stl (binary), .obj or .ply by the extension, atomically")
       .def("__repr__", [](const Mesh& mesh) {
         return "<clumpkit.Mesh " + std::to_string(mesh.vertices.size()) + " vertices, " +
                std::to_string(mesh.triangles.size()) + " triangles>";
@@ -110,7 +111,7 @@ void bind_geometry(py::module_& m) {
         o.weld_tolerance = weld_tolerance;
         return read_mesh(path, nullptr, o);
       },
-      "path"_a, "weld_tolerance"_a = 0.0,
+      "path"_a, "weld_tolerance"_a = 0.0, py::call_guard<py::gil_scoped_release>(),
       "Reads STL, OBJ or PLY as `clumpkit fill` does (welded, checked, oriented outward)");
 
   const BlockParams block;
@@ -122,6 +123,7 @@ void bind_geometry(py::module_& m) {
         return make_block(p, rng);
       },
       "L"_a, "W"_a, "H"_a, "nd"_a = block.nd, "sl"_a = block.sl, "su"_a = block.su, "seed"_a = 1,
+      py::call_guard<py::gil_scoped_release>(),
       "Rock block of Jin et al. 2017 §2.1 (`clumpkit shape block`): cuboid L × W × H along x, "
       "y, z, edges split in nd, node radii scaled by U(sl, su)");
   const HullParams hull;
@@ -142,6 +144,7 @@ void bind_geometry(py::module_& m) {
       "diameter"_a, "points"_a = hull.points,
       "roundness"_a = std::make_pair(hull.roundness_min, hull.roundness_max),
       "aspect_min"_a = hull.aspect_min, "max_attempts"_a = hull.max_attempts, "seed"_a = 1,
+      py::call_guard<py::gil_scoped_release>(),
       "Random convex hull of Zhang & Zhou 2015 §2.1 (`clumpkit shape hull`): points on a "
       "sphere of the diameter, redrawn until the weighted roundness is in (min, max)");
   const PolyhedronParams poly;
@@ -161,6 +164,7 @@ void bind_geometry(py::module_& m) {
       },
       "diameter"_a, "planes"_a = poly.planes, "E"_a = poly.E, "F"_a = poly.F,
       "offset_min"_a = poly.offset_min, "offset_max"_a = poly.offset_max, "seed"_a = 1,
+      py::call_guard<py::gil_scoped_release>(),
       "Sphere cut by random planes (Hu et al. 2023; `clumpkit shape polyhedron`), stretched "
       "to E = I/L and F = S/I, scaled to the volume-equivalent diameter");
   m.def(
@@ -204,7 +208,8 @@ void bind_geometry(py::module_& m) {
           "The descriptors as `clumpkit describe --json` names them")
       .def("__repr__",
            [](const Descriptors& d) { return "<clumpkit.Descriptors " + to_json(d).dump() + ">"; });
-  m.def("describe", &describe, "mesh"_a, "Every descriptor of a closed mesh");
+  m.def("describe", &describe, "mesh"_a, py::call_guard<py::gil_scoped_release>(),
+        "Every descriptor of a closed mesh (the GIL released: other Python threads run)");
 
   py::class_<Fidelity>(m, "Fidelity", "How faithful a clump is to its mesh (units of the mesh)")
       .def_readonly("spheres", &Fidelity::spheres)
