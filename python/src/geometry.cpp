@@ -60,11 +60,6 @@ py::array_t<long long> triangles_of(const Mesh& mesh) {
   return a;
 }
 
-// What fill returns: the clump and what the fill and its assessment said about it.
-struct FilledClump {
-  SolidFill solid;
-};
-
 // Mass properties of a union of spheres at a density.
 struct UnionMass {
   UnionProperties u;
@@ -226,19 +221,19 @@ void bind_geometry(py::module_& m) {
           "as_dict", [](const Fidelity& f) { return python_of(fidelity_json(f)); },
           "The record as `clumpkit fill --json` names it");
 
-  py::class_<FilledClump>(m, "Clump", "A clump of overlapping spheres made by fill")
+  py::class_<SolidFill>(m, "Clump", "A clump of overlapping spheres made by fill")
       .def_property_readonly(
           "centres",
-          [](const FilledClump& c) {
+          [](const SolidFill& c) {
             std::vector<Vec3> p;
-            for (const Sphere& s : c.solid.fill.clump.spheres) p.push_back(s.center);
+            for (const Sphere& s : c.fill.clump.spheres) p.push_back(s.center);
             return array_of(p);
           },
           "(n, 3) float64 sphere centres")
       .def_property_readonly(
           "radii",
-          [](const FilledClump& c) {
-            const auto& s = c.solid.fill.clump.spheres;
+          [](const SolidFill& c) {
+            const auto& s = c.fill.clump.spheres;
             py::array_t<double> a(static_cast<py::ssize_t>(s.size()));
             for (std::size_t i = 0; i < s.size(); ++i) a.mutable_data()[i] = s[i].radius;
             return a;
@@ -246,19 +241,18 @@ void bind_geometry(py::module_& m) {
           "(n,) float64 sphere radii")
       .def_property_readonly(
           "coverage_curve",
-          [](const FilledClump& c) {
-            const auto& v = c.solid.fill.coverage_curve;
+          [](const SolidFill& c) {
+            const auto& v = c.fill.coverage_curve;
             return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
           },
           "Covered fraction of the interior voxels after each sphere")
-      .def_property_readonly("fidelity", [](const FilledClump& c) { return c.solid.fidelity; })
-      .def_property_readonly("stopped_by",
-                             [](const FilledClump& c) { return c.solid.fill.stopped_by; })
-      .def_property_readonly("voxel", [](const FilledClump& c) { return c.solid.fill.voxel; })
-      .def("__len__", [](const FilledClump& c) { return c.solid.fill.clump.spheres.size(); })
-      .def("__repr__", [](const FilledClump& c) {
-        return "<clumpkit.Clump " + std::to_string(c.solid.fill.clump.spheres.size()) +
-               " spheres, covered " + std::to_string(c.solid.fidelity.covered_fraction) + ">";
+      .def_property_readonly("fidelity", [](const SolidFill& c) { return c.fidelity; })
+      .def_property_readonly("stopped_by", [](const SolidFill& c) { return c.fill.stopped_by; })
+      .def_property_readonly("voxel", [](const SolidFill& c) { return c.fill.voxel; })
+      .def("__len__", [](const SolidFill& c) { return c.fill.clump.spheres.size(); })
+      .def("__repr__", [](const SolidFill& c) {
+        return "<clumpkit.Clump " + std::to_string(c.fill.clump.spheres.size()) +
+               " spheres, covered " + std::to_string(c.fidelity.covered_fraction) + ">";
       });
 
   m.def(
@@ -278,10 +272,10 @@ void bind_geometry(py::module_& m) {
         if (voxels) o.field.voxels = *voxels;
         o.field.max_voxels = voxels ? 0.0 : kDefaultMaxVoxels;
         if (voxel_size) o.field.voxel_size = *voxel_size;
-        FilledClump out;
+        SolidFill out;
         run_interruptible(
             [&](const Interrupter& interrupter) {
-              out.solid = fill_solid(
+              out = fill_solid(
                   mesh, o, "mesh", [](const std::string&) {}, interrupter);
             },
             progress);
