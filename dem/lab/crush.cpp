@@ -108,7 +108,7 @@ CrushResult crush_particle(World& world, double diameter, const CrushOptions& o,
   const int steps_per_sample =
       std::max(1, static_cast<int>(std::ceil(travel_per_sample / (speed * r.timestep))));
   const double max_travel = o.max_strain * r.gap;
-  r.samples.push_back({0.0, 0.0, false});
+  r.samples.push_back({0.0, 0.0, false, true});
   std::vector<double> difference{0.0};
   for (;;) {
     world.step(steps_per_sample);
@@ -118,7 +118,7 @@ CrushResult crush_particle(World& world, double diameter, const CrushOptions& o,
     const double force = 0.5 * (lower + upper);
     difference.push_back(std::abs(lower - upper));
     const FragmentCount f = count_fragments(world);
-    r.samples.push_back({travel, force, f.largest < o.intact_fraction});
+    r.samples.push_back({travel, force, f.largest < o.intact_fraction, f.all == 1});
     r.peak = crushing_peak(r.samples, diameter, o.rule);
     if (r.peak.found || travel >= max_travel) break;
     if (interrupted(interrupter, "crush", travel / max_travel))

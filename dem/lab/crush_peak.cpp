@@ -38,8 +38,8 @@ CrushPeak crushing_peak(const std::vector<CrushSample>& samples, double diameter
     } else if (!(s.force >= rule.contact * samples[best].force)) {
       free_travel += s.travel - samples[i - 1].travel;
     }
-    const bool collapsed =
-        s.travel - samples[low_from].travel - free_travel >= rule.collapse_travel * diameter;
+    const bool collapsed = !s.whole && s.travel - samples[low_from].travel - free_travel >=
+                                           rule.collapse_travel * diameter;
     if (s.split || collapsed) {
       p.found = true;
       p.index = best;

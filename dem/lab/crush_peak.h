@@ -23,12 +23,16 @@ struct PeakRule {
   double contact = 0.1;
 };
 
-/// One sample of a crushing test: platen travel (m), force (N), and whether the particle's
-/// bonded cells had already come apart (crush.h: no piece holds 90 % of the mass).
+/// One sample of a crushing test: platen travel (m), force (N), whether the particle's bonded
+/// cells had already come apart (crush.h: no piece holds 90 % of the mass), and whether it was
+/// still whole (every cell joined by intact bonds: nothing has broken off).
 struct CrushSample {
   double travel = 0.0;
   double force = 0.0;
   bool split = false;
+  /// A whole particle whose force falls and stays low has tipped over or slid between the
+  /// platens (an elongated one stood on its end does at friction 0.3): that is not a collapse.
+  bool whole = false;
 };
 
 struct CrushPeak {
@@ -42,7 +46,8 @@ struct CrushPeak {
 
 /// Scans the samples in order with the running maximum F* (its first sample on ties): the peak is
 /// F* at the first sample where F ≤ (1 − drop)·F* and the particle is split ("split"), or where F
-/// has stayed ≤ (1 − drop)·F* over collapse_travel·D of travel with F ≥ contact·F* ("collapse":
+/// has stayed ≤ (1 − drop)·F* over collapse_travel·D of travel with F ≥ contact·F* and the
+/// particle is not whole ("collapse": a whole particle tipped over rather than collapsed;
 /// the travel of a platen gone free, or pushing a loose chip aside, after the touching corner
 /// cell broke off is not counted, or that chip would pass for the particle's failure). A drop that
 /// recovers above (1 − drop)·F* before either is not a failure; a later, higher maximum replaces

@@ -12,15 +12,23 @@ namespace clumpkit::dem {
 
 namespace {
 
-void check_strengths(const std::vector<double>& s) {
-  if (s.size() < 3)
-    throw InvalidInput("Weibull fit: needs at least 3 strengths, got " + std::to_string(s.size()));
+void check_values(const std::vector<double>& s, const char* what) {
   for (std::size_t i = 0; i < s.size(); ++i)
     if (!(s[i] > 0.0) || !std::isfinite(s[i]))
-      throw InvalidInput("Weibull fit: strength " + std::to_string(i) +
+      throw InvalidInput(std::string("Weibull fit: ") + what + " " + std::to_string(i) +
                          " must be positive and finite, got " + format_number(s[i]));
-  if (*std::min_element(s.begin(), s.end()) == *std::max_element(s.begin(), s.end()))
-    throw InvalidInput("Weibull fit: the strengths are all equal (" + format_number(s[0]) + ")");
+}
+
+void check_strengths(const std::vector<double>& failed, const std::vector<double>& survived) {
+  if (failed.size() < 3)
+    throw InvalidInput("Weibull fit: needs at least 3 failures, got " +
+                       std::to_string(failed.size()));
+  check_values(failed, "strength");
+  check_values(survived, "survivor's stress");
+  if (*std::min_element(failed.begin(), failed.end()) ==
+      *std::max_element(failed.begin(), failed.end()))
+    throw InvalidInput("Weibull fit: the strengths are all equal (" + format_number(failed[0]) +
+                       ")");
 }
 
 // Slope and intercept of the least-squares line y = a·x + b.
@@ -62,29 +70,53 @@ std::vector<double> ranks(const std::vector<double>& v) {
 
 }  // namespace
 
-WeibullFit weibull_least_squares(const std::vector<double>& strengths) {
-  check_strengths(strengths);
-  std::vector<double> s = strengths;
-  std::sort(s.begin(), s.end());
-  const double n = static_cast<double>(s.size());
+std::vector<std::pair<double, double>> weibull_plotting_positions(
+    const std::vector<double>& failed, const std::vector<double>& survived) {
+  // Ascending, a failure before a survivor of the same stress (false sorts first).
+  std::vector<std::pair<double, bool>> all;
+  for (double v : failed) all.push_back({v, false});
+  for (double v : survived) all.push_back({v, true});
+  std::sort(all.begin(), all.end());
+  const double n = static_cast<double>(all.size());
+  std::vector<std::pair<double, double>> out;
+  double rank = 0.0;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (all[i].second) continue;
+    const double reverse = n - static_cast<double>(i);
+    rank = (reverse * rank + n + 1.0) / (reverse + 1.0);
+    out.push_back({all[i].first, 1.0 - rank / (n + 1.0)});
+  }
+  return out;
+}
+
+WeibullFit weibull_least_squares(const std::vector<double>& failed,
+                                 const std::vector<double>& survived) {
+  check_strengths(failed, survived);
   std::vector<double> x, y;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const double ps = 1.0 - (i + 1) / (n + 1);
-    x.push_back(std::log(s[i]));
+  for (const auto& [sigma, ps] : weibull_plotting_positions(failed, survived)) {
+    x.push_back(std::log(sigma));
     y.push_back(std::log(std::log(1.0 / ps)));
   }
   const auto [m, b] = line(x, y);
   return {std::exp(-b / m), m};
 }
 
-WeibullFit weibull_maximum_likelihood(const std::vector<double>& strengths) {
-  check_strengths(strengths);
-  // Scaled by the largest strength, so that σ^m stays finite for any m.
-  const double top = *std::max_element(strengths.begin(), strengths.end());
+WeibullFit weibull_maximum_likelihood(const std::vector<double>& failed,
+                                      const std::vector<double>& survived) {
+  check_strengths(failed, survived);
+  // Scaled by the largest value, so that x^m stays finite for any m.
+  const double top =
+      std::max(*std::max_element(failed.begin(), failed.end()),
+               survived.empty() ? 0.0 : *std::max_element(survived.begin(), survived.end()));
   std::vector<double> l;
-  for (double v : strengths) l.push_back(std::log(v / top));
-  const double mean = std::accumulate(l.begin(), l.end(), 0.0) / l.size();
-  auto f = [&](double m) {  // increasing in m, from −∞ to −mean(ln) > 0
+  double mean = 0.0;  // of the failures' logarithms
+  for (double v : failed) {
+    l.push_back(std::log(v / top));
+    mean += l.back();
+  }
+  mean /= static_cast<double>(failed.size());
+  for (double v : survived) l.push_back(std::log(v / top));
+  auto f = [&](double m) {  // increasing in m, from −∞ to −mean > 0
     double a = 0, b = 0;
     for (double x : l) {
       const double w = std::exp(m * x);
@@ -103,14 +135,34 @@ WeibullFit weibull_maximum_likelihood(const std::vector<double>& strengths) {
   const double m = 0.5 * (lo + hi);
   double sum = 0;
   for (double x : l) sum += std::exp(m * x);
-  return {top * std::pow(sum / l.size(), 1.0 / m), m};
+  return {top * std::pow(sum / static_cast<double>(failed.size()), 1.0 / m), m};
 }
 
-WeibullEstimate weibull_bootstrap(const std::vector<double>& strengths, WeibullMethod method,
+std::pair<std::vector<double>, std::vector<double>> weibull_resample(
+    const std::vector<double>& failed, const std::vector<double>& survived, Rng& rng) {
+  const std::size_t n = failed.size() + survived.size();
+  for (;;) {
+    std::pair<std::vector<double>, std::vector<double>> draw;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t i = rng.below(n);
+      if (i < failed.size())
+        draw.first.push_back(failed[i]);
+      else
+        draw.second.push_back(survived[i - failed.size()]);
+    }
+    const auto& f = draw.first;
+    if (f.size() >= 3 &&
+        *std::min_element(f.begin(), f.end()) < *std::max_element(f.begin(), f.end()))
+      return draw;
+  }
+}
+
+WeibullEstimate weibull_bootstrap(const std::vector<double>& failed,
+                                  const std::vector<double>& survived, WeibullMethod method,
                                   int resamples, Rng& rng, double level) {
-  auto fit = [&](const std::vector<double>& s) {
-    return method == WeibullMethod::least_squares ? weibull_least_squares(s)
-                                                  : weibull_maximum_likelihood(s);
+  auto fit = [&](const std::vector<double>& f, const std::vector<double>& s) {
+    return method == WeibullMethod::least_squares ? weibull_least_squares(f, s)
+                                                  : weibull_maximum_likelihood(f, s);
   };
   if (resamples < 10)
     throw InvalidInput("Weibull bootstrap: needs at least 10 resamples, got " +
@@ -118,17 +170,13 @@ WeibullEstimate weibull_bootstrap(const std::vector<double>& strengths, WeibullM
   if (!(level > 0.0 && level < 1.0))
     throw InvalidInput("Weibull bootstrap: level must be in (0, 1), got " + format_number(level));
   WeibullEstimate e;
-  e.fit = fit(strengths);
+  e.fit = fit(failed, survived);
   std::vector<double> s0, m;
-  std::vector<double> draw(strengths.size());
   for (int r = 0; r < resamples; ++r) {
-    do {
-      for (double& d : draw) d = strengths[rng.below(strengths.size())];
-    } while (*std::min_element(draw.begin(), draw.end()) ==
-             *std::max_element(draw.begin(), draw.end()));
-    const WeibullFit f = fit(draw);
-    s0.push_back(f.sigma0);
-    m.push_back(f.modulus);
+    const auto [f, s] = weibull_resample(failed, survived, rng);
+    const WeibullFit w = fit(f, s);
+    s0.push_back(w.sigma0);
+    m.push_back(w.modulus);
   }
   const double tail = 0.5 * (1.0 - level);
   e.sigma0_lo = percentile(s0, tail);

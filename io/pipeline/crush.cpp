@@ -213,12 +213,19 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
     throw Interrupted("crush interrupted; the finished particles are kept in " + out.string() +
                       " for a rerun");
 
+  // The largest force of each curve: a survivor's strength lies above it over D².
+  std::vector<double> max_force(total, 0.0);
+  for (std::size_t i = 0; i < total; ++i)
+    for (const dem::CrushSample& x : read_curve(parts / (id_name(i) + ".csv")))
+      max_force[i] = std::max(max_force[i], x.force);
+
   // Per particle table.
   write_file_atomically((out / "results.csv").string(), [&](std::ostream& o) {
     o << "id,set,sample,diameter_m,cells,bonds,failed,failure,peak_force_n,peak_travel_m,"
-         "strength_pa,fragments,largest_fragment,imbalance,steps\n"
+         "strength_pa,fragments,largest_fragment,imbalance,steps,max_force_n\n"
       << std::setprecision(17);
-    for (const auto& r : records)
+    for (std::size_t i = 0; i < total; ++i) {
+      const auto& r = records[i];
       o << r["id"].get<std::size_t>() << "," << r["set"].get<std::string>() << ","
         << r["sample"].get<std::size_t>() << "," << r["diameter"].get<double>() << ","
         << r["cells"].get<std::size_t>() << "," << r["bonds"].get<std::size_t>() << ","
@@ -226,25 +233,35 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
         << r["peak_force"].get<double>() << "," << r["peak_travel"].get<double>() << ","
         << r["strength"].get<double>() << "," << r["fragments"].get<int>() << ","
         << r["largest_fragment"].get<double>() << "," << r["imbalance"].get<double>() << ","
-        << r["steps"].get<long long>() << "\n";
+        << r["steps"].get<long long>() << "," << max_force[i] << "\n";
+    }
   });
 
   // Weibull statistics per set (Hu et al. 2023 eq. 12), bootstrap streams after the particles'.
+  // A particle that did not fail within the test (tipped over, or pressed flat without a load
+  // drop) enters as a right-censored sample at the largest stress it carried.
   nlohmann::ordered_json report;
   report["recipe"] = recipe.path;
   report["particles"] = total;
   report["units"] = "SI: m, N, Pa (the paper's mm and MPa: × 1e3 and × 1e-6)";
   report["bond_scale"] = recipe.scale;
   report["density_scaling"] = recipe.rig.density_scaling;
-  std::vector<std::vector<double>> strengths(recipe.sets.size());
+  report["survivors"] =
+      "a particle without a failure by the end of its test enters its set's fits as a "
+      "right-censored sample at the largest stress it carried (least squares: Johnson's adjusted "
+      "ranks; maximum likelihood: its survival probability)";
+  std::vector<std::vector<double>> strengths(recipe.sets.size()), survived(recipe.sets.size());
   std::vector<double> set_diameter(recipe.sets.size(), 0.0), set_force(recipe.sets.size(), 0.0);
   for (std::size_t i = 0; i < total; ++i) {
     const auto& r = records[i];
     const std::size_t s = jobs[i].set;
-    set_diameter[s] += r["diameter"].get<double>() / recipe.sets[s].samples;
+    const double d = r["diameter"].get<double>();
+    set_diameter[s] += d / recipe.sets[s].samples;
     if (r["failed"].get<bool>()) {
       strengths[s].push_back(r["strength"].get<double>());
       set_force[s] += r["peak_force"].get<double>();
+    } else if (max_force[i] > 0.0) {
+      survived[s].push_back(max_force[i] / (d * d));
     }
   }
   std::vector<double> law_d, law_sigma;
@@ -261,7 +278,9 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
     j["axis"] = std::string(cs.axis == 0 ? "long" : cs.axis == 1 ? "intermediate" : "short");
     j["samples"] = cs.samples;
     j["failed"] = strengths[s].size();
+    j["survived"] = survived[s].size();
     std::vector<double> v = strengths[s];
+    const std::vector<double>& c = survived[s];
     double mean = 0;
     for (double x : v) mean += x / double(std::max<std::size_t>(1, v.size()));
     j["mean_strength"] = mean;
@@ -271,10 +290,10 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
     if (spread) {
       Rng boot = Rng::stream(recipe.seed, total + 2 * s);
       const dem::WeibullEstimate ls =
-          dem::weibull_bootstrap(v, dem::WeibullMethod::least_squares, recipe.bootstrap, boot);
+          dem::weibull_bootstrap(v, c, dem::WeibullMethod::least_squares, recipe.bootstrap, boot);
       Rng boot_ml = Rng::stream(recipe.seed, total + 2 * s + 1);
       const dem::WeibullEstimate ml = dem::weibull_bootstrap(
-          v, dem::WeibullMethod::maximum_likelihood, recipe.bootstrap, boot_ml);
+          v, c, dem::WeibullMethod::maximum_likelihood, recipe.bootstrap, boot_ml);
       j["sigma0"] = ls.fit.sigma0;
       j["sigma0_ci90"] = pair(ls.sigma0_lo, ls.sigma0_hi);
       j["weibull_modulus"] = ls.fit.modulus;
@@ -288,11 +307,9 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
         law_sigma.push_back(ls.fit.sigma0);
         law_sets.push_back(s);
       }
-      std::sort(v.begin(), v.end());
       PlotSeries p;
-      for (std::size_t i = 0; i < v.size(); ++i) {
-        const double ps = 1.0 - double(i + 1) / double(v.size() + 1);
-        p.points.x.push_back(std::log(v[i] * 1e-6));
+      for (const auto& [sigma, ps] : dem::weibull_plotting_positions(v, c)) {
+        p.points.x.push_back(std::log(sigma * 1e-6));
         p.points.y.push_back(std::log(std::log(1.0 / ps)));
       }
       p.label = cs.name;
@@ -320,15 +337,8 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
     for (int b = 0; b < recipe.bootstrap; ++b) {
       std::vector<double> s0;
       for (std::size_t s : law_sets) {
-        const std::vector<double>& v = strengths[s];
-        std::vector<double> draw(v.size());
-        for (;;) {
-          for (double& x : draw) x = v[boot.below(v.size())];
-          if (*std::max_element(draw.begin(), draw.end()) >
-              *std::min_element(draw.begin(), draw.end()))
-            break;
-        }
-        s0.push_back(dem::weibull_least_squares(draw).sigma0);
+        const auto [f, c] = dem::weibull_resample(strengths[s], survived[s], boot);
+        s0.push_back(dem::weibull_least_squares(f, c).sigma0);
       }
       alphas.push_back(dem::size_law(law_d, s0).exponent);
     }

@@ -63,6 +63,7 @@ TEST(CliQuickCrush, ReportHoldsEachSetsWeibullFitAndTheSizeLaw) {
     SCOPED_TRACE(s["name"].get<std::string>());
     ASSERT_EQ(s["samples"].get<int>(), 3);
     ASSERT_EQ(s["failed"].get<int>(), 3);  // every particle breaks within 30 % of the gap
+    ASSERT_EQ(s["survived"].get<int>(), 0);
     const double sigma0 = s["sigma0"].get<double>();
     // σ0 in Pa, inside its own bootstrap interval; strengths of the order of the bonds' 9 MPa.
     EXPECT_GE(sigma0, s["sigma0_ci90"][0].get<double>());
@@ -88,9 +89,18 @@ TEST(CliQuickCrush, ReportHoldsEachSetsWeibullFitAndTheSizeLaw) {
     std::vector<std::string> c;
     std::stringstream ss(line);
     for (std::string x; std::getline(ss, x, ',');) c.push_back(x);
-    ASSERT_EQ(c.size(), 15u);
+    ASSERT_EQ(c.size(), 16u);
     const double dm = std::stod(c[3]), fp = std::stod(c[8]), st = std::stod(c[10]);
     EXPECT_NEAR(st, fp / (dm * dm), 1e-9 * st);
+    // max_force_n: the largest force of the particle's curve (a survivor's censoring stress × D²).
+    std::istringstream curve(
+        slurp(out / "particles" / (std::string(5 - c[0].size(), '0') + c[0] + ".csv")));
+    double largest = 0;
+    std::getline(curve, line);
+    for (std::string row; std::getline(curve, row);)
+      largest = std::max(largest, std::stod(row.substr(row.find(',') + 1)));
+    EXPECT_EQ(std::stod(c[15]), largest);
+    EXPECT_GE(largest, fp);
     if (c[1] == "d16") sum += st, ++rows;
   }
   EXPECT_EQ(rows, 3);

@@ -1,5 +1,5 @@
 // The crushing peak rule on synthetic curves: a clean brittle drop, a noisy plateau, a double
-// peak, a drop that recovers, and a collapse without a split.
+// peak, a drop that recovers, a collapse without a split, and a whole particle tipping over.
 #include "dem/lab/crush_peak.h"
 
 #include "geom/errors.h"
@@ -105,6 +105,23 @@ TEST(CrushPeak, APlatenGoneFreeAfterAChipIsNotACollapse) {
   const CrushPeak chip = crushing_peak(curve(g), kD, PeakRule{0.35, 0.05, 0.0});
   ASSERT_TRUE(chip.found);
   EXPECT_DOUBLE_EQ(chip.force, 140.0);
+}
+
+TEST(CrushPeak, AWholeParticleThatTipsOverHasNotCollapsed) {
+  // An elongated particle stood on its end carries 300 N, tips over and is pushed along at
+  // 150 N: with every cell still bonded (whole) that is no collapse however long it lasts; once
+  // a piece has broken off, the low stretch is one.
+  std::vector<double> f = {0, 100, 200, 300};
+  for (int i = 0; i < 300; ++i) f.push_back(150.0);
+  std::vector<CrushSample> c = curve(f);
+  for (CrushSample& s : c) s.whole = true;
+  EXPECT_FALSE(crushing_peak(c, kD).found);
+  for (std::size_t i = 250; i < c.size(); ++i) c[i].whole = false;
+  const CrushPeak p = crushing_peak(c, kD);
+  ASSERT_TRUE(p.found);
+  EXPECT_EQ(p.by, "collapse");
+  EXPECT_EQ(p.detected, 250u);
+  EXPECT_DOUBLE_EQ(p.force, 300.0);
 }
 
 TEST(CrushPeak, BadRule) {

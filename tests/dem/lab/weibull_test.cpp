@@ -1,5 +1,6 @@
 // Weibull statistics of crushing strengths: the size law of Hu et al. 2023 Table 1, both fits on
-// samples of a known Weibull law, scale invariance, bootstrap coverage, rank correlation.
+// samples of a known Weibull law (also censored), scale invariance, bootstrap coverage, rank
+// correlation.
 #include "dem/lab/weibull.h"
 
 #include "geom/errors.h"
@@ -105,6 +106,70 @@ TEST(Weibull, BootstrapIntervalsCoverTheTrueValues) {
   EXPECT_EQ(weibull_bootstrap(s, WeibullMethod::maximum_likelihood, 50, a).modulus_hi,
             weibull_bootstrap(s, WeibullMethod::maximum_likelihood, 50, b).modulus_hi);
   EXPECT_THROW(weibull_bootstrap(s, WeibullMethod::least_squares, 5, a), InvalidInput);
+}
+
+TEST(Weibull, SurvivorsEnterAsCensoredSamples) {
+  // A survivor's strength is only known to lie above the stress it carried. Johnson's adjusted
+  // ranks by hand: failures 1 and 3, a survivor at 2, N = 3: the first failure has reverse rank 3,
+  // rank (3·0 + 4)/4 = 1 and Ps = 3/4; the second reverse rank 1, rank (1·1 + 4)/2 = 2.5 and Ps =
+  // 1 − 2.5/4.
+  const auto p = weibull_plotting_positions({3.0, 1.0}, {2.0});
+  ASSERT_EQ(p.size(), 2u);
+  EXPECT_EQ(p[0], std::make_pair(1.0, 0.75));
+  EXPECT_EQ(p[1], std::make_pair(3.0, 0.375));
+  // Without survivors the ranks are i exactly: Ps_i = 1 − i/(N + 1).
+  const auto plain = weibull_plotting_positions({5.0, 2.0, 9.0, 4.0});
+  for (std::size_t i = 0; i < plain.size(); ++i)
+    EXPECT_EQ(plain[i].second, 1.0 - double(i + 1) / 5.0);
+
+  // A known law censored at a fixed stress (every sample above 1.1·σ0 survives it, about 27 %)
+  // and at a random one (each sample's test stops at a uniform stress in [0.5, 2]·σ0): both
+  // fits recover σ0 and m; dropping the survivors, or taking them for failures, does not.
+  Rng rng(11);
+  const std::vector<double> s = weibull_sample(10.5e6, 4.2, 20000, rng);
+  std::vector<double> fixed_f, fixed_s, random_f, random_s;
+  for (double v : s) {
+    (v <= 1.1 * 10.5e6 ? fixed_f : fixed_s).push_back(std::min(v, 1.1 * 10.5e6));
+    const double stop = 10.5e6 * (0.5 + 1.5 * rng.uniform());
+    (v <= stop ? random_f : random_s).push_back(std::min(v, stop));
+  }
+  EXPECT_NEAR(double(fixed_s.size()) / s.size(), std::exp(-std::pow(1.1, 4.2)), 0.01);
+  for (const auto& [f, c] :
+       {std::make_pair(fixed_f, fixed_s), std::make_pair(random_f, random_s)}) {
+    for (const WeibullFit w : {weibull_least_squares(f, c), weibull_maximum_likelihood(f, c)}) {
+      EXPECT_NEAR(w.sigma0 / 10.5e6, 1.0, 0.015);
+      EXPECT_NEAR(w.modulus / 4.2, 1.0, 0.05);
+    }
+    EXPECT_LT(weibull_least_squares(f).sigma0, 0.96 * 10.5e6);  // survivors dropped
+    std::vector<double> as_failures = f;
+    as_failures.insert(as_failures.end(), c.begin(), c.end());
+    EXPECT_LT(weibull_maximum_likelihood(as_failures).sigma0, 0.97 * 10.5e6);
+  }
+  // The censored likelihood ln L = Σ_f [ln m − m ln σ0 + (m − 1) ln x] − Σ_all (x/σ0)^m is
+  // largest at the ML fit.
+  const std::vector<double> f = {7.1, 8.4, 9.0, 9.9, 10.4}, c = {6.0, 11.8, 12.5};
+  const WeibullFit ml = weibull_maximum_likelihood(f, c);
+  auto log_l = [&](double sigma0, double m) {
+    double l = 0;
+    for (double x : f) l += std::log(m) - m * std::log(sigma0) + (m - 1) * std::log(x);
+    for (const auto* v : {&f, &c})
+      for (double x : *v) l -= std::pow(x / sigma0, m);
+    return l;
+  };
+  for (const double ds : {-1e-3, 0.0, 1e-3})
+    for (const double dm : {-1e-3, 0.0, 1e-3})
+      if (ds != 0.0 || dm != 0.0) {
+        EXPECT_LT(log_l(ml.sigma0 * (1 + ds), ml.modulus * (1 + dm)), log_l(ml.sigma0, ml.modulus));
+      }
+  // The bootstrap brackets the fit and repeats on the same stream; bad survivors are refused.
+  Rng a(3), b(3);
+  const WeibullEstimate e = weibull_bootstrap(f, c, WeibullMethod::least_squares, 50, a);
+  EXPECT_LE(e.sigma0_lo, e.fit.sigma0);
+  EXPECT_GE(e.sigma0_hi, e.fit.sigma0);
+  EXPECT_EQ(weibull_bootstrap(f, c, WeibullMethod::least_squares, 50, b).sigma0_hi, e.sigma0_hi);
+  EXPECT_THROW(weibull_least_squares({1.0, 2.0}, {3.0, 4.0}), InvalidInput);
+  EXPECT_THROW(weibull_maximum_likelihood(f, {std::nan("")}), InvalidInput);
+  EXPECT_THROW(weibull_least_squares(f, {-1.0}), InvalidInput);
 }
 
 TEST(Weibull, SpearmanRanks) {
