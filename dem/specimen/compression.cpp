@@ -205,12 +205,21 @@ World loose_packing(const CompressionSpec& spec, std::vector<Body> bodies,
   return world;
 }
 
-// Re-tags every body by the zone of its final centre (counting those that left the zone they
-// were placed in) and measures each zone's porosity one of its largest diameters from the walls.
+// Re-tags every body by the zone of its final centre, counting those that left the zone they
+// were placed in, the migrated ones among them (more than their own diameter beyond it) and the
+// mis-zoned ones (migrated into a zone drawn without their size: a small sphere of a mixed layer
+// that drifts into a core of the same spheres is where its size belongs), and measures each
+// zone's porosity one of its largest diameters from the walls.
 void measure_zones(const CompressionSpec& spec, const Prism& prism, World& world,
                    CompressionResult& r) {
   const ZoneLayout& layout = spec.zones;
   const int n = static_cast<int>(layout.regions.size());
+  // The bounding diameters drawn for each zone (bodies still carry the zone they were placed in).
+  std::vector<double> d_lo(n, std::numeric_limits<double>::infinity()), d_hi(n, 0.0);
+  for (const Body& b : world.bodies()) {
+    d_lo[b.zone] = std::min(d_lo[b.zone], 2.0 * b.bounding_radius());
+    d_hi[b.zone] = std::max(d_hi[b.zone], 2.0 * b.bounding_radius());
+  }
   double r_min = std::numeric_limits<double>::infinity();
   for (Body& b : world.bodies()) {
     const double c = zone_coordinate(layout, b.position);
@@ -220,7 +229,12 @@ void measure_zones(const CompressionSpec& spec, const Prism& prism, World& world
       ++placed.left_zone, ++r.left_zone;
       const double beyond =
           std::max(b.zone > 0 ? placed.inner - c : 0.0, b.zone + 1 < n ? c - placed.outer : 0.0);
-      if (beyond > 2.0 * b.bounding_radius()) ++placed.mis_zoned, ++r.mis_zoned;
+      const double d = 2.0 * b.bounding_radius();
+      if (beyond > d) {
+        ++placed.migrated, ++r.migrated;
+        const double slack = 1e-9 * d;  // the same size drawn at the same scale, rounded
+        if (d < d_lo[k] - slack || d > d_hi[k] + slack) ++placed.mis_zoned, ++r.mis_zoned;
+      }
     }
     b.zone = k;
     ++r.zones[k].count;

@@ -75,6 +75,10 @@ struct ZoneResult {
   long left_zone = 0;  ///< bodies placed in this region whose centre ended in another
   /// Of those, the ones that ended more than their own diameter beyond the region's bounds
   /// (migrated, not just nudged across a bound).
+  long migrated = 0;
+  /// Of those, the ones whose diameter lies outside the range drawn for the region they ended
+  /// in: a body where its size does not belong (a small sphere of a mixed layer in a core of the
+  /// same spheres is not one).
   long mis_zoned = 0;
 };
 
@@ -89,10 +93,10 @@ struct CompressionResult {
   double mean_stress = 0;         ///< Love–Weber mean stress at the end (Pa, compression +)
   double coordination = 0;        ///< mean contacts per body at the end
   long compression_steps = 0, relax_steps = 0;
-  std::string relaxed_by;             ///< "unbalanced_ratio" or "step_cap"
-  double timestep = 0;                ///< s
-  std::vector<ZoneResult> zones;      ///< zoned specimens only, innermost first
-  long mis_zoned = 0, left_zone = 0;  ///< Σ over the zones
+  std::string relaxed_by;                           ///< "unbalanced_ratio" or "step_cap"
+  double timestep = 0;                              ///< s
+  std::vector<ZoneResult> zones;                    ///< zoned specimens only, innermost first
+  long mis_zoned = 0, migrated = 0, left_zone = 0;  ///< Σ over the zones
 };
 
 /// Draws the particles of spec.classes for the target porosity (layer_particles with the solid

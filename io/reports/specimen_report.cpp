@@ -243,6 +243,7 @@ nlohmann::ordered_json compression_report(const SpecimenRecipe& recipe,
       e["solid_drawn"] = z.solid_drawn;
       e["count"] = z.count;
       e["left_zone"] = z.left_zone;
+      e["migrated"] = z.migrated;
       e["mis_zoned"] = z.mis_zoned;
       zones.push_back(std::move(e));
     }
@@ -250,6 +251,8 @@ nlohmann::ordered_json compression_report(const SpecimenRecipe& recipe,
                   {"origin", {layout.origin.x(), layout.origin.y(), layout.origin.z()}},
                   {"wall_excess_diameters", dem::CompressionSpec().wall_excess},
                   {"left_zone", r.left_zone},
+                  {"migrated", r.migrated},
+                  {"migrated_fraction", double(r.migrated) / double(r.world.bodies().size())},
                   {"mis_zoned", r.mis_zoned},
                   {"mis_zoned_fraction", double(r.mis_zoned) / double(r.world.bodies().size())},
                   {"regions", std::move(zones)}};
