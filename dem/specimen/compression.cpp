@@ -207,8 +207,9 @@ World loose_packing(const CompressionSpec& spec, std::vector<Body> bodies,
 
 // Re-tags every body by the zone of its final centre, counting those that left the zone they
 // were placed in, the migrated ones among them (more than their own diameter beyond it) and the
-// mis-zoned ones (migrated into a zone drawn without their size: a small sphere of a mixed layer
-// that drifts into a core of the same spheres is where its size belongs), and measures each
+// mis-zoned ones (into a zone drawn without their size, by more than the largest diameter of
+// either zone: a small sphere of a mixed layer that drifts into a core of the same spheres, or
+// into a pocket of the large spheres' first layer, is not out of place), and measures each
 // zone's porosity one of its largest diameters from the walls.
 void measure_zones(const CompressionSpec& spec, const Prism& prism, World& world,
                    CompressionResult& r) {
@@ -232,8 +233,7 @@ void measure_zones(const CompressionSpec& spec, const Prism& prism, World& world
       const double d = 2.0 * b.bounding_radius();
       if (beyond > d) {
         ++placed.migrated, ++r.migrated;
-        const double slack = 1e-9 * d;  // the same size drawn at the same scale, rounded
-        if (d < d_lo[k] - slack || d > d_hi[k] + slack) ++placed.mis_zoned, ++r.mis_zoned;
+        if (mis_zoned(d, beyond, d_hi[b.zone], d_lo[k], d_hi[k])) ++placed.mis_zoned, ++r.mis_zoned;
       }
     }
     b.zone = k;

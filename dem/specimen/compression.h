@@ -77,8 +77,9 @@ struct ZoneResult {
   /// (migrated, not just nudged across a bound).
   long migrated = 0;
   /// Of those, the ones whose diameter lies outside the range drawn for the region they ended
-  /// in: a body where its size does not belong (a small sphere of a mixed layer in a core of the
-  /// same spheres is not one).
+  /// in and that ended more than the largest diameter of either region beyond the bound: a body
+  /// where its size does not belong (a small sphere of a mixed layer in a core of the same
+  /// spheres is not one, nor one in a pocket of the large spheres' first layer at the bound).
   long mis_zoned = 0;
 };
 

@@ -27,6 +27,12 @@ int region_of(const ZoneLayout& layout, double c) {
   return n - 1;
 }
 
+bool mis_zoned(double d, double beyond, double placed_largest, double lo, double hi) {
+  const double slack = 1e-9 * d;  // the same size drawn at the same scale, rounded
+  const bool foreign = d < lo - slack || d > hi + slack;
+  return foreign && beyond > std::max({d, placed_largest, hi});
+}
+
 double inner_bound(const ZoneLayout& layout, int k) {
   return k > 0 ? layout.regions.at(k - 1).outer : 0.0;
 }

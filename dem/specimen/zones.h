@@ -55,6 +55,15 @@ double large_scale(const ZoneLayout& layout, int mixed_region);
 /// The volume fraction of small particles at coordinate c inside mixed region k.
 double small_fraction_at(const ZoneLayout& layout, int mixed_region, double c);
 
+/// Whether a body of diameter d that ended `beyond` (m) outside the zone it was placed in, whose
+/// largest drawn diameter is `placed_largest`, is out of place in the zone it ended in, drawn
+/// with diameters [lo, hi]: its size is not one of that zone's, and it went further than the
+/// largest diameter of either zone. A bound between two zones is rough on the scale of their
+/// largest particles (the first layer of large ones leaves pockets about one diameter deep that
+/// the small ones of the neighbour fill), and a small sphere of a mixed layer in a core of the
+/// same spheres is where its size belongs. Sizes equal to 1e-9 relative count as the same.
+bool mis_zoned(double d, double beyond, double placed_largest, double lo, double hi);
+
 /// Throws InvalidInput, naming the region, for a layout CTGU 2017's method cannot build: no
 /// region, bounds not increasing from above 0, a first region that is not a uniform λ = 1 core,
 /// a mixed region first, last or next to another, a small fraction outside [0, 1], a

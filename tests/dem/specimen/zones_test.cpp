@@ -56,6 +56,24 @@ TEST(Zones, CoordinatesAndRegions) {
   EXPECT_TRUE(validate_zones(group_e(), 0.006).size() == 1);  // λ 3: allowed, with a warning
 }
 
+TEST(Zones, MisZonedIsAForeignSizeBeyondTheBoundsRoughness) {
+  // Group E: 6 mm core, 6 + 18 mm mixed layer, 18 mm outer zone (m).
+  // A 6 mm sphere of the mixed layer 30 mm into the core: its size belongs there.
+  EXPECT_FALSE(mis_zoned(0.006, 0.030, 0.018, 0.006, 0.006));
+  // One 8 mm into the 18 mm zone sits in a pocket of its first layer; 20 mm in, it has migrated.
+  EXPECT_FALSE(mis_zoned(0.006, 0.008, 0.018, 0.018, 0.018));
+  EXPECT_TRUE(mis_zoned(0.006, 0.020, 0.018, 0.018, 0.018));
+  // An 18 mm sphere of the mixed layer 19 mm into the 6 mm core.
+  EXPECT_TRUE(mis_zoned(0.018, 0.019, 0.018, 0.006, 0.006));
+  EXPECT_FALSE(mis_zoned(0.018, 0.017, 0.018, 0.006, 0.006));
+  // Between a 5 mm core and 10 mm spheres: the roughness is the larger diameter, either way.
+  EXPECT_FALSE(mis_zoned(0.005, 0.009, 0.005, 0.0099, 0.0101));
+  EXPECT_TRUE(mis_zoned(0.005, 0.011, 0.005, 0.0099, 0.0101));
+  EXPECT_TRUE(mis_zoned(0.010, 0.011, 0.0101, 0.00495, 0.00505));
+  // The same size drawn at the same scale, rounded, is not foreign.
+  EXPECT_FALSE(mis_zoned(0.006 * (1 + 1e-12), 0.5, 0.018, 0.006, 0.006));
+}
+
 TEST(Zones, GuardRailsRefuseWhatTheMethodCannotBuild) {
   const double d = 0.006;
   ZoneLayout z = group_e();
