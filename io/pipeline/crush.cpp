@@ -213,11 +213,14 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
     throw Interrupted("crush interrupted; the finished particles are kept in " + out.string() +
                       " for a rerun");
 
-  // The largest force of each curve: a survivor's strength lies above it over D².
+  // Every curve, read once: the largest force of each (a survivor's strength lies above it over
+  // D²) and the plots of each set.
+  std::vector<std::vector<dem::CrushSample>> curve(total);
   std::vector<double> max_force(total, 0.0);
-  for (std::size_t i = 0; i < total; ++i)
-    for (const dem::CrushSample& x : read_curve(parts / (id_name(i) + ".csv")))
-      max_force[i] = std::max(max_force[i], x.force);
+  for (std::size_t i = 0; i < total; ++i) {
+    curve[i] = read_curve(parts / (id_name(i) + ".csv"));
+    for (const dem::CrushSample& x : curve[i]) max_force[i] = std::max(max_force[i], x.force);
+  }
 
   // Per particle table.
   write_file_atomically((out / "results.csv").string(), [&](std::ostream& o) {
@@ -378,7 +381,7 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
     for (std::size_t i = 0; i < total; ++i) {
       if (jobs[i].set != s) continue;
       PlotSeries c;
-      for (const dem::CrushSample& x : read_curve(parts / (id_name(i) + ".csv"))) {
+      for (const dem::CrushSample& x : curve[i]) {
         c.points.x.push_back(x.travel * 1e3);
         c.points.y.push_back(x.force * 1e-3);
       }
