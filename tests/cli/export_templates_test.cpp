@@ -24,7 +24,7 @@ void build_tiny_library(const fs::path& d) {
 }
 
 // library.csv as rows of named cells.
-std::vector<std::map<std::string, std::string>> csv_rows(const fs::path& path) {
+std::vector<std::map<std::string, std::string>> csv_records(const fs::path& path) {
   std::istringstream in(slurp(path));
   std::string line;
   std::vector<std::string> head;
@@ -106,7 +106,7 @@ TEST(CliExportTemplates, ClumpCsvMassIsDensityTimesTheExactUnion) {
 TEST(CliExportTemplates, LibraryAndTemplateMassesAndMeshEquivalence) {
   const fs::path d = scratch();
   ASSERT_NO_FATAL_FAILURE(build_tiny_library(d));
-  const auto lib = csv_rows(d / "lib" / "library.csv");
+  const auto lib = csv_records(d / "lib" / "library.csv");
   ASSERT_EQ(lib.size(), 6u);
   const double rho = 2650;
   for (const char* mass : {"clump", "mesh"}) {
@@ -153,8 +153,8 @@ TEST(CliExportTemplates, LammpsMoleculeTemplatesDepositWithOurMassProperties) {
       "export lammps " + (d / "lib").string() + " --out " + (d / "ex").string() + " --density 2650",
       d);
   ASSERT_EQ(r.rc, 0) << r.err;
-  const auto lib = csv_rows(d / "lib" / "library.csv");
-  const auto types = csv_rows(d / "ex" / "molecules.csv");
+  const auto lib = csv_records(d / "lib" / "library.csv");
+  const auto types = csv_records(d / "ex" / "molecules.csv");
   ASSERT_EQ(types.size(), lib.size());
   std::vector<std::string> commands = {"lmp"};
   if (have_program("mpirun")) commands.push_back("mpirun --allow-run-as-root -np 2 lmp");

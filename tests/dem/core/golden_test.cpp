@@ -8,6 +8,7 @@
 #include "dem/core/state_hash.h"
 #include "dem/core/world.h"
 #include "geom/random.h"
+#include "simd_off.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -127,12 +128,6 @@ World small_settled_packing() {
   w.step(25000);
   return w;
 }
-
-struct SimdOff {
-  bool was = simd_enabled();
-  SimdOff() { set_simd(false); }
-  ~SimdOff() { set_simd(was); }
-};
 
 }  // namespace
 

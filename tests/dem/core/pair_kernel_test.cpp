@@ -6,6 +6,7 @@
 
 #include "dem/core/contact.h"
 #include "geom/random.h"
+#include "simd_off.h"
 
 #include <gtest/gtest.h>
 
@@ -121,12 +122,6 @@ void run_in_ranges(Scene& s) {
     begin = end;
   }
 }
-
-struct SimdOff {
-  bool was = simd_enabled();
-  SimdOff() { set_simd(false); }
-  ~SimdOff() { set_simd(was); }
-};
 
 }  // namespace
 

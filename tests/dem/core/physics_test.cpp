@@ -12,7 +12,6 @@
 
 namespace clumpkit::dem {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 constexpr double kRadius = 0.01;    // m
 constexpr double kDensity = 2650;   // kg/m³
@@ -20,7 +19,7 @@ constexpr double kStiffness = 1e5;  // N/m
 constexpr double kG = 9.81;
 
 double sphere_mass() {
-  return 4.0 / 3.0 * kPi * std::pow(kRadius, 3) * kDensity;
+  return 4.0 / 3.0 * M_PI * std::pow(kRadius, 3) * kDensity;
 }
 
 TEST(DemContact, RestitutionFormulaRoundTrips) {
@@ -66,7 +65,7 @@ TEST(DemBody, ClumpBodyKeepsSphereWorldPositions) {
   EXPECT_LE(b.moments.x(), b.moments.y());
   EXPECT_LE(b.moments.y(), b.moments.z());
   const Body s = make_sphere_body(Vec3::Zero(), 0.5, 1000.0);
-  EXPECT_NEAR(s.mass, 4.0 / 3.0 * kPi * 0.125 * 1000.0, 1e-9);
+  EXPECT_NEAR(s.mass, 4.0 / 3.0 * M_PI * 0.125 * 1000.0, 1e-9);
   EXPECT_THROW(make_sphere_body(Vec3::Zero(), -1.0, 1000.0), InvalidInput);
 }
 
@@ -180,7 +179,7 @@ double incline_run(double theta, double mu, double* acceleration) {
 TEST(DemPhysics, BlockOnInclineSlidesExactlyAboveFrictionAngle) {
   const double mu = 0.5;
   const double phi = std::atan(mu);
-  const double degree = kPi / 180.0;
+  const double degree = M_PI / 180.0;
   double acceleration = 0.0;
   const double slide_theta = phi + 3 * degree;
   const double slid = incline_run(slide_theta, mu, &acceleration);

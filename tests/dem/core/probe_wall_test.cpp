@@ -13,7 +13,6 @@
 namespace clumpkit::dem {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDiameter = 0.018;  // m: the 18 mm cone of the CPT chamber
 constexpr double kRadius = 0.5 * kDiameter;
 constexpr double kKn = 1e5;  // N/m
@@ -21,9 +20,9 @@ constexpr double kMu = 0.5;
 
 // Cone of 60°: its side makes 30° with the axis; its outward meridian normal is (cos 30°, −sin
 // 30°).
-const double kShoulder = kRadius / std::tan(kPi / 6.0);  // height of the cone–shaft junction
+const double kShoulder = kRadius / std::tan(M_PI / 6.0);  // height of the cone–shaft junction
 
-WorldOptions options() {
+WorldOptions probe_options() {
   WorldOptions o;
   o.contact.kn = kKn;
   o.contact.ks = kKn;
@@ -55,7 +54,7 @@ TEST(ProbeWall, ProfileIsTheConeAndItsShaft) {
   Wall bad = w;
   bad.profile[1].y() = -1.0;  // heights must not decrease
   EXPECT_THROW(validate_probe_profile(bad), InvalidInput);
-  World world(options());
+  World world(probe_options());
   EXPECT_THROW(world.add_wall(bad), InvalidInput);
 }
 
@@ -63,9 +62,9 @@ TEST(ProbeWall, ProfileIsTheConeAndItsShaft) {
 // along the cone's outward normal, and the probe feels it on its tip only.
 TEST(ProbeWall, SphereOnTheConeFeelsKnDeltaAlongTheConeNormal) {
   const Vec3 apex(0.01, -0.02, 0.05);
-  const double r = 0.004, delta = 1e-4, phi = 40.0 * kPi / 180.0;
+  const double r = 0.004, delta = 1e-4, phi = 40.0 * M_PI / 180.0;
   const Vec3 e_rho(std::cos(phi), std::sin(phi), 0.0);
-  const Vec3 n = std::cos(kPi / 6.0) * e_rho - std::sin(kPi / 6.0) * Vec3::UnitZ();
+  const Vec3 n = std::cos(M_PI / 6.0) * e_rho - std::sin(M_PI / 6.0) * Vec3::UnitZ();
   const double rho0 = 0.004;  // the foot point on the cone, halfway up the tip
   const Vec3 foot = apex + rho0 * e_rho + rho0 * std::sqrt(3.0) * Vec3::UnitZ();
   const Vec3 centre = foot + (r - delta) * n;
@@ -76,7 +75,7 @@ TEST(ProbeWall, SphereOnTheConeFeelsKnDeltaAlongTheConeNormal) {
   EXPECT_NEAR((hit.normal - n).norm(), 0.0, 1e-14);
   EXPECT_EQ(hit.part, ProbePart::tip);
 
-  World world(options());
+  World world(probe_options());
   const int probe = world.add_wall(Wall::probe(apex, kDiameter, 60.0));
   world.add_body(heavy_sphere(centre, r));
   world.step(1);
@@ -96,7 +95,7 @@ TEST(ProbeWall, SphereOnTheConeFeelsKnDeltaAlongTheConeNormal) {
 TEST(ProbeWall, SphereOnTheShaftGivesMuTimesTheNormalForceOnTheSleeve) {
   const double r = 0.003, delta = 5e-5;
   const Vec3 e_rho = Vec3(1.0, 1.0, 0.0).normalized();
-  World world(options());
+  World world(probe_options());
   const int probe =
       world.add_wall(Wall::probe(Vec3::Zero(), kDiameter, 60.0, Vec3(0.0, 0.0, -0.02)));
   world.add_body(heavy_sphere((kRadius + r - delta) * e_rho + 0.05 * Vec3::UnitZ(), r));
@@ -117,8 +116,8 @@ TEST(ProbeWall, JunctionKeepsAContinuousForceOnOnePartAtATime) {
   const double r = 0.003, delta = 1e-4, gap = r - delta;
   const Wall wall = Wall::probe(Vec3::Zero(), kDiameter, 60.0);
   const Eigen::Vector2d corner(kRadius, kShoulder);
-  const Eigen::Vector2d cone_n(std::cos(kPi / 6.0), -std::sin(kPi / 6.0));
-  const Eigen::Vector2d cone_t(std::sin(kPi / 6.0), std::cos(kPi / 6.0));  // up the cone
+  const Eigen::Vector2d cone_n(std::cos(M_PI / 6.0), -std::sin(M_PI / 6.0));
+  const Eigen::Vector2d cone_t(std::sin(M_PI / 6.0), std::cos(M_PI / 6.0));  // up the cone
   // The path: along the cone's side, round the corner's fan, up the shaft (meridian x–z).
   std::vector<Eigen::Vector2d> path;
   for (int k = 0; k <= 20; ++k)
@@ -146,7 +145,7 @@ TEST(ProbeWall, JunctionKeepsAContinuousForceOnOnePartAtATime) {
     last_normal = hit.normal;
 
     // The same sphere in a world: the probe's force is all on the part wall_hit names.
-    World world(options());
+    World world(probe_options());
     const int probe = world.add_wall(wall);
     world.add_body(heavy_sphere(c, r));
     world.step(1);

@@ -13,24 +13,24 @@ using namespace clumpkit::dem;
 
 namespace {
 
-constexpr double kA = 0.01;  // m: cube edge
+constexpr double kEdge = 0.01;  // m: cube edge
 
 // A cube of edge a with its inscribed sphere for contacts with bodies and its eight corners for
 // plane walls, centred at `at`.
 Body cube(const Vec3& at) {
   Body b;
-  b.spheres = {Sphere{Vec3::Zero(), 0.5 * kA}};
-  b.volume = kA * kA * kA;
+  b.spheres = {Sphere{Vec3::Zero(), 0.5 * kEdge}};
+  b.volume = kEdge * kEdge * kEdge;
   b.mass = 2650 * b.volume;
-  b.moments = Vec3::Constant(b.mass * kA * kA / 6.0);
+  b.moments = Vec3::Constant(b.mass * kEdge * kEdge / 6.0);
   for (int i = 0; i < 8; ++i)
-    b.vertices.emplace_back(i & 1 ? 0.5 * kA : -0.5 * kA, i & 2 ? 0.5 * kA : -0.5 * kA,
-                            i & 4 ? 0.5 * kA : -0.5 * kA);
+    b.vertices.emplace_back(i & 1 ? 0.5 * kEdge : -0.5 * kEdge, i & 2 ? 0.5 * kEdge : -0.5 * kEdge,
+                            i & 4 ? 0.5 * kEdge : -0.5 * kEdge);
   b.position = at;
   return b;
 }
 
-WorldOptions options() {
+WorldOptions vertex_options() {
   WorldOptions o;
   o.gravity = Vec3::Zero();
   o.vertex_stiffness = 1e8;
@@ -42,9 +42,9 @@ WorldOptions options() {
 }  // namespace
 
 TEST(VertexContacts, FlatFaceOnAPlatenCarriesFourCornerSprings) {
-  World w(options());
+  World w(vertex_options());
   const double delta = 1e-6;
-  w.add_body(cube(Vec3(0, 0, 0.5 * kA - delta)));
+  w.add_body(cube(Vec3(0, 0, 0.5 * kEdge - delta)));
   w.add_wall(Wall::plane(Vec3::Zero(), Vec3::UnitZ()));
   w.step(1);
   ASSERT_EQ(w.vertex_contacts().size(), 4u);  // the bottom face's corners
@@ -58,7 +58,7 @@ TEST(VertexContacts, FlatFaceOnAPlatenCarriesFourCornerSprings) {
 
 TEST(VertexContacts, ACornerPushesAtTheCornerAndSlidesAtCoulomb) {
   // Tilted 45° about x and about y: one corner lowest; pressed into the floor by δ.
-  World w(options());
+  World w(vertex_options());
   Body b = cube(Vec3::Zero());
   b.orientation = Eigen::AngleAxisd(0.3, Vec3::UnitX()) * Eigen::AngleAxisd(0.4, Vec3::UnitY());
   double lowest = 0;
@@ -88,7 +88,7 @@ TEST(VertexContacts, ACornerPushesAtTheCornerAndSlidesAtCoulomb) {
   const Body& now = w.bodies()[0];
   const Vec3 f = c.state.force();
   const Vec3 before = now.position - now.velocity * w.options().timestep;
-  EXPECT_LT((now.torque - (c.state.point - before).cross(f)).norm(), 1e-9 * f.norm() * kA);
+  EXPECT_LT((now.torque - (c.state.point - before).cross(f)).norm(), 1e-9 * f.norm() * kEdge);
   // A corner that leaves the wall leaves the list.
   w.bodies()[0].position.z() += 1e-3;
   w.step(1);
@@ -97,12 +97,12 @@ TEST(VertexContacts, ACornerPushesAtTheCornerAndSlidesAtCoulomb) {
 }
 
 TEST(VertexContacts, CornersEnterTheTimeStepAndLeverArm) {
-  World w(options());
+  World w(vertex_options());
   w.add_body(cube(Vec3::Zero()));
   const Body& b = w.bodies()[0];
   // Rotation about x: the corner arm √2·a/2 beyond the sphere's a/2, and 2 corner springs.
   const double k = w.options().contact.kn + 2e8;
-  const double arm = std::sqrt(2.0) * 0.5 * kA;
+  const double arm = std::sqrt(2.0) * 0.5 * kEdge;
   EXPECT_NEAR(critical_timestep(w), std::sqrt(b.moments.x() / (k * arm * arm)), 1e-15);
   std::vector<VertexContact> bad(1);
   bad[0].vertex = 8;

@@ -102,11 +102,10 @@ TEST(DemCell, SegmentCellSizesStressesAndRecord) {
   // A sphere of radius r in the corner of a 60° segment, pressed against the cylinder (overlap
   // δ), not touching the radial planes: the lateral stress is the cylinder's push over the arc
   // θ·R·h, the axial area θR²/2, and the record keeps the angle.
-  constexpr double kPi = 3.14159265358979323846;
   WorldOptions o;
   o.gravity = Vec3::Zero();
   World w(o);
-  const double r = 0.01, delta = 1e-5, R = 0.1, h = 0.05, angle = kPi / 3.0;
+  const double r = 0.01, delta = 1e-5, R = 0.1, h = 0.05, angle = M_PI / 3.0;
   const Vec3 dir(std::cos(angle / 2), std::sin(angle / 2), 0.0);  // the bisector
   w.add_body(make_sphere_body((R - r + delta) * dir + Vec3(0, 0, 0.5 * h), r, 2650));
   const TestCell cell = add_segment_test_cell(w, R, angle, 0.0, h);
@@ -132,7 +131,7 @@ TEST(DemCell, SegmentCellSizesStressesAndRecord) {
   EXPECT_EQ(back.shape, TestCell::Shape::segment);
   EXPECT_EQ(back.angle, angle);
   EXPECT_EQ(back.lateral, cell.lateral);
-  EXPECT_THROW(add_segment_test_cell(w, R, 1.2 * kPi, 0.0, h), InvalidInput);
+  EXPECT_THROW(add_segment_test_cell(w, R, 1.2 * M_PI, 0.0, h), InvalidInput);
   // Driven under stress control, the planes of symmetry stay where they are.
   drive_cell(w, cell, Control{Control::Mode::stress, 1e5, 0.0},
              Control{Control::Mode::stress, 1e5, 0.0}, ServoGain{0.5, 1.0}, 10);

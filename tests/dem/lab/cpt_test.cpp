@@ -179,10 +179,9 @@ TEST(CptRecord, StateAndCellRoundTripExactly) {
 // radial walls keep the spheres 8.6 mm from the axis, the cone's radius is 9 mm: refused. In a
 // 90° segment they come within 1.2 mm: accepted.
 TEST(DemCpt, ProbeInASegmentMustReachPastTheWallsExclusion) {
-  constexpr double kPi = 3.14159265358979323846;
   for (const double degrees : {30.0, 90.0}) {
     World w(WorldOptions{});
-    const double angle = degrees * kPi / 180.0;
+    const double angle = degrees * M_PI / 180.0;
     const Vec3 dir(std::cos(angle / 2), std::sin(angle / 2), 0.0);
     for (int k = 0; k < 5; ++k)
       w.add_body(make_sphere_body((0.01 + 0.006 * k) * dir + Vec3(0, 0, 0.05), 0.003, 2650));

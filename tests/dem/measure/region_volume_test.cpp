@@ -14,15 +14,13 @@
 namespace clumpkit::dem {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 Body ball(const Vec3& c, double r) {
   Body b;
   b.spheres = {{Vec3::Zero(), r}};
   b.position = c;
   b.mass = 1;
   b.moments = Vec3::Ones();
-  b.volume = 4.0 / 3.0 * kPi * r * r * r;
+  b.volume = 4.0 / 3.0 * M_PI * r * r * r;
   return b;
 }
 
@@ -40,7 +38,7 @@ Body cut_clump() {
 
 TEST(RegionVolume, SphereInsideCutByPlaneAndOutside) {
   const CylinderRegion region{0.5, 0.0, 1.0};
-  const double r = 0.1, v = 4.0 / 3.0 * kPi * r * r * r;
+  const double r = 0.1, v = 4.0 / 3.0 * M_PI * r * r * r;
   EXPECT_DOUBLE_EQ(body_region_volume(ball(Vec3(0, 0, 0.5), r), v, region), v);
   EXPECT_EQ(body_region_volume(ball(Vec3(0, 0, 1.2), r), v, region), 0.0);
   // Cut through the centre by the top plane: half. Below the floor z = 0 a cap of height h,
@@ -48,7 +46,7 @@ TEST(RegionVolume, SphereInsideCutByPlaneAndOutside) {
   EXPECT_NEAR(body_region_volume(ball(Vec3(0.1, 0, 1.0), r), v, region), 0.5 * v, 1e-9 * v);
   const double h = 0.04;
   EXPECT_NEAR(body_region_volume(ball(Vec3(0, 0.2, r - h), r), v, region),
-              v - kPi * h * h * (3 * r - h) / 3, 1e-9 * v);
+              v - M_PI * h * h * (3 * r - h) / 3, 1e-9 * v);
 }
 
 // A single sphere takes the closed forms (the cap between the planes, the lens of its slice and
@@ -56,7 +54,7 @@ TEST(RegionVolume, SphereInsideCutByPlaneAndOutside) {
 // disks: both agree to the quadrature's tolerance, wherever the region cuts the sphere.
 TEST(RegionVolume, OneSphereAgreesWithTheUnionOfDisksPath) {
   const CylinderRegion region{0.5, 0.0, 1.0};
-  const double r = 0.1, v = 4.0 / 3.0 * kPi * r * r * r;
+  const double r = 0.1, v = 4.0 / 3.0 * M_PI * r * r * r;
   for (double rho : {0.0, 0.3, 0.42, 0.45, 0.5, 0.55, 0.59})
     for (double z : {0.5, 0.95, 1.0, 1.07, 0.03, -0.05}) {
       const Body one = ball(Vec3(rho * 0.6, rho * 0.8, z), r);
@@ -132,7 +130,7 @@ TEST(RegionVolume, PorosityAndCoordinationOfASimpleWorld) {
   world.options().gravity = Vec3::Zero();
   world.step(1);
   const auto volumes = body_volumes(world);
-  const double v = 4.0 / 3.0 * kPi * r * r * r;
+  const double v = 4.0 / 3.0 * M_PI * r * r * r;
   for (double x : volumes) EXPECT_DOUBLE_EQ(x, v);
   const CylinderRegion region{0.1, 0.0, 0.1};
   EXPECT_NEAR(region_porosity(world, volumes, region), 1.0 - 3 * v / region.volume(), 1e-12);

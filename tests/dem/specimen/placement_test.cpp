@@ -11,7 +11,7 @@
 namespace clumpkit::dem {
 namespace {
 
-constexpr double kCylinder = 0.1;  // m
+constexpr double kPlacementCylinder = 0.1;  // m
 
 /// 20 three-sphere clumps (largest first, as callers pass them) then 300 soil spheres of
 /// radius 5–10 mm, sorted by decreasing size.
@@ -50,13 +50,13 @@ TEST(Placement, NoOverlapsAllInsideAndHeightCoversTops) {
   const auto items = make_items();
   Rng rng(2024);
   double height = -1.0;
-  const auto placements = place_in_cylinder(items, kCylinder, rng, 200, &height);
+  const auto placements = place_in_cylinder(items, kPlacementCylinder, rng, 200, &height);
   ASSERT_EQ(placements.size(), items.size());
   const auto world = world_spheres(items, placements);
   double top = 0.0;
   for (std::size_t i = 0; i < world.size(); ++i) {
     for (const Sphere& s : world[i]) {
-      EXPECT_LE(std::hypot(s.center.x(), s.center.y()) + s.radius, kCylinder + 1e-12);
+      EXPECT_LE(std::hypot(s.center.x(), s.center.y()) + s.radius, kPlacementCylinder + 1e-12);
       EXPECT_GE(s.center.z() - s.radius, -1e-12);
       top = std::max(top, s.center.z() + s.radius);
     }
@@ -75,9 +75,9 @@ TEST(Placement, NoOverlapsAllInsideAndHeightCoversTops) {
 TEST(Placement, DeterministicForSeed) {
   const auto items = make_items();
   Rng a(11), b(11), c(12);
-  const auto pa = place_in_cylinder(items, kCylinder, a);
-  const auto pb = place_in_cylinder(items, kCylinder, b);
-  const auto pc = place_in_cylinder(items, kCylinder, c);
+  const auto pa = place_in_cylinder(items, kPlacementCylinder, a);
+  const auto pb = place_in_cylinder(items, kPlacementCylinder, b);
+  const auto pc = place_in_cylinder(items, kPlacementCylinder, c);
   ASSERT_EQ(pa.size(), pb.size());
   bool differs = false;
   for (std::size_t i = 0; i < pa.size(); ++i) {
@@ -91,7 +91,7 @@ TEST(Placement, DeterministicForSeed) {
 TEST(Placement, OrientationsAreUnitAndUniform) {
   const auto items = make_items();
   Rng rng(5);
-  const auto placements = place_in_cylinder(items, kCylinder, rng);
+  const auto placements = place_in_cylinder(items, kPlacementCylinder, rng);
   Vec3 mean = Vec3::Zero();
   for (const Placement& p : placements) {
     EXPECT_NEAR(p.orientation.norm(), 1.0, 1e-14);
@@ -122,24 +122,27 @@ TEST(Placement, OrientationsAreUnitAndUniform) {
 TEST(Placement, EdgeCasesAndInvalidInput) {
   Rng rng(1);
   double height = -1.0;
-  EXPECT_TRUE(place_in_cylinder({}, kCylinder, rng, 200, &height).empty());
+  EXPECT_TRUE(place_in_cylinder({}, kPlacementCylinder, rng, 200, &height).empty());
   EXPECT_EQ(height, 0.0);
   // An item exactly as wide as the cylinder sits on the axis.
-  const std::vector<PlacementItem> wide = {{{{Vec3::Zero(), kCylinder}}, kCylinder}};
-  const auto p = place_in_cylinder(wide, kCylinder, rng);
+  const std::vector<PlacementItem> wide = {
+      {{{Vec3::Zero(), kPlacementCylinder}}, kPlacementCylinder}};
+  const auto p = place_in_cylinder(wide, kPlacementCylinder, rng);
   ASSERT_EQ(p.size(), 1u);
   EXPECT_NEAR(std::hypot(p[0].position.x(), p[0].position.y()), 0.0, 1e-12);
   // Two of them stack.
   const std::vector<PlacementItem> two = {wide[0], wide[0]};
-  const auto q = place_in_cylinder(two, kCylinder, rng, 5, &height);
-  EXPECT_GE(std::abs(q[1].position.z() - q[0].position.z()), 2 * kCylinder - 1e-12);
-  EXPECT_GE(height, 4 * kCylinder - 1e-12);
+  const auto q = place_in_cylinder(two, kPlacementCylinder, rng, 5, &height);
+  EXPECT_GE(std::abs(q[1].position.z() - q[0].position.z()), 2 * kPlacementCylinder - 1e-12);
+  EXPECT_GE(height, 4 * kPlacementCylinder - 1e-12);
 
   EXPECT_THROW(place_in_cylinder(wide, 0.0, rng), InvalidInput);
-  EXPECT_THROW(place_in_cylinder(wide, kCylinder, rng, 0), InvalidInput);
-  EXPECT_THROW(place_in_cylinder({{{}, 0.01}}, kCylinder, rng), InvalidInput);
-  EXPECT_THROW(place_in_cylinder({{{{Vec3::Zero(), -1.0}}, 0.01}}, kCylinder, rng), InvalidInput);
-  EXPECT_THROW(place_in_cylinder({{{{Vec3::Zero(), 0.2}}, 0.2}}, kCylinder, rng), InvalidInput);
+  EXPECT_THROW(place_in_cylinder(wide, kPlacementCylinder, rng, 0), InvalidInput);
+  EXPECT_THROW(place_in_cylinder({{{}, 0.01}}, kPlacementCylinder, rng), InvalidInput);
+  EXPECT_THROW(place_in_cylinder({{{{Vec3::Zero(), -1.0}}, 0.01}}, kPlacementCylinder, rng),
+               InvalidInput);
+  EXPECT_THROW(place_in_cylinder({{{{Vec3::Zero(), 0.2}}, 0.2}}, kPlacementCylinder, rng),
+               InvalidInput);
 }
 
 }  // namespace

@@ -15,8 +15,6 @@
 namespace clumpkit::dem {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 TEST(SpecimenParticles, ClassVolumesFollowMassAndDensity) {
   // 40 % rock at 2870, 60 % soil at 2700 kg/m³: M = V / (0.4/2870 + 0.6/2700).
   const std::vector<ParticleClass> classes = {{0.02, 0.04, 40.0, true}, {0.005, 0.01, 60.0, false}};
@@ -70,7 +68,7 @@ TEST(SpecimenParticles, LayerFillsEachClassToWithinOneParticle) {
   const LayerParticles p = layer_particles(classes, {t}, solid, 2700, 2870, rng);
   const auto goal = class_volumes(classes, solid, 2700, 2870);
   const double rock_max = t.clump.mass.volume * std::pow(0.03 / 2.0, 3);
-  const double soil_max = kPi / 6 * std::pow(0.01, 3);
+  const double soil_max = M_PI / 6 * std::pow(0.01, 3);
   EXPECT_NEAR(p.rock_volume, goal[0], 0.5 * rock_max);
   EXPECT_NEAR(p.soil_volume, goal[1], 0.5 * soil_max);
   // Rocks first, each group largest first, sizes inside their class; every rock knows its

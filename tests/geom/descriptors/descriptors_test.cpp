@@ -21,7 +21,6 @@ namespace clumpkit {
 namespace {
 
 using Vec2 = Eigen::Vector2d;
-constexpr double kPi = 3.14159265358979323846;
 
 // ---- Small local mesh builders (the shape generators live elsewhere) ----
 
@@ -124,15 +123,15 @@ Mesh bumpy_mesh() {
   Mesh m;
   m.vertices.emplace_back(0, 0, radius(0, 0));
   for (int j = 1; j < rings; ++j) {
-    const double th = kPi * j / rings;
+    const double th = M_PI * j / rings;
     for (int i = 0; i < seg; ++i) {
-      const double ph = 2.0 * kPi * i / seg;
+      const double ph = 2.0 * M_PI * i / seg;
       const double r = radius(th, ph);
       m.vertices.emplace_back(r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph),
                               r * std::cos(th));
     }
   }
-  m.vertices.emplace_back(0, 0, -radius(kPi, 0));
+  m.vertices.emplace_back(0, 0, -radius(M_PI, 0));
   const int south = static_cast<int>(m.vertices.size()) - 1;
   auto id = [&](int j, int i) { return 1 + (j - 1) * seg + (i % seg); };
   for (int i = 0; i < seg; ++i) {
@@ -244,7 +243,7 @@ TEST(Descriptors, SphericityOfIcosphereNearOne) {
 }
 
 TEST(Descriptors, EquivalentDiameterOfCube) {
-  EXPECT_NEAR(describe(box_mesh(2, 2, 2)).equivalent_diameter, std::cbrt(48.0 / kPi), 1e-12);
+  EXPECT_NEAR(describe(box_mesh(2, 2, 2)).equivalent_diameter, std::cbrt(48.0 / M_PI), 1e-12);
 }
 
 TEST(Descriptors, RejectsInvertedMesh) {
@@ -257,17 +256,17 @@ TEST(Descriptors, RejectsInvertedMesh) {
 // ---- 2-D roundness and silhouettes ----
 
 TEST(PolygonRoundness, SquareRectangleAndCircle) {
-  EXPECT_NEAR(polygon_roundness({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), 4.0 / kPi, 1e-12);
+  EXPECT_NEAR(polygon_roundness({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), 4.0 / M_PI, 1e-12);
   EXPECT_NEAR(polygon_roundness({{0, 0}, {2, 0}, {2, 1}, {0, 1}}), 1.432394487827, 1e-12);
   // Clockwise input gives the same value.
   EXPECT_NEAR(polygon_roundness({{0, 1}, {2, 1}, {2, 0}, {0, 0}}), 1.432394487827, 1e-12);
   std::vector<Vec2> circle;
   for (int i = 0; i < 2000; ++i)
-    circle.emplace_back(std::cos(2 * kPi * i / 2000), std::sin(2 * kPi * i / 2000));
+    circle.emplace_back(std::cos(2 * M_PI * i / 2000), std::sin(2 * M_PI * i / 2000));
   EXPECT_NEAR(polygon_roundness(circle), 1.0, 1e-5);
   std::vector<Vec2> ellipse;
   for (int i = 0; i < 4000; ++i)
-    ellipse.emplace_back(2 * std::cos(2 * kPi * i / 4000), std::sin(2 * kPi * i / 4000));
+    ellipse.emplace_back(2 * std::cos(2 * M_PI * i / 4000), std::sin(2 * M_PI * i / 4000));
   EXPECT_NEAR(polygon_roundness(ellipse), 1.18882714, 1e-6);
   EXPECT_THROW(polygon_roundness({{0, 0}, {1, 0}}), InvalidInput);
   EXPECT_THROW(polygon_roundness({{0, 0}, {1, 0}, {2, 0}}), InvalidInput);
@@ -277,8 +276,8 @@ TEST(Silhouette, SquareAndRectangleViewsBothPaths) {
   for (bool convex : {true, false}) {
     SCOPED_TRACE(convex ? "convex" : "arrangement");
     const auto sq = silhouette(box_mesh(1, 1, 1), Vec3::UnitZ(), convex);
-    EXPECT_NEAR(polygon_roundness(sq), 4.0 / kPi, 0.005 * 4.0 / kPi);
-    EXPECT_NEAR(polygon_roundness(sq), 4.0 / kPi, 1e-9);
+    EXPECT_NEAR(polygon_roundness(sq), 4.0 / M_PI, 0.005 * 4.0 / M_PI);
+    EXPECT_NEAR(polygon_roundness(sq), 4.0 / M_PI, 1e-9);
     EXPECT_EQ(sq.size(), 4u);
     EXPECT_NEAR(poly_area(sq), 1.0, 1e-12);  // counter-clockwise
     const auto rect = silhouette(box_mesh(2, 1, 1), Vec3::UnitY(), convex);
@@ -302,7 +301,7 @@ TEST(Silhouette, LPrismByHand) {
   EXPECT_EQ(l.size(), 6u);
   EXPECT_NEAR(poly_area(l), 3.0, 1e-12);
   EXPECT_NEAR(poly_perimeter(l), 8.0, 1e-12);
-  EXPECT_NEAR(polygon_roundness(l), 16.0 / (3.0 * kPi), 1e-12);
+  EXPECT_NEAR(polygon_roundness(l), 16.0 / (3.0 * M_PI), 1e-12);
   // The convex path gives the hull of the L: area 3.5, perimeter 6 + √2.
   const auto h = silhouette(m, Vec3::UnitZ(), true);
   EXPECT_NEAR(poly_area(h), 3.5, 1e-12);
@@ -382,7 +381,7 @@ TEST(WeightedRoundness, Box2x1x1) {
     const Roundness r = weighted_roundness(m, f, convex);
     EXPECT_NEAR(r.weighted, 1.400563499209, 0.005 * 1.400563499209);
     EXPECT_NEAR(r.weighted, 1.400563499209, 1e-9);
-    EXPECT_NEAR(r.view[2], 4.0 / kPi, 1e-9);  // along the long axis: the square
+    EXPECT_NEAR(r.view[2], 4.0 / M_PI, 1e-9);  // along the long axis: the square
     EXPECT_NEAR(r.view_area[2], 1.0, 1e-9);
   }
   EXPECT_NEAR(describe(m).roundness.weighted, 1.400563499209, 1e-9);
@@ -409,11 +408,11 @@ TEST(WeightedRoundness, LPrismByHand) {
   const double p[3] = {8.0, 2.0 * (2.0 * s2 + 1.0), 2.0 * (3.0 / s2 + 1.0)};
   const double a[3] = {3.0, 2.0 * s2, 3.0 / s2};
   const double expected =
-      (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) / (4.0 * kPi * (a[0] + a[1] + a[2]));
+      (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) / (4.0 * M_PI * (a[0] + a[1] + a[2]));
   EXPECT_NEAR(d.roundness.weighted, expected, 1e-9);
   for (int i = 0; i < 3; ++i) {
     EXPECT_NEAR(d.roundness.view_area[i], a[i], 1e-9);
-    EXPECT_NEAR(d.roundness.view[i], p[i] * p[i] / (4.0 * kPi * a[i]), 1e-9);
+    EXPECT_NEAR(d.roundness.view[i], p[i] * p[i] / (4.0 * M_PI * a[i]), 1e-9);
   }
   EXPECT_NEAR(d.axes(0), 1.0, 1e-12);
   EXPECT_NEAR(d.axes(1), 3.0 / s2, 1e-12);

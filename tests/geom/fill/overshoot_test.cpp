@@ -20,8 +20,6 @@ using namespace clumpkit;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Volume of the clump outside the mesh on a lattice of spacing δ: a lattice point counts once
 // if it lies in some sphere but outside the mesh. Points inside a sphere's inscribed ball (radius
 // = exact distance from its centre to the surface) are inside the mesh for certain, so only the
@@ -61,15 +59,15 @@ TEST(OvershootLedger, CapsOfOneAndTwoSpheresOnABoxFace) {
   OvershootLedger ledger(index, {Vec3::Constant(-2.0), Vec3::Constant(2.0)}, 0.01);
   const double r = 0.5, d = 0.25;
   const Sphere a{Vec3(1.0, 0.0, 0.0), r}, b{Vec3(1.0, d, 0.0), r};
-  const double half = 2.0 / 3.0 * kPi * r * r * r;
+  const double half = 2.0 / 3.0 * M_PI * r * r * r;
   EXPECT_NEAR(ledger.added(a), half, 2e-3 * half);
   ledger.add(a);
   EXPECT_NEAR(ledger.volume(), half, 2e-3 * half);
   EXPECT_NEAR(ledger.added(a), 0.0, 1e-12);  // already recorded
   // Two equal balls d apart: union = 2V − lens, lens = π(4r + d)(2r − d)²/12; half of it outside.
-  const double lens = kPi * (4 * r + d) * (2 * r - d) * (2 * r - d) / 12.0;
+  const double lens = M_PI * (4 * r + d) * (2 * r - d) * (2 * r - d) / 12.0;
   ledger.add(b);
-  EXPECT_NEAR(ledger.volume(), 0.5 * (4.0 / 3.0 * kPi * r * r * r * 2 - lens), 2e-3 * half);
+  EXPECT_NEAR(ledger.volume(), 0.5 * (4.0 / 3.0 * M_PI * r * r * r * 2 - lens), 2e-3 * half);
   // A sphere inside adds nothing.
   EXPECT_EQ(ledger.added(Sphere{Vec3(0.2, 0.1, -0.3), 0.5}), 0.0);
 }

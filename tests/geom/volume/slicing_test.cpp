@@ -23,8 +23,6 @@
 namespace clumpkit {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // ---- 2-D references ----
 
 // Area of the lens where two disks at distance d overlap (0 < |r1 − r2| < d < r1 + r2):
@@ -38,7 +36,7 @@ double lens_area(double r1, double r2, double d) {
 
 // Moments of one disk: A = πr², ∫x = A·x, ∫x² = A·x² + πr⁴/4, ∫xy = A·x·y.
 SliceMoments disk_moments(const Disk& d) {
-  const double a = kPi * d.r * d.r, j = kPi * d.r * d.r * d.r * d.r / 4;
+  const double a = M_PI * d.r * d.r, j = M_PI * d.r * d.r * d.r * d.r / 4;
   return {a, a * d.x, a * d.y, a * d.x * d.x + j, a * d.y * d.y + j, a * d.x * d.y};
 }
 
@@ -119,9 +117,9 @@ TEST(UnionOfDisks, TwoOverlappingDisksLensClosedForm) {
   // Union area = πr1² + πr2² − lens; for equal disks the centroid is the midpoint.
   const double r1 = 1.0, r2 = 0.7, d = 1.1;
   const SliceMoments m = union_of_disks({{0, 0, r1}, {d, 0, r2}});
-  EXPECT_NEAR(m.area, kPi * (r1 * r1 + r2 * r2) - lens_area(r1, r2, d), 1e-14);
+  EXPECT_NEAR(m.area, M_PI * (r1 * r1 + r2 * r2) - lens_area(r1, r2, d), 1e-14);
   const SliceMoments e = union_of_disks({{-0.3, 0.2, 1.0}, {0.9, 0.2, 1.0}});
-  EXPECT_NEAR(e.area, 2 * kPi - lens_area(1.0, 1.0, 1.2), 1e-14);
+  EXPECT_NEAR(e.area, 2 * M_PI - lens_area(1.0, 1.0, 1.2), 1e-14);
   EXPECT_NEAR(e.mx / e.area, 0.3, 1e-14);
   EXPECT_NEAR(e.my / e.area, 0.2, 1e-14);
   // All six moments against the strip reference, rotated off the axes.
@@ -152,13 +150,13 @@ TEST(UnionOfDisks, RingOfDisksEnclosingAHole) {
   // boundary-arc method must subtract it (its inner arcs run clockwise about the hole).
   std::vector<Disk> ring;
   for (int k = 0; k < 6; ++k)
-    ring.push_back({1.5 * std::cos(k * kPi / 3), 1.5 * std::sin(k * kPi / 3), 1.0});
-  const double rho = 1.5 * std::cos(kPi / 6) - std::sqrt(1 - 0.75 * 0.75);
+    ring.push_back({1.5 * std::cos(k * M_PI / 3), 1.5 * std::sin(k * M_PI / 3), 1.0});
+  const double rho = 1.5 * std::cos(M_PI / 6) - std::sqrt(1 - 0.75 * 0.75);
   const double theta = 2 * std::asin(rho / 2);
   const double hole = 1.5 * std::sqrt(3.0) * rho * rho - 3 * (theta - std::sin(theta));
   ASSERT_GT(hole, 0.1);
   const SliceMoments m = union_of_disks(ring);
-  EXPECT_NEAR(m.area, 6 * kPi - 6 * lens_area(1, 1, 1.5), 1e-13);
+  EXPECT_NEAR(m.area, 6 * M_PI - 6 * lens_area(1, 1, 1.5), 1e-13);
   EXPECT_NEAR(m.mx, 0, 1e-13);
   EXPECT_NEAR(m.my, 0, 1e-13);
   EXPECT_NEAR(m.mxx, m.myy, 1e-12);  // six-fold symmetry makes the second moment isotropic
@@ -300,7 +298,7 @@ TEST(UnionPropertiesBySlicing, FiftyRandomBallsAgreeWhenSlicedAlongAnotherAxis) 
   EXPECT_LT((b.inertia - want).cwiseAbs().maxCoeff(), 1e-9 * want.trace());
   // Sanity: the union is smaller than the sum of the balls.
   double sum = 0;
-  for (const Sphere& s : c.spheres) sum += 4.0 / 3.0 * kPi * std::pow(s.radius, 3);
+  for (const Sphere& s : c.spheres) sum += 4.0 / 3.0 * M_PI * std::pow(s.radius, 3);
   EXPECT_LT(a.volume, sum);
 }
 
@@ -311,7 +309,7 @@ TEST(UnionPropertiesBySlicing, RejectsBadSpheres) {
 
 // ---- Pixel slicing (Jin et al. 2017 §3, Table 1) ----
 
-const double kSphere7 = 4.0 / 3.0 * kPi * 343.0;  // 1436.755 mm³ (paper: 1.4367 cm³)
+const double kSphere7 = 4.0 / 3.0 * M_PI * 343.0;  // 1436.755 mm³ (paper: 1.4367 cm³)
 
 double pixel_error(const Clump& c, PixelRule rule, double exact) {
   PixelSliceOptions opt;
@@ -341,7 +339,7 @@ TEST(PixelSlicing, Table1SingleSphereTouchOvercountsCentreDoesNot) {
   // slab estimate of the volume, without the pixel bias.
   double slab = 0;
   for (std::size_t k = 0; k < touch.z.size(); ++k) {
-    EXPECT_NEAR(touch.exact_area[k], kPi * (49 - touch.z[k] * touch.z[k]), 1e-10);
+    EXPECT_NEAR(touch.exact_area[k], M_PI * (49 - touch.z[k] * touch.z[k]), 1e-10);
     EXPECT_GE(touch.pixel_area[k], touch.exact_area[k]);  // Touch covers every disk
     slab += touch.exact_area[k] * touch.spacing;
   }

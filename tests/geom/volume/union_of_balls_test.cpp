@@ -19,22 +19,20 @@
 namespace clumpkit {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 Sphere ball(double x, double y, double z, double r) {
   return Sphere{Vec3(x, y, z), r};
 }
 
 double ball_volume(double r) {
-  return 4.0 / 3.0 * kPi * r * r * r;
+  return 4.0 / 3.0 * M_PI * r * r * r;
 }
 double ball_area(double r) {
-  return 4.0 * kPi * r * r;
+  return 4.0 * M_PI * r * r;
 }
 
 // One closed-form oracle (C1–C11): volume, centroid, principal inertia (axis-aligned,
 // off-diagonal terms zero), and where known in closed form the boundary area.
-struct Oracle {
+struct BallOracle {
   std::string id;
   Clump clump;
   double volume;
@@ -44,53 +42,53 @@ struct Oracle {
   int hidden;
 };
 
-std::vector<Oracle> oracles() {
+std::vector<BallOracle> ball_oracles() {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double h = std::sqrt(3.0) / 2.0, t = std::sqrt(3.0) / 6.0, z = std::sqrt(2.0 / 3.0);
   const double v1 = ball_volume(1.0), i1 = 0.4 * v1;
   return {
-      {"C1", {{ball(0, 0, 0, 1)}}, v1, Vec3::Zero(), Vec3(i1, i1, i1), 4 * kPi, 0},
+      {"C1", {{ball(0, 0, 0, 1)}}, v1, Vec3::Zero(), Vec3(i1, i1, i1), 4 * M_PI, 0},
       {"C2",
        {{ball(0, 0, 0, 1), ball(0, 0, 1, 1)}},
-       9 * kPi / 4,
+       9 * M_PI / 4,
        Vec3(0, 0, 0.5),
        Vec3(5.213080309551, 5.213080309551, 3.004147974995),
-       6 * kPi,
+       6 * M_PI,
        0},
       {"C3",
        {{ball(0, 0, 0, 1), ball(0, 0, 0.9, 0.5)}},
        4.423362456254,
        Vec3(0, 0, 0.058585858586),
        Vec3(1.962313887582, 1.962313887582, 1.700477548166),
-       64 * kPi / 15,  // caps of heights 2/15 and 7/15
+       64 * M_PI / 15,  // caps of heights 2/15 and 7/15
        0},
       {"C4",
        {{ball(0, 0, 0, 1), ball(0.3, 0, 0, 0.5)}},
        v1,
        Vec3::Zero(),
        Vec3(i1, i1, i1),
-       4 * kPi,
+       4 * M_PI,
        1},
       {"C5",
        {{ball(0, 0, 0, 1), ball(0.5, 0, 0, 0.5)}},
        v1,
        Vec3::Zero(),
        Vec3(i1, i1, i1),
-       4 * kPi,
+       4 * M_PI,
        1},
       {"C6",
        {{ball(0, 0, 0, 1), ball(1.5, 0, 0, 0.5)}},
-       3 * kPi / 2,
+       3 * M_PI / 2,
        Vec3(1.0 / 6.0, 0, 0),
        Vec3(1.727875959474, 2.775073510671, 2.775073510671),
-       5 * kPi,
+       5 * M_PI,
        0},
       {"C7",
        {{ball(0, 0, 0, 1), ball(0, 0, 0, 1), ball(0, 0, 0, 1)}},
        v1,
        Vec3::Zero(),
        Vec3(i1, i1, i1),
-       4 * kPi,
+       4 * M_PI,
        2},
       {"C8",
        {{ball(0, 0, 0, 1), ball(1, 0, 0, 1), ball(0.5, h, 0, 1)}},
@@ -104,7 +102,7 @@ std::vector<Oracle> oracles() {
        9.948376736368,
        Vec3(0, 0, 1),
        Vec3(12.284936272475, 12.284936272475, 4.332779868076),
-       8 * kPi,  // 3π + 2π + 3π
+       8 * M_PI,  // 3π + 2π + 3π
        0},
       {"C10",
        {{ball(0, 0, 0, 1), ball(1, 0, 0, 1), ball(0.5, h, 0, 1), ball(0.5, t, z, 1)}},
@@ -161,7 +159,7 @@ void expect_engines_agree(const Clump& c, double tol) {
 // ---- Oracles ----
 
 TEST(UnionOfBalls, OraclesC1ToC11) {
-  for (const Oracle& o : oracles()) {
+  for (const BallOracle& o : ball_oracles()) {
     SCOPED_TRACE(o.id);
     const UnionProperties p = union_properties(o.clump);
     expect_mass(p.mass, o.volume, o.centroid, o.inertia.asDiagonal());
@@ -172,14 +170,14 @@ TEST(UnionOfBalls, OraclesC1ToC11) {
 }
 
 TEST(UnionOfBalls, HiddenBallsAreCounted) {
-  for (const Oracle& o : oracles()) {
+  for (const BallOracle& o : ball_oracles()) {
     SCOPED_TRACE(o.id);
     EXPECT_EQ(union_properties(o.clump).hidden, o.hidden);
   }
 }
 
 TEST(InclusionExclusion, OraclesC1ToC11) {
-  for (const Oracle& o : oracles()) {
+  for (const BallOracle& o : ball_oracles()) {
     SCOPED_TRACE(o.id);
     const UnionMeasure q = union_measure_inclusion_exclusion(o.clump);
     EXPECT_NEAR(q.volume, o.volume, 1e-12 * o.volume);

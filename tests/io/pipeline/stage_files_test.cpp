@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
+fs::path stage_scratch(const std::string& name) {
   const fs::path d = fs::path(::testing::TempDir()) / ("clumpkit_stages_" + name);
   fs::remove_all(d);
   return d;
@@ -89,7 +89,7 @@ CompressionSpec small_cube() {
 }  // namespace
 
 TEST(StageFiles, RecordsRoundTripAndADamagedOneIsRefusedNamingTheFile) {
-  const fs::path d = scratch("records");
+  const fs::path d = stage_scratch("records");
   fs::create_directories(d);
   const std::string path = (d / "a.done").string();
   const StageRecord r{{"porosity", "0.41234567890123451"}, {"steps", "1200"}};
@@ -109,7 +109,7 @@ TEST(StageFiles, RecordsRoundTripAndADamagedOneIsRefusedNamingTheFile) {
 }
 
 TEST(StageFiles, AResumeRefusesCheckpointsOfAnotherFingerprintAndAFreshRunEmptiesTheDirectory) {
-  const fs::path d = scratch("fingerprint");
+  const fs::path d = stage_scratch("fingerprint");
   {
     StageFiles first(d.string(), false);
     first.open("aaaa");
@@ -137,7 +137,7 @@ TEST(StageFiles, AResumeRefusesCheckpointsOfAnotherFingerprintAndAFreshRunEmptie
 TEST(StageFiles, CompressionStoppedWhileClosingAndWhileRelaxingResumesToTheSameBytes) {
   const CompressionSpec spec = small_cube();
   const CompressionResult straight = compress_specimen(spec);
-  const fs::path d = scratch("compression");
+  const fs::path d = stage_scratch("compression");
   StageControl control;
   control.checkpoint_every_seconds = 0;  // only when stopped
   // Stopped at closing step 1,000 (the first question), then at relaxation step 1,000 (the
@@ -197,7 +197,7 @@ TEST(StageFiles, ElementTestStoppedWhileConsolidatingAndWhileLoadingResumesToThe
   ASSERT_GE(straight.curve.size(), 4u);
   ASSERT_GT(straight.consolidation_steps, 1000);  // asked first while consolidating
 
-  const fs::path d = scratch("element");
+  const fs::path d = stage_scratch("element");
   StageControl control;
   control.checkpoint_every_seconds = 0;
   int consolidated_calls = 0;

@@ -9,7 +9,7 @@
 using namespace clumpkit;
 
 namespace {
-std::string error_of(const std::string& text) {
+std::string shape_error_of(const std::string& text) {
   try {
     parse_shape_recipe(text, "r.toml");
   } catch (const InvalidInput& e) {
@@ -44,31 +44,32 @@ TEST(Recipe, ParsesDistributionsAndDefaults) {
 }
 
 TEST(Recipe, ErrorsNameFileFieldAndValue) {
-  std::string e = error_of(kBlock + "sl = nan\n");
+  std::string e = shape_error_of(kBlock + "sl = nan\n");
   EXPECT_NE(e.find("r.toml: fraction[0].sl"), std::string::npos) << e;
   EXPECT_NE(e.find("nan"), std::string::npos) << e;
-  e = error_of(kBlock + "sl = 1.3\nsu = 1.1\n");
+  e = shape_error_of(kBlock + "sl = 1.3\nsu = 1.1\n");
   EXPECT_NE(e.find("fraction[0].sl"), std::string::npos) << e;
   EXPECT_NE(e.find("1.3"), std::string::npos) << e;
-  e = error_of(kBlock + "colour = 3\n");
+  e = shape_error_of(kBlock + "colour = 3\n");
   EXPECT_NE(e.find("fraction[0].colour: unknown parameter"), std::string::npos) << e;
-  e = error_of("sead = 1\n" + kBlock);
+  e = shape_error_of("sead = 1\n" + kBlock);
   EXPECT_NE(e.find("r.toml: sead: unknown key"), std::string::npos) << e;
-  e = error_of(kBlock + "W_split = { uniform = [0.5, 1.5] }\n");
+  e = shape_error_of(kBlock + "W_split = { uniform = [0.5, 1.5] }\n");
   EXPECT_FALSE(e.empty());
-  e = error_of("[[fraction]]\nmethod = \"block\"\ncount = 3\nW = -0.03\nL = 0.05\nH = 0.02\n");
+  e = shape_error_of(
+      "[[fraction]]\nmethod = \"block\"\ncount = 3\nW = -0.03\nL = 0.05\nH = 0.02\n");
   EXPECT_NE(e.find("fraction[0].W: must be a size between 1e-30 and 1e30, got -0.03"),
             std::string::npos)
       << e;
-  e = error_of("[[fraction]]\nmethod = \"cube\"\ncount = 3\n");
+  e = shape_error_of("[[fraction]]\nmethod = \"cube\"\ncount = 3\n");
   EXPECT_NE(e.find("fraction[0].method"), std::string::npos) << e;
-  e = error_of("[[fraction]]\nmethod = \"block\"\ncount = 3\nL = 0.05\nH = 0.02\n");
+  e = shape_error_of("[[fraction]]\nmethod = \"block\"\ncount = 3\nL = 0.05\nH = 0.02\n");
   EXPECT_NE(e.find("fraction[0].W: required"), std::string::npos) << e;
-  e = error_of("seed = 1\n");
+  e = shape_error_of("seed = 1\n");
   EXPECT_NE(e.find("no [[fraction]]"), std::string::npos) << e;
-  e = error_of("seed = = 1\n");
+  e = shape_error_of("seed = = 1\n");
   EXPECT_NE(e.find("r.toml:1: TOML syntax error"), std::string::npos) << e;
-  e = error_of(kBlock + "W_split = { gauss = [1, 2] }\n");
+  e = shape_error_of(kBlock + "W_split = { gauss = [1, 2] }\n");
   EXPECT_NE(e.find("unknown distribution"), std::string::npos) << e;
 }
 

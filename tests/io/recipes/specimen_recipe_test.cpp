@@ -13,7 +13,7 @@ using namespace clumpkit;
 namespace {
 const std::string kDir = std::string(CLUMPKIT_SOURCE_DIR) + "/assets/recipes/";
 
-std::string error_of(const std::string& text) {
+std::string specimen_error_of(const std::string& text) {
   try {
     parse_specimen_recipe(text, kDir + "test.toml");  // relative paths resolve in assets/recipes
   } catch (const InvalidInput& e) {
@@ -68,33 +68,33 @@ TEST(SpecimenRecipe, BundledRecipesParse) {
 }
 
 TEST(SpecimenRecipe, BadRecipesFailBeforeSimulation) {
-  EXPECT_EQ(error_of(kGood), "");
-  std::string e = error_of("target_relative_density = 1.2\n" + kGood);
+  EXPECT_EQ(specimen_error_of(kGood), "");
+  std::string e = specimen_error_of("target_relative_density = 1.2\n" + kGood);
   EXPECT_NE(e.find("test.toml: target_relative_density: must be in [0, 1], got 1.2"),
             std::string::npos)
       << e;
-  e = error_of("target_relative_density = -0.1\n" + kGood);
+  e = specimen_error_of("target_relative_density = -0.1\n" + kGood);
   EXPECT_NE(e.find("target_relative_density"), std::string::npos) << e;
-  e = error_of(with("passing = [100, 80, 60, 40, 20]", "passing = [95, 80, 60, 40, 20]"));
+  e = specimen_error_of(with("passing = [100, 80, 60, 40, 20]", "passing = [95, 80, 60, 40, 20]"));
   EXPECT_NE(e.find("gradation.passing[0]: the class percentages must sum to 100"),
             std::string::npos)
       << e;
   EXPECT_NE(e.find("95"), std::string::npos) << e;
-  e = error_of(with("diameter = 0.3", "diameter = 0.05"));
+  e = specimen_error_of(with("diameter = 0.3", "diameter = 0.05"));
   EXPECT_NE(e.find("container.diameter: not wider than twice the largest particle"),
             std::string::npos)
       << e;
-  e = error_of(with("recipe = \"srm-rock-blocks.toml\"", "library = \"no-such-library\""));
+  e = specimen_error_of(with("recipe = \"srm-rock-blocks.toml\"", "library = \"no-such-library\""));
   EXPECT_NE(e.find("rock.library: no clump library"), std::string::npos) << e;
-  e = error_of(with("recipe = \"srm-rock-blocks.toml\"", "recipe = \"missing.toml\""));
+  e = specimen_error_of(with("recipe = \"srm-rock-blocks.toml\"", "recipe = \"missing.toml\""));
   EXPECT_NE(e.find("rock.recipe: file not found"), std::string::npos) << e;
-  e = error_of("colour = 1\n" + kGood);
+  e = specimen_error_of("colour = 1\n" + kGood);
   EXPECT_NE(e.find("colour: unknown key"), std::string::npos) << e;
-  e = error_of("rock_mass_fraction = nan\n" + with("rock_mass_fraction = 0.4\n", ""));
+  e = specimen_error_of("rock_mass_fraction = nan\n" + with("rock_mass_fraction = 0.4\n", ""));
   EXPECT_NE(e.find("rock_mass_fraction: must be finite, got nan"), std::string::npos) << e;
-  e = error_of(with("rock_mass_fraction = 0.4", "rock_mass_fraction = 0.3"));
+  e = specimen_error_of(with("rock_mass_fraction = 0.4", "rock_mass_fraction = 0.3"));
   EXPECT_NE(e.find("the gradation gives 40 %"), std::string::npos) << e;
-  e = error_of(with("passing = [100, 80, 60, 40, 20]", "passing = [100, 80, 90, 40, 20]"));
+  e = specimen_error_of(with("passing = [100, 80, 60, 40, 20]", "passing = [100, 80, 90, 40, 20]"));
   EXPECT_NE(e.find("must not increase"), std::string::npos) << e;
 }
 
@@ -110,12 +110,13 @@ TEST(SpecimenRecipe, SegmentContainerIsACompressedSectorOfItsCylinder) {
   const dem::CompressionSpec c = compression_spec(r, {});
   EXPECT_EQ(c.shape, dem::CompressionSpec::Shape::segment);
   EXPECT_NEAR(c.angle, 3.14159265358979323846 / 2, 1e-15);
-  std::string e = error_of(with("diameter = 0.3", seg));  // deposition
+  std::string e = specimen_error_of(with("diameter = 0.3", seg));  // deposition
   EXPECT_NE(e.find("container.shape: a segment needs preparation.method"), std::string::npos) << e;
-  e = error_of(with("diameter = 0.3", "diameter = 0.3\nshape = \"segment\"\nangle = 200") + prep);
+  e = specimen_error_of(with("diameter = 0.3", "diameter = 0.3\nshape = \"segment\"\nangle = 200") +
+                        prep);
   EXPECT_NE(e.find("container.angle: must be in (0, 180] degrees, got 200"), std::string::npos)
       << e;
-  e = error_of(with("diameter = 0.3", "diameter = 0.3\nangle = 90") + prep);
+  e = specimen_error_of(with("diameter = 0.3", "diameter = 0.3\nangle = 90") + prep);
   EXPECT_NE(e.find("container.angle: is for shape = \"segment\""), std::string::npos) << e;
 }
 

@@ -10,7 +10,7 @@ using namespace clumpkit;
 
 namespace {
 
-std::string error_of(const std::string& text) {
+std::string test_error_of(const std::string& text) {
   try {
     parse_test_recipe(text, "t.toml");
   } catch (const InvalidInput& e) {
@@ -50,11 +50,11 @@ TEST(TestRecipe, BundledCptRecipeGivesItsProbe) {
   EXPECT_EQ(r.probe->depth, 8 * 0.018);
   EXPECT_LT(r.probe->friction, 0.0);  // the test's
   EXPECT_FALSE(parse_test_recipe("[test]\nconfining = 1e5\n", "t.toml").probe.has_value());
-  const std::string e = error_of("[probe]\ndepth = 0.1\napex_deg = 200\n");
+  const std::string e = test_error_of("[probe]\ndepth = 0.1\napex_deg = 200\n");
   EXPECT_NE(e.find("probe.apex_deg"), std::string::npos) << e;
   EXPECT_NE(e.find("200"), std::string::npos) << e;
-  EXPECT_NE(error_of("[probe]\ndiameter = 0.01\n").find("probe.depth"), std::string::npos);
-  EXPECT_NE(error_of("[probe]\ndepth = 0.1\nvelocity = -1\n").find("probe.velocity"),
+  EXPECT_NE(test_error_of("[probe]\ndiameter = 0.01\n").find("probe.depth"), std::string::npos);
+  EXPECT_NE(test_error_of("[probe]\ndepth = 0.1\nvelocity = -1\n").find("probe.velocity"),
             std::string::npos);
 }
 
@@ -68,17 +68,17 @@ TEST(TestRecipe, DefaultsLeaveConsolidationAndServoToTheTest) {
 }
 
 TEST(TestRecipe, BadValuesNameFileFieldAndValue) {
-  const std::string e1 = error_of("[test]\nconsolidation_friction = -0.1\n");
+  const std::string e1 = test_error_of("[test]\nconsolidation_friction = -0.1\n");
   EXPECT_NE(e1.find("t.toml"), std::string::npos) << e1;
   EXPECT_NE(e1.find("test.consolidation_friction"), std::string::npos) << e1;
   EXPECT_NE(e1.find("-0.1"), std::string::npos) << e1;
-  const std::string e2 = error_of("[test]\nservo_strain_rate = 0\n");
+  const std::string e2 = test_error_of("[test]\nservo_strain_rate = 0\n");
   EXPECT_NE(e2.find("test.servo_strain_rate"), std::string::npos) << e2;
-  const std::string e3 = error_of("[test]\nservo_rate = 1\n");
+  const std::string e3 = test_error_of("[test]\nservo_rate = 1\n");
   EXPECT_NE(e3.find("unknown key"), std::string::npos) << e3;
   EXPECT_NE(e3.find("servo_strain_rate"), std::string::npos) << e3;  // the known keys listed
   for (const char* bad : {"0.5", "nan", "-2"}) {
-    const std::string e = error_of(std::string("[test]\ndensity_scaling = ") + bad + "\n");
+    const std::string e = test_error_of(std::string("[test]\ndensity_scaling = ") + bad + "\n");
     EXPECT_NE(e.find("t.toml: test.density_scaling: "), std::string::npos) << e;
     EXPECT_NE(e.find(bad), std::string::npos) << e;
   }
