@@ -23,9 +23,16 @@ sed -e "s/^depth = .*/depth = $depth/" \
 run() {  # GROUP SEED NAME
   [ -f "$3-test/curve.csv" ] && return 0  # done by an earlier run of this script
   sed -e "s/^seed = .*/seed = $2/" "$root/assets/recipes/cpt-$1.toml" > "$3.toml"
-  [ -d "$3" ] || "$bin" specimen --quiet --threads "$threads" --recipe "$3.toml" --out "$3"
+  # A run killed part way (the session ended) resumes its checkpoint; a resumed push's seconds
+  # count only its last part.
+  local resume=()
+  [ -d "$3.partial" ] && resume=(--resume)
+  [ -d "$3" ] || "$bin" specimen --quiet --threads "$threads" --recipe "$3.toml" --out "$3" "${resume[@]}"
+  resume=()
+  [ -d "$3-test.partial" ] && resume=(--resume)
   local t0=$(date +%s.%N)
-  "$bin" test cpt --quiet --threads "$threads" --specimen "$3" --recipe test.toml --out "$3-test"
+  "$bin" test cpt --quiet --threads "$threads" --specimen "$3" --recipe test.toml --out "$3-test" \
+    "${resume[@]}"
   python3 -c "print($(date +%s.%N) - $t0)" > "$3-test/seconds"
 }
 for s in $seeds; do
