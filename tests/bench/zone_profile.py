@@ -1,30 +1,22 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """Porosity against the zone coordinate of a radially zoned specimen (a cylinder or a segment
 about the z-axis): the solid in annuli of width --bin, counted only at points --margin or more
 from every wall, by sampling each sphere with --samples points (Monte Carlo; overlaps count
 twice, which a compressed specimen's 0.1 % overlaps make negligible), over the annulus volume
 that the same margin leaves (sampled too).
 
-    /usr/bin/python3 tests/bench/zone_profile.py SPECIMEN_DIR [--margin 0.012] [--bin 0.0025]
+    PYTHONPATH=build/python python3 tests/bench/zone_profile.py SPECIMEN_DIR [--margin 0.012]
+        [--bin 0.0025]
 
-Prints one line per annulus: inner and outer radius (mm), porosity. Needs python3-numpy.
+Prints one line per annulus: inner and outer radius (mm), porosity. Reads the specimen with the
+clumpkit module (scripts/test builds it into build/python).
 """
 import argparse
 import json
 import math
 
+import clumpkit
 import numpy as np
-
-
-def spheres(path):
-    """(x, y, z, r) of every sphere of a specimen.csv."""
-    with open(path) as f:
-        lines = f.read().split("\n")
-    start = next(i for i, l in enumerate(lines) if l.startswith("# spheres"))
-    header = lines[start + 1].split(",")
-    rows = [l.split(",") for l in lines[start + 2:] if l and not l.startswith("#")]
-    a = np.array(rows, dtype=float)
-    return tuple(a[:, header.index(k)] for k in ("x", "y", "z", "r"))
 
 
 def main():
@@ -49,8 +41,8 @@ def main():
     rng = np.random.default_rng(1)
     edges = np.arange(0.0, R + 1e-12, a.bin)
     solid = np.zeros(len(edges) - 1)
-    X, Y, Z, Rad = spheres(f"{a.specimen}/specimen.csv")
-    for x0, y0, z0, r0 in zip(X, Y, Z, Rad):
+    s = clumpkit.read_specimen(a.specimen)
+    for (x0, y0, z0), r0 in zip(s["sphere_centres"], s["sphere_radii"]):
         u = rng.normal(size=(a.samples, 3))
         u *= (r0 * rng.random(a.samples) ** (1 / 3) / np.linalg.norm(u, axis=1))[:, None]
         x, y, z = x0 + u[:, 0], y0 + u[:, 1], z0 + u[:, 2]

@@ -1,6 +1,7 @@
 // Zone layouts (dem/specimen/zones.h): coordinates, regions, the mixed layer's fraction, and the
 // guard rails of CTGU 2017's method.
 #include "dem/specimen/zones.h"
+#include "../../invalid_input_message.h"
 #include "geom/errors.h"
 
 #include <gtest/gtest.h>
@@ -24,12 +25,7 @@ ZoneLayout group_e() {
 }
 
 std::string error_of(const ZoneLayout& z, double d) {
-  try {
-    validate_zones(z, d);
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "";
+  return invalid_input_message([&] { validate_zones(z, d); });
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // strengths and energies, and bad values name file, field and value.
 #include "io/recipes/crush_recipe.h"
 
+#include "../../invalid_input_message.h"
 #include "geom/errors.h"
 
 #include <gtest/gtest.h>
@@ -18,12 +19,7 @@ std::string recipe(const char* name) {
 }
 
 std::string error_of(const std::string& text) {
-  try {
-    parse_crush_recipe(text, "r.toml");
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "";
+  return invalid_input_message([&] { parse_crush_recipe(text, "r.toml"); });
 }
 
 }  // namespace

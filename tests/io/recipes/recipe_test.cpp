@@ -1,5 +1,6 @@
 // Tests of recipe parsing: forms of distributions and the error messages for bad recipes.
 #include "io/recipes/recipe.h"
+#include "../../invalid_input_message.h"
 #include "geom/errors.h"
 
 #include <gtest/gtest.h>
@@ -10,12 +11,7 @@ using namespace clumpkit;
 
 namespace {
 std::string shape_error_of(const std::string& text) {
-  try {
-    parse_shape_recipe(text, "r.toml");
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "";
+  return invalid_input_message([&] { parse_shape_recipe(text, "r.toml"); });
 }
 const std::string kBlock =
     "[[fraction]]\nmethod = \"block\"\ncount = 3\nW = 0.03\nL = 0.05\nH = 0.02\n";

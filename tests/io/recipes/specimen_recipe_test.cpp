@@ -1,6 +1,7 @@
 // Tests of specimen recipes: bundled recipes parse, bad ones fail before any simulation with the
 // file, field and value in one line.
 #include "io/recipes/specimen_recipe.h"
+#include "../../invalid_input_message.h"
 #include "geom/errors.h"
 #include "io/recipes/specimen_spec.h"
 
@@ -14,12 +15,8 @@ namespace {
 const std::string kDir = std::string(CLUMPKIT_SOURCE_DIR) + "/assets/recipes/";
 
 std::string specimen_error_of(const std::string& text) {
-  try {
-    parse_specimen_recipe(text, kDir + "test.toml");  // relative paths resolve in assets/recipes
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "";
+  // Relative paths resolve in assets/recipes.
+  return invalid_input_message([&] { parse_specimen_recipe(text, kDir + "test.toml"); });
 }
 
 const std::string kGood = R"(

@@ -2,6 +2,7 @@
 // bad ones fail with the file, field and value in one line.
 #include "io/recipes/test_recipe.h"
 
+#include "../../invalid_input_message.h"
 #include "geom/errors.h"
 
 #include <gtest/gtest.h>
@@ -11,12 +12,7 @@ using namespace clumpkit;
 namespace {
 
 std::string test_error_of(const std::string& text) {
-  try {
-    parse_test_recipe(text, "t.toml");
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "";
+  return invalid_input_message([&] { parse_test_recipe(text, "t.toml"); });
 }
 
 }  // namespace
