@@ -11,18 +11,26 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
 
 namespace fuzz {
 
-/// A scratch directory of this process (removed by nobody: /tmp is the fuzzer's to clean).
+/// A scratch directory of this process, removed at a normal exit (libFuzzer's exit after
+/// -max_total_time or -runs); a crash leaves it, with what the crashing input wrote there.
 inline const std::filesystem::path& scratch() {
-  static const std::filesystem::path dir = [] {
-    const auto d = std::filesystem::temp_directory_path() /
-                   ("clumpkit-fuzz-" + std::to_string(static_cast<long>(getpid())));
-    std::filesystem::create_directories(d);
-    return d;
-  }();
-  return dir;
+  struct Dir {
+    std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                 ("clumpkit-fuzz-" + std::to_string(static_cast<long>(getpid())));
+    Dir() { std::filesystem::create_directories(path); }
+    Dir(const Dir&) = delete;
+    Dir& operator=(const Dir&) = delete;
+    ~Dir() {
+      std::error_code ignored;
+      std::filesystem::remove_all(path, ignored);
+    }
+  };
+  static const Dir dir;
+  return dir.path;
 }
 
 /// Writes `size` bytes to `name` under scratch() (sub-directories created) and returns its path.
