@@ -1,5 +1,6 @@
 #include "dem/lab/element_test.h"
 
+#include "dem/measure/strain_rate.h"
 #include "dem/measure/stress.h"
 #include "geom/errors.h"
 
@@ -115,6 +116,8 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
     c.porosity = 1.0 - st.solid_volume / v;
     c.coordination = coordination_number(world);
     c.unbalanced = mean_unbalanced_force_ratio(world);
+    // The rate integrates to the gauge's logarithmic strain; as the others, engineering.
+    c.interior_axial_strain = -std::expm1(-st.interior_strain);
     return c;
   };
   if (st.phase == Phase::loading) {
@@ -152,6 +155,10 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
             break;
         }
         drive_cell(world, cell, axial, lateral, gain, 1);
+        const double z_lo = world.walls()[cell.bottom].point.z(),
+                     z_hi = world.walls()[cell.top].point.z(), quarter = 0.25 * (z_hi - z_lo);
+        st.interior_strain +=
+            interior_axial_strain_rate(world, z_lo + quarter, z_hi - quarter) * dt;
       }
       const CurveRow c = row(step);
       st.curve.push_back(c);

@@ -57,12 +57,17 @@ struct ElementTestSettings {
 };
 
 /// One row of the curve. Strains and stresses compression positive; strains from the start of
-/// loading (the end of consolidation).
+/// loading (the end of consolidation). `interior_axial_strain` is the axial strain of the
+/// middle half of the height, between the quarter heights of the platens: 1 − exp(−Σ rate·dt)
+/// over the loading's steps, rate = interior_axial_strain_rate (dem/measure/strain_rate.h) —
+/// free of the platens' boundary layers as an on-sample gauge of a laboratory test is of the
+/// bedding error.
 struct CurveRow {
   long long step = 0;
   double axial_strain = 0, volumetric_strain = 0;
   double axial_stress = 0, lateral_stress = 0, p = 0, q = 0;
   double porosity = 0, coordination = 0, unbalanced = 0;
+  double interior_axial_strain = 0;
 };
 
 /// Where a test is: everything besides the world that its later steps depend on, so a test
@@ -78,6 +83,7 @@ struct ElementTestState {
   double height0 = 0, volume0 = 0;  ///< at the end of consolidation: the strains' origin
   double solid_volume = 0;          ///< Σ body volumes (m³)
   double test_friction = 0;         ///< μ of the loading
+  double interior_strain = 0;       ///< Σ rate·dt of CurveRow::interior_axial_strain so far
   std::vector<CurveRow> curve;
 };
 
@@ -129,7 +135,7 @@ ElementTestResult run_element_test(
     const std::function<void(const CellSpecimen&, const ElementTestState&)>& consolidated = {});
 
 /// What a checkpoint of the staged test keeps besides the world: every field of `state` (numbers
-/// exact), the cell's walls and the curve so far ("curve.000000", … : ten numbers per row).
+/// exact), the cell's walls and the curve so far ("curve.000000", … : eleven numbers per row).
 StageRecord element_test_record(const ElementTestState& state, const TestCell& cell);
 
 /// The state and cell of element_test_record. Throws InvalidInput naming `where` for a missing

@@ -18,13 +18,14 @@ namespace clumpkit::dem {
 namespace {
 
 constexpr const char* kStage = "test";
-constexpr int kRowFields = 10;
+constexpr int kRowFields = 11;
 
 // The curve row's numbers in file order (the step is the first, written as a double: exact up
 // to 2^53 steps).
 std::array<double*, kRowFields - 1> row_fields(CurveRow& c) {
-  return {&c.axial_strain, &c.volumetric_strain, &c.axial_stress, &c.lateral_stress, &c.p, &c.q,
-          &c.porosity,     &c.coordination,      &c.unbalanced};
+  return {
+      &c.axial_strain, &c.volumetric_strain, &c.axial_stress, &c.lateral_stress,       &c.p, &c.q,
+      &c.porosity,     &c.coordination,      &c.unbalanced,   &c.interior_axial_strain};
 }
 
 // How far the test is (0..1): the consolidation is the first tenth (by its step cap), the
@@ -62,6 +63,7 @@ StageRecord element_test_record(const ElementTestState& st, const TestCell& cell
   put_number(r, "volume0", st.volume0);
   put_number(r, "solid_volume", st.solid_volume);
   put_number(r, "test_friction", st.test_friction);
+  put_number(r, "interior_strain", st.interior_strain);
   put_cell(r, cell);
   std::vector<std::vector<double>> rows;
   for (CurveRow c : st.curve) {
@@ -87,6 +89,7 @@ void read_element_test_record(const StageRecord& r, const std::string& where, El
   st.volume0 = record_number(r, "volume0", where);
   st.solid_volume = record_number(r, "solid_volume", where);
   st.test_friction = record_number(r, "test_friction", where);
+  st.interior_strain = record_number(r, "interior_strain", where);
   cell = read_cell(r, where);
   st.curve.clear();
   for (const std::vector<double>& v : record_curve(r, kRowFields, where)) {

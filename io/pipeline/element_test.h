@@ -20,8 +20,9 @@ dem::TestKind test_kind(const std::string& name);
 /// specimen's bottom and top), gravity off, with the specimen's contact law unless the recipe
 /// overrides it; see dem::run_element_test. Writes into `out_dir` (DIR.partial renamed at the
 /// end, job.h): curve.csv (step, axial_strain, volumetric_strain, axial_stress_pa,
-/// radial_stress_pa, p_pa, q_pa, porosity, coordination_number, unbalanced_force), curve.png,
-/// report.json and manifest.json. The interrupter is told the stage ("test").
+/// radial_stress_pa, p_pa, q_pa, porosity, coordination_number, unbalanced_force,
+/// interior_axial_strain), curve.png, report.json and manifest.json. The interrupter is told
+/// the stage ("test").
 /// Options of run_element_test_job.
 struct ElementTestJobOptions {
   /// Continue the work kept in DIR.partial (its checkpoint; refused, naming both fingerprints,

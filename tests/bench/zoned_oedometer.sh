@@ -57,9 +57,9 @@ for law in linear none; do
 confining = 100e3
 final_stress = 400e3
 strain_rate = 0.5
-record_every = 200
+record_every = ${RECORD_EVERY:-50}
 friction = 0.5
-consolidation_friction = 0.5
+consolidation_friction = ${CONSOLIDATION_FRICTION:-0.0}
 [contact]
 stiffness_scaling = "$law"
 kn_ref = 5e6
@@ -75,13 +75,19 @@ import json
 M = {}
 for s in ("d", "d2", "zoned"):
     for law in ("linear", "none"):
-        M[s, law] = json.load(open(f"o-{s}-{law}/report.json"))["constrained_modulus"] / 1e6
+        r = json.load(open(f"o-{s}-{law}/report.json"))
+        M[s, law] = r["constrained_modulus"] / 1e6
+        M[s, law, "in"] = r["constrained_modulus_interior"] / 1e6
     z = json.load(open(f"{s}/report.json"))["zones"]
     print(f"{s}: " + ", ".join(f"zone {r['zone']}: {r['count']} spheres, n {r['porosity']:.4f}"
                                for r in z["regions"]) + f"; migrated {z['mis_zoned']}")
-for law in ("linear", "none"):
-    print(f"{law}: M_d {M['d', law]:.1f}, M_2d {M['d2', law]:.1f}, M_zoned {M['zoned', law]:.1f} MPa")
-print(f"linear: M_zoned / M_d = {M['zoned', 'linear'] / M['d', 'linear']:.3f} (acceptance: within 5 %)")
-par = 0.25 * M["d", "none"] + 0.75 * M["d2", "none"]
-print(f"none: M_zoned / (0.25 M_d + 0.75 M_2d) = {M['zoned', 'none'] / par:.3f} (acceptance: within 7 %)")
+for k, what in (((), "platens"), (("in",), "interior")):
+    for law in ("linear", "none"):
+        d, d2, zo = (M[(s, law) + k] for s in ("d", "d2", "zoned"))
+        print(f"{what} {law}: M_d {d:.1f}, M_2d {d2:.1f}, M_zoned {zo:.1f} MPa")
+    print(f"{what} linear: M_zoned / M_d = {M[('zoned', 'linear') + k] / M[('d', 'linear') + k]:.3f}"
+          " (acceptance: within 5 %)")
+    par = 0.25 * M[("d", "none") + k] + 0.75 * M[("d2", "none") + k]
+    print(f"{what} none: M_zoned / (0.25 M_d + 0.75 M_2d) = {M[('zoned', 'none') + k] / par:.3f}"
+          " (acceptance: within 7 %)")
 PY

@@ -37,9 +37,10 @@ void expect_same_bytes(const std::vector<CurveRow>& a, const std::vector<CurveRo
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t k = 0; k < a.size(); ++k) {
     EXPECT_EQ(a[k].step, b[k].step);
-    for (const auto field : {&CurveRow::axial_strain, &CurveRow::volumetric_strain,
-                             &CurveRow::axial_stress, &CurveRow::lateral_stress,
-                             &CurveRow::porosity, &CurveRow::coordination, &CurveRow::unbalanced})
+    for (const auto field :
+         {&CurveRow::axial_strain, &CurveRow::volumetric_strain, &CurveRow::axial_stress,
+          &CurveRow::lateral_stress, &CurveRow::porosity, &CurveRow::coordination,
+          &CurveRow::unbalanced, &CurveRow::interior_axial_strain})
       EXPECT_EQ(std::memcmp(&(a[k].*field), &(b[k].*field), sizeof(double)), 0) << "row " << k;
   }
 }
@@ -67,6 +68,11 @@ TEST(DemElementTest, TriaxialLoadsAboveTheConfiningStressSameBytesForOneAndTwoTh
   EXPECT_GT(one.back().q, one[1].q);
   EXPECT_NEAR(one.back().lateral_stress / t.confining, 1.0, 0.1);
   EXPECT_GT(one.back().coordination, 3.0);
+  // The middle half shortens with the whole: its strain is of the platens' order (1.24 × here,
+  // measured: the cube is five diameters high, so its middle half is two).
+  EXPECT_EQ(one.front().interior_axial_strain, 0.0);
+  EXPECT_GT(one.back().interior_axial_strain, 0.3 * one.back().axial_strain);
+  EXPECT_LT(one.back().interior_axial_strain, 2.0 * one.back().axial_strain);
   expect_same_bytes(one, run(t, 2));
 }
 
