@@ -4,8 +4,13 @@
 # by compression to n = 0.36 away from the walls; oedometer 100 -> 400 kPa with rigid platens,
 # constrained modulus M (σ_a against ε_a) under kn ∝ d ("linear", d_ref 5 mm) and constant kn
 # ("none"). Linear: M_zoned against M_d; none: M_zoned against 0.25·M_d + 0.75·M_2d.
+# Each test reports the modulus from the platens and from the middle half of the height
+# (constrained_modulus_interior). CONSOLIDATION_FRICTION (default 0.5, the test's μ) = 0
+# consolidates frictionless, which makes the interior modulus independent of the cell's height
+# in diameters (RESULTS.md) but takes far more steps to equilibrium.
 #   tests/bench/zoned_oedometer.sh [OUT]   (default /tmp/clumpkit-zoned-oedometer; ~7 min on 2
-#   cores at DIAMETER 0.160, HEIGHT 0.090: 17,000, 2,100 and 6,000 spheres)
+#   cores at DIAMETER 0.160, HEIGHT 0.090: 17,000, 2,100 and 6,000 spheres; with
+#   CONSOLIDATION_FRICTION=0, 5 min at 0.080 x 0.060 and over an hour at the default size)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 bin=${CLUMPKIT:-$root/build/io/clumpkit}
@@ -59,7 +64,7 @@ final_stress = 400e3
 strain_rate = 0.5
 record_every = ${RECORD_EVERY:-50}
 friction = 0.5
-consolidation_friction = ${CONSOLIDATION_FRICTION:-0.0}
+consolidation_friction = ${CONSOLIDATION_FRICTION:-0.5}
 [contact]
 stiffness_scaling = "$law"
 kn_ref = 5e6
