@@ -1,6 +1,7 @@
 #include "dem/measure/curve_residual.h"
 
 #include "geom/errors.h"
+#include "geom/format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -36,15 +37,24 @@ double interpolate(const Curve& c, double x) {
   return c.y[k - 1] + t * (c.y[k] - c.y[k - 1]);
 }
 
-CurveResidual curve_residual(const Curve& a, const Curve& b, int points) {
+CurveResidual curve_residual(const Curve& a, const Curve& b, int points, double x_from,
+                             double x_to) {
   validate_curve(a, "curve a");
   validate_curve(b, "curve b");
   if (points < 2)
     throw InvalidInput("curve residual: points must be at least 2, got " + std::to_string(points));
+  if (std::isnan(x_from) || std::isnan(x_to))
+    throw InvalidInput("curve residual: the window's bounds must be numbers");
   CurveResidual r;
   r.from = std::max(a.x.front(), b.x.front());
   r.to = std::min(a.x.back(), b.x.back());
   if (!(r.to > r.from)) throw InvalidInput("curve residual: the curves' x ranges do not overlap");
+  if (!(std::min(r.to, x_to) > std::max(r.from, x_from)))
+    throw InvalidInput("curve residual: the window [" + format_number(x_from) + ", " +
+                       format_number(x_to) + "] leaves nothing of the overlap [" +
+                       format_number(r.from) + ", " + format_number(r.to) + "]");
+  r.from = std::max(r.from, x_from);
+  r.to = std::min(r.to, x_to);
   r.points = points;
   double abs_sum = 0.0, rel_sum = 0.0;
   for (int k = 0; k < points; ++k) {

@@ -21,13 +21,18 @@ void register_compare_curves(CLI::App& app) {
       "x over the overlap of their x ranges, ends included, each curve linearly interpolated: "
       "residual_abs = mean (b - a)^2 and residual_rel = mean ((b - a)/a)^2 (over the points where "
       "a != 0). The paper's printed equation is garbled between the two, so both are given. "
-      "Columns are picked by their header names; x must increase strictly in each file.");
+      "Columns are picked by their header names; x must increase strictly in each file. --from "
+      "and --to narrow the range compared (e.g. --from 0.018 leaves out a push's first cone "
+      "diameter, where qc near zero dominates residual_rel).");
   c->add_option("A", o->job.a, "Reference curve (CSV with a header line)")->required();
   c->add_option("B", o->job.b, "Curve compared with it")->required();
   c->add_option("--x", o->job.x, "Column of x")->capture_default_str();
   c->add_option("--y", o->job.y, "Column of y")->capture_default_str();
   c->add_option("--points", o->job.points, "Equally spaced points (at least 2)")
       ->capture_default_str();
+  c->add_option("--from", o->job.from,
+                "Compare only where x >= this (default: the overlap's start)");
+  c->add_option("--to", o->job.to, "Compare only where x <= this (default: the overlap's end)");
   c->add_flag("--json", o->json, "Print the result as one JSON object");
   c->callback([o] {
     const nlohmann::ordered_json r = compare_curves(o->job);

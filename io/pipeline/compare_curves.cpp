@@ -8,7 +8,7 @@ namespace clumpkit {
 nlohmann::ordered_json compare_curves(const CompareCurvesOptions& o) {
   const dem::Curve a = read_curve_columns(o.a, o.x, o.y);
   const dem::Curve b = read_curve_columns(o.b, o.x, o.y);
-  const dem::CurveResidual r = dem::curve_residual(a, b, o.points);
+  const dem::CurveResidual r = dem::curve_residual(a, b, o.points, o.from, o.to);
   nlohmann::ordered_json j;
   j["a"] = o.a;
   j["b"] = o.b;

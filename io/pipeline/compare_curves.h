@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <limits>
 #include <string>
 
 namespace clumpkit {
@@ -13,10 +14,14 @@ struct CompareCurvesOptions {
   std::string a, b;
   std::string x = "depth_m", y = "qc_pa";
   int points = 200;
+  /// Window on x: only the overlap within [from, to] is compared (unbounded by default).
+  double from = -std::numeric_limits<double>::infinity();
+  double to = std::numeric_limits<double>::infinity();
 };
 
-/// Reads both curves and returns {a, b, x, y, from, to, points, residual_abs, residual_rel,
-/// relative_points}. Throws IoError / InvalidInput naming the file for bad input.
+/// Reads both curves and returns {a, b, x, y, from, to (the range compared), points,
+/// residual_abs, residual_rel, relative_points}. Throws IoError / InvalidInput naming the file for
+/// bad input.
 nlohmann::ordered_json compare_curves(const CompareCurvesOptions& o);
 
 }  // namespace clumpkit

@@ -239,7 +239,8 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
   cases.push_back({"cells " + box + " --count 8 --out " + box, "box.stl", ""});
 
   // compare-curves A B: missing or unreadable files, a missing column, a cell that is not a
-  // number, x that goes back, one row, ranges that do not overlap, too few points
+  // number, x that goes back, one row, ranges that do not overlap, too few points, a window
+  // that leaves nothing or is not a number
   write(d / "qc_a.csv", "step,depth_m,qc_pa\n1,0,0\n2,0.1,1e6\n3,0.2,2e6\n");
   write(d / "qc_nan.csv", "step,depth_m,qc_pa\n1,0,0\n2,0.1,nan\n");
   write(d / "qc_back.csv", "step,depth_m,qc_pa\n1,0,0\n2,0.1,1\n3,0.05,2\n");
@@ -252,6 +253,9 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
   cases.push_back({"compare-curves " + qa + " " + qa + " --y qc", "'qc'", ""});
   cases.push_back({"compare-curves " + qa + " " + in("qc_far.csv"), "do not overlap", ""});
   cases.push_back({"compare-curves " + qa + " " + qa + " --points 1", "points", ""});
+  cases.push_back({"compare-curves " + qa + " " + qa + " --from 0.15 --to 0.1", "0.15", ""});
+  cases.push_back({"compare-curves " + qa + " " + qa + " --from 0.3", "leaves nothing", ""});
+  cases.push_back({"compare-curves " + qa + " " + qa + " --to nan", "window", ""});
 
   // crush --recipe R --out D: unknown keys, negative energies, a cell size above the particle,
   // no sets, a bad axis, a NaN rate, a missing file; nothing is simulated or written.

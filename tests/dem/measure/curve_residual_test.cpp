@@ -35,6 +35,30 @@ TEST(CurveResidual, LinearCurvesInterpolateExactly) {
   EXPECT_EQ(r.relative_points, 5);
 }
 
+TEST(CurveResidual, AWindowNarrowsTheRangeCompared) {
+  // The curves of LinearCurvesInterpolateExactly within x in [1.5, 10]: the overlap [1, 3] cut
+  // to [1.5, 3], sampled at 1.5, 2.25, 3; b − a is 0.5 everywhere.
+  const Curve a = sampled(0.0, 3.0, 4, [](double x) { return 2.0 * x + 1.0; });
+  const Curve b = sampled(1.0, 5.0, 7, [](double x) { return 2.0 * x + 1.5; });
+  const CurveResidual r = curve_residual(a, b, 3, 1.5, 10.0);
+  EXPECT_EQ(r.from, 1.5);
+  EXPECT_EQ(r.to, 3.0);
+  EXPECT_NEAR(r.residual_abs, 0.25, 1e-14);
+  double rel = 0.0;
+  for (double x : {1.5, 2.25, 3.0}) rel += std::pow(0.5 / (2.0 * x + 1.0), 2) / 3.0;
+  EXPECT_NEAR(r.residual_rel, rel, 1e-15);
+  // Both ends inside the overlap; an unbounded window is the overlap.
+  const CurveResidual inner = curve_residual(a, b, 2, 2.0, 2.5);
+  EXPECT_EQ(inner.from, 2.0);
+  EXPECT_EQ(inner.to, 2.5);
+  const CurveResidual whole = curve_residual(a, b, 5);
+  EXPECT_EQ(curve_residual(a, b, 5, -INFINITY, INFINITY).residual_rel, whole.residual_rel);
+  // A window beside the overlap, an empty one, or a NaN bound leaves nothing to compare.
+  EXPECT_THROW(curve_residual(a, b, 5, 3.5, 4.0), InvalidInput);
+  EXPECT_THROW(curve_residual(a, b, 5, 2.0, 2.0), InvalidInput);
+  EXPECT_THROW(curve_residual(a, b, 5, NAN, 2.0), InvalidInput);
+}
+
 TEST(CurveResidual, SameCurveIsZeroAndTheAbsoluteResidualIsSymmetric) {
   const Curve a = sampled(0.0, 1.0, 50, [](double x) { return std::sin(3.0 * x); });
   const Curve b = sampled(0.0, 1.0, 31, [](double x) { return std::cos(2.0 * x); });
