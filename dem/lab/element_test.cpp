@@ -155,10 +155,10 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
             break;
         }
         drive_cell(world, cell, axial, lateral, gain, 1);
-        const double z_lo = world.walls()[cell.bottom].point.z(),
-                     z_hi = world.walls()[cell.top].point.z(), quarter = 0.25 * (z_hi - z_lo);
+        const double base = world.walls()[cell.bottom].point.z(),
+                     quarter = 0.25 * cell_height(world, cell);
         st.interior_strain +=
-            interior_axial_strain_rate(world, z_lo + quarter, z_hi - quarter) * dt;
+            interior_axial_strain_rate(world, base + quarter, base + 3.0 * quarter) * dt;
       }
       const CurveRow c = row(step);
       st.curve.push_back(c);

@@ -45,16 +45,15 @@ CurveResidual curve_residual(const Curve& a, const Curve& b, int points, double 
     throw InvalidInput("curve residual: points must be at least 2, got " + std::to_string(points));
   if (std::isnan(x_from) || std::isnan(x_to))
     throw InvalidInput("curve residual: the window's bounds must be numbers");
+  const double lo = std::max(a.x.front(), b.x.front()), hi = std::min(a.x.back(), b.x.back());
+  if (!(hi > lo)) throw InvalidInput("curve residual: the curves' x ranges do not overlap");
   CurveResidual r;
-  r.from = std::max(a.x.front(), b.x.front());
-  r.to = std::min(a.x.back(), b.x.back());
-  if (!(r.to > r.from)) throw InvalidInput("curve residual: the curves' x ranges do not overlap");
-  if (!(std::min(r.to, x_to) > std::max(r.from, x_from)))
+  r.from = std::max(lo, x_from);
+  r.to = std::min(hi, x_to);
+  if (!(r.to > r.from))
     throw InvalidInput("curve residual: the window [" + format_number(x_from) + ", " +
                        format_number(x_to) + "] leaves nothing of the overlap [" +
-                       format_number(r.from) + ", " + format_number(r.to) + "]");
-  r.from = std::max(r.from, x_from);
-  r.to = std::min(r.to, x_to);
+                       format_number(lo) + ", " + format_number(hi) + "]");
   r.points = points;
   double abs_sum = 0.0, rel_sum = 0.0;
   for (int k = 0; k < points; ++k) {

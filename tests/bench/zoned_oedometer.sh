@@ -81,18 +81,18 @@ M = {}
 for s in ("d", "d2", "zoned"):
     for law in ("linear", "none"):
         r = json.load(open(f"o-{s}-{law}/report.json"))
-        M[s, law] = r["constrained_modulus"] / 1e6
-        M[s, law, "in"] = r["constrained_modulus_interior"] / 1e6
+        M[s, law, "platens"] = r["constrained_modulus"] / 1e6
+        M[s, law, "interior"] = r["constrained_modulus_interior"] / 1e6
     z = json.load(open(f"{s}/report.json"))["zones"]
     print(f"{s}: " + ", ".join(f"zone {r['zone']}: {r['count']} spheres, n {r['porosity']:.4f}"
                                for r in z["regions"]) + f"; migrated {z['mis_zoned']}")
-for k, what in (((), "platens"), (("in",), "interior")):
+for w in ("platens", "interior"):
     for law in ("linear", "none"):
-        d, d2, zo = (M[(s, law) + k] for s in ("d", "d2", "zoned"))
-        print(f"{what} {law}: M_d {d:.1f}, M_2d {d2:.1f}, M_zoned {zo:.1f} MPa")
-    print(f"{what} linear: M_zoned / M_d = {M[('zoned', 'linear') + k] / M[('d', 'linear') + k]:.3f}"
+        d, d2, zo = (M[s, law, w] for s in ("d", "d2", "zoned"))
+        print(f"{w} {law}: M_d {d:.1f}, M_2d {d2:.1f}, M_zoned {zo:.1f} MPa")
+    print(f"{w} linear: M_zoned / M_d = {M['zoned', 'linear', w] / M['d', 'linear', w]:.3f}"
           " (acceptance: within 5 %)")
-    par = 0.25 * M[("d", "none") + k] + 0.75 * M[("d2", "none") + k]
-    print(f"{what} none: M_zoned / (0.25 M_d + 0.75 M_2d) = {M[('zoned', 'none') + k] / par:.3f}"
+    par = 0.25 * M["d", "none", w] + 0.75 * M["d2", "none", w]
+    print(f"{w} none: M_zoned / (0.25 M_d + 0.75 M_2d) = {M['zoned', 'none', w] / par:.3f}"
           " (acceptance: within 7 %)")
 PY
