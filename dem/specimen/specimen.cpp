@@ -346,28 +346,39 @@ void measure_profiles(const World& world, int layers, SpecimenResult& result) {
   result.coordination = coordination_number(world, result.region);
 }
 
-/// The next compaction friction after a build that missed the target: between the two closest
-/// builds that bracket the target porosity, linearly (regula falsi on the measured n(μ) of the
-/// stacked specimen); without a bracket, the calibration curve at the porosity shifted by the
-/// last miss (accumulated in `porosity_for_friction`).
-double next_compaction_friction(const SpecimenResult& result, double& porosity_for_friction) {
+}  // namespace
+
+double next_compaction_friction(const std::vector<SpecimenRound>& rounds,
+                                const std::vector<CalibrationPoint>& calibration,
+                                double target_porosity, double& porosity_for_friction) {
+  if (rounds.empty()) throw InvalidInput("specimen: no build to correct μ* from");
   const SpecimenRound* below = nullptr;  // densest-side build closest to the target
   const SpecimenRound* above = nullptr;
-  for (const SpecimenRound& x : result.rounds) {
-    if (x.porosity <= result.target_porosity && (!below || x.porosity > below->porosity))
-      below = &x;
-    if (x.porosity > result.target_porosity && (!above || x.porosity < above->porosity)) above = &x;
+  for (const SpecimenRound& x : rounds) {
+    if (x.porosity <= target_porosity && (!below || x.porosity > below->porosity)) below = &x;
+    if (x.porosity > target_porosity && (!above || x.porosity < above->porosity)) above = &x;
   }
   if (below && above && above->porosity > below->porosity)
-    return below->friction + (result.target_porosity - below->porosity) /
+    return below->friction + (target_porosity - below->porosity) /
                                  (above->porosity - below->porosity) *
                                  (above->friction - below->friction);
-  porosity_for_friction += result.target_porosity - result.porosity;
-  return interpolate_friction(result.calibration,
-                              porosity_for_friction / (1.0 - porosity_for_friction));
+  // One side only: the least-squares line n = a + b·μ through every build, when it rises with μ
+  // as the calibration does, is followed to the target within the calibrated range.
+  double sum_f = 0, sum_n = 0;
+  for (const SpecimenRound& x : rounds) sum_f += x.friction, sum_n += x.porosity;
+  const double count = static_cast<double>(rounds.size());
+  const double mean_f = sum_f / count, mean_n = sum_n / count;
+  double sff = 0, sfn = 0;
+  for (const SpecimenRound& x : rounds) {
+    sff += (x.friction - mean_f) * (x.friction - mean_f);
+    sfn += (x.friction - mean_f) * (x.porosity - mean_n);
+  }
+  if (rounds.size() >= 2 && sff > 0 && sfn > 0)
+    return std::clamp(mean_f + (target_porosity - mean_n) * sff / sfn, calibration.front().friction,
+                      calibration.back().friction);
+  porosity_for_friction += target_porosity - rounds.back().porosity;
+  return interpolate_friction(calibration, porosity_for_friction / (1.0 - porosity_for_friction));
 }
-
-}  // namespace
 
 SpecimenResult build_specimen(const SpecimenSpec& spec, const StageControl& control) {
   check_spec(spec);
@@ -463,7 +474,8 @@ SpecimenResult build_specimen(const SpecimenSpec& spec, const StageControl& cont
             spec.relative_density_tolerance ||
         round >= spec.correction_rounds)
       break;
-    next_friction = next_compaction_friction(result, porosity_for_friction);
+    next_friction =
+        next_compaction_friction(result.rounds, cal, result.target_porosity, porosity_for_friction);
   }
 
   // True masses in the finished specimen.

@@ -51,8 +51,9 @@ struct SpecimenSpec {
   long max_steps = 200000;  ///< step cap of each settling run
   /// Correction rounds: while the stacked specimen misses the target relative density by more
   /// than the tolerance, layer and specimen are rebuilt (at most this many more times) with a
-  /// new μ*: interpolated between earlier builds that bracket the target, else read from the
-  /// calibration at the porosity shifted by the miss.
+  /// new μ* from every build so far (next_compaction_friction): interpolated between builds that
+  /// bracket the target, else on the line through the builds, else read from the calibration at
+  /// the porosity shifted by the miss.
   int correction_rounds = 3;
   double relative_density_tolerance = 0.015;
   /// Density scaling λ of the preparation (masses and moments ×λ, so the time step grows by
@@ -107,6 +108,18 @@ double relative_density(double porosity, double porosity_max, double porosity_mi
 /// than two points.
 double interpolate_friction(const std::vector<CalibrationPoint>& calibration,
                             double target_void_ratio);
+
+/// The compaction friction of the next round after builds that missed the target porosity
+/// (Jin et al. 2017's μ* corrected on the stacked specimens themselves): between the two closest
+/// builds that bracket the target, linearly (regula falsi on the measured n(μ*)); with every
+/// build on one side, the least-squares line n(μ*) through all of them followed to the target
+/// (clamped to the calibrated frictions) when it rises with μ*; after a single build, or a line
+/// that does not rise, the calibration curve at the porosity shifted by the misses so far
+/// (accumulated in `porosity_for_friction`, which starts at the target). Throws InvalidInput
+/// without a build.
+double next_compaction_friction(const std::vector<SpecimenRound>& rounds,
+                                const std::vector<CalibrationPoint>& calibration,
+                                double target_porosity, double& porosity_for_friction);
 
 /// Every field of the spec as text, one "key value" line each, doubles in hexadecimal (exact),
 /// templates with all their spheres and mass properties: two specs that differ in any field

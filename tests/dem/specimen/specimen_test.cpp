@@ -120,6 +120,41 @@ TEST(Specimen, RelativeDensityAndFrictionInterpolation) {
   EXPECT_THROW(interpolate_friction({c[0]}, 0.5), InvalidInput);
 }
 
+// The μ* search between rounds, on a specimen whose porosity is n(μ) = 0.30 + 0.25·μ: after
+// one build the calibration, read at the porosity shifted by the miss; the line through two builds
+// on one side lands on the target exactly; a bracket is closed by regula falsi; a line that does
+// not rise with μ (noise) falls back on the shifted calibration.
+TEST(Specimen, NextCompactionFrictionUsesEveryBuild) {
+  const std::vector<CalibrationPoint> c = {{0.0, 0.32, 0.32 / 0.68, 0, ""},
+                                           {0.4, 0.42, 0.42 / 0.58, 0, ""},
+                                           {0.8, 0.52, 0.52 / 0.48, 0, ""}};
+  auto specimen = [](double mu) { return SpecimenRound{mu, 0.30 + 0.25 * mu, 0.0}; };
+  const double target = 0.36;  // μ = 0.24 on the specimen, 0.16 on the calibration
+  double shifted = target;
+  std::vector<SpecimenRound> rounds{specimen(0.16)};
+  // One build: the calibration at the porosity shifted by the miss (0.36 + 0.02).
+  const double first = next_compaction_friction(rounds, c, target, shifted);
+  EXPECT_NEAR(shifted, 0.38, 1e-15);
+  EXPECT_EQ(first, interpolate_friction(c, shifted / (1.0 - shifted)));
+  // Two builds below the target: the line through them reaches it.
+  rounds.push_back(specimen(0.20));
+  double unused = target;
+  EXPECT_NEAR(next_compaction_friction(rounds, c, target, unused), 0.24, 1e-12);
+  EXPECT_EQ(unused, target);
+  // A bracket: regula falsi between the closest builds on either side.
+  rounds.push_back(specimen(0.30));
+  EXPECT_NEAR(next_compaction_friction(rounds, c, target, unused), 0.24, 1e-12);
+  // Clamped to the calibrated range when the line points beyond it.
+  EXPECT_EQ(next_compaction_friction({specimen(0.0), specimen(0.01)}, c, 0.9, unused), 0.8);
+  // Builds that grow denser with μ (noise): back to the shifted calibration.
+  double noisy = target;
+  const std::vector<SpecimenRound> falling{{0.16, 0.35, 0}, {0.20, 0.34, 0}};
+  const double fallback = next_compaction_friction(falling, c, target, noisy);
+  EXPECT_NEAR(noisy, 0.38, 1e-15);
+  EXPECT_EQ(fallback, interpolate_friction(c, noisy / (1.0 - noisy)));
+  EXPECT_THROW(next_compaction_friction({}, c, target, noisy), InvalidInput);
+}
+
 // The resume fingerprint: a spec changed in any one field (every field of the spec, its contact
 // law, its gradation classes and its templates) gets another fingerprint; equal specs agree.
 TEST(Specimen, FingerprintChangesWithEveryField) {
