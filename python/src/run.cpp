@@ -11,6 +11,8 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
+#include <vector>
 
 namespace py = pybind11;
 
@@ -19,12 +21,12 @@ namespace clumpkit::python {
 namespace {
 
 // What the worker's interrupter leaves for the main thread, and the main thread's answer.
+// What the worker reported since the main thread last looked: the latest fraction of each stage
+// entered meanwhile, in order, so a stage shorter than the polling interval is still reported.
 struct Mailbox {
   std::atomic<bool> stop{false};
   std::mutex mutex;
-  std::string stage;
-  double fraction = 0.0;
-  bool fresh = false;
+  std::vector<std::pair<std::string, double>> pending;
 };
 
 }  // namespace
@@ -35,9 +37,10 @@ void run_interruptible(const std::function<void(const Interrupter&)>& work,
   const Interrupter interrupter = [box](std::string_view stage, double fraction) {
     {
       const std::lock_guard<std::mutex> lock(box->mutex);
-      box->stage = stage;
-      box->fraction = fraction;
-      box->fresh = true;
+      if (!box->pending.empty() && box->pending.back().first == stage)
+        box->pending.back().second = fraction;
+      else
+        box->pending.emplace_back(std::string(stage), fraction);
     }
     return box->stop.load();
   };
@@ -66,16 +69,12 @@ void run_interruptible(const std::function<void(const Interrupter&)>& work,
     try {
       if (PyErr_CheckSignals() != 0) throw py::error_already_set();
       if (!progress.is_none()) {
-        std::string stage;
-        double fraction = 0.0;
-        bool fresh = false;
+        std::vector<std::pair<std::string, double>> updates;
         {
           const std::lock_guard<std::mutex> lock(box->mutex);
-          std::swap(fresh, box->fresh);
-          stage = box->stage;
-          fraction = box->fraction;
+          std::swap(updates, box->pending);
         }
-        if (fresh) progress(stage, fraction);
+        for (const auto& [stage, fraction] : updates) progress(stage, fraction);
       }
     } catch (py::error_already_set& e) {
       raised.emplace(std::move(e));

@@ -12,7 +12,8 @@ namespace clumpkit::python {
 
 /// Runs `work(interrupter)` on a worker thread while the calling (main) thread, holding the GIL
 /// between waits, checks Python's signals every 50 ms and calls `progress(stage, fraction)` (a
-/// Python callable or None) with the latest report. Python runs signal handlers on its main
+/// Python callable or None) with the latest report of each stage entered since it last looked
+/// (so a stage shorter than 50 ms is reported too). Python runs signal handlers on its main
 /// thread only, so the main thread must stay in Python's hands: a pending KeyboardInterrupt (or
 /// an exception raised by `progress`) sets the flag the interrupter returns, the work stops at its
 /// next poll (throwing Interrupted, or saying so in its outcome) and the Python exception is
