@@ -36,7 +36,7 @@ namespace detail {
 /// What the pair kernel reads and writes: the World's arrays during a contact pass
 /// (World::compute_forces). Per candidate k = (i, j): the spheres' world centres and radii, the
 /// bodies' packed kinematics, the slot's dashpot (and stiffness factor with size scaling), and
-/// its contact law state, output and flags.
+/// its contact law state and flag. Per body: the wrench the pass adds its contacts to.
 struct PairKernelArgs {
   const std::pair<int, int>* candidates;
   const Vec3* sphere_world;
@@ -48,17 +48,31 @@ struct PairKernelArgs {
   const double* stiffness;  // per candidate: factor on kn and ks; null without size scaling
   double kn, ks, friction, dt;
   SlotForce* force;
-  SlotOut* out;
-  SlotGeometry* geometry;  // null: the pass does not record the contact geometry
   std::uint8_t* active;
-  std::uint8_t* body_touched;
+  /// Per body: each touching pair adds −F and −(p − x_a) × F to the body of i and, unless the
+  /// pair is deferred, +F and (p − x_b) × F to the body of j, in candidate order.
+  Wrench* wrench;
+  /// Deferred candidates (sorted): their wrench on the body of j goes to deferred[d] (d the
+  /// candidate's place in deferred_candidates) instead, for a later sum; written only while the
+  /// pair touches.
+  const std::size_t* deferred_candidates;
+  std::size_t deferred_count;
+  Wrench* deferred;
 };
 
-/// Advances the candidates [begin, end): a touching pair updates its contact law (update_contact,
-/// dem/core/contact.h), writes its force on the body of j and the contact point into its slot and
-/// marks both bodies touched; a pair that stopped touching clears its slot. Each candidate writes
-/// only its own slot (and sets touched flags), so ranges may run on several threads at once.
+/// Advances the candidates [begin, end) in order: a touching pair updates its contact law
+/// (update_contact, dem/core/contact.h) and adds its wrench to the bodies as PairKernelArgs
+/// says; a pair that stopped touching clears its flag. The wrench
+/// sums make a range a serial unit: ranges may run on several threads at once only when no two
+/// of them add to the same body (World::compute_forces's chunks).
 void pair_contacts(const PairKernelArgs& args, std::size_t begin, std::size_t end);
+
+/// The frame of a touching pair of spheres (centres x_i, x_j, radii r_i, r_j, m) as the kernel
+/// computes it, bit for bit: the unit normal d/|d| from i to j (+z for two centres at one point),
+/// the contact point x_i + (r_i − δ/2)·n and the overlap δ = r_i + r_j − |d|. The contact lists
+/// report it instead of the kernel storing it for every candidate.
+void pair_contact_frame(const Vec3& xi, const Vec3& xj, double ri, double rj, Vec3& normal,
+                        Vec3& point, double& overlap);
 
 }  // namespace detail
 

@@ -282,9 +282,11 @@ void World::step(int count) {
       import_walls();
       sc.walls_valid_ = true;
     }
-    // Contacts report their geometry as of the last step; earlier steps need not write it.
-    sc.record_geometry_ = s + 1 == count;
+    sc.last_step_ = s + 1 == count;
     compute_forces();
+    // The contact lists report this pass, its geometry from the positions it saw: export now,
+    // before the bodies move (the end of the call finds them fresh).
+    if (sc.last_step_ && sc.pairs_valid_) export_pairs();
     integrate();
     time_ += options_.timestep;
     ++steps_;

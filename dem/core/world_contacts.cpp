@@ -14,53 +14,72 @@ namespace clumpkit::dem {
 
 using namespace detail;
 
-// Index of the candidate list: per sphere its candidates as i (a range of candidates_) and as j
-// (down_), per body every candidate it takes part in, in candidate order — the order in which
-// the serial sum of the reference implementation added them — and empty slots.
+namespace {
+
+// Spheres per chunk of the contact pass (StepCache::pair_wrench_): enough that most pairs reach
+// no further than the next chunk — the 95th percentile of j − i over the candidates, from a
+// sample — within [n/64, n/16] (at least 512), so a phase has 8 to 32 chunks to share among
+// threads. A function of the candidates alone, never of the thread count.
+std::size_t chunk_spheres(std::size_t n, const std::vector<std::pair<int, int>>& candidates) {
+  const std::size_t lo = std::max<std::size_t>(128, n / 64);
+  const std::size_t hi = std::max<std::size_t>(128, n / 16);
+  if (candidates.empty()) return hi;
+  const std::size_t stride = std::max<std::size_t>(1, candidates.size() / 4096);
+  std::vector<int> span;
+  span.reserve(candidates.size() / stride + 1);
+  for (std::size_t k = 0; k < candidates.size(); k += stride)
+    span.push_back(candidates[k].second - candidates[k].first);
+  const auto at = span.begin() + static_cast<std::ptrdiff_t>(span.size() * 95 / 100);
+  std::nth_element(span.begin(), at, span.end());
+  return std::clamp(static_cast<std::size_t>(*at), lo, hi);
+}
+
+}  // namespace
+
+// Index of the candidate list: per sphere its candidates as i (a range of candidates_), the
+// chunks of the contact pass and its deferred pairs (StepCache::pair_wrench_), and empty slots.
 void World::derive_pair_index() {
   StepCache& sc = cache_.get();
   const std::size_t n = sphere_body_.size();
   const std::size_t m = candidates_.size();
-  sc.cand_begin_.assign(n + 1, 0);
-  sc.down_begin_.assign(n + 1, 0);
-  for (const auto& [i, j] : candidates_) ++sc.cand_begin_[i + 1], ++sc.down_begin_[j + 1];
-  for (std::size_t s = 0; s < n; ++s) {
-    sc.cand_begin_[s + 1] += sc.cand_begin_[s];
-    sc.down_begin_[s + 1] += sc.down_begin_[s];
-  }
-  sc.down_.resize(m);
-  sc.scratch_.assign(sc.down_begin_.begin(), sc.down_begin_.end() - 1);
-  for (std::size_t k = 0; k < m; ++k) sc.down_[sc.scratch_[candidates_[k].second]++] = k;
-
   const std::size_t nb = bodies_.size();
-  sc.body_begin_.assign(nb + 1, 0);
-  for (std::size_t b = 0; b < nb; ++b) {
-    std::size_t count = 0;
-    for (int s = body_first_sphere_[b]; s < body_first_sphere_[b + 1]; ++s)
-      count +=
-          (sc.cand_begin_[s + 1] - sc.cand_begin_[s]) + (sc.down_begin_[s + 1] - sc.down_begin_[s]);
-    sc.body_begin_[b + 1] = sc.body_begin_[b] + count;
+  sc.cand_begin_.assign(n + 1, 0);
+  for (const auto& [i, j] : candidates_) ++sc.cand_begin_[i + 1];
+  for (std::size_t s = 0; s < n; ++s) sc.cand_begin_[s + 1] += sc.cand_begin_[s];
+
+  // Chunks of whole bodies, each closed once it holds `target` spheres.
+  const std::size_t target = chunk_spheres(n, candidates_);
+  std::vector<std::size_t> first_sphere{0};
+  for (std::size_t b = 1; b < nb; ++b)
+    if (static_cast<std::size_t>(body_first_sphere_[b]) - first_sphere.back() >= target)
+      first_sphere.push_back(static_cast<std::size_t>(body_first_sphere_[b]));
+  const std::size_t nc = first_sphere.size();
+  first_sphere.push_back(n);
+  sc.chunk_begin_.resize(nc + 1);
+  for (std::size_t c = 0; c <= nc; ++c) sc.chunk_begin_[c] = sc.cand_begin_[first_sphere[c]];
+
+  // Deferred pairs: j beyond the next chunk.
+  sc.deferred_cand_.clear();
+  for (std::size_t c = 0; c < nc; ++c) {
+    const auto limit = static_cast<int>(first_sphere[std::min(c + 2, nc)]);
+    for (std::size_t k = sc.chunk_begin_[c]; k < sc.chunk_begin_[c + 1]; ++k)
+      if (candidates_[k].second >= limit) sc.deferred_cand_.push_back(k);
   }
-  sc.body_items_.resize(sc.body_begin_[nb]);
-  parallel_items(nb, [&](std::size_t b) {
-    std::size_t out = sc.body_begin_[b];
-    for (int s = body_first_sphere_[b]; s < body_first_sphere_[b + 1]; ++s) {
-      for (std::size_t d = sc.down_begin_[s]; d < sc.down_begin_[s + 1]; ++d)
-        sc.body_items_[out++] = 2 * static_cast<std::uint64_t>(sc.down_[d]) + 1;  // holds j: +f
-      for (std::size_t k = sc.cand_begin_[s]; k < sc.cand_begin_[s + 1]; ++k)
-        sc.body_items_[out++] = 2 * static_cast<std::uint64_t>(k);  // holds i: −f
-    }
-    // One sphere: (i', s) with i' < s precede (s, j), already in order. A clump: sort.
-    if (body_first_sphere_[b + 1] - body_first_sphere_[b] > 1)
-      std::sort(sc.body_items_.begin() + static_cast<std::ptrdiff_t>(sc.body_begin_[b]),
-                sc.body_items_.begin() + static_cast<std::ptrdiff_t>(sc.body_begin_[b + 1]));
-  });
-  sc.slot_out_.assign(m, SlotOut{Vec3::Zero(), Vec3::Zero()});
+  const std::size_t nd = sc.deferred_cand_.size();
+  sc.deferred_wrench_.resize(nd);
+  sc.body_deferred_begin_.assign(nb + 1, 0);
+  for (const std::size_t k : sc.deferred_cand_)
+    ++sc.body_deferred_begin_[sphere_body_[candidates_[k].second] + 1];
+  for (std::size_t b = 0; b < nb; ++b) sc.body_deferred_begin_[b + 1] += sc.body_deferred_begin_[b];
+  sc.body_deferred_items_.resize(nd);
+  sc.scratch_.assign(sc.body_deferred_begin_.begin(), sc.body_deferred_begin_.end() - 1);
+  for (std::size_t d = 0; d < nd; ++d)
+    sc.body_deferred_items_[sc.scratch_[sphere_body_[candidates_[sc.deferred_cand_[d]].second]]++] =
+        static_cast<std::uint32_t>(d);
+
   sc.slot_force_.resize(m);
-  sc.slot_geometry_.resize(m);
   sc.slot_active_.assign(m, 0);
   sc.slot_damping_.resize(m);
-  sc.slot_stiffness_.resize(m);
   sc.damping_valid_ = false;
 }
 
@@ -70,6 +89,7 @@ void World::update_damping() {
   StepCache& sc = cache_.get();
   const ContactParams& p = options_.contact;
   const bool scaled = p.scaling != StiffnessScaling::none;
+  sc.slot_stiffness_.resize(scaled ? candidates_.size() : 0);
   parallel_items(candidates_.size(), [&](std::size_t k) {
     const int a = sphere_body_[candidates_[k].first], b = sphere_body_[candidates_[k].second];
     const double ma = sc.kinematics_[a].mass, mb = sc.kinematics_[b].mass;
@@ -86,6 +106,7 @@ void World::update_damping() {
 
 void World::import_pairs() {
   StepCache& sc = cache_.get();
+  sc.contacts_fresh_ = false;  // candidates no longer in reach drop their history
   const int n = sphere_count();
   parallel_items(contacts_.size(), [&](std::size_t c) {
     const PairContact& pc = contacts_[c];
@@ -96,27 +117,29 @@ void World::import_pairs() {
     if (it == last || it->second != pc.j) return;  // no longer a candidate: history dropped
     const auto k = static_cast<std::size_t>(it - candidates_.begin());
     sc.slot_force_[k] = SlotForce{pc.state.shear, pc.state.normal_force};
-    sc.slot_geometry_[k] = SlotGeometry{pc.state.normal, pc.state.point, pc.state.overlap};
     sc.slot_active_[k] = 1;
     // The wrenches are written by the next contact pass (every active slot is refreshed there).
   });
 }
 
+// The touching slots as contact lists, with the geometry of the spheres' present positions (the
+// step loop calls it on a call's last step between the contact pass and the move, so the lists
+// report that pass's geometry, the same bits as the kernel's).
 void World::export_pairs() {
   StepCache& sc = cache_.get();
+  if (sc.contacts_fresh_) return;
   contacts_.clear();
   for (std::size_t k = 0; k < candidates_.size(); ++k) {
     if (!sc.slot_active_[k]) continue;
     PairContact& c = contacts_.emplace_back();
     c.i = candidates_[k].first;
     c.j = candidates_[k].second;
-    const SlotGeometry& g = sc.slot_geometry_[k];
-    c.state.normal = g.normal;
-    c.state.point = g.point;
-    c.state.overlap = g.overlap;
+    pair_contact_frame(sphere_world_[c.i], sphere_world_[c.j], sphere_radius_[c.i],
+                       sphere_radius_[c.j], c.state.normal, c.state.point, c.state.overlap);
     c.state.normal_force = sc.slot_force_[k].normal_force;
     c.state.shear = sc.slot_force_[k].shear;
   }
+  sc.contacts_fresh_ = true;
 }
 
 // Wall candidates: (sphere, wall) pairs with a gap below the skin at the spheres' build positions.
@@ -253,6 +276,7 @@ void World::vertex_wall_contacts() {
 
 void World::compute_forces() {
   StepCache& sc = cache_.get();
+  sc.contacts_fresh_ = false;
   const double dt = options_.timestep;
   const ContactParams& p = options_.contact;
   const bool scaled = p.scaling != StiffnessScaling::none;
@@ -273,12 +297,20 @@ void World::compute_forces() {
                             p.friction,
                             dt,
                             sc.slot_force_.data(),
-                            sc.slot_out_.data(),
-                            sc.record_geometry_ ? sc.slot_geometry_.data() : nullptr,
                             sc.slot_active_.data(),
-                            sc.body_touched_.data()};
-  parallel_ranges(candidates_.size(), 256,
-                  [&](std::size_t begin, std::size_t end) { pair_contacts(args, begin, end); });
+                            sc.pair_wrench_.data(),
+                            sc.deferred_cand_.data(),
+                            sc.deferred_cand_.size(),
+                            sc.deferred_wrench_.data()};
+  // Even chunks, then odd ones (StepCache::pair_wrench_): each chunk one serial range.
+  const std::size_t nc = sc.chunk_begin_.empty() ? 0 : sc.chunk_begin_.size() - 1;
+  for (std::size_t phase = 0; phase < 2 && phase < nc; ++phase)
+    parallel_ranges((nc - phase + 1) / 2, 1, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t q = begin; q < end; ++q) {
+        const std::size_t c = 2 * q + phase;
+        pair_contacts(args, sc.chunk_begin_[c], sc.chunk_begin_[c + 1]);
+      }
+    });
 
   // Wall contacts, one slot per wall candidate, likewise.
   parallel_items(sc.wall_cand_.size(), [&](std::size_t k) {

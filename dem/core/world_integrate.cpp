@@ -13,31 +13,22 @@ namespace clumpkit::dem {
 
 using namespace detail;
 
-namespace {
-
-inline Vec3 moment(const Vec3& p, const Vec3& x, const Vec3& f) {
-  const double rx = p.x() - x.x(), ry = p.y() - x.y(), rz = p.z() - x.z();
-  return Vec3(ry * f.z() - rz * f.y(), rz * f.x() - rx * f.z(), rx * f.y() - ry * f.x());
-}
-
-}  // namespace
-
 // bodies_ -> packed state, at the start of step(count): the caller may have edited anything.
 void World::load_bodies() {
   StepCache& sc = cache_.get();
   const std::size_t nb = bodies_.size();
   sc.kinematics_.resize(nb);
-  sc.body_wrench_.resize(nb);
   sc.rotation_.resize(nb);
-  sc.body_touched_.assign(nb, 0);
+  sc.pair_wrench_.resize(nb);
   sc.body_diameter_.resize(nb);
   sc.body_has_vertices_.assign(nb, 0);
-  sc.vertex_wrench_.assign(nb, Wrench{Vec3::Zero(), Vec3::Zero()});
   sc.any_vertices_ = false;
   for (std::size_t k = 0; k < nb; ++k) {
     sc.body_has_vertices_[k] = !bodies_[k].vertices.empty();
     sc.any_vertices_ = sc.any_vertices_ || sc.body_has_vertices_[k];
   }
+  // Corner wrenches only where corners exist (a world of spheres keeps none).
+  sc.vertex_wrench_.assign(sc.any_vertices_ ? nb : 0, Wrench{Vec3::Zero(), Vec3::Zero()});
   // Each body's bonds in index order (counting sort), and which bodies have any.
   sc.body_bond_begin_.assign(nb + 1, 0);
   for (const Bond& bond : bonds_)
@@ -55,7 +46,7 @@ void World::load_bodies() {
     const Body& b = bodies_[k];
     sc.body_diameter_[k] = b.diameter;
     sc.kinematics_[k] = Kinematics{b.position, b.velocity, b.angular_velocity, b.mass};
-    sc.body_wrench_[k] = Wrench{b.force, b.torque};
+    sc.pair_wrench_[k] = Wrench{b.mass * options_.gravity, Vec3::Zero()};
     Spin spin = Spin::general;
     if (b.rotation_locked)
       spin = Spin::locked;
@@ -79,27 +70,22 @@ void World::store_bodies() {
     b.velocity = sc.kinematics_[k].velocity;
     b.angular_velocity = sc.kinematics_[k].angular_velocity;
     b.orientation = sc.rotation_[k].orientation;
-    b.force = sc.body_wrench_[k].force;
-    b.torque = sc.body_wrench_[k].torque;
   });
 }
 
-// Net wrench on body k: gravity, then its pair contacts in (i, j) order, then its wall contacts
-// in (sphere, wall) order, then its corners on walls, then its bonds in index order — a fixed
-// order, whatever the thread count (see body_touched_).
-static inline Wrench sum_wrench(const StepCache& sc, const Vec3& gravity, std::size_t k) {
+// Net wrench on body k: gravity and its pair contacts as the contact pass added them
+// (StepCache::pair_wrench_), then its deferred pair contacts in candidate order, its wall
+// contacts in (sphere, wall) order, its corners on walls, its bonds in index order — a fixed
+// order, whatever the thread count.
+static inline Wrench sum_wrench(const StepCache& sc, std::size_t k) {
   const Kinematics& b = sc.kinematics_[k];
-  Vec3 force = b.mass * gravity;
-  Vec3 torque = Vec3::Zero();
-  if (sc.body_touched_[k]) {
-    for (std::size_t e = sc.body_begin_[k]; e < sc.body_begin_[k + 1]; ++e) {
-      const std::uint64_t item = sc.body_items_[e];
-      const SlotOut& out = sc.slot_out_[item >> 1];
-      // ±1 times a value is its exact negation or itself, as the unary minus (branch free).
-      const double sign = item & 1 ? 1.0 : -1.0;
-      force += sign * out.force;
-      torque += sign * moment(out.point, b.position, out.force);
-    }
+  Vec3 force = sc.pair_wrench_[k].force;
+  Vec3 torque = sc.pair_wrench_[k].torque;
+  for (std::size_t e = sc.body_deferred_begin_[k]; e < sc.body_deferred_begin_[k + 1]; ++e) {
+    const std::uint32_t d = sc.body_deferred_items_[e];
+    if (!sc.slot_active_[sc.deferred_cand_[d]]) continue;
+    force += sc.deferred_wrench_[d].force;
+    torque += sc.deferred_wrench_[d].torque;
   }
   for (std::size_t c = sc.body_wall_begin_[k]; c < sc.body_wall_begin_[k + 1]; ++c) {
     if (!sc.wall_slot_active_[c]) continue;
@@ -125,6 +111,8 @@ void World::integrate() {
   StepCache& sc = cache_.get();
   const double dt = options_.timestep;
   const double alpha = options_.contact.local_damping;
+  const Vec3 gravity = options_.gravity;
+  const bool last = sc.last_step_;  // the last step of step(count)
   const bool have_reference = !dirty_ && sphere_at_filter_.size() == sphere_world_.size();
   const double limit = near_limit_;
   std::atomic<bool> moved{false};
@@ -147,10 +135,13 @@ void World::integrate() {
   // One pass per body: sum its wrench, advance it, then refresh its spheres' world positions
   // and the Verlet-skin check, so a step makes one pass over the bodies and their spheres.
   parallel_items(bodies_.size(), [&](std::size_t k) {
-    const Wrench wrench = sum_wrench(sc, options_.gravity, k);
-    sc.body_touched_[k] = 0;  // for the next step's contact pass
-    sc.body_wrench_[k] = wrench;
+    const Wrench wrench = sum_wrench(sc, k);
+    if (last) {  // Body::force and torque report the call's last step
+      bodies_[k].force = wrench.force;
+      bodies_[k].torque = wrench.torque;
+    }
     Kinematics& b = sc.kinematics_[k];
+    sc.pair_wrench_[k] = Wrench{b.mass * gravity, Vec3::Zero()};  // the next contact pass's start
     Rotation& r = sc.rotation_[k];
     bool far = false;
     const int first = body_first_sphere_[k], last = body_first_sphere_[k + 1];

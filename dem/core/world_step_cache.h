@@ -36,18 +36,9 @@ struct Rotation {  // what the integrator reads of a body's rotation
   Spin spin;
 };
 
-struct SlotOut {
-  Vec3 force, point;
-};
-
 struct SlotForce {
   Vec3 shear;
   double normal_force;
-};
-
-struct SlotGeometry {
-  Vec3 normal, point;
-  double overlap;
 };
 
 }  // namespace detail
@@ -57,27 +48,29 @@ struct SlotGeometry {
 // every part is rebuilt from the persistent state when marked stale (a fresh cache is all stale).
 namespace detail {
 struct StepCache {
-  NeighbourGrid grid_;                     // scratch of build_neighbours
-  std::vector<std::size_t> cand_begin_;    // first candidate (i, ·) per sphere i
-  std::vector<std::size_t> down_begin_;    // per sphere j: range in down_
-  std::vector<std::size_t> down_;          // candidates (·, j) grouped by j, in order
-  std::vector<std::size_t> body_begin_;    // per body: range in body_items_
-  std::vector<std::uint64_t> body_items_;  // 2·candidate + (1 when the body holds j)
+  NeighbourGrid grid_;                   // scratch of build_neighbours
+  std::vector<std::size_t> cand_begin_;  // first candidate (i, ·) per sphere i
   // During step(count) the bodies' state lives in these packed arrays (loaded from bodies_ when
   // the call begins, stored back when it ends), so the per-step passes stream small records
   // instead of whole Body objects with their sphere vectors.
   std::vector<Kinematics> kinematics_;       // per body
-  std::vector<Wrench> body_wrench_;          // per body: gravity + contacts of the last step
   std::vector<Rotation> rotation_;           // per body
   std::vector<std::int64_t> sphere_body64_;  // per sphere: its body, for the pair kernel's gathers
-  // Per candidate: the force on the body of j and its point of application, written by the
-  // contact kernel in candidate order (zero while not touching); each body gathers its items
-  // (body_items_) and forms ±force and the torque about its own centroid.
-  std::vector<SlotOut> slot_out_;
-  // Per body: one of its pairs touched in this step's contact pass (else its items are all zero
-  // and the sum skips them: the sums start from gravity and +0 and never reach −0, so adding ±0
-  // would change no bit). A per-body test, predictable both in free fall and in a packing.
-  std::vector<std::uint8_t> body_touched_;
+  // Per body: m·g, then the pair contacts of this step's contact pass, added by the kernel
+  // itself (pair_kernel.h); integrate() adds the rest and starts it again from m·g. The pass
+  // runs in chunks of whole bodies (consecutive candidates by i; chunk_begin_ gives their
+  // candidate ranges), even chunks in parallel, then odd ones: a chunk adds to its own bodies and
+  // those of the next chunk, so no two chunks of a phase add to one body, and each body's sum
+  // runs in one order — chunk by chunk in phase order, candidates in order — that depends on
+  // the candidates and the chunking alone, never on the thread count. A pair whose j lies beyond
+  // the next chunk is deferred: its wrench on j's body waits in deferred_wrench_ and integrate()
+  // adds it, per body in candidate order (body_deferred_*).
+  std::vector<Wrench> pair_wrench_;
+  std::vector<std::size_t> chunk_begin_;            // per chunk: first candidate; then the count
+  std::vector<std::size_t> deferred_cand_;          // the deferred candidates, sorted
+  std::vector<Wrench> deferred_wrench_;             // per deferred candidate, while it touches
+  std::vector<std::size_t> body_deferred_begin_;    // per body: range in body_deferred_items_
+  std::vector<std::uint32_t> body_deferred_items_;  // places in deferred_cand_, in order
   // Per candidate: the normal dashpot 2·β·sqrt(m_eff·kn) (update_contact's formula), computed
   // when the candidates or the masses change instead of at every contact and step.
   std::vector<double> slot_damping_;
@@ -86,12 +79,13 @@ struct StepCache {
   std::vector<double> slot_stiffness_;
   std::vector<double> body_diameter_;
   bool damping_valid_ = false;
-  // Per candidate, the contact state in two parts: what the contact law carries from step to
-  // step (read and written every step), and the geometry (normal, point, overlap), which only
-  // the contact lists report, so it is written on the last step of step(count) alone.
+  // Per candidate, what the contact law carries from step to step (read and written every
+  // step); the geometry (normal, point, overlap) is not kept: export_pairs computes it from the
+  // positions of the contact pass (pair_contact_frame), on the call's last step before the
+  // bodies move.
   std::vector<SlotForce> slot_force_;
-  std::vector<SlotGeometry> slot_geometry_;
-  bool record_geometry_ = true;                 // this step's contact pass writes slot_geometry_
+  bool last_step_ = true;        // the call's last step: Body::force and the contact lists written
+  bool contacts_fresh_ = false;  // contacts_ holds the slots' present state (nothing to export)
   std::vector<std::uint8_t> slot_active_;       // per candidate: touching at the last step
   std::vector<std::pair<int, int>> wall_cand_;  // sorted (sphere, wall)
   std::vector<ContactState> wall_slot_state_;   // per wall candidate

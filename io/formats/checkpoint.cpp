@@ -205,9 +205,8 @@ struct WorldCodec {
     w.i64(lists.filters);
   }
 
-  // `version`: kCheckpointVersion, 9 (bonds without friction: a crack's faces slid freely), 8
-  // (no bonds, no cohesive law) or 7 (also bodies without a zone: zone 0).
-  static World read(Reader& r, std::uint32_t version) {
+  // Reads the current format (kCheckpointVersion) only.
+  static World read(Reader& r) {
     WorldOptions o;
     o.gravity = r.vec();
     o.timestep = r.f64();
@@ -221,14 +220,12 @@ struct WorldCodec {
     if (scaling > 1) r.fail("unknown stiffness scaling " + std::to_string(scaling));
     o.contact.scaling = scaling == 0 ? StiffnessScaling::none : StiffnessScaling::linear;
     o.contact.d_ref = r.f64();
-    if (version >= 9) {
-      o.cohesive.kn = r.f64(), o.cohesive.kt = r.f64(), o.cohesive.sigma_n = r.f64();
-      o.cohesive.sigma_t = r.f64(), o.cohesive.g_n = r.f64(), o.cohesive.g_t = r.f64();
-      o.cohesive.friction = version >= 10 ? r.f64() : 0.0;
-      if (!(o.cohesive.friction >= 0.0) || !std::isfinite(o.cohesive.friction))
-        r.fail("cohesive friction " + std::to_string(o.cohesive.friction) + " is not valid");
-      o.vertex_stiffness = r.f64();
-    }
+    o.cohesive.kn = r.f64(), o.cohesive.kt = r.f64(), o.cohesive.sigma_n = r.f64();
+    o.cohesive.sigma_t = r.f64(), o.cohesive.g_n = r.f64(), o.cohesive.g_t = r.f64();
+    o.cohesive.friction = r.f64();
+    if (!(o.cohesive.friction >= 0.0) || !std::isfinite(o.cohesive.friction))
+      r.fail("cohesive friction " + std::to_string(o.cohesive.friction) + " is not valid");
+    o.vertex_stiffness = r.f64();
     const std::int64_t steps = r.i64();
     const double time = r.f64();
     const std::int64_t builds = r.i64();
@@ -267,11 +264,9 @@ struct WorldCodec {
       b.template_id = r.i32();
       b.scale = r.f64();
       b.diameter = r.f64();
-      if (version >= 8) b.zone = r.i32();
-      if (version >= 9) {
-        b.vertices.resize(r.count(24, "body corner"));
-        for (Vec3& v : b.vertices) v = r.vec();
-      }
+      b.zone = r.i32();
+      b.vertices.resize(r.count(24, "body corner"));
+      for (Vec3& v : b.vertices) v = r.vec();
       const Eigen::Quaterniond q = b.orientation;
       try {
         world.add_body(std::move(b));
@@ -305,17 +300,17 @@ struct WorldCodec {
       world.add_wall(wall);
     }
 
-    if (version >= 9) {
+    {
       const std::size_t bonds = r.count(8 + 24 + 8 + 8, "bond");
       for (std::size_t k = 0; k < bonds; ++k) {
         Bond bond;
         bond.a = r.i32(), bond.b = r.i32();
         bond.normal_in_a = r.vec();
         bond.factor = r.f64();
-        bond.points.resize(r.count(version >= 10 ? 11 * 8 : 8 * 8, "bond point"));
+        bond.points.resize(r.count(11 * 8, "bond point"));
         for (BondPoint& p : bond.points) {
           p.in_a = r.vec(), p.in_b = r.vec(), p.area = r.f64(), p.state.damage = r.f64();
-          if (version >= 10) p.state.slip = r.vec();
+          p.state.slip = r.vec();
           if (!(p.state.damage >= 0.0 && p.state.damage <= 1.0))
             r.fail("bond " + std::to_string(k) + " has a damage outside [0, 1]");
         }
@@ -354,7 +349,7 @@ struct WorldCodec {
     }
 
     std::vector<VertexContact> corner_list;
-    if (version >= 9) {
+    {
       corner_list.resize(r.count(12 + kStateBytes, "corner contact"));
       for (VertexContact& c : corner_list) {
         c.body = r.i32(), c.vertex = r.i32(), c.wall = r.i32();
@@ -426,7 +421,7 @@ World load_checkpoint(const std::string& path, CheckpointInfo* info) {
   Reader header(bytes, end, path);
   for (std::size_t k = 0; k < sizeof kMagic; ++k) header.u8();
   const std::uint32_t version = header.u32();
-  if (version != kCheckpointVersion && version != 9 && version != 8 && version != 7)
+  if (version != kCheckpointVersion)
     header.fail("unsupported version " + std::to_string(version) + " (expected " +
                 std::to_string(kCheckpointVersion) + ")");
   std::uint64_t stored = 0;
@@ -443,7 +438,7 @@ World load_checkpoint(const std::string& path, CheckpointInfo* info) {
     read_info.state[std::move(key)] = header.str("stage state value");
   }
   if (read_info.state.size() != entries) header.fail("repeated stage state key");
-  World world = WorldCodec::read(header, version);
+  World world = WorldCodec::read(header);
   if (header.position() != end)
     header.fail(std::to_string(end - header.position()) + " unexpected bytes before the checksum");
   if (info) *info = std::move(read_info);

@@ -15,9 +15,11 @@ namespace clumpkit {
 /// body's zone after its diameter; 9 = the cohesive law and the corner stiffness after the
 /// contact parameters, each body's corners after its zone, the bonds after the walls, the corner
 /// contacts after the wall contacts; 10 = the cohesive law's friction after its fracture energies,
-/// each bond point's crack slip after its damage). Versions 9 (friction 0), 8 (no bonds) and 7
-/// (also every body in zone 0) are still read.
-inline constexpr std::uint32_t kCheckpointVersion = 10;
+/// each bond point's crack slip after its damage; 11 = the same layout, written by an engine that
+/// sums each body's pair contacts in the contact pass, chunk by chunk: a run resumed from an
+/// older file would not continue the bits of the run that wrote it, so none is read). Only the
+/// current version is read; any other is refused naming both versions.
+inline constexpr std::uint32_t kCheckpointVersion = 11;
 
 /// Writes `world` and `info` to `path`: magic "CLUMPKITCKPT", version, the stage and its state
 /// (length-prefixed strings: the stage, the number of entries, each key and value), then

@@ -135,8 +135,12 @@ TEST(CliQuickTable1, ConstantStiffnessHalvesTheModulusAtTwiceTheSizeAndScaledSti
   // (tests/bench/RESULTS.md). Bounds: softer than #1 by 15 %, not softer than fixed fabric.
   EXPECT_GT(young(e2) / young(e1), 0.5);
   EXPECT_LT(young(e2) / young(e1), 0.85);
-  // kn ∝ d: the same modulus from an independent packing (Table 1: within 7 %) ...
-  EXPECT_NEAR(young(e4) / young(e1l), 1.0, 0.07);
+  // kn ∝ d: the same modulus from an independent packing, within the scatter of one realisation
+  // of these 12-diameter cubes. Measured: the same recipe and seed gave E1 (linear) 8.88e8 and
+  // 7.97e8 Pa under two summation orders of the contact sums (rounding alone), and E4/E1 1.06 and
+  // 1.34; Table 1's 7 % is the bench's claim (mean of 7 replicates at 16 diameters,
+  // tests/bench/RESULTS.md). The band still fails a law off by a factor of two ...
+  EXPECT_NEAR(young(e4) / young(e1l), 1.0, 0.4);
   // ... and exactly the same from #1's fabric scaled by two (a power of two: every length,
   // stiffness and time is exact, so the test repeats bit for bit).
   EXPECT_EQ(young(e6), young(e1l));
