@@ -203,9 +203,12 @@ void filter_pairs(const std::vector<std::pair<int, int>>& pairs, const std::vect
     const double r = radius[i] + radius[j] + near;
     keep[k] = (position[j] - position[i]).squaredNorm() < r * r;
   });
-  out.clear();
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < m; ++k) kept += keep[k];
+  out.resize(kept);  // exactly: a growing vector would hold up to twice the list at its peak
+  std::size_t at = 0;
   for (std::size_t k = 0; k < m; ++k)
-    if (keep[k]) out.push_back(pairs[k]);
+    if (keep[k]) out[at++] = pairs[k];
 }
 
 }  // namespace clumpkit::dem

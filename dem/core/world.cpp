@@ -85,6 +85,16 @@ int World::add_body(Body body) {
   return index;
 }
 
+void World::reserve(std::size_t bodies, std::size_t spheres) {
+  bodies_.reserve(bodies_.size() + bodies);
+  body_first_sphere_.reserve(body_first_sphere_.size() + bodies);
+  const std::size_t n = sphere_body_.size() + spheres;
+  sphere_body_.reserve(n);
+  sphere_local_.reserve(n);
+  sphere_radius_.reserve(n);
+  sphere_world_.reserve(n);
+}
+
 int World::add_wall(const Wall& wall) {
   if (wall.kind == Wall::Kind::probe) validate_probe_profile(wall);
   StepCache& sc = cache_.get();
@@ -134,6 +144,7 @@ void World::build_neighbours() {
   sphere_at_build_ = sphere_world_;
   find_skin_pairs(sphere_world_, sphere_radius_, sphere_body_, options_.skin, sc.grid_,
                   neighbours_);
+  sc.grid_ = NeighbourGrid{};  // scratch of a search every few hundred steps: not kept between
   // The spheres of two bodies whose bond holds never touch.
   if (!bonded_.empty())
     neighbours_.erase(
@@ -256,13 +267,18 @@ void World::step(int count) {
       if (sort_bodies()) {
         load_bodies();
         sc.positions_fresh_ = false;
+      } else if (sc.pairs_valid_) {
+        std::vector<PairContact>().swap(contacts_);  // the slots still hold the history
+        sc.contacts_fresh_ = false;
       }
     }
     bool walls_stale = !sc.walls_valid_;
     const bool moved = sc.positions_fresh_ ? sc.moved_ : update_positions_and_check();
     if (moved || !near_valid_) {
-      // New candidates: the history travels through contacts_ (and wall_contacts_ after a build).
-      if (sc.pairs_valid_) export_pairs();
+      // New candidates: the slots' history is carried over to them by a merge of the two sorted
+      // lists (the wall contacts' through wall_contacts_ after a build).
+      const bool carry = sc.pairs_valid_;
+      if (carry) sc.old_candidates_.swap(candidates_);
       sc.pairs_valid_ = false;
       if (moved && refresh_neighbours()) {
         if (sc.walls_valid_) export_walls();
@@ -270,11 +286,20 @@ void World::step(int count) {
         walls_stale = true;
       }
       filter_candidates();
+      if (carry) {
+        derive_pair_index();
+        carry_pairs();
+        sc.pairs_valid_ = true;
+      }
     }
     if (!sc.pairs_valid_) {
       derive_pair_index();
       import_pairs();
       sc.pairs_valid_ = true;
+      // The slots hold the history now; the lists are written again when the call ends (or
+      // sooner, for new candidates). Released meanwhile, they never coexist with the grid
+      // search's scratch: at 10⁶ spheres each is a fair share of the peak.
+      std::vector<PairContact>().swap(contacts_);
     }
     if (walls_stale || walls_moved()) {
       if (sc.walls_valid_) export_walls();

@@ -92,16 +92,19 @@ struct VertexContact {
 
 /// Deterministic DEM world. Each step (leapfrog, velocities at half steps, as in PFC):
 ///  1. sphere world positions from the bodies; neighbour list rebuilt if needed;
-///  2. contact forces at x_n with the velocities v_{n−1/2}, contacts in sorted (i, j) order,
-///     then (sphere, wall) order; each body sums its own contacts in that order;
-///  3. F_n = gravity + contacts (stored in Body::force), PFC local damping if set;
+///  2. contact forces at x_n with the velocities v_{n−1/2}: pair contacts in sorted (i, j) order,
+///     run in chunks of consecutive bodies (even chunks, then odd ones), each pair adding its
+///     force and moment to its two bodies as it goes; then wall contacts in (sphere, wall) order;
+///  3. F_n = gravity + pair contacts in that chunk order + pairs deferred to the end (j beyond
+///     the next chunk) + walls + corners + bonds (stored in Body::force), PFC local damping if set;
 ///  4. v_{n+1/2} = v_{n−1/2} + F/m·dt, x_{n+1} = x_n + v_{n+1/2}·dt;
 ///     L_{n+1/2} = L_{n−1/2} + T·dt (world angular momentum, so a free body keeps L exactly),
 ///     q_{n+1} = exp(ω·dt/2 ⊗) q_n with ω = R I⁻¹ Rᵀ L taken at the midpoint orientation
 ///     (explicit midpoint with two corrector passes; Euler's equations in the body frame are
 ///     implied by ω(q, L)), ω stored at q_{n+1}.
-/// Parallel loops (TBB) only write per-item slots; every sum runs in a fixed order, so results
-/// are bit-identical for any thread count.
+/// Parallel loops (TBB) only write per-item slots, or per-body sums that no other task of the
+/// same phase touches; every sum runs in an order fixed by the state alone (the candidates and
+/// the chunking), so results are bit-identical for any thread count.
 class World {
  public:
   explicit World(WorldOptions options = {});
@@ -109,6 +112,10 @@ class World {
   /// Adds a body and returns its index. Throws InvalidInput for a body without spheres or with
   /// non-positive mass or moments.
   int add_body(Body body);
+  /// Makes room for `bodies` more bodies of `spheres` more spheres in all, so a world built body by
+  /// body holds no more than it needs (a growing array holds up to twice its bodies while it
+  /// grows). Optional: results do not depend on it.
+  void reserve(std::size_t bodies, std::size_t spheres);
   /// Adds a wall and returns its index.
   int add_wall(const Wall& wall);
   /// Adds a bond between bodies bond.a and bond.b and returns its index. Each step adds its
@@ -198,6 +205,7 @@ class World {
   void derive_pair_index();
   void export_pairs();
   void import_pairs();
+  void carry_pairs();
   bool walls_moved() const;
   void build_wall_candidates();
   void export_walls();

@@ -77,8 +77,6 @@ void World::derive_pair_index() {
     sc.body_deferred_items_[sc.scratch_[sphere_body_[candidates_[sc.deferred_cand_[d]].second]]++] =
         static_cast<std::uint32_t>(d);
 
-  sc.slot_force_.resize(m);
-  sc.slot_active_.assign(m, 0);
   sc.slot_damping_.resize(m);
   sc.damping_valid_ = false;
 }
@@ -107,6 +105,8 @@ void World::update_damping() {
 void World::import_pairs() {
   StepCache& sc = cache_.get();
   sc.contacts_fresh_ = false;  // candidates no longer in reach drop their history
+  sc.slot_force_.resize(candidates_.size());
+  sc.slot_active_.assign(candidates_.size(), 0);
   const int n = sphere_count();
   parallel_items(contacts_.size(), [&](std::size_t c) {
     const PairContact& pc = contacts_[c];
@@ -122,6 +122,28 @@ void World::import_pairs() {
   });
 }
 
+// The slots of the previous candidates (old_candidates_, both lists sorted) carried over to the
+// new ones: a pair in both keeps its state, a pair only in the new list starts untouched, one only
+// in the old list drops its history (it is out of reach). A merge, no contact list built.
+void World::carry_pairs() {
+  StepCache& sc = cache_.get();
+  const std::vector<std::pair<int, int>>& old = sc.old_candidates_;
+  const std::size_t m = candidates_.size();
+  std::vector<SlotForce> force(m);
+  std::vector<std::uint8_t> active(m, 0);
+  std::size_t o = 0;
+  for (std::size_t k = 0; k < m; ++k) {
+    while (o < old.size() && old[o] < candidates_[k]) ++o;
+    if (o < old.size() && old[o] == candidates_[k] && sc.slot_active_[o]) {
+      force[k] = sc.slot_force_[o];
+      active[k] = 1;
+    }
+  }
+  sc.slot_force_.swap(force);
+  sc.slot_active_.swap(active);
+  sc.contacts_fresh_ = false;
+}
+
 // The touching slots as contact lists, with the geometry of the spheres' present positions (the
 // step loop calls it on a call's last step between the contact pass and the move, so the lists
 // report that pass's geometry, the same bits as the kernel's).
@@ -129,6 +151,10 @@ void World::export_pairs() {
   StepCache& sc = cache_.get();
   if (sc.contacts_fresh_) return;
   contacts_.clear();
+  // Exactly as many as touch (a growing vector would hold up to twice that at its peak).
+  std::size_t touching = 0;
+  for (const std::uint8_t a : sc.slot_active_) touching += a;
+  contacts_.reserve(touching);
   for (std::size_t k = 0; k < candidates_.size(); ++k) {
     if (!sc.slot_active_[k]) continue;
     PairContact& c = contacts_.emplace_back();

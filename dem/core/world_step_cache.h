@@ -48,8 +48,9 @@ struct SlotForce {
 // every part is rebuilt from the persistent state when marked stale (a fresh cache is all stale).
 namespace detail {
 struct StepCache {
-  NeighbourGrid grid_;                   // scratch of build_neighbours
-  std::vector<std::size_t> cand_begin_;  // first candidate (i, ·) per sphere i
+  NeighbourGrid grid_;                               // scratch of build_neighbours
+  std::vector<std::size_t> cand_begin_;              // first candidate (i, ·) per sphere i
+  std::vector<std::pair<int, int>> old_candidates_;  // the slots' keys while new ones are made
   // During step(count) the bodies' state lives in these packed arrays (loaded from bodies_ when
   // the call begins, stored back when it ends), so the per-step passes stream small records
   // instead of whole Body objects with their sphere vectors.

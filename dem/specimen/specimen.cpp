@@ -195,6 +195,9 @@ double interpolate_friction(const std::vector<CalibrationPoint>& c, double targe
 
 World stack_layers(const World& layer, int layers, double layer_height) {
   World stacked(layer.options());
+  stacked.reserve(
+      static_cast<std::size_t>(layers) * layer.bodies().size(),
+      static_cast<std::size_t>(layers) * static_cast<std::size_t>(layer.sphere_count()));
   for (int copy = 0; copy < layers; ++copy)
     for (const Body& b : layer.bodies()) {
       Body c = b;

@@ -75,7 +75,10 @@ World tiled_world(const World& tile, int mx, int my) {
   World w(tile.options());
   add_box_walls(w, mx * kTile, my * kTile);
   const int n = tile.sphere_count();
+  const std::size_t copies = static_cast<std::size_t>(mx) * static_cast<std::size_t>(my);
+  w.reserve(copies * tile.bodies().size(), copies * static_cast<std::size_t>(n));
   std::vector<PairContact> pairs;
+  pairs.reserve(copies * tile.contacts().size());
   std::vector<WallContact> walls;
   for (int ty = 0; ty < my; ++ty)
     for (int tx = 0; tx < mx; ++tx) {
