@@ -124,15 +124,17 @@ SpecimenJobResult build_into(const SpecimenRecipe& recipe, const std::string& ou
 
 double estimated_specimen_bytes(const dem::SpecimenSpec& spec, double container_volume) {
   // Bodies ≈ the container's solid volume shared out by mass over the classes, each class's
-  // particles of the volume of its mean sieve size; about 1 KiB per body (the body, its spheres,
+  // particles of the volume of its mean sieve size; about 2.2 KiB per body (the body, its spheres,
   // contacts and neighbour lists), held three times (calibration, layer and specimen worlds).
+  // Measured on srm40-triaxial (tests/bench/RESULTS.md, issue 52): a peak of 329 MiB for 51,147
+  // bodies and 108,693 spheres, estimated 0.343 GiB (351 MiB, +7 %) from 54,600 bodies.
   const double solid = container_volume * (1 - spec.porosity_guess);
   double bodies = 0;
   for (const dem::ParticleClass& c : spec.classes) {
     const double d = 0.5 * (c.min_size + c.max_size);
     bodies += 0.01 * c.mass_percent * solid / (M_PI / 6 * d * d * d);
   }
-  return 3 * 1024 * bodies;
+  return 3 * 2253 * bodies;
 }
 
 SpecimenJobResult run_specimen(const SpecimenRecipe& recipe, const std::string& out_dir,
