@@ -95,6 +95,20 @@ void World::reserve(std::size_t bodies, std::size_t spheres) {
   sphere_world_.reserve(n);
 }
 
+void World::reserve(const std::vector<Body>& bodies) {
+  std::size_t spheres = 0;
+  for (const Body& b : bodies) spheres += b.spheres.size();
+  reserve(bodies.size(), spheres);
+}
+
+// The slots hold the history: the contact lists are written again when the call ends (or sooner,
+// for a sort). Released meanwhile, they never coexist with the grid search's scratch: at 10⁶
+// spheres each is a fair share of the peak.
+void World::release_contacts() {
+  std::vector<PairContact>().swap(contacts_);
+  cache_.get().contacts_fresh_ = false;
+}
+
 int World::add_wall(const Wall& wall) {
   if (wall.kind == Wall::Kind::probe) validate_probe_profile(wall);
   StepCache& sc = cache_.get();
@@ -268,8 +282,7 @@ void World::step(int count) {
         load_bodies();
         sc.positions_fresh_ = false;
       } else if (sc.pairs_valid_) {
-        std::vector<PairContact>().swap(contacts_);  // the slots still hold the history
-        sc.contacts_fresh_ = false;
+        release_contacts();
       }
     }
     bool walls_stale = !sc.walls_valid_;
@@ -296,10 +309,7 @@ void World::step(int count) {
       derive_pair_index();
       import_pairs();
       sc.pairs_valid_ = true;
-      // The slots hold the history now; the lists are written again when the call ends (or
-      // sooner, for new candidates). Released meanwhile, they never coexist with the grid
-      // search's scratch: at 10⁶ spheres each is a fair share of the peak.
-      std::vector<PairContact>().swap(contacts_);
+      release_contacts();
     }
     if (walls_stale || walls_moved()) {
       if (sc.walls_valid_) export_walls();

@@ -116,6 +116,8 @@ class World {
   /// body holds no more than it needs (a growing array holds up to twice its bodies while it
   /// grows). Optional: results do not depend on it.
   void reserve(std::size_t bodies, std::size_t spheres);
+  /// reserve() for these bodies and all their spheres.
+  void reserve(const std::vector<Body>& bodies);
   /// Adds a wall and returns its index.
   int add_wall(const Wall& wall);
   /// Adds a bond between bodies bond.a and bond.b and returns its index. Each step adds its
@@ -206,6 +208,7 @@ class World {
   void export_pairs();
   void import_pairs();
   void carry_pairs();
+  void release_contacts();
   bool walls_moved() const;
   void build_wall_candidates();
   void export_walls();

@@ -185,9 +185,7 @@ World loose_packing(const CompressionSpec& spec, std::vector<Body> bodies,
     for (const Sphere& s : b.spheres) r_min = std::min(r_min, s.radius);
   o.skin = 0.2 * r_min;  // a length of the specimen: similar specimens scale exactly
   World world(o);
-  std::size_t spheres = 0;
-  for (const Body& b : bodies) spheres += b.spheres.size();
-  world.reserve(bodies.size(), spheres);
+  world.reserve(bodies);
   for (std::size_t k = 0; k < bodies.size(); ++k) {
     Body b = std::move(bodies[k]);
     b.position = placed[k].position;

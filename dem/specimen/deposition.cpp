@@ -22,9 +22,7 @@ World make_deposition_world(const std::vector<Body>& bodies,
   options.contact = spec.contact;
   options.sort_every = 1000;  // placement order is random: sort for locality (as LAMMPS)
   World world(options);
-  std::size_t spheres = 0;
-  for (const Body& b : bodies) spheres += b.spheres.size();
-  world.reserve(bodies.size(), spheres);
+  world.reserve(bodies);
   for (std::size_t k = 0; k < bodies.size(); ++k) {
     if (bodies[k].spheres.empty())
       throw InvalidInput("make_deposition_world: body " + std::to_string(k) + " has no spheres");

@@ -126,8 +126,8 @@ double estimated_specimen_bytes(const dem::SpecimenSpec& spec, double container_
   // Bodies ≈ the container's solid volume shared out by mass over the classes, each class's
   // particles of the volume of its mean sieve size; about 2.2 KiB per body (the body, its spheres,
   // contacts and neighbour lists), held three times (calibration, layer and specimen worlds).
-  // Measured on srm40-triaxial (tests/bench/RESULTS.md, issue 52): a peak of 329 MiB for 51,147
-  // bodies and 108,693 spheres, estimated 0.343 GiB (351 MiB, +7 %) from 54,600 bodies.
+  // Measured on srm40-triaxial (tests/bench/RESULTS.md, "Memory estimate"): a peak of 329 MiB for
+  // 51,147 bodies and 108,693 spheres, estimated 0.343 GiB (351 MiB, +7 %) from 54,600 bodies.
   const double solid = container_volume * (1 - spec.porosity_guess);
   double bodies = 0;
   for (const dem::ParticleClass& c : spec.classes) {
