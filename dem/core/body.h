@@ -32,8 +32,14 @@ struct Body {
   Vec3 moments = Vec3::Zero();  ///< principal moments of inertia (kg·m²) about body x, y, z
   double volume = 0.0;          ///< exact solid volume of the union of the spheres (m³)
   BodyKind kind = BodyKind::soil;
+  // (The small members sit together: a million bodies pay no padding between them.)
+  /// A body with locked rotation only translates (its torque is ignored, ω stays as set).
+  bool rotation_locked = false;
   int template_id = -1;  ///< index of the template in its library; −1 for a plain soil sphere
-  double scale = 1.0;    ///< template length scale (body = template × scale); 1 for soil
+  /// Zone of a zoned specimen (dem/specimen/zones.h): the index of its region in the layout; 0
+  /// in a specimen without zones. Carried through checkpoints and specimen files.
+  int zone = 0;
+  double scale = 1.0;  ///< template length scale (body = template × scale); 1 for soil
   /// Volume-equivalent diameter (m) that sizes its contact stiffness under linear scaling;
   /// 0: World::add_body sets the sphere's diameter for a plain sphere, else (6·volume/π)^(1/3)
   /// (left 0 for a clump without a volume, which only a size-scaled law refuses).
@@ -42,9 +48,6 @@ struct Body {
   /// with its corners (a Voronoi cell of a crushable particle between platens); empty for the
   /// rest, whose spheres meet every wall. Its spheres still meet other bodies and other walls.
   std::vector<Vec3> vertices;
-  /// Zone of a zoned specimen (dem/specimen/zones.h): the index of its region in the layout; 0
-  /// in a specimen without zones. Carried through checkpoints and specimen files.
-  int zone = 0;
 
   Vec3 position = Vec3::Zero();  ///< centroid in the world (m)
   Vec3 velocity = Vec3::Zero();  ///< m/s (at the half step, leapfrog)
@@ -56,8 +59,6 @@ struct Body {
   /// before local damping. N and N·m.
   Vec3 force = Vec3::Zero();
   Vec3 torque = Vec3::Zero();
-  /// A body with locked rotation only translates (its torque is ignored, ω stays as set).
-  bool rotation_locked = false;
 
   /// Radius of the smallest centroid-centred ball holding every sphere (m).
   double bounding_radius() const;

@@ -18,13 +18,12 @@ namespace clumpkit::dem {
 void find_skin_pairs(const std::vector<Vec3>& position, const std::vector<double>& radius,
                      const std::vector<int>& body_of, double skin, NeighbourGrid& grid,
                      std::vector<std::pair<int, int>>& pairs) {
-  pairs.clear();
+  std::vector<std::pair<int, int>>().swap(pairs);  // the old list is not held during the search
   const std::size_t n = position.size();
   if (n < 2) return;
   std::vector<std::int64_t>& cell_start = grid.cell_start;
   std::vector<NeighbourGrid::CellSphere>& cell_spheres = grid.cell_spheres;
   std::vector<std::size_t>& offsets = grid.offsets;
-  std::vector<std::vector<int>>& partners = grid.partners;
 
   Vec3 lo = position[0], hi = position[0];
   for (std::size_t k = 0; k < n; ++k) {
@@ -111,15 +110,19 @@ void find_skin_pairs(const std::vector<Vec3>& position, const std::vector<double
     std::sort(keyed.begin(), keyed.end());
   }
 
-  // Each sphere a lists the partners b it finds (r_b < r_a, or equal radii and b > a).
-  partners.resize(n);
-  parallel_items(n, [&](std::size_t a) {
+  std::vector<double>().swap(sorted_radius);
+  std::vector<std::int64_t>().swap(key);
+  // Each sphere a lists the partners b it finds (r_b < r_a, or equal radii and b > a), appended
+  // to its block's list.
+  constexpr std::size_t kBlock = NeighbourGrid::kBlock;
+  const std::size_t blocks = (n + kBlock - 1) / kBlock;
+  grid.block_partners.resize(blocks);
+  grid.found.resize(n);
+  auto search = [&](std::size_t a, std::vector<int>& out) {
     const Vec3& x = position[a];
     const double ra = radius[a];
     const int body = body_of[a];
     const double reach = 2.0 * ra + skin;  // farthest partner centre: r_a + r_b + skin, r_b ≤ r_a
-    std::vector<int>& out = partners[a];
-    out.clear();
     // Branch-free tests: which sphere of a pair finds it depends on radii in random order, so a
     // branch on it is mispredicted half the time; only the rare hit branches.
     auto consider = [&](const NeighbourGrid::CellSphere& c) {
@@ -171,22 +174,43 @@ void find_skin_pairs(const std::vector<Vec3>& position, const std::vector<double
         }
       }
     }
+  };
+  parallel_items(blocks, [&](std::size_t block) {
+    std::vector<int>& out = grid.block_partners[block];
+    out.clear();
+    const std::size_t end = std::min(n, (block + 1) * kBlock);
+    for (std::size_t a = block * kBlock; a < end; ++a) {
+      const std::size_t before = out.size();
+      search(a, out);
+      grid.found[a] = static_cast<std::uint32_t>(out.size() - before);
+    }
   });
+  std::vector<NeighbourGrid::CellSphere>().swap(cell_spheres);
+  std::vector<std::int64_t>().swap(cell_start);
 
   // Pairs (min, max) grouped by their first sphere (counting sort), each group sorted by j.
+  auto each_found = [&](auto&& f) {  // f(a, b) for every partner b of a, in sphere order
+    for (std::size_t block = 0; block < blocks; ++block) {
+      const std::vector<int>& list = grid.block_partners[block];
+      std::size_t at = 0;
+      const std::size_t end = std::min(n, (block + 1) * kBlock);
+      for (std::size_t a = block * kBlock; a < end; ++a)
+        for (std::uint32_t c = 0; c < grid.found[a]; ++c) f(a, list[at++]);
+    }
+  };
   offsets.assign(n + 1, 0);
-  for (std::size_t a = 0; a < n; ++a)
-    for (int b : partners[a]) ++offsets[std::min<std::size_t>(a, b) + 1];
+  each_found([&](std::size_t a, int b) { ++offsets[std::min<std::size_t>(a, b) + 1]; });
   for (std::size_t i = 0; i < n; ++i) offsets[i + 1] += offsets[i];
   pairs.resize(offsets[n]);
   {
     std::vector<std::size_t> fill(offsets.begin(), offsets.end() - 1);
-    for (std::size_t a = 0; a < n; ++a)
-      for (int b : partners[a]) {
-        const int i = std::min(static_cast<int>(a), b), j = std::max(static_cast<int>(a), b);
-        pairs[fill[i]++] = {i, j};
-      }
+    each_found([&](std::size_t a, int b) {
+      const int i = std::min(static_cast<int>(a), b), j = std::max(static_cast<int>(a), b);
+      pairs[fill[i]++] = {i, j};
+    });
   }
+  std::vector<std::vector<int>>().swap(grid.block_partners);
+  std::vector<std::uint32_t>().swap(grid.found);
   parallel_items(n, [&](std::size_t i) {
     std::sort(pairs.begin() + static_cast<std::ptrdiff_t>(offsets[i]),
               pairs.begin() + static_cast<std::ptrdiff_t>(offsets[i + 1]));

@@ -15,10 +15,14 @@ struct NeighbourGrid {
     double x, y, z, r;
     int index, body;
   };
-  std::vector<std::vector<int>> partners;  // per sphere: the partners it finds
-  std::vector<std::int64_t> cell_start;    // dense cell table: first sphere of each cell
-  std::vector<CellSphere> cell_spheres;    // spheres in cell order
-  std::vector<std::size_t> offsets;        // counting-sort offsets
+  // The partners found, block by block of kBlock spheres in index order (one vector a block,
+  // not one a sphere: a million small vectors cost more than the pairs), and per sphere how many.
+  static constexpr std::size_t kBlock = 2048;
+  std::vector<std::vector<int>> block_partners;
+  std::vector<std::uint32_t> found;
+  std::vector<std::int64_t> cell_start;  // dense cell table: first sphere of each cell
+  std::vector<CellSphere> cell_spheres;  // spheres in cell order
+  std::vector<std::size_t> offsets;      // counting-sort offsets
 };
 
 /// Every pair (i, j), i < j, of spheres of different bodies (body_of[i] != body_of[j]) whose

@@ -151,7 +151,10 @@ class World {
   /// keeping the history.
   void rescale_friction(double new_friction);
 
-  const std::vector<PairContact>& contacts() const { return contacts_; }
+  /// Touching sphere pairs with the state of the last step's contact pass, sorted (i, j).
+  /// Written from the engine's per-pair slots when first asked for after a step (so not
+  /// from two threads at once on one world); a reference lasts until the next step or edit.
+  const std::vector<PairContact>& contacts() const;
   const std::vector<WallContact>& wall_contacts() const { return wall_contacts_; }
   /// Corners of polyhedral bodies on plane walls, sorted (body, vertex, wall).
   const std::vector<VertexContact>& vertex_contacts() const { return vertex_contacts_; }
@@ -205,7 +208,9 @@ class World {
   // step(); they are rebuilt from those lists whenever marked stale.
   bool update_positions_and_check();
   void derive_pair_index();
-  void export_pairs();
+  void export_pairs() const;
+  void hold_contacts_in_lists();
+  void pack_contacts();
   void import_pairs();
   void carry_pairs();
   void release_contacts();
@@ -238,7 +243,7 @@ class World {
   std::vector<Bond> bonds_;
   std::vector<std::pair<int, int>> bonded_;  // sorted (a, b), a < b, of the bonds that hold
   void update_bonded();
-  std::vector<PairContact> contacts_;           // sorted (i, j)
+  mutable std::vector<PairContact> contacts_;   // sorted (i, j); see contacts()
   std::vector<WallContact> wall_contacts_;      // sorted (sphere, wall)
   std::vector<VertexContact> vertex_contacts_;  // sorted (body, vertex, wall)
   void vertex_wall_contacts();
@@ -251,6 +256,9 @@ class World {
   detail::StepCacheHolder cache_;
   void load_bodies();
   void store_bodies();
+  // A body's orientation during step(count): its packed record, or the Body's own for a plain
+  // sphere, whose orientation is not integrated.
+  const Eigen::Quaterniond& orientation_in_step(std::size_t body) const;
   void update_damping();
 };
 

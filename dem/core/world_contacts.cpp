@@ -102,24 +102,39 @@ void World::update_damping() {
   sc.damping_valid_ = true;
 }
 
+// The contact lists (authoritative while the slots are not) reduced to what the slots take and
+// released: at 10⁶ spheres the lists held beside the grid search's scratch made the run's peak.
+void World::pack_contacts() {
+  StepCache& sc = cache_.get();
+  if (contacts_.empty()) return;
+  sc.pending_.resize(contacts_.size());
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    const PairContact& pc = contacts_[c];
+    sc.pending_[c] = PairHistory{{pc.i, pc.j}, SlotForce{pc.state.shear, pc.state.normal_force}};
+  }
+  release_contacts();
+}
+
 void World::import_pairs() {
   StepCache& sc = cache_.get();
+  pack_contacts();
   sc.contacts_fresh_ = false;  // candidates no longer in reach drop their history
   sc.slot_force_.resize(candidates_.size());
   sc.slot_active_.assign(candidates_.size(), 0);
   const int n = sphere_count();
-  parallel_items(contacts_.size(), [&](std::size_t c) {
-    const PairContact& pc = contacts_[c];
-    if (pc.i < 0 || pc.i >= n) return;
-    const auto first = candidates_.begin() + static_cast<std::ptrdiff_t>(sc.cand_begin_[pc.i]);
-    const auto last = candidates_.begin() + static_cast<std::ptrdiff_t>(sc.cand_begin_[pc.i + 1]);
-    const auto it = std::lower_bound(first, last, std::make_pair(pc.i, pc.j));
-    if (it == last || it->second != pc.j) return;  // no longer a candidate: history dropped
+  parallel_items(sc.pending_.size(), [&](std::size_t c) {
+    const auto [i, j] = sc.pending_[c].pair;
+    if (i < 0 || i >= n) return;
+    const auto first = candidates_.begin() + static_cast<std::ptrdiff_t>(sc.cand_begin_[i]);
+    const auto last = candidates_.begin() + static_cast<std::ptrdiff_t>(sc.cand_begin_[i + 1]);
+    const auto it = std::lower_bound(first, last, std::make_pair(i, j));
+    if (it == last || it->second != j) return;  // no longer a candidate: history dropped
     const auto k = static_cast<std::size_t>(it - candidates_.begin());
-    sc.slot_force_[k] = SlotForce{pc.state.shear, pc.state.normal_force};
+    sc.slot_force_[k] = sc.pending_[c].force;
     sc.slot_active_[k] = 1;
     // The wrenches are written by the next contact pass (every active slot is refreshed there).
   });
+  std::vector<PairHistory>().swap(sc.pending_);
 }
 
 // The slots of the previous candidates (old_candidates_, both lists sorted) carried over to the
@@ -144,10 +159,10 @@ void World::carry_pairs() {
   sc.contacts_fresh_ = false;
 }
 
-// The touching slots as contact lists, with the geometry of the spheres' present positions (the
-// step loop calls it on a call's last step between the contact pass and the move, so the lists
-// report that pass's geometry, the same bits as the kernel's).
-void World::export_pairs() {
+// The touching slots as contact lists, with the geometry of sphere_world_: between calls the
+// positions of the last contact pass (integrate() leaves them on a call's last step), so the
+// lists report that pass's geometry, the same bits as the kernel's.
+void World::export_pairs() const {
   StepCache& sc = cache_.get();
   if (sc.contacts_fresh_) return;
   contacts_.clear();
@@ -272,7 +287,7 @@ void World::vertex_wall_contacts() {
     if (!sc.body_has_vertices_[k]) continue;
     Wrench total{Vec3::Zero(), Vec3::Zero()};
     const Kinematics& b = sc.kinematics_[k];
-    const Eigen::Quaterniond& q = sc.rotation_[k].orientation;
+    const Eigen::Quaterniond& q = orientation_in_step(k);
     const std::vector<Vec3>& corners = bodies_[k].vertices;
     for (std::size_t v = 0; v < corners.size(); ++v) {
       const Vec3 x = b.position + q * corners[v];
@@ -374,10 +389,9 @@ void World::compute_forces() {
     parallel_items(bonds_.size(), [&](std::size_t k) {
       Bond& bond = bonds_[k];
       const bool held = bond.holds();
-      sc.bond_wrench_[k] =
-          bond_wrench(bond, options_.cohesive, sc.kinematics_[bond.a].position,
-                      sc.rotation_[bond.a].orientation, sc.kinematics_[bond.b].position,
-                      sc.rotation_[bond.b].orientation);
+      sc.bond_wrench_[k] = bond_wrench(bond, options_.cohesive, sc.kinematics_[bond.a].position,
+                                       orientation_in_step(bond.a), sc.kinematics_[bond.b].position,
+                                       orientation_in_step(bond.b));
       if (held && !bond.holds()) broke.store(true, std::memory_order_relaxed);
     });
     if (broke.load()) {

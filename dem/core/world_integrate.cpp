@@ -18,7 +18,7 @@ void World::load_bodies() {
   StepCache& sc = cache_.get();
   const std::size_t nb = bodies_.size();
   sc.kinematics_.resize(nb);
-  sc.rotation_.resize(nb);
+  sc.turning_.resize(nb);
   sc.pair_wrench_.resize(nb);
   sc.body_diameter_.resize(nb);
   sc.body_has_vertices_.assign(nb, 0);
@@ -55,7 +55,16 @@ void World::load_bodies() {
                      sc.body_bond_begin_[k] == sc.body_bond_begin_[k + 1]
                  ? Spin::plain_sphere
                  : Spin::isotropic;
-    sc.rotation_[k] = Rotation{b.orientation, b.moments, spin};
+    sc.turning_[k] = Turning{spin, 0, b.moments.x()};
+  });
+  std::uint32_t rotating = 0;
+  for (Turning& t : sc.turning_)
+    if (t.spin != Spin::plain_sphere) t.rotation = rotating++;
+  sc.rotation_.resize(rotating);
+  parallel_items(nb, [&](std::size_t k) {
+    const Turning& t = sc.turning_[k];
+    if (t.spin != Spin::plain_sphere)
+      sc.rotation_[t.rotation] = Rotation{bodies_[k].orientation, bodies_[k].moments};
   });
   sc.sphere_body64_.assign(sphere_body_.begin(), sphere_body_.end());
   sc.damping_valid_ = false;  // masses may have changed
@@ -69,8 +78,16 @@ void World::store_bodies() {
     b.position = sc.kinematics_[k].position;
     b.velocity = sc.kinematics_[k].velocity;
     b.angular_velocity = sc.kinematics_[k].angular_velocity;
-    b.orientation = sc.rotation_[k].orientation;
+    const Turning& t = sc.turning_[k];  // a plain sphere keeps the orientation it was given
+    if (t.spin != Spin::plain_sphere) b.orientation = sc.rotation_[t.rotation].orientation;
   });
+}
+
+const Eigen::Quaterniond& World::orientation_in_step(std::size_t body) const {
+  const StepCache& sc = cache_.get();
+  const Turning& t = sc.turning_[body];
+  return t.spin == Spin::plain_sphere ? bodies_[body].orientation
+                                      : sc.rotation_[t.rotation].orientation;
 }
 
 // Net wrench on body k: gravity and its pair contacts as the contact pass added them
@@ -112,7 +129,10 @@ void World::integrate() {
   const double dt = options_.timestep;
   const double alpha = options_.contact.local_damping;
   const Vec3 gravity = options_.gravity;
-  const bool last = sc.last_step_;  // the last step of step(count)
+  // On the last step of step(count): Body::force and torque are written, and sphere_world_ keeps
+  // the positions of this step's contact pass for the contact lists (World::contacts); the next
+  // call computes the spheres' positions from the bodies anyway.
+  const bool last_step = sc.last_step_;
   const bool have_reference = !dirty_ && sphere_at_filter_.size() == sphere_world_.size();
   const double limit = near_limit_;
   std::atomic<bool> moved{false};
@@ -126,36 +146,40 @@ void World::integrate() {
     return alpha == 0.0 ? wrench.torque : local_damping(wrench.torque, b.angular_velocity, alpha);
   };
   // Every body but a plain sphere (kept out of line so the loop below stays small).
-  auto advance = [&](Kinematics & b, const Wrench& wrench, Rotation& r) __attribute__((noinline)) {
+  auto advance = [&](Kinematics & b, const Wrench& wrench, Spin spin, Rotation& r)
+      __attribute__((noinline)) {
     translate(b, wrench);
-    if (r.spin == Spin::locked) return;
+    if (spin == Spin::locked) return;
     rotate_rigid_body(r.orientation, b.angular_velocity, r.moments, damped_torque(b, wrench), dt,
-                      r.spin == Spin::isotropic);
+                      spin == Spin::isotropic);
   };
   // One pass per body: sum its wrench, advance it, then refresh its spheres' world positions
   // and the Verlet-skin check, so a step makes one pass over the bodies and their spheres.
   parallel_items(bodies_.size(), [&](std::size_t k) {
     const Wrench wrench = sum_wrench(sc, k);
-    if (last) {  // Body::force and torque report the call's last step
+    if (last_step) {
       bodies_[k].force = wrench.force;
       bodies_[k].torque = wrench.torque;
     }
     Kinematics& b = sc.kinematics_[k];
     sc.pair_wrench_[k] = Wrench{b.mass * gravity, Vec3::Zero()};  // the next contact pass's start
-    Rotation& r = sc.rotation_[k];
+    const Turning t = sc.turning_[k];
     bool far = false;
     const int first = body_first_sphere_[k], last = body_first_sphere_[k + 1];
-    if (r.spin == Spin::plain_sphere) {
+    if (t.spin == Spin::plain_sphere) {
       // A plain sphere centred on its body origin looks the same in every orientation, so its
       // orientation is not integrated (as LAMMPS nve/sphere): no sine, cosine or normalisation.
       translate(b, wrench);
-      spin_isotropic(b.angular_velocity, damped_torque(b, wrench), r.moments.x(), dt);
-      const Vec3 x = b.position + Vec3::Zero();  // the general formula's bits for a centred sphere
-      sphere_world_[first] = x;
-      far = have_reference && (x - sphere_at_filter_[first]).squaredNorm() > limit;
+      spin_isotropic(b.angular_velocity, damped_torque(b, wrench), t.moment, dt);
+      if (!last_step) {
+        const Vec3 x = b.position + Vec3::Zero();  // the general formula's bits: centred sphere
+        sphere_world_[first] = x;
+        far = have_reference && (x - sphere_at_filter_[first]).squaredNorm() > limit;
+      }
     } else {
-      advance(b, wrench, r);
-      for (int i = first; i < last; ++i) {
+      Rotation& r = sc.rotation_[t.rotation];
+      advance(b, wrench, t.spin, r);
+      for (int i = first; i < last && !last_step; ++i) {
         const Vec3& local = sphere_local_[i];
         // q·0 is exactly +0 (Eigen's formula), so a centred sphere skips it.
         const Vec3 x = local.isZero(0.0) ? Vec3(b.position + Vec3::Zero())
@@ -166,7 +190,7 @@ void World::integrate() {
     }
     if (far) moved.store(true, std::memory_order_relaxed);
   });
-  sc.positions_fresh_ = true;
+  sc.positions_fresh_ = !last_step;
   sc.moved_ = !have_reference || moved.load();
   for (Wall& w : walls_) {
     if (w.kind != Wall::Kind::cylinder)

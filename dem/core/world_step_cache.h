@@ -30,15 +30,28 @@ enum class Spin : std::uint8_t {
   locked         // rotation_locked: translation only
 };
 
-struct Rotation {  // what the integrator reads of a body's rotation
+struct Rotation {  // what the integrator reads of a rotating body (not a plain sphere)
   Eigen::Quaterniond orientation;
   Vec3 moments;
+};
+
+// Per body: how it turns, where its Rotation is, and a plain sphere's one moment of inertia. A
+// plain sphere (most bodies of a soil packing) needs no orientation or second and third moment,
+// so its step reads these 16 bytes instead of a 64-byte Rotation.
+struct Turning {
   Spin spin;
+  std::uint32_t rotation;  // index in StepCache::rotation_; unused for a plain sphere
+  double moment;           // a plain sphere's principal moment (kg·m²); unused for the rest
 };
 
 struct SlotForce {
   Vec3 shear;
   double normal_force;
+};
+
+struct PairHistory {  // what a slot takes from a contact list's entry
+  std::pair<int, int> pair;
+  SlotForce force;
 };
 
 }  // namespace detail
@@ -55,7 +68,8 @@ struct StepCache {
   // the call begins, stored back when it ends), so the per-step passes stream small records
   // instead of whole Body objects with their sphere vectors.
   std::vector<Kinematics> kinematics_;       // per body
-  std::vector<Rotation> rotation_;           // per body
+  std::vector<Turning> turning_;             // per body
+  std::vector<Rotation> rotation_;           // per body that is not a plain sphere, in order
   std::vector<std::int64_t> sphere_body64_;  // per sphere: its body, for the pair kernel's gathers
   // Per body: m·g, then the pair contacts of this step's contact pass, added by the kernel
   // itself (pair_kernel.h); integrate() adds the rest and starts it again from m·g. The pass
@@ -85,6 +99,9 @@ struct StepCache {
   // positions of the contact pass (pair_contact_frame), on the call's last step before the
   // bodies move.
   std::vector<SlotForce> slot_force_;
+  // The contact lists' history (40 bytes a contact, no geometry) while new slots are made for it:
+  // the lists themselves are released before the grid search (World::pack_contacts).
+  std::vector<PairHistory> pending_;
   bool last_step_ = true;        // the call's last step: Body::force and the contact lists written
   bool contacts_fresh_ = false;  // contacts_ holds the slots' present state (nothing to export)
   std::vector<std::uint8_t> slot_active_;       // per candidate: touching at the last step
