@@ -185,15 +185,14 @@ TEST(DemWorld, EditsBetweenCallsKeepTheContactHistory) {
   World edited = w;
   edited.add_body(make_sphere_body(Vec3(5.0, 5.0, 5.0), 0.003, 2650.0));  // far from the rest
   ASSERT_EQ(edited.contacts().size(), before.size());
-  EXPECT_EQ(std::memcmp(edited.contacts().data(), before.data(),
-                        before.size() * sizeof(PairContact)),
-            0);
+  EXPECT_EQ(
+      std::memcmp(edited.contacts().data(), before.data(), before.size() * sizeof(PairContact)), 0);
   World rescaled = w;
   rescaled.rescale_friction(10.0);  // a larger μ clamps nothing
   ASSERT_EQ(rescaled.contacts().size(), before.size());
-  EXPECT_EQ(std::memcmp(rescaled.contacts().data(), before.data(),
-                        before.size() * sizeof(PairContact)),
-            0);
+  EXPECT_EQ(
+      std::memcmp(rescaled.contacts().data(), before.data(), before.size() * sizeof(PairContact)),
+      0);
   // And the run goes on from them as if nothing had happened to the slots (the same μ set
   // without the clamp, which keeps the slots).
   World carried = w;
