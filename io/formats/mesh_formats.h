@@ -59,7 +59,10 @@ void triangulate_polygon(const std::vector<Vec3>& vertices, const std::vector<in
 Mesh read_stl(const std::string& path, const std::string& data, double relative_tolerance,
               std::size_t& dropped);
 Mesh read_obj(const std::string& path, const std::string& data);
-Mesh read_ply(const std::string& path, const std::string& data);
+/// PLY: `lines_with_extra`, if given, receives the number of ASCII lines that carry more values
+/// than the header declares for their element (the extra values are ignored).
+Mesh read_ply(const std::string& path, const std::string& data,
+              std::size_t* lines_with_extra = nullptr);
 
 /// The writers (indices already checked).
 void write_stl_binary(std::ostream& os, const Mesh& mesh);

@@ -68,14 +68,16 @@ Mesh read_mesh_raw(const std::string& path, const MeshReadOptions& options,
     if (report) report->removed_triangles = dropped;
     return mesh;
   }
+  std::size_t extra = 0;
   Mesh mesh = format == MeshFormat::Obj ? mesh_format::read_obj(path, data)
-                                        : mesh_format::read_ply(path, data);
+                                        : mesh_format::read_ply(path, data, &extra);
   const std::size_t vertices = mesh.vertices.size(), triangles = mesh.triangles.size();
   // OBJ and PLY exactly, unless asked.
   weld_vertices(mesh, options.weld_tolerance);
   if (report) {
     report->merged_vertices = vertices - mesh.vertices.size();
     report->removed_triangles = triangles - mesh.triangles.size();
+    report->lines_with_extra_values = extra;
   }
   return mesh;
 }
@@ -157,6 +159,10 @@ std::vector<std::string> mesh_read_notes(const std::string& path, const MeshRead
   if (r.removed_triangles > 0)
     notes.push_back(path + ": removed " + plural(r.removed_triangles, "degenerate triangle") +
                     " (zero area or a repeated corner)");
+  if (r.lines_with_extra_values > 0)
+    notes.push_back(path + ": ignored the values at the end of " +
+                    plural(r.lines_with_extra_values, "line") +
+                    " beyond those the PLY header declares");
   if (r.reoriented)
     notes.push_back(path + ": triangles were not consistently outward; re-oriented");
   if (r.shells > 1)

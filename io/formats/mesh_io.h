@@ -32,6 +32,8 @@ struct MeshReadReport {
   std::size_t merged_vertices = 0;
   std::size_t removed_triangles = 0;  ///< degenerate triangles removed (repeated corner, zero area)
   std::size_t shells = 1;             ///< closed shells of the solid
+  /// ASCII PLY lines with more values than the header declares for their element (ignored).
+  std::size_t lines_with_extra_values = 0;
 };
 
 /// Read without topological validation, format chosen by the extension, then welded
@@ -46,6 +48,9 @@ struct MeshReadReport {
 /// - PLY: ascii, binary_little_endian and binary_big_endian; any scalar types for vertex x y z
 ///   and face list `vertex_indices` (or `vertex_index`) of any integer types; every other
 ///   property (scalar or list, in any order) and element is skipped by its declared layout.
+///   ASCII is read one element item per line: values beyond the declared ones at the end of a
+///   line are ignored (counted in report->lines_with_extra_values), too few are an error naming
+///   the line and the property.
 /// Polygons become a fan of triangles when convex, else are ear-clipped (non-convex faces).
 /// Throws IoError if the file cannot be read, InvalidInput ("<path>: <what>") if it cannot be
 /// parsed into a Mesh: empty file, truncated or mis-sized binary data, unparsable number (with

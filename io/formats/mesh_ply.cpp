@@ -52,7 +52,10 @@ double load(const char* p, PlyFormat format) {
   return format == PlyFormat::binary_big_endian ? double(load_be<T>(p)) : double(load_le<T>(p));
 }
 
-// Reads successive property values from the PLY body, as text tokens or bytes.
+// Reads successive property values from the PLY body, as bytes or, in ASCII, as the tokens of
+// one line per element item (the PLY format's rule): values past the declared ones at the end of
+// a line are ignored and counted (writers such as VCG append properties they never declared), a
+// line with too few values is an error naming the line and the property.
 class PlyBody {
  public:
   PlyBody(const std::string& path, std::string_view body, PlyFormat format, int first_line)
@@ -62,19 +65,37 @@ class PlyBody {
         format_(format),
         lines_(body, first_line) {}
 
-  double read(PlyType type, const PlyElement& element, long long item) {
-    if (binary_) return read_binary(type, element, item);
-    while (next_ >= tokens_.size()) {
+  // The start of item `item` of `element`: in ASCII, its line (blank lines skipped).
+  void begin(const PlyElement& element, long long item) {
+    if (binary_) return;
+    do {
       if (!lines_.next(tokens_))
         bad(path_, "PLY file ends inside element '" + shown(element.name) + "' " +
                        std::to_string(item) + " of " + std::to_string(element.count));
-      next_ = 0;
-    }
-    const std::string_view tok = tokens_[next_++];
+    } while (tokens_.empty());
+    next_ = 0;
+  }
+
+  // The end of an item: in ASCII, values left on its line are counted, not read.
+  void end() {
+    if (!binary_ && next_ < tokens_.size()) ++lines_with_extra_;
+  }
+
+  double read(PlyType type, const PlyElement& element, long long item,
+              const PlyProperty& property) {
+    if (binary_) return read_binary(type, element, item);
     const std::string where = at_line(path_, lines_.line());
+    if (next_ >= tokens_.size())
+      throw InvalidInput(where + ": too few values for element '" + shown(element.name) + "' " +
+                         std::to_string(item) + ": the line ends before property '" +
+                         shown(property.name) + "' (" + plural(tokens_.size(), "value") +
+                         " on the line)");
+    const std::string_view tok = tokens_[next_++];
     if (type == PlyType::F32 || type == PlyType::F64) return parse_number(tok, where);
     return static_cast<double>(parse_integer(tok, where));
   }
+
+  std::size_t lines_with_extra() const { return lines_with_extra_; }
 
  private:
   double read_binary(PlyType type, const PlyElement& element, long long item) {
@@ -114,11 +135,12 @@ class PlyBody {
   Lines lines_;
   std::vector<std::string_view> tokens_;
   size_t next_ = 0;
+  std::size_t lines_with_extra_ = 0;
 };
 
 }  // namespace
 
-Mesh read_ply(const std::string& path, const std::string& data) {
+Mesh read_ply(const std::string& path, const std::string& data, std::size_t* lines_with_extra) {
   // Header: "ply", "format ...", then element / property / comment lines up to "end_header".
   std::vector<PlyElement> elements;
   std::vector<std::string_view> tok;
@@ -182,16 +204,17 @@ Mesh read_ply(const std::string& path, const std::string& data) {
     // Do not trust the header count for allocation: a corrupt count must not exhaust memory.
     if (is_vertex) mesh.vertices.reserve(std::min<size_t>(e.count, data.size()));
     for (long long i = 0; i < e.count; ++i) {
+      body.begin(e, i);
       Vec3 p = Vec3::Zero();
       for (int j = 0; j < static_cast<int>(e.properties.size()); ++j) {
         const PlyProperty& prop = e.properties[j];
         if (!prop.list) {
-          const double v = body.read(prop.type, e, i);
+          const double v = body.read(prop.type, e, i, prop);
           for (int k = 0; k < 3; ++k)
             if (j == axis_of[k]) p[k] = v;
           continue;
         }
-        const double n = body.read(prop.count_type, e, i);
+        const double n = body.read(prop.count_type, e, i, prop);
         if (!(n >= 0))  // also rejects NaN from a float count type
           bad(path, "negative list length in element '" + shown(e.name) + "' " + std::to_string(i));
         // A float count type can hold any magnitude; past 2^31 entries no file is that long.
@@ -202,7 +225,7 @@ Mesh read_ply(const std::string& path, const std::string& data) {
             is_face && (prop.name == "vertex_indices" || prop.name == "vertex_index");
         face.clear();
         for (long long k = 0; k < static_cast<long long>(n); ++k) {
-          const double idx = body.read(prop.type, e, i);
+          const double idx = body.read(prop.type, e, i, prop);
           if (!indices) continue;
           if (!(idx >= 0 && idx < nv))
             bad(path, "face " + std::to_string(i) + ": vertex index " + format_fixed(idx, 0) +
@@ -221,8 +244,10 @@ Mesh read_ply(const std::string& path, const std::string& data) {
         }
       }
       if (is_vertex) mesh.vertices.push_back(p);
+      body.end();
     }
   }
+  if (lines_with_extra) *lines_with_extra = body.lines_with_extra();
   later_start.push_back(static_cast<int>(later.size()));
   for (std::size_t f = 0; f + 1 < later_start.size(); ++f)
     triangulate_polygon(

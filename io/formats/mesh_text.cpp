@@ -20,7 +20,13 @@ std::string at_line(const std::string& path, int line) {
 }
 
 std::string plural(std::size_t n, const std::string& noun) {
-  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+  if (n == 1) return "1 " + noun;
+  // "copy" -> "copies" (a consonant before the y), "key" -> "keys".
+  const std::size_t k = noun.size();
+  if (k >= 2 && noun[k - 1] == 'y' &&
+      std::string_view("aeiou").find(noun[k - 2]) == std::string_view::npos)
+    return std::to_string(n) + " " + noun.substr(0, k - 1) + "ies";
+  return std::to_string(n) + " " + noun + "s";
 }
 
 std::string shown(std::string_view token) {

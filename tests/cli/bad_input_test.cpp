@@ -60,6 +60,10 @@ struct Inputs {
           "property list uint int vertex_indices\nend_header\n\xff\xff\xff\x7f");
     write(d / "garbled.ply",
           "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar\nend_header\n3 0 1 2\n");
+    write(d / "short_line.ply",  // an ASCII item line with too few values
+          "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+          "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+          "end_header\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n");
     write(d / "continued.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \\\n");
     write(d / "good.csv", "x,y,z,r\n0,0,0,1\n0.5,0,0,1\n");
     write(d / "trunc.csv", "x,y,z,r\n0,0,0,1\n0.5,0,");
@@ -120,11 +124,11 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
   // describe MESH
   for (const char* f : {"missing.stl", "a_dir", "empty.stl", "garbage.stl", "trunc.stl", "nan.obj",
                         "huge.obj", "flat.obj", "twice.obj", "trunc_be.ply", "huge_count.ply",
-                        "long_list.ply", "garbled.ply", "continued.obj"})
+                        "long_list.ply", "garbled.ply", "continued.obj", "short_line.ply"})
     cases.push_back({"describe " + in(f), f, ""});
   // repair MESH -o OUT
   for (const char* f : {"missing.stl", "a_dir", "empty.stl", "garbage.obj", "trunc_be.ply",
-                        "long_list.ply", "nan.obj", "twice.obj"})
+                        "long_list.ply", "nan.obj", "twice.obj", "short_line.ply"})
     cases.push_back({"repair " + in(f) + " -o " + mesh_out, f, mesh_out});
   cases.push_back({"repair " + in("box.stl") + " -o " + in("box.stl"), "would be overwritten", ""});
   cases.push_back({"repair " + in("box.stl") + " -o " + in("out.off"), "out.off", in("out.off")});

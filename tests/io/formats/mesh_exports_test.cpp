@@ -199,6 +199,51 @@ TEST_F(MeshIoTest, AsciiPlyWithTexcoordListsAndColoursEqualsItsBinaryTwins) {
                              {path("t.ply"), "truncated binary PLY", "'face' 5 of 6"});
 }
 
+TEST_F(MeshIoTest, AsciiPlyReadsOneItemPerLineIgnoringUndeclaredTrailingValues) {
+  // VCG writes face lines with more values than its header declares (after the indices and the
+  // texcoord list, ten values where four colour bytes are named): the extra ones are ignored,
+  // counted in one note, and the mesh is its binary twin's.
+  std::string text = cube_ply("ascii");
+  std::string extended;
+  std::size_t lines = 0, at = 0;
+  const std::size_t body = text.find("end_header\n") + 11;
+  extended = text.substr(0, body);
+  for (std::size_t p = body; p < text.size(); p = at + 1) {
+    at = text.find('\n', p);
+    std::string line = text.substr(p, at - p);
+    if (line.rfind("4 ", 0) == 0 && line.size() < 80) line += " 0 0 0 0 0 0", ++lines;
+    extended += line + "\n";
+  }
+  ASSERT_EQ(lines, 6u);
+  write("x.ply", extended);
+  write("b.ply", cube_ply("binary_little_endian"));
+  MeshReadReport report;
+  const Mesh a = read_mesh_raw(path("x.ply"), {}, &report);
+  const Mesh b = read_mesh_raw(path("b.ply"));
+  EXPECT_EQ(a.vertices, b.vertices);
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(report.lines_with_extra_values, 6u);
+  const std::vector<std::string> notes = mesh_read_notes(path("x.ply"), report);
+  EXPECT_EQ(std::count_if(notes.begin(), notes.end(),
+                          [](const std::string& n) {
+                            return n.find("ignored the values at the end of 6 lines") !=
+                                   std::string::npos;
+                          }),
+            1);
+  EXPECT_NE(notes[0].find("merged 16 vertex copies"), std::string::npos) << notes[0];
+  // A line with too few values names the line and the property it ends before.
+  std::string shortened = text;
+  const std::size_t first = shortened.find("end_header\n") + 11;
+  const std::size_t eol = shortened.find('\n', first);
+  shortened.erase(shortened.rfind(' ', eol - 1), eol - shortened.rfind(' ', eol - 1));
+  write("s.ply", shortened);
+  const auto line = std::count(text.begin(), text.begin() + first, '\n') + 1;
+  expect_error<InvalidInput>(
+      [&] { read_mesh_raw(path("s.ply")); },
+      {path("s.ply") + ": line " + std::to_string(line) + ": too few values for element 'vertex' 0",
+       "before property 't'"});
+}
+
 TEST_F(MeshIoTest, WeldToleranceMergesSeamCopiesThatDifferInTheLastDigits) {
   std::string obj = cube_obj();
   // Every coordinate 1 of face 2's corners written as 1.0000000000001: a seam of a sloppy export.
