@@ -1,9 +1,11 @@
 #include "geom/mesh/repair.h"
 
 #include "geom/errors.h"
+#include "geom/format.h"
 #include "geom/mesh/cgal_surface.h"
 
 #include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -15,8 +17,9 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
-#include <set>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace clumpkit {
@@ -25,62 +28,227 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 using cgal_surface::Point;
 using cgal_surface::SurfaceMesh;
 
-RepairReport repair_mesh(Mesh& mesh) {
+namespace {
+
+[[noreturn]] void refuse(const std::string& step, const std::string& what) {
+  throw InvalidInput("repair, step '" + step + "': " + what);
+}
+
+Vec3 vec(const Point& p) {
+  return Vec3(p.x(), p.y(), p.z());
+}
+
+std::string at(const Vec3& p) {
+  return "at (" + format_number(p.x(), 6) + ", " + format_number(p.y(), 6) + ", " +
+         format_number(p.z(), 6) + ")";
+}
+
+Vec3 face_centroid(const SurfaceMesh& sm, SurfaceMesh::Face_index f) {
+  Vec3 c = Vec3::Zero();
+  int n = 0;
+  for (const auto v : CGAL::vertices_around_face(sm.halfedge(f), sm)) c += vec(sm.point(v)), ++n;
+  return c / std::max(n, 1);
+}
+
+// The border halfedges of the hole of `h`, in order.
+std::vector<SurfaceMesh::Halfedge_index> hole_cycle(const SurfaceMesh& sm,
+                                                    SurfaceMesh::Halfedge_index h) {
+  std::vector<SurfaceMesh::Halfedge_index> cycle;
+  for (const auto e : CGAL::halfedges_around_face(h, sm)) cycle.push_back(e);
+  return cycle;
+}
+
+// Whether two faces that CGAL finds intersecting only touch at corners they have at one
+// position (the copies of a split vertex): the triangles shrunk towards their centroids by a
+// millionth no longer meet.
+bool only_touch(const SurfaceMesh& sm, SurfaceMesh::Face_index f, SurfaceMesh::Face_index g) {
+  auto corners = [&](SurfaceMesh::Face_index face) {
+    std::vector<Point> out;
+    for (const auto v : CGAL::vertices_around_face(sm.halfedge(face), sm))
+      out.push_back(sm.point(v));
+    return out;
+  };
+  const std::vector<Point> a = corners(f), b = corners(g);
+  bool shared = false;
+  for (const Point& p : a)
+    for (const Point& q : b) shared = shared || p == q;
+  if (!shared || a.size() != 3 || b.size() != 3) return false;
+  auto shrunk = [](const std::vector<Point>& t) {
+    const Vec3 c = (vec(t[0]) + vec(t[1]) + vec(t[2])) / 3.0;
+    auto in = [&](const Point& p) {
+      const Vec3 x = c + (1.0 - 1e-6) * (vec(p) - c);
+      return Point(x.x(), x.y(), x.z());
+    };
+    return cgal_surface::K::Triangle_3(in(t[0]), in(t[1]), in(t[2]));
+  };
+  return !CGAL::do_intersect(shrunk(a), shrunk(b));
+}
+
+// Step 1: the triangles kept. A triangle's copies are grouped by their corner set; within a
+// group the orientation is the parity of the corners' order.
+std::vector<std::array<int, 3>> drop_duplicates(const Mesh& mesh, RepairReport& r) {
+  std::map<std::array<int, 3>, std::pair<int, int>> copies;  // sorted corners -> (even, odd)
+  auto key_of = [](const std::array<int, 3>& t) {
+    std::array<int, 3> k = t;
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  auto even = [](const std::array<int, 3>& t) {  // t a cyclic rotation of its sorted order
+    const int m = static_cast<int>(std::min_element(t.begin(), t.end()) - t.begin());
+    return t[(m + 1) % 3] < t[(m + 2) % 3];
+  };
+  for (const auto& t : mesh.triangles) {
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
+    auto& c = copies[key_of(t)];
+    (even(t) ? c.first : c.second) += 1;
+  }
+  std::vector<std::array<int, 3>> kept;
+  std::map<std::array<int, 3>, bool> taken;
+  for (const auto& t : mesh.triangles) {
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+      ++r.repeated_vertex_triangles;
+      continue;
+    }
+    const auto key = key_of(t);
+    const auto [e, o] = copies[key];
+    if (e > 0 && o > 0) {
+      ++r.double_wall_triangles;
+      continue;
+    }
+    if (e + o > 1 && taken[key]) {
+      ++r.duplicate_triangles;
+      continue;
+    }
+    if (e + o > 1) taken[key] = true;
+    kept.push_back(t);
+  }
+  return kept;
+}
+
+int nonmanifold_edges(const std::vector<std::array<int, 3>>& triangles) {
+  std::map<std::pair<int, int>, int> uses;
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      ++uses[{std::min(a, b), std::max(a, b)}];
+    }
+  int n = 0;
+  for (const auto& [edge, count] : uses) n += count > 2;
+  return n;
+}
+
+// Step 4: components with fewer faces than `fraction` of the largest one's removed.
+void remove_small_components(SurfaceMesh& sm, double fraction, RepairReport& r) {
+  auto component = sm.add_property_map<SurfaceMesh::Face_index, std::size_t>("f:component").first;
+  const std::size_t count = PMP::connected_components(sm, component);
+  std::vector<std::size_t> faces(count, 0);
+  for (const auto f : sm.faces()) ++faces[component[f]];
+  const std::size_t largest = *std::max_element(faces.begin(), faces.end());
+  std::vector<std::size_t> small;
+  for (std::size_t c = 0; c < count; ++c)
+    if (static_cast<double>(faces[c]) < fraction * static_cast<double>(largest)) {
+      small.push_back(c);
+      ++r.small_components;
+      r.small_component_triangles += static_cast<int>(faces[c]);
+    }
+  if (!small.empty()) PMP::remove_connected_components(sm, small, component);
+  sm.remove_property_map(component);
+  sm.collect_garbage();
+}
+
+// Step 5: one hole closed, by the best method that works.
+RepairHole close_hole(SurfaceMesh& sm, SurfaceMesh::Halfedge_index h) {
+  RepairHole hole;
+  const std::vector<SurfaceMesh::Halfedge_index> cycle = hole_cycle(sm, h);
+  hole.edges = static_cast<int>(cycle.size());
+  for (const auto e : cycle) hole.at += vec(sm.point(sm.target(e)));
+  hole.at /= std::max<double>(1.0, static_cast<double>(cycle.size()));
+  std::vector<SurfaceMesh::Face_index> patch;
+  std::vector<SurfaceMesh::Vertex_index> added;
+  const auto faired = PMP::triangulate_refine_and_fair_hole(sm, h, std::back_inserter(patch),
+                                                            std::back_inserter(added));
+  if (!patch.empty()) {
+    hole.method = std::get<0>(faired) ? "refined and faired" : "refined";
+    return hole;
+  }
+  PMP::triangulate_hole(sm, h, std::back_inserter(patch));
+  if (!patch.empty()) {
+    hole.method = "triangulated";
+    return hole;
+  }
+  // A fan from the boundary's centroid: each border halfedge u -> v gets the face (u, v, c).
+  const SurfaceMesh::Vertex_index c = sm.add_vertex(Point(hole.at.x(), hole.at.y(), hole.at.z()));
+  for (const auto e : cycle)
+    if (sm.add_face(sm.source(e), sm.target(e), c) == SurfaceMesh::null_face())
+      refuse("holes", "a hole of " + std::to_string(hole.edges) +
+                          " edges could not be closed (refined and faired, triangulated, planar "
+                          "cap) " +
+                          at(hole.at));
+  hole.method = "planar cap";
+  return hole;
+}
+
+}  // namespace
+
+RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
+  if (!(options.min_component >= 0.0 && options.min_component <= 1.0))
+    throw InvalidInput("repair: min_component must lie in [0, 1], got " +
+                       format_number(options.min_component));
   RepairReport r;
   {
     const MeshCheck before = check_mesh(mesh);
     r.boundary_edges_before = before.boundary_edges;
     r.volume_before = before.volume;
   }
-  // The soup: triangles with three distinct corners, each vertex triple once.
-  std::vector<std::array<int, 3>> kept;
-  std::set<std::array<int, 3>> seen;
-  for (const auto& t : mesh.triangles) {
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
-      ++r.repeated_vertex_triangles;
-      continue;
-    }
-    std::array<int, 3> key = t;
-    std::sort(key.begin(), key.end());
-    if (!seen.insert(key).second) {
-      ++r.duplicate_triangles;
-      continue;
-    }
-    kept.push_back(t);
-  }
-  if (kept.empty()) throw InvalidInput("repair: no triangle with three distinct corners");
+  const std::vector<std::array<int, 3>> kept = drop_duplicates(mesh, r);
+  if (kept.empty()) refuse("duplicates", "no triangle is left (repeated corners, double walls)");
+
+  r.nonmanifold_edges = nonmanifold_edges(kept);
   cgal_surface::Soup soup = cgal_surface::used_soup(mesh, kept);
   std::vector<Point>& points = soup.points;
   std::vector<std::vector<std::size_t>>& polys = soup.polygons;
   const std::vector<std::vector<std::size_t>> as_read = polys;
+  const std::size_t points_before = points.size();
   PMP::orient_polygon_soup(points, polys);
+  r.split_vertices = static_cast<int>(points.size() - points_before);
+  for (std::size_t k = 0; k < polys.size() && k < as_read.size() && !r.reoriented; ++k)
+    r.reoriented = polys[k] != as_read[k];
   SurfaceMesh sm;
   PMP::polygon_soup_to_polygon_mesh(points, polys, sm);
-  for (std::size_t k = 0; k < polys.size() && !r.reoriented; ++k)
-    r.reoriented = polys[k] != as_read[k];
 
   const std::size_t faces_before = sm.number_of_faces();
   PMP::remove_degenerate_faces(sm);
   sm.collect_garbage();
-  const std::size_t faces_after = sm.number_of_faces();
-  r.degenerate_triangles = static_cast<int>(faces_before - std::min(faces_before, faces_after));
+  r.degenerate_triangles =
+      static_cast<int>(faces_before - std::min<std::size_t>(faces_before, sm.number_of_faces()));
+  if (sm.number_of_faces() == 0) refuse("degenerate", "no triangle is left");
+
+  if (options.min_component > 0.0) remove_small_components(sm, options.min_component, r);
 
   std::vector<SurfaceMesh::Halfedge_index> holes;
   PMP::extract_boundary_cycles(sm, std::back_inserter(holes));
-  for (SurfaceMesh::Halfedge_index h : holes) {
-    std::vector<SurfaceMesh::Face_index> patch;
-    std::vector<SurfaceMesh::Vertex_index> added;
-    const auto result = PMP::triangulate_refine_and_fair_hole(sm, h, std::back_inserter(patch),
-                                                              std::back_inserter(added));
-    if (!std::get<0>(result) && patch.empty())
-      throw InvalidInput("repair: a hole of the mesh could not be closed");
+  for (const SurfaceMesh::Halfedge_index h : holes) {
+    r.closed_holes.push_back(close_hole(sm, h));
     ++r.holes;
   }
-  if (!CGAL::is_closed(sm)) throw InvalidInput("repair: the mesh could not be closed");
-  if (PMP::does_self_intersect(sm))
-    throw InvalidInput(
-        "repair: the closed surface intersects itself, so it bounds no volume (its shells cross, "
-        "or a hole's patch crosses the surface)");
+  for (const auto h : sm.halfedges())
+    if (sm.is_border(h))
+      refuse("holes", "the surface is still open " + at(vec(sm.point(sm.target(h)))));
+
+  std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> crossing;
+  PMP::self_intersections(sm, std::back_inserter(crossing));
+  // Faces of the shells split at a non-manifold edge or vertex touch there without crossing.
+  crossing.erase(
+      std::remove_if(crossing.begin(), crossing.end(),
+                     [&](const auto& pair) { return only_touch(sm, pair.first, pair.second); }),
+      crossing.end());
+  if (!crossing.empty())
+    refuse("self-intersection check",
+           "the closed surface intersects itself, so it bounds no volume (" +
+               std::to_string(crossing.size()) +
+               " pairs of faces cross: shells through each other, a fold, or a hole's patch "
+               "through the surface); first " +
+               at(face_centroid(sm, crossing.front().first)));
   PMP::orient_to_bound_a_volume(sm);
   sm.collect_garbage();
   mesh = cgal_surface::from_surface_mesh(sm);
@@ -89,8 +257,8 @@ RepairReport repair_mesh(Mesh& mesh) {
   r.volume_after = after.volume;
   const auto box = bounding_box(mesh);
   if (!(r.volume_after > 1e-12 * std::pow((box[1] - box[0]).norm(), 3)))
-    throw InvalidInput("repair: the closed surface encloses no volume (signed volume " +
-                       std::to_string(r.volume_after) + ")");
+    refuse("orientation", "the closed surface encloses no volume (signed volume " +
+                              format_number(r.volume_after) + ")");
   return r;
 }
 

@@ -6,7 +6,7 @@
 namespace clumpkit {
 
 RepairJobResult run_repair_job(const std::string& path, const std::string& out,
-                               const MeshReadOptions& options) {
+                               const MeshReadOptions& options, const RepairOptions& repair) {
   check_not_input(out, "--output", path);
   mesh_format_from_path(out);  // an unknown extension is refused before the work
   RepairJobResult r;
@@ -16,7 +16,7 @@ RepairJobResult run_repair_job(const std::string& path, const std::string& out,
       throw InvalidInput(path + ": vertex " + std::to_string(i) +
                          " (counting from 0) has a coordinate that is not finite");
   try {
-    r.repair = repair_mesh(mesh);
+    r.repair = repair_mesh(mesh, repair);
   } catch (const InvalidInput& e) {
     throw InvalidInput(path + ": " + e.what());
   }
@@ -33,8 +33,18 @@ RepairJobResult run_repair_job(const std::string& path, const std::string& out,
   j["repeated_vertex_triangles"] =
       r.repair.repeated_vertex_triangles + static_cast<int>(r.read.removed_triangles);
   j["duplicate_triangles"] = r.repair.duplicate_triangles;
+  j["double_wall_triangles"] = r.repair.double_wall_triangles;
+  j["nonmanifold_edges"] = r.repair.nonmanifold_edges;
+  j["split_vertices"] = r.repair.split_vertices;
   j["degenerate_triangles"] = r.repair.degenerate_triangles;
+  j["small_components"] = r.repair.small_components;
+  j["small_component_triangles"] = r.repair.small_component_triangles;
   j["holes"] = r.repair.holes;
+  nlohmann::ordered_json holes = nlohmann::ordered_json::array();
+  for (const RepairHole& h : r.repair.closed_holes)
+    holes.push_back(
+        {{"edges", h.edges}, {"method", h.method}, {"at", {h.at.x(), h.at.y(), h.at.z()}}});
+  j["closed_holes"] = holes;
   j["reoriented"] = r.repair.reoriented;
   j["triangles"] = r.triangles;
   return r;

@@ -22,9 +22,12 @@ struct RepairJobResult {
 /// writes the solid to `out` (.stl, .obj or .ply), which must not be the input. Throws
 /// InvalidInput naming the input for what cannot be repaired (nothing is written then), and
 /// what read_mesh_raw and write_mesh throw. The report: input, output, merged_vertices,
-/// boundary_edges_before/after, volume_before/after, repeated_vertex_triangles,
-/// duplicate_triangles, degenerate_triangles, holes, reoriented, triangles.
+/// boundary_edges_before/after, volume_before/after, then per step of repair_mesh
+/// repeated_vertex_triangles, duplicate_triangles, double_wall_triangles, nonmanifold_edges,
+/// split_vertices, degenerate_triangles, small_components, small_component_triangles, holes
+/// (count) and closed_holes (edges, method, at), reoriented; and triangles.
 RepairJobResult run_repair_job(const std::string& mesh, const std::string& out,
-                               const MeshReadOptions& options = {});
+                               const MeshReadOptions& options = {},
+                               const RepairOptions& repair = {});
 
 }  // namespace clumpkit
