@@ -3,6 +3,7 @@
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "geom/mesh/cgal_surface.h"
+#include "geom/mesh/weld.h"
 
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -234,6 +235,18 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   for (const auto h : sm.halfedges())
     if (sm.is_border(h))
       refuse("holes", "the surface is still open " + at(vec(sm.point(sm.target(h)))));
+  // Holes that met at a split vertex were closed as one boundary through both copies: welded
+  // again, the copies' zero-length edges vanish and the vertex is whole, when that leaves a
+  // closed manifold; lobes that only touch (a bow-tie, cubes on an edge) stay split.
+  if (r.split_vertices > 0) {
+    Mesh welded = cgal_surface::from_surface_mesh(sm);
+    weld_vertices(welded);
+    const MeshCheck c = check_mesh(welded);
+    if (c.closed && c.manifold) {
+      sm = cgal_surface::to_surface_mesh(welded);
+      r.rejoined_vertices = r.split_vertices;
+    }
+  }
 
   std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> crossing;
   PMP::self_intersections(sm, std::back_inserter(crossing));

@@ -38,6 +38,9 @@ struct RepairReport {
   // non-manifold
   int nonmanifold_edges = 0;  ///< edges shared by more than two triangles (before the split)
   int split_vertices = 0;     ///< vertices duplicated to split non-manifold edges and vertices
+  /// Split vertices welded again after the holes were closed (holes that met at a vertex), when
+  /// that leaves a closed manifold surface.
+  int rejoined_vertices = 0;
   // degenerate
   int degenerate_triangles = 0;  ///< zero-area triangles collapsed away (CGAL)
   // small components
@@ -62,7 +65,8 @@ struct RepairReport {
 ///  4. small components: components with fewer triangles than options.min_component of the
 ///     largest one's removed (fins, loose triangles, floating debris);
 ///  5. holes: each boundary cycle closed by triangulate_refine_and_fair_hole, falling back to
-///     triangulate_hole and then to a planar cap (a fan from the boundary's centroid);
+///     triangulate_hole and then to a planar cap (a fan from the boundary's centroid); split
+///     vertices welded again when that leaves a closed manifold (holes that met at a vertex);
 ///  6. orientation: orient_to_bound_a_volume;
 ///  7. self-intersection check.
 /// Throws InvalidInput with one line "repair, step '<step>': <what> [at (x, y, z)]" naming the

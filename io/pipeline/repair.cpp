@@ -36,6 +36,7 @@ RepairJobResult run_repair_job(const std::string& path, const std::string& out,
   j["double_wall_triangles"] = r.repair.double_wall_triangles;
   j["nonmanifold_edges"] = r.repair.nonmanifold_edges;
   j["split_vertices"] = r.repair.split_vertices;
+  j["rejoined_vertices"] = r.repair.rejoined_vertices;
   j["degenerate_triangles"] = r.repair.degenerate_triangles;
   j["small_components"] = r.repair.small_components;
   j["small_component_triangles"] = r.repair.small_component_triangles;

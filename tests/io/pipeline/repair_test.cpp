@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -37,7 +38,82 @@ Mesh holed_sphere() {
   return m;
 }
 
+// Triangles within k vertex steps of vertex v (k = 1: its fan).
+std::set<int> k_ring(const Mesh& m, int v, int k) {
+  std::set<int> near = {v}, tris;
+  for (int step = 0; step < k; ++step) {
+    tris.clear();
+    for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t)
+      for (int c : m.triangles[t])
+        if (near.count(c)) tris.insert(t);
+    if (step + 1 < k)
+      for (int t : tris)
+        for (int c : m.triangles[t]) near.insert(c);
+  }
+  return tris;
+}
+
+// A scan as public ones come: an icosphere of 20,480 triangles with 7 holes in its base (1- to
+// 6-rings: 5 to 36 edges), 80 triangles present in both orientations (a double wall) and 5
+// present twice in the same one.
+Mesh scanned_sphere() {
+  Mesh m = make_icosphere(5);
+  std::vector<int> bases;
+  for (int v = 0; v < static_cast<int>(m.vertices.size()) && bases.size() < 7; ++v) {
+    if (m.vertices[v].z() > -0.3) continue;
+    bool apart = true;
+    for (int b : bases) apart = apart && (m.vertices[v] - m.vertices[b]).norm() > 0.5;
+    if (apart) bases.push_back(v);
+  }
+  std::set<int> gone;
+  const int rings[7] = {1, 1, 2, 3, 4, 5, 6};  // 5 or 6 edges a ring step
+  for (std::size_t h = 0; h < bases.size(); ++h) {
+    const std::set<int> r = k_ring(m, bases[h], rings[h]);
+    gone.insert(r.begin(), r.end());
+  }
+  std::vector<std::array<int, 3>> kept;
+  for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t)
+    if (!gone.count(t)) kept.push_back(m.triangles[t]);
+  const std::size_t n = kept.size();
+  int walls = 0;
+  for (std::size_t t = 0; t < n && walls < 80; t += 97)
+    if (m.vertices[kept[t][0]].z() > 0.0)
+      kept.push_back({kept[t][0], kept[t][2], kept[t][1]}), ++walls;
+  for (std::size_t t = 50; t < n && t < 50 + 5 * 211; t += 211) kept.push_back(kept[t]);
+  m.triangles = kept;
+  return m;
+}
+
 }  // namespace
+
+TEST(RepairJob, AScannedSphereWithBaseHolesAndDoubleWallsClosesAndFillsWithinTheContract) {
+  const fs::path d = scratch("scan");
+  const Mesh whole = make_icosphere(5);
+  write_mesh((d / "scan.ply").string(), scanned_sphere());
+  const RepairJobResult r = run_repair_job((d / "scan.ply").string(), (d / "closed.ply").string());
+  EXPECT_EQ(r.repair.double_wall_triangles, 160);
+  EXPECT_EQ(r.repair.duplicate_triangles, 5);
+  EXPECT_EQ(r.repair.boundary_edges_after, 0);
+  int base = 0, largest = 0;  // the 7 base holes (the walls leave holes of 3 edges)
+  for (const RepairHole& h : r.repair.closed_holes)
+    if (h.edges > 4) ++base, largest = std::max(largest, h.edges);
+  EXPECT_EQ(base, 7);
+  EXPECT_GE(largest, 30);
+  EXPECT_LE(largest, 40);
+  EXPECT_NEAR(r.repair.volume_after / signed_volume(whole), 1.0, 0.01);
+  FillJobOptions fill;
+  fill.mesh = (d / "closed.ply").string();
+  fill.out = (d / "clump.csv").string();
+  fill.fill.spheres = 50;
+  const FillJobResult f = run_fill_job(
+      fill, [](const std::string&) {}, [](const std::string&) {});
+  EXPECT_EQ(f.report["inside_outside"], "ray parity along the grid rows (watertight mesh)");
+  EXPECT_LE(f.fidelity.overshoot_fraction, fill.fill.max_overshoot);
+  // A ball is one sphere to the fill (budget 50): the repaired base holds nothing outside it.
+  EXPECT_GE(f.fill.clump.spheres.size(), 1u);
+  EXPECT_LE(f.fill.clump.spheres.size(), 50u);
+  EXPECT_GT(f.fidelity.covered_fraction, 0.9);
+}
 
 TEST(RepairJob, ASphereWithThreeHolesClosesWithinOnePercentAndFillsAsAWatertightSolid) {
   const fs::path d = scratch("sphere");
