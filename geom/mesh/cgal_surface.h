@@ -6,8 +6,13 @@
 #include "geom/mesh/mesh.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/centroid.h>
 
+#include <algorithm>
+#include <iterator>
+#include <utility>
 #include <vector>
 
 namespace clumpkit::cgal_surface {
@@ -93,6 +98,43 @@ inline Mesh from_surface_mesh(const SurfaceMesh& sm) {
     mesh.triangles.push_back(t);
   }
   return mesh;
+}
+
+/// Whether two faces that CGAL finds intersecting only touch at corners they have at one
+/// position (the copies of a vertex split between two shells): shrunk towards their centroids by
+/// a millionth, the triangles no longer meet.
+inline bool faces_only_touch(const SurfaceMesh& sm, SurfaceMesh::Face_index f,
+                             SurfaceMesh::Face_index g) {
+  auto corners = [&](SurfaceMesh::Face_index face) {
+    std::vector<Point> out;
+    for (const auto v : CGAL::vertices_around_face(sm.halfedge(face), sm))
+      out.push_back(sm.point(v));
+    return out;
+  };
+  const std::vector<Point> a = corners(f), b = corners(g);
+  bool shared = false;
+  for (const Point& p : a)
+    for (const Point& q : b) shared = shared || p == q;
+  if (!shared || a.size() != 3 || b.size() != 3) return false;
+  auto shrunk = [](const std::vector<Point>& t) {
+    const Point c = CGAL::centroid(t[0], t[1], t[2]);
+    auto in = [&](const Point& p) { return c + (1.0 - 1e-6) * (p - c); };
+    return K::Triangle_3(in(t[0]), in(t[1]), in(t[2]));
+  };
+  return CGAL::do_intersect(shrunk(a), shrunk(b)) == false;
+}
+
+/// The pairs of faces of `sm` that cross (CGAL PMP self_intersections), less those that only
+/// touch at a shared corner position (faces_only_touch).
+inline std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> crossing_faces(
+    const SurfaceMesh& sm) {
+  std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> pairs;
+  CGAL::Polygon_mesh_processing::self_intersections(sm, std::back_inserter(pairs));
+  pairs.erase(
+      std::remove_if(pairs.begin(), pairs.end(),
+                     [&](const auto& fg) { return faces_only_touch(sm, fg.first, fg.second); }),
+      pairs.end());
+  return pairs;
 }
 
 }  // namespace clumpkit::cgal_surface

@@ -59,32 +59,6 @@ std::vector<SurfaceMesh::Halfedge_index> hole_cycle(const SurfaceMesh& sm,
   return cycle;
 }
 
-// Whether two faces that CGAL finds intersecting only touch at corners they have at one
-// position (the copies of a split vertex): the triangles shrunk towards their centroids by a
-// millionth no longer meet.
-bool only_touch(const SurfaceMesh& sm, SurfaceMesh::Face_index f, SurfaceMesh::Face_index g) {
-  auto corners = [&](SurfaceMesh::Face_index face) {
-    std::vector<Point> out;
-    for (const auto v : CGAL::vertices_around_face(sm.halfedge(face), sm))
-      out.push_back(sm.point(v));
-    return out;
-  };
-  const std::vector<Point> a = corners(f), b = corners(g);
-  bool shared = false;
-  for (const Point& p : a)
-    for (const Point& q : b) shared = shared || p == q;
-  if (!shared || a.size() != 3 || b.size() != 3) return false;
-  auto shrunk = [](const std::vector<Point>& t) {
-    const Vec3 c = (vec(t[0]) + vec(t[1]) + vec(t[2])) / 3.0;
-    auto in = [&](const Point& p) {
-      const Vec3 x = c + (1.0 - 1e-6) * (vec(p) - c);
-      return Point(x.x(), x.y(), x.z());
-    };
-    return cgal_surface::K::Triangle_3(in(t[0]), in(t[1]), in(t[2]));
-  };
-  return !CGAL::do_intersect(shrunk(a), shrunk(b));
-}
-
 // Step 1: the triangles kept. A triangle's copies are grouped by their corner set; within a
 // group the orientation is the parity of the corners' order.
 std::vector<std::array<int, 3>> drop_duplicates(const Mesh& mesh, RepairReport& r) {
@@ -248,13 +222,8 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
     }
   }
 
-  std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> crossing;
-  PMP::self_intersections(sm, std::back_inserter(crossing));
   // Faces of the shells split at a non-manifold edge or vertex touch there without crossing.
-  crossing.erase(
-      std::remove_if(crossing.begin(), crossing.end(),
-                     [&](const auto& pair) { return only_touch(sm, pair.first, pair.second); }),
-      crossing.end());
+  const auto crossing = cgal_surface::crossing_faces(sm);
   if (!crossing.empty())
     refuse("self-intersection check",
            "the closed surface intersects itself, so it bounds no volume (" +
@@ -273,6 +242,23 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
     refuse("orientation", "the closed surface encloses no volume (signed volume " +
                               format_number(r.volume_after) + ")");
   return r;
+}
+
+std::size_t split_nonmanifold(Mesh& mesh) {
+  const std::vector<std::array<int, 3>> all = mesh.triangles;
+  cgal_surface::Soup soup = cgal_surface::used_soup(mesh, all);
+  const std::size_t before = soup.points.size();
+  PMP::orient_polygon_soup(soup.points, soup.polygons);
+  const std::size_t added = soup.points.size() - before;
+  Mesh out;
+  for (const Point& p : soup.points) out.vertices.push_back(vec(p));
+  for (const auto& poly : soup.polygons) {
+    if (poly.size() != 3) throw NumericError("CGAL produced a polygon that is not a triangle");
+    out.triangles.push_back(
+        {static_cast<int>(poly[0]), static_cast<int>(poly[1]), static_cast<int>(poly[2])});
+  }
+  mesh = std::move(out);
+  return added;
 }
 
 std::size_t collapse_degenerate_triangles(Mesh& mesh) {

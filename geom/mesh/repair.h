@@ -74,6 +74,13 @@ struct RepairReport {
 /// the surface intersecting itself (the first pair of faces), or no enclosed volume.
 RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options = {});
 
+/// Splits each edge shared by more than two triangles, and each vertex where separate fans meet,
+/// by duplicating its vertices (CGAL PMP orient_polygon_soup, which also orients each piece
+/// consistently): closed lobes that touch along an edge or at a vertex become separate shells
+/// (copies of the vertices at one position). Unused vertices are dropped. Returns the number of
+/// vertices added.
+std::size_t split_nonmanifold(Mesh& mesh);
+
 /// Collapses the zero-area triangles of a manifold mesh (CGAL PMP remove_degenerate_faces:
 /// edge collapses and flips, which keep a closed mesh closed); returns how many triangles fewer
 /// the mesh has. Throws InvalidInput when the triangles are not a manifold surface or some

@@ -139,9 +139,20 @@ bool orient_shells(Mesh& mesh, std::size_t* count) {
                          " could not be tested for crossing: " + e.what());
     }
   };
+  // Shells that meet only at corners they have at one position (lobes touching along an edge or
+  // at a vertex, split apart on reading) overlap nowhere: their volumes add.
+  const auto only_touch = [&](std::size_t i, std::size_t j) {
+    std::vector<int> both = shells[i].triangles;
+    both.insert(both.end(), shells[j].triangles.begin(), shells[j].triangles.end());
+    const SurfaceMesh pair = cgal_surface::to_surface_mesh(mesh, &both);
+    const std::size_t first_of_j = shells[i].triangles.size();
+    for (const auto& [f, g] : cgal_surface::crossing_faces(pair))
+      if ((f.idx() < first_of_j) != (g.idx() < first_of_j)) return false;
+    return true;
+  };
   for (std::size_t i = 0; i < shells.size(); ++i)
     for (std::size_t j = i + 1; j < shells.size(); ++j)
-      if (boxes_overlap(boxes[i], boxes[j]) && cross(i, j))
+      if (boxes_overlap(boxes[i], boxes[j]) && cross(i, j) && !only_touch(i, j))
         throw InvalidInput(name(i) + " and shell " + std::to_string(j + 1) +
                            " cross or touch each other, so their overlap would count twice; "
                            "unite them into one closed surface first");

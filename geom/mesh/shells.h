@@ -32,8 +32,9 @@ double winding_number(const Mesh& mesh, const std::vector<int>& triangles, const
 /// island), and so on. Shells at depth 0 that face inward are flipped (returns true when any
 /// was); `shells` (if given) receives their number. Throws InvalidInput, naming the shells
 /// (counting from 1, in file order), for two shells whose surfaces cross or touch (CGAL PMP
-/// do_intersect; their overlap would count twice) and for a nested shell that faces the same way as
-/// its parent (a solid inside a solid).
+/// do_intersect; their overlap would count twice) other than at corners they have at one
+/// position (lobes touching along an edge or at a vertex overlap nowhere: their volumes add) and
+/// for a nested shell that faces the same way as its parent (a solid inside a solid).
 bool orient_shells(Mesh& mesh, std::size_t* shells = nullptr);
 
 }  // namespace clumpkit

@@ -122,6 +122,24 @@ void validate_solid(Mesh& mesh, const std::string& path, MeshReadReport* report)
     check = check_mesh(mesh);
   }
   if (check.degenerate) bad(path, "mesh has a degenerate triangle (zero area or repeated vertex)");
+  // Closed lobes that touch along an edge or at a vertex bound a volume: split apart, they are
+  // touching shells (orient_shells adds their volumes; the inside test is the same).
+  if (check.boundary_edges == 0 && (check.nonmanifold_edges > 0 || !check.manifold)) {
+    Mesh split = mesh;
+    std::size_t added = 0;
+    try {
+      added = split_nonmanifold(split);
+    } catch (const std::exception&) {
+      added = 0;  // refused below as non-manifold
+    }
+    const MeshCheck c = check_mesh(split);
+    if (added > 0 && c.boundary_edges == 0 && c.nonmanifold_edges == 0 && c.manifold &&
+        !c.degenerate) {
+      mesh = std::move(split);
+      check = c;
+      read.split_vertices = added;
+    }
+  }
   if (check.boundary_edges > 0)
     bad(path, "mesh is open: " + plural(check.boundary_edges, "boundary edge") +
                   " (fill it anyway with `clumpkit fill --allow-open`, or close it with "
@@ -129,8 +147,14 @@ void validate_solid(Mesh& mesh, const std::string& path, MeshReadReport* report)
                   path + " -o CLOSED.stl`)");
   if (check.nonmanifold_edges > 0)
     bad(path, "mesh is not manifold: " + plural(check.nonmanifold_edges, "edge") +
-                  " shared by more than two triangles");
-  if (!check.manifold) bad(path, "mesh is not manifold: a vertex joins separate surface sheets");
+                  " shared by more than two triangles, and split there it is not closed lobes "
+                  "(`clumpkit repair " +
+                  path + " -o CLOSED.stl` removes fins and debris and closes what is left)");
+  if (!check.manifold)
+    bad(path,
+        "mesh is not manifold: a vertex joins separate surface sheets that do not close when "
+        "split (`clumpkit repair " +
+            path + " -o CLOSED.stl`)");
   bool reoriented = false;
   try {
     if (!check.oriented || check.volume < 0) reoriented = orient_outward(mesh);
@@ -163,6 +187,12 @@ std::vector<std::string> mesh_read_notes(const std::string& path, const MeshRead
     notes.push_back(path + ": ignored the values at the end of " +
                     plural(r.lines_with_extra_values, "line") +
                     " beyond those the PLY header declares");
+  if (r.split_vertices > 0)
+    notes.push_back(path +
+                    ": closed lobes touch along an edge or at a vertex; read as touching "
+                    "shells (" +
+                    std::to_string(r.split_vertices) +
+                    (r.split_vertices == 1 ? " vertex" : " vertices") + " split)");
   if (r.reoriented)
     notes.push_back(path + ": triangles were not consistently outward; re-oriented");
   if (r.shells > 1)

@@ -34,6 +34,9 @@ struct MeshReadReport {
   std::size_t shells = 1;             ///< closed shells of the solid
   /// ASCII PLY lines with more values than the header declares for their element (ignored).
   std::size_t lines_with_extra_values = 0;
+  /// Vertices duplicated where closed lobes touch along an edge or at a vertex (edges of more
+  /// than two triangles, pinched fans): the lobes are read as touching shells.
+  std::size_t split_vertices = 0;
 };
 
 /// Read without topological validation, format chosen by the extension, then welded
@@ -66,7 +69,10 @@ Mesh read_mesh_raw(const std::string& path, const MeshReadOptions& options = {},
 /// (line and token), index out of range, non-finite coordinate, no triangles, a degenerate
 /// triangle that cannot be removed, open mesh (number of boundary edges, and the two ways out:
 /// `fill --allow-open` and `clumpkit repair`), non-manifold mesh (number of edges shared by more
-/// than two triangles), shells that cross or nest the wrong way (orient_shells), and
+/// than two triangles) unless splitting those edges and pinched vertices (split_nonmanifold)
+/// leaves closed lobes that only touch (read as touching shells, their volumes added; the
+/// split is counted in `report->split_vertices`), shells that cross or nest the wrong way
+/// (orient_shells), and
 /// non-positive enclosed volume. A closed manifold mesh that is inconsistently oriented or faces
 /// inward is re-oriented with orient_outward() and `report->reoriented` is set.
 Mesh read_mesh(const std::string& path, MeshReadReport* report = nullptr,

@@ -107,6 +107,24 @@ struct Inputs {
           "v 0.3 0.3 0.3\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
           "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 4 8 7\nf 4 7 3\nf 1 5 8\n"
           "f 1 8 4\nf 2 3 7\nf 2 7 6\n");
+    // Two closed unit cubes through each other: `repair` closes nothing and its final check
+    // finds the surface crossing itself.
+    std::string crossing;
+    for (const char* shift : {"0", "0.5"}) {
+      const double o = std::stod(shift);
+      for (int v = 0; v < 8; ++v)
+        crossing += "v " + std::to_string((v & 1) + o) + " " + std::to_string(((v >> 1) & 1) + o) +
+                    " " + std::to_string(((v >> 2) & 1) + o) + "\n";
+    }
+    for (int base : {0, 8}) {
+      const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                               {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+      for (const auto& q : quads)
+        crossing += "f " + std::to_string(base + q[0] + 1) + " " + std::to_string(base + q[1] + 1) +
+                    " " + std::to_string(base + q[2] + 1) + " " + std::to_string(base + q[3] + 1) +
+                    "\n";
+    }
+    write(d / "crossing.obj", crossing);
     write(d / "parent_file", "a file, not a directory\n");
     fs::create_directories(d / "a_dir");
   }
@@ -130,6 +148,8 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
   for (const char* f : {"missing.stl", "a_dir", "empty.stl", "garbage.obj", "trunc_be.ply",
                         "long_list.ply", "nan.obj", "twice.obj", "short_line.ply"})
     cases.push_back({"repair " + in(f) + " -o " + mesh_out, f, mesh_out});
+  cases.push_back({"repair " + in("crossing.obj") + " -o " + mesh_out,
+                   "step 'self-intersection check'", mesh_out});
   cases.push_back({"repair " + in("box.stl") + " -o " + in("box.stl"), "would be overwritten", ""});
   cases.push_back({"repair " + in("box.stl") + " -o " + in("out.off"), "out.off", in("out.off")});
   cases.push_back({"describe " + in("box.stl") + " --weld-tolerance -1", "-1", ""});

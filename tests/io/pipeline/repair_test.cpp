@@ -115,6 +115,31 @@ TEST(RepairJob, AScannedSphereWithBaseHolesAndDoubleWallsClosesAndFillsWithinThe
   EXPECT_GT(f.fidelity.covered_fraction, 0.9);
 }
 
+TEST(RepairJob, CubesTouchingAlongAnEdgeAreTwoShellsForRepairReadAndFill) {
+  const fs::path d = scratch("lobes");
+  Mesh two = make_box(Vec3(1, 1, 1));
+  Mesh other = make_box(Vec3(1, 1, 1));
+  transform(other, Mat3::Identity(), Vec3(1, 1, 0));
+  append_mesh(two, other);
+  write_mesh((d / "lobes.obj").string(), two);  // read back welded: 4 triangles at one edge
+  MeshReadReport report;
+  EXPECT_NEAR(signed_volume(read_mesh((d / "lobes.obj").string(), &report)), 2.0, 1e-12);
+  EXPECT_EQ(report.shells, 2u);
+  EXPECT_EQ(report.split_vertices, 2u);
+  const RepairJobResult r = run_repair_job((d / "lobes.obj").string(), (d / "out.obj").string());
+  EXPECT_EQ(r.repair.nonmanifold_edges, 1);
+  EXPECT_NEAR(signed_volume(read_mesh((d / "out.obj").string())), 2.0, 1e-12);
+  FillJobOptions fill;
+  fill.mesh = (d / "lobes.obj").string();
+  fill.out = (d / "clump.csv").string();
+  fill.fill.spheres = 20;
+  const FillJobResult f = run_fill_job(
+      fill, [](const std::string&) {}, [](const std::string&) {});
+  EXPECT_LE(f.fidelity.overshoot_fraction, fill.fill.max_overshoot);
+  EXPECT_NEAR(f.fidelity.mesh_volume, 2.0, 1e-9);
+  EXPECT_GT(f.fidelity.covered_fraction, 0.5);
+}
+
 TEST(RepairJob, ASphereWithThreeHolesClosesWithinOnePercentAndFillsAsAWatertightSolid) {
   const fs::path d = scratch("sphere");
   const Mesh whole = make_icosphere(3);
