@@ -392,6 +392,7 @@ void World::restore(ListState lists, std::vector<PairContact> contacts,
   wall_contacts_ = std::move(wall_contacts);
   StepCache& sc = cache_.get();
   sc.pairs_valid_ = sc.walls_valid_ = false;
+  std::vector<PairHistory>().swap(sc.pending_);  // the lists given here are the whole history
   update_sphere_positions();
 }
 
