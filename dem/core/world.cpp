@@ -278,8 +278,7 @@ void World::step(int count) {
   for (int s = 0; s < count; ++s) {
     if (options_.sort_every > 0 && steps_ % options_.sort_every == 0) {
       // The sort reads and renumbers the persistent state: bring it up to date first.
-      store_bodies();
-      if (sc.pairs_valid_) export_pairs();
+      store_bodies();  // sort_bodies() hands the slots' history to the lists itself
       if (sc.walls_valid_) export_walls();
       if (sort_bodies()) {
         load_bodies();

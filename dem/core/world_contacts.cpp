@@ -115,9 +115,9 @@ void World::pack_contacts() {
   release_contacts();
 }
 
+// The slots from the packed history (step() packs the lists before the grid search).
 void World::import_pairs() {
   StepCache& sc = cache_.get();
-  pack_contacts();
   sc.contacts_fresh_ = false;  // candidates no longer in reach drop their history
   sc.slot_force_.resize(candidates_.size());
   sc.slot_active_.assign(candidates_.size(), 0);

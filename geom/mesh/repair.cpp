@@ -62,7 +62,11 @@ std::vector<SurfaceMesh::Halfedge_index> hole_cycle(const SurfaceMesh& sm,
 // Step 1: the triangles kept. A triangle's copies are grouped by their corner set; within a
 // group the orientation is the parity of the corners' order.
 std::vector<std::array<int, 3>> drop_duplicates(const Mesh& mesh, RepairReport& r) {
-  std::map<std::array<int, 3>, std::pair<int, int>> copies;  // sorted corners -> (even, odd)
+  struct Copies {
+    int even = 0, odd = 0;
+    bool kept = false;
+  };
+  std::map<std::array<int, 3>, Copies> copies;  // by sorted corners
   auto key_of = [](const std::array<int, 3>& t) {
     std::array<int, 3> k = t;
     std::sort(k.begin(), k.end());
@@ -72,44 +76,25 @@ std::vector<std::array<int, 3>> drop_duplicates(const Mesh& mesh, RepairReport& 
     const int m = static_cast<int>(std::min_element(t.begin(), t.end()) - t.begin());
     return t[(m + 1) % 3] < t[(m + 2) % 3];
   };
-  for (const auto& t : mesh.triangles) {
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
-    auto& c = copies[key_of(t)];
-    (even(t) ? c.first : c.second) += 1;
-  }
+  auto repeated = [](const std::array<int, 3>& t) {
+    return t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+  };
+  for (const auto& t : mesh.triangles)
+    if (!repeated(t)) ++(even(t) ? copies[key_of(t)].even : copies[key_of(t)].odd);
   std::vector<std::array<int, 3>> kept;
-  std::map<std::array<int, 3>, bool> taken;
   for (const auto& t : mesh.triangles) {
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+    if (repeated(t)) {
       ++r.repeated_vertex_triangles;
-      continue;
-    }
-    const auto key = key_of(t);
-    const auto [e, o] = copies[key];
-    if (e > 0 && o > 0) {
+    } else if (Copies& c = copies[key_of(t)]; c.even > 0 && c.odd > 0) {
       ++r.double_wall_triangles;
-      continue;
-    }
-    if (e + o > 1 && taken[key]) {
+    } else if (c.kept) {
       ++r.duplicate_triangles;
-      continue;
+    } else {
+      c.kept = true;
+      kept.push_back(t);
     }
-    if (e + o > 1) taken[key] = true;
-    kept.push_back(t);
   }
   return kept;
-}
-
-int nonmanifold_edges(const std::vector<std::array<int, 3>>& triangles) {
-  std::map<std::pair<int, int>, int> uses;
-  for (const auto& t : triangles)
-    for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3];
-      ++uses[{std::min(a, b), std::max(a, b)}];
-    }
-  int n = 0;
-  for (const auto& [edge, count] : uses) n += count > 2;
-  return n;
 }
 
 // Step 4: components with fewer faces than `fraction` of the largest one's removed.
@@ -178,7 +163,7 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   const std::vector<std::array<int, 3>> kept = drop_duplicates(mesh, r);
   if (kept.empty()) refuse("duplicates", "no triangle is left (repeated corners, double walls)");
 
-  r.nonmanifold_edges = nonmanifold_edges(kept);
+  r.nonmanifold_edges = check_mesh(Mesh{mesh.vertices, kept}).nonmanifold_edges;
   cgal_surface::Soup soup = cgal_surface::used_soup(mesh, kept);
   std::vector<Point>& points = soup.points;
   std::vector<std::vector<std::size_t>>& polys = soup.polygons;

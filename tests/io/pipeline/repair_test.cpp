@@ -27,6 +27,15 @@ fs::path scratch(const std::string& name) {
   return d;
 }
 
+// The fill job's options for `mesh` to `out` with a budget of `spheres`, the rest at defaults.
+FillJobOptions fill_options(const fs::path& mesh, const fs::path& out, int spheres) {
+  FillJobOptions fill;
+  fill.mesh = mesh.string();
+  fill.out = out.string();
+  fill.fill.spheres = spheres;
+  return fill;
+}
+
 // The icosphere of level 3 without the triangles around three of its vertices: three holes.
 Mesh holed_sphere() {
   Mesh m = make_icosphere(3);
@@ -101,10 +110,7 @@ TEST(RepairJob, AScannedSphereWithBaseHolesAndDoubleWallsClosesAndFillsWithinThe
   EXPECT_GE(largest, 30);
   EXPECT_LE(largest, 40);
   EXPECT_NEAR(r.repair.volume_after / signed_volume(whole), 1.0, 0.01);
-  FillJobOptions fill;
-  fill.mesh = (d / "closed.ply").string();
-  fill.out = (d / "clump.csv").string();
-  fill.fill.spheres = 50;
+  const FillJobOptions fill = fill_options(d / "closed.ply", d / "clump.csv", 50);
   const FillJobResult f = run_fill_job(
       fill, [](const std::string&) {}, [](const std::string&) {});
   EXPECT_EQ(f.report["inside_outside"], "ray parity along the grid rows (watertight mesh)");
@@ -129,10 +135,7 @@ TEST(RepairJob, CubesTouchingAlongAnEdgeAreTwoShellsForRepairReadAndFill) {
   const RepairJobResult r = run_repair_job((d / "lobes.obj").string(), (d / "out.obj").string());
   EXPECT_EQ(r.repair.nonmanifold_edges, 1);
   EXPECT_NEAR(signed_volume(read_mesh((d / "out.obj").string())), 2.0, 1e-12);
-  FillJobOptions fill;
-  fill.mesh = (d / "lobes.obj").string();
-  fill.out = (d / "clump.csv").string();
-  fill.fill.spheres = 20;
+  const FillJobOptions fill = fill_options(d / "lobes.obj", d / "clump.csv", 20);
   const FillJobResult f = run_fill_job(
       fill, [](const std::string&) {}, [](const std::string&) {});
   EXPECT_LE(f.fidelity.overshoot_fraction, fill.fill.max_overshoot);
@@ -161,10 +164,7 @@ TEST(RepairJob, ASphereWithThreeHolesClosesWithinOnePercentAndFillsAsAWatertight
   // The written file is a solid for every command: the watertight path of fill.
   const Mesh closed = read_mesh((d / "closed.stl").string());
   EXPECT_NEAR(signed_volume(closed) / signed_volume(whole), 1.0, 0.01);
-  FillJobOptions fill;
-  fill.mesh = (d / "closed.stl").string();
-  fill.out = (d / "clump.csv").string();
-  fill.fill.spheres = 5;
+  const FillJobOptions fill = fill_options(d / "closed.stl", d / "clump.csv", 5);
   const FillJobResult f = run_fill_job(
       fill, [](const std::string&) {}, [](const std::string&) {});
   EXPECT_EQ(f.report["inside_outside"], "ray parity along the grid rows (watertight mesh)");
