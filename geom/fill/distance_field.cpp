@@ -84,9 +84,17 @@ double product(const std::array<int, 3>& d) {
   return double(d[0]) * d[1] * d[2];
 }
 
-}  // namespace
+// The smallest voxel whose grid over the mesh's box holds at most `budget` voxels.
+double budget_voxel(const Mesh& mesh, double h, double budget) {
+  const auto bb = bounding_box(mesh);
+  const double box = (bb[1] - bb[0]).prod();
+  for (int k = 0; k < 100 && product(field_dims(bb, h)) > budget; ++k)
+    h = std::max(1.05 * h, std::cbrt(box / budget));
+  return h;
+}
 
-double field_voxel_size(const Mesh& mesh, const FieldOptions& o) {
+// The voxel of the options before the sphere budget's (FieldOptions::count_voxel) is applied.
+double base_voxel_size(const Mesh& mesh, const FieldOptions& o) {
   if (o.voxel_size > 0.0) {
     if (!std::isfinite(o.voxel_size))
       throw InvalidInput("voxel size must be finite, got " + std::to_string(o.voxel_size));
@@ -104,13 +112,19 @@ double field_voxel_size(const Mesh& mesh, const FieldOptions& o) {
   // The default resolution's budget: a platy or elongated shape gets coarser voxels rather
   // than hundreds of times the work of a compact one (a 1:20 plate at 40 voxels across its
   // thickness is 26e6 voxels); compact shapes stay far below it.
-  if (o.max_voxels > 0) {
-    const auto bb = bounding_box(mesh);
-    const double box = (bb[1] - bb[0]).prod();
-    for (int k = 0; k < 100 && product(field_dims(bb, h)) > o.max_voxels; ++k)
-      h = std::max(1.05 * h, std::cbrt(box / o.max_voxels));
-  }
+  if (o.max_voxels > 0) h = budget_voxel(mesh, h, o.max_voxels);
   return h;
+}
+
+}  // namespace
+
+double field_voxel_size(const Mesh& mesh, const FieldOptions& o) {
+  const double h = base_voxel_size(mesh, o);
+  if (!(o.count_voxel > 0.0) || !(o.count_voxel < h)) return h;
+  if (!std::isfinite(o.count_voxel))
+    throw InvalidInput("count voxel must be finite, got " + std::to_string(o.count_voxel));
+  return std::min(
+      h, budget_voxel(mesh, o.count_voxel, o.max_voxels > 0 ? o.max_voxels : kDefaultMaxVoxels));
 }
 
 double field_voxel_count(const Mesh& mesh, const FieldOptions& options) {
@@ -120,7 +134,7 @@ double field_voxel_count(const Mesh& mesh, const FieldOptions& options) {
 namespace {
 
 double bytes_estimate(double voxels, std::size_t triangles) {
-  return 64.0 * 1048576.0 + 16.0 * voxels + 200.0 * double(triangles);
+  return 64.0 * 1048576.0 + 19.0 * voxels + 200.0 * double(triangles);
 }
 
 }  // namespace

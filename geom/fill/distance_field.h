@@ -22,6 +22,10 @@ struct FieldOptions {
   /// 40 resolves the corners of the Jin et al. 2017 blocks well enough for ~350-sphere clumps.
   int voxels = 40;
   double voxel_size = 0.0;  ///< explicit voxel edge length, units of the mesh
+  /// The voxel a fill's sphere budget asks for (fill_field_options; 0: none): the voxel above
+  /// (from `voxels` or `voxel_size`) is made this fine, but never finer than max_voxels (or,
+  /// without one, kDefaultMaxVoxels) allows.
+  double count_voxel = 0.0;
   /// Budget of the `voxels` resolution (0: none): voxels grow until the grid holds at most this
   /// many, so a platy or elongated shape costs about what a compact one does. `clumpkit fill`
   /// sets kDefaultMaxVoxels unless --voxels is given.
@@ -70,9 +74,9 @@ double field_voxel_size(const Mesh& mesh, const FieldOptions& options);
 /// Voxels of the field make_distance_field would build for this mesh.
 double field_voxel_count(const Mesh& mesh, const FieldOptions& options);
 
-/// Estimated peak bytes of make_distance_field and a fill on its grid: 16 per voxel (the dense
-/// float field, the sign and band masks, the coverage bits and the medial candidates), 200 per
-/// triangle (the mesh as read, its Embree BVH) and 64 MiB for the program itself.
+/// Estimated peak bytes of make_distance_field and a fill on its grid: 19 per voxel (the dense
+/// float field, the sign and band masks, the coverage bits and counts, the medial candidates), 200
+/// per triangle (the mesh as read, its Embree BVH) and 64 MiB for the program itself.
 double fill_bytes_estimate(const Mesh& mesh, const FieldOptions& options);
 
 /// Builds the field over the mesh bounding box plus two voxels. The cost does not grow with the

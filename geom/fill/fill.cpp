@@ -1,7 +1,9 @@
 #include "geom/fill/fill.h"
 
 #include "geom/errors.h"
-#include "geom/fill/overshoot.h"
+#include "geom/fill/contract.h"
+#include "geom/fill/coverage_grid.h"
+#include "geom/fill/fill_refine.h"
 #include "geom/fill/skeleton.h"
 #include "geom/mesh/mesh_index.h"
 
@@ -14,73 +16,6 @@
 namespace clumpkit {
 
 namespace {
-
-// Uncovered interior voxels as one bit per voxel, rows along x packed in 64-bit words, so the
-// voxels of a ball are counted or cleared a row span at a time with popcount.
-class CoverageGrid {
- public:
-  explicit CoverageGrid(const DistanceField& f) : f_(f), words_((f.dims[0] + 63) / 64) {
-    bits_.assign(std::size_t(words_) * f.dims[1] * f.dims[2], 0);
-    for (int k = 0; k < f.dims[2]; ++k)
-      for (int j = 0; j < f.dims[1]; ++j)
-        for (int i = 0; i < f.dims[0]; ++i)
-          if (f.at(i, j, k) > 0.0f) {
-            row(j, k)[i >> 6] |= std::uint64_t(1) << (i & 63);
-            ++interior_;
-          }
-    uncovered_ = interior_;
-  }
-
-  std::int64_t interior() const { return interior_; }
-  std::int64_t uncovered() const { return uncovered_; }
-
-  /// Number of uncovered voxel centres inside the ball; clears them if `clear`.
-  std::int64_t visit(const Vec3& c, double r, bool clear) {
-    const Vec3 g = (c - f_.origin) / f_.h;
-    const double rv = r / f_.h;
-    const int k0 = std::max(0, int(std::ceil(g.z() - rv))),
-              k1 = std::min(f_.dims[2] - 1, int(std::floor(g.z() + rv)));
-    const int j0 = std::max(0, int(std::ceil(g.y() - rv))),
-              j1 = std::min(f_.dims[1] - 1, int(std::floor(g.y() + rv)));
-    std::int64_t n = 0;
-    for (int k = k0; k <= k1; ++k) {
-      const double dz = k - g.z();
-      for (int j = j0; j <= j1; ++j) {
-        const double dy = j - g.y();
-        const double rem = rv * rv - dy * dy - dz * dz;
-        if (rem < 0.0) continue;
-        const double s = std::sqrt(rem);
-        const int i0 = std::max(0, int(std::ceil(g.x() - s)));
-        const int i1 = std::min(f_.dims[0] - 1, int(std::floor(g.x() + s)));
-        if (i0 > i1) continue;
-        n += span(row(j, k), i0, i1, clear);
-      }
-    }
-    if (clear) uncovered_ -= n;
-    return n;
-  }
-
- private:
-  std::uint64_t* row(int j, int k) { return &bits_[(std::size_t(k) * f_.dims[1] + j) * words_]; }
-
-  static std::int64_t span(std::uint64_t* w, int i0, int i1, bool clear) {
-    std::int64_t n = 0;
-    const int w0 = i0 >> 6, w1 = i1 >> 6;
-    for (int q = w0; q <= w1; ++q) {
-      std::uint64_t mask = ~std::uint64_t(0);
-      if (q == w0) mask &= ~std::uint64_t(0) << (i0 & 63);
-      if (q == w1 && (i1 & 63) != 63) mask &= (std::uint64_t(1) << ((i1 & 63) + 1)) - 1;
-      n += __builtin_popcountll(w[q] & mask);
-      if (clear) w[q] &= ~mask;
-    }
-    return n;
-  }
-
-  const DistanceField& f_;
-  int words_;
-  std::vector<std::uint64_t> bits_;
-  std::int64_t interior_ = 0, uncovered_ = 0;
-};
 
 struct Entry {
   std::int64_t gain;  // upper bound until evaluated at the current round
@@ -109,6 +44,14 @@ void validate(const FillOptions& o) {
                        std::to_string(o.tolerance_relative));
   if (!(o.max_overshoot >= 0.0 && o.max_overshoot < 1.0))
     throw InvalidInput("--max-overshoot must be in [0, 1), got " + std::to_string(o.max_overshoot));
+  if (o.refine_iterations < 0 || o.refine_iterations > 1000)
+    throw InvalidInput("--refine-iterations must be in [0, 1000], got " +
+                       std::to_string(o.refine_iterations));
+  if (!std::isfinite(o.refine_work))
+    throw InvalidInput("refine_work must be finite, got " + std::to_string(o.refine_work));
+  if (!(o.refine_min_gain >= 0.0) || !std::isfinite(o.refine_min_gain))
+    throw InvalidInput("refine_min_gain must be finite and non-negative, got " +
+                       std::to_string(o.refine_min_gain));
   if (!(o.ridge > 0.0 && o.ridge <= 1.0))
     throw InvalidInput("ridge threshold must be in (0, 1], got " + std::to_string(o.ridge));
 }
@@ -128,39 +71,16 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
   if (grid.interior() == 0)
     throw InvalidInput("the mesh has no interior voxel at voxel size " + std::to_string(field.h) +
                        ": use more --voxels");
-  const double tolerance =
-      options.tolerance >= 0 ? options.tolerance : options.tolerance_voxels * field.h;
-  // Radius of a sphere whose centre lies `d` inside the surface: the tolerance lets it poke out.
-  auto grown = [&](double d) { return d + tolerance + options.tolerance_relative * d; };
-  // The tolerance is meant for point contacts (faces, edges, corners), where the part outside is
-  // a small cap. Where the surface hugs the sphere (an ellipsoid's waist, a cylinder) a whole
-  // band would poke out: if more than 15 % of 64 directions on the grown sphere end outside the
-  // field, the sphere keeps its inscribed radius.
-  std::vector<Vec3> directions(64);
-  for (int q = 0; q < 64; ++q) {
-    const double z = 1.0 - (2.0 * q + 1.0) / 64.0, rho = std::sqrt(1.0 - z * z);
-    const double phi = q * 2.399963229728653;  // golden angle: a Fibonacci sphere
-    directions[q] = Vec3(rho * std::cos(phi), rho * std::sin(phi), z);
-  }
-  auto fits = [&](const Vec3& c, double rad) {
-    int outside = 0;
-    for (const auto& u : directions) outside += field.sample(c + rad * u) < 0.0;
-    return outside <= 9;
-  };
-  auto radius_at = [&](const Vec3& c, double d) {
-    const double g = grown(d);
-    return (g > d && !fits(c, g)) ? d : g;
-  };
+  FillContract contract(distance, field, options, grid.interior());
   std::vector<char> exact(cand.size(), 0);
   // Distances while searching come from the field's features (exact distances to the nearest
   // triangles of the voxels around a point: a few dozen point–triangle distances, whatever the
   // triangle count; never below the truth). The sphere a search ends with takes its radius from
   // an exact nearest-triangle search of the index, bounded by the feature distance.
-  const Mesh& mesh = distance.mesh();
-  auto near_distance = [&](const Vec3& p) { return feature_distance(field, mesh, p); };
+  auto near_distance = [&](const Vec3& p) { return contract.near_distance(p); };
   auto exact_radius = [&](int c) {
     if (!exact[c]) {
-      cand[c].radius = radius_at(cand[c].center, near_distance(cand[c].center));
+      cand[c].radius = contract.radius_at(cand[c].center, near_distance(cand[c].center));
       exact[c] = 1;
     }
     return cand[c].radius;
@@ -204,7 +124,7 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
               if (dx == 0 && dy == 0 && dz == 0) continue;
               const Vec3 q = c + step * Vec3(dx, dy, dz);
               const double dq = near_distance(q);
-              const double rq = grow ? grown(dq) : dq;
+              const double rq = grow ? contract.grown(dq) : dq;
               if (rq < options.min_radius || dq <= 0.0) continue;
               const std::int64_t g = gain(Sphere{q, rq});
               if (g > best) {
@@ -220,48 +140,22 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
     return Sphere{c, rad};
   };
 
-  // The overshoot contract: grown spheres are recorded on a ledger of rows a third of a voxel
-  // apart, over the field's box and a tenth more (a sphere grows past the surface by a few
-  // percent of its radius), and one is grown only while the ledger stays within 0.9 of the
-  // budget. The mesh volume: exact for a closed mesh, the interior voxels' for one that is not.
-  const Vec3 field_hi =
-      field.origin + field.h * Vec3(field.dims[0] - 1, field.dims[1] - 1, field.dims[2] - 1);
-  const Vec3 margin = 0.1 * (field_hi - field.origin).maxCoeff() * Vec3::Ones();
-  OvershootLedger ledger(distance, {field.origin - margin, field_hi + margin}, field.h / 3.0);
-  const double closed_volume = signed_volume(mesh);
-  const double mesh_volume = options.field.vote_sign || !(closed_volume > 0.0)
-                                 ? double(grid.interior()) * field.h * field.h * field.h
-                                 : closed_volume;
-  const double outside_budget = 0.9 * options.max_overshoot * mesh_volume;
-
-  // The radius a placed sphere keeps: from the exact distance at its centre (the features can
-  // run high where several compete), grown unless a band of it would then poke out or the
-  // overshoot budget would not hold it.
-  auto exact_sphere = [&](const Vec3& c, bool grow) {
-    const double d = distance.distance(c, near_distance(c) * (1.0 + 1e-9) + 1e-12 * field.h);
-    const double g = grown(d);
-    if (grow && g > d && fits(c, g)) {
-      const Sphere big{c, g};
-      if (ledger.volume() + ledger.added(big) <= outside_budget) {
-        ledger.add(big);
-        r.overshoot = ledger.volume() / mesh_volume;
-        return big;
-      }
-    }
-    return Sphere{c, d};
+  // Per sphere: whether the contract recorded it on the overshoot ledger (grown past the
+  // surface), so a refinement can take it off again.
+  std::vector<char> recorded;
+  auto keep = [&](const PlacedSphere& p) {
+    grid.cover(p.sphere);
+    r.clump.spheres.push_back(p.sphere);
+    recorded.push_back(p.recorded);
+    r.coverage_curve.push_back(grid.covered_fraction());
   };
-
   auto accept = [&](int c) {
     const bool grow = cand[c].radius > near_distance(cand[c].center);
-    const Sphere found =
-        options.refine
-            ? search(cand[c].center, cand[c].radius, grow,
-                     [&](const Sphere& b) { return grid.visit(b.center, b.radius, false); })
-            : Sphere{cand[c].center, cand[c].radius};
-    const Sphere s = exact_sphere(found.center, grow);
-    grid.visit(s.center, s.radius, true);
-    r.clump.spheres.push_back(s);
-    r.coverage_curve.push_back(1.0 - double(grid.uncovered()) / double(grid.interior()));
+    const Sphere found = options.refine
+                             ? search(cand[c].center, cand[c].radius, grow,
+                                      [&](const Sphere& b) { return grid.uncovered_in(b); })
+                             : Sphere{cand[c].center, cand[c].radius};
+    keep(contract.place(found.center, grow));
   };
   accept(first);
   // The sphere budget and the coverage target end either strategy; sets stopped_by.
@@ -300,14 +194,12 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
       }
       bool inside = false;
       for (const auto& s : r.clump.spheres) inside |= (cand[c].center - s.center).norm() < s.radius;
-      if (!inside) {
-        const Sphere s =
-            exact_sphere(cand[c].center, cand[c].radius > near_distance(cand[c].center));
-        grid.visit(s.center, s.radius, true);
-        r.clump.spheres.push_back(s);
-        r.coverage_curve.push_back(1.0 - double(grid.uncovered()) / double(grid.interior()));
-      }
+      if (!inside)
+        keep(contract.place(cand[c].center, cand[c].radius > near_distance(cand[c].center)));
     }
+    r.greedy = r.clump;
+    r.greedy_coverage = grid.covered_fraction();
+    r.overshoot = r.greedy_overshoot = contract.overshoot();
     return r;
   }
   int round = 0;
@@ -328,7 +220,7 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
         skipped_small = true;
         continue;
       }
-      e.gain = grid.visit(cand[e.index].center, cand[e.index].radius, false);
+      e.gain = grid.uncovered_in(Sphere{cand[e.index].center, cand[e.index].radius});
       e.round = round;
       if (e.gain > 0) queue.push(e);
     }
@@ -340,14 +232,37 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
     }
     ++round;
   }
-
+  r.greedy = r.clump;
+  r.greedy_coverage = grid.covered_fraction();
+  r.greedy_overshoot = contract.overshoot();
+  if (options.refine_iterations > 0) {
+    const auto budget_work = static_cast<std::int64_t>(options.refine_work * grid.work());
+    const RefineStats stats = refine_spheres(
+        r.clump.spheres, recorded, grid, contract, options.min_radius, options.refine_iterations,
+        options.refine_min_gain,
+        options.refine_work > 0 ? std::max<std::int64_t>(1, budget_work) : 0, interrupter);
+    r.refine_sweeps = stats.sweeps;
+    r.refine_moves = stats.moves;
+  }
+  r.overshoot = contract.overshoot();
   return r;
+}
+
+FieldOptions fill_field_options(const Mesh& mesh, const FillOptions& options) {
+  FieldOptions field = options.field;
+  const double volume = signed_volume(mesh);
+  if (options.voxels_from_count && options.spheres > 0 && !field.vote_sign && volume > 0.0)
+    field.count_voxel = std::max(
+        kSmallestSphereOverSpacing * std::cbrt(volume / options.spheres) / kVoxelsPerSmallestRadius,
+        field_voxel_size(mesh, field) / std::cbrt(kCountVoxelGrowth));
+  return field;
 }
 
 FillResult fill(const Mesh& mesh, const FillOptions& options, const Interrupter& interrupter) {
   validate(options);
   const MeshIndex index(mesh);
-  return fill(index, make_distance_field(index, options.field), options, interrupter);
+  return fill(index, make_distance_field(index, fill_field_options(mesh, options)), options,
+              interrupter);
 }
 
 }  // namespace clumpkit

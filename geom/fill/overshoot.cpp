@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace clumpkit {
 
@@ -11,24 +12,37 @@ using Interval = std::pair<double, double>;
 
 struct OvershootLedger::Row {
   std::vector<Interval> inside;   // the mesh's, sorted, disjoint
-  std::vector<Interval> outside;  // recorded spheres' chords minus `inside`, sorted, disjoint
+  std::vector<Interval> outside;  // each recorded sphere's chord parts outside, sorted by start
 };
 
 namespace {
 
-// Parts of [a, b] not covered by the sorted disjoint intervals `v`.
-std::vector<Interval> minus(double a, double b, const std::vector<Interval>& v) {
-  std::vector<Interval> out;
+// Calls f(lo, hi) for each part of [a, b] that the sorted disjoint intervals `v` leave
+// uncovered, in order.
+template <class F>
+void for_parts_outside(double a, double b, const std::vector<Interval>& v, F&& f) {
   double at = a;
   for (const auto& iv : v) {
     if (iv.second <= at) continue;
     if (iv.first >= b) break;
-    if (iv.first > at) out.emplace_back(at, std::min(iv.first, b));
+    if (iv.first > at) f(at, std::min(iv.first, b));
+    at = std::max(at, iv.second);
+    if (at >= b) return;
+  }
+  if (at < b) f(at, b);
+}
+
+// Length of [a, b] that no interval of `v` (sorted by start, overlapping) covers.
+double uncovered_length(double a, double b, const std::vector<Interval>& v) {
+  double length = 0.0, at = a;
+  for (const auto& iv : v) {
+    if (iv.first >= b) break;
+    if (iv.second <= at) continue;
+    if (iv.first > at) length += iv.first - at;
     at = std::max(at, iv.second);
     if (at >= b) break;
   }
-  if (at < b) out.emplace_back(at, b);
-  return out;
+  return at < b ? length + (b - at) : length;
 }
 
 }  // namespace
@@ -62,7 +76,7 @@ OvershootLedger::Row& OvershootLedger::row(int j, int k) const {
   return *r;
 }
 
-double OvershootLedger::visit(const Sphere& s, bool record) const {
+double OvershootLedger::visit(const Sphere& s, Visit what) const {
   const Vec3& c = s.center;
   const double r = s.radius;
   const int j0 = std::max(0, int(std::ceil((c.y() - r - lo_.y()) / spacing_ - 0.5)));
@@ -70,6 +84,7 @@ double OvershootLedger::visit(const Sphere& s, bool record) const {
   const int k0 = std::max(0, int(std::ceil((c.z() - r - lo_.z()) / spacing_ - 0.5)));
   const int k1 = std::min(nz_ - 1, int(std::floor((c.z() + r - lo_.z()) / spacing_ - 0.5)));
   double length = 0.0;
+  std::vector<Interval> parts;  // the chord's parts outside the mesh in one row
   for (int k = k0; k <= k1; ++k)
     for (int j = j0; j <= j1; ++j) {
       const double y = lo_.y() + (j + 0.5) * spacing_, z = lo_.z() + (k + 0.5) * spacing_;
@@ -77,24 +92,35 @@ double OvershootLedger::visit(const Sphere& s, bool record) const {
       if (!(w2 > 0.0)) continue;
       const double w = std::sqrt(w2);
       Row& row_jk = row(j, k);
-      for (const auto& part : minus(c.x() - w, c.x() + w, row_jk.inside)) {
-        const auto fresh = minus(part.first, part.second, row_jk.outside);
-        for (const auto& f : fresh) length += f.second - f.first;
-        if (record && !fresh.empty()) {
-          row_jk.outside.insert(row_jk.outside.end(), fresh.begin(), fresh.end());
-          std::sort(row_jk.outside.begin(), row_jk.outside.end());
+      auto& out = row_jk.outside;
+      parts.clear();
+      for_parts_outside(c.x() - w, c.x() + w, row_jk.inside,
+                        [&](double lo, double hi) { parts.emplace_back(lo, hi); });
+      if (what == Visit::erase)  // one copy of each part; the rest is what no other covers
+        for (const auto& part : parts) {
+          const auto at = std::find(out.begin(), out.end(), part);
+          if (at == out.end())
+            throw std::logic_error("overshoot ledger: removing a sphere that was not recorded");
+          out.erase(at);
         }
-      }
+      for (const auto& part : parts) length += uncovered_length(part.first, part.second, out);
+      if (what == Visit::record)
+        for (const auto& part : parts)
+          out.insert(std::upper_bound(out.begin(), out.end(), part), part);
     }
   return length * spacing_ * spacing_;
 }
 
 double OvershootLedger::added(const Sphere& s) const {
-  return visit(s, false);
+  return visit(s, Visit::measure);
 }
 
 void OvershootLedger::add(const Sphere& s) {
-  volume_ += visit(s, true);
+  volume_ += visit(s, Visit::record);
+}
+
+void OvershootLedger::remove(const Sphere& s) {
+  volume_ = std::max(0.0, volume_ - visit(s, Visit::erase));
 }
 
 }  // namespace clumpkit

@@ -1,5 +1,5 @@
 // The volume a clump puts outside its mesh, kept sphere by sphere on a lattice of rows, so a
-// fill can hold it under a bound (fill --max-overshoot).
+// fill can hold it under a bound (fill --max-overshoot) while it adds, moves and removes spheres.
 #pragma once
 
 #include "geom/mesh/mesh_index.h"
@@ -13,9 +13,9 @@
 namespace clumpkit {
 
 /// Rows along x on a (y, z) lattice of the given spacing. Each row knows the mesh's inside
-/// intervals (from the index's crossings, exact in x) and the union of the recorded spheres'
-/// chords outside them; the outside volume is the sum of those lengths times spacing² — exact
-/// along x, the 2-D midpoint rule across. A row whose crossings stay odd after nudging (it runs
+/// intervals (from the index's crossings, exact in x) and every recorded sphere's chord parts
+/// outside them; the outside volume is the length of their union times spacing² — exact along
+/// x, the 2-D midpoint rule across. A row whose crossings stay odd after nudging (it runs
 /// in a face's plane) counts as all outside, so the ledger never under-counts for it.
 class OvershootLedger {
  public:
@@ -29,13 +29,17 @@ class OvershootLedger {
   double added(const Sphere& s) const;
   /// Records `s`.
   void add(const Sphere& s);
+  /// Forgets one recorded copy of `s` (the same centre and radius bits as recorded); the volume
+  /// drops by what no other recorded sphere covers.
+  void remove(const Sphere& s);
   /// Outside volume of the recorded spheres.
   double volume() const { return volume_; }
 
  private:
   struct Row;
   Row& row(int j, int k) const;
-  double visit(const Sphere& s, bool record) const;
+  enum class Visit { measure, record, erase };
+  double visit(const Sphere& s, Visit what) const;
 
   const MeshIndex& index_;
   Vec3 lo_;

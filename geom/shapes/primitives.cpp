@@ -97,4 +97,53 @@ Mesh make_ellipsoid(const Vec3& semi_axes, int level) {
   return m;
 }
 
+Mesh make_octahedron(double radius) {
+  check_size(radius, "octahedron radius");
+  Mesh m;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const double sign : {1.0, -1.0}) {
+      Vec3 v = Vec3::Zero();
+      v[axis] = sign * radius;
+      m.vertices.push_back(v);
+    }
+  // One face per octant, counter-clockwise seen from outside (x, y, z vertices of its signs).
+  for (int octant = 0; octant < 8; ++octant) {
+    const int x = (octant & 1), y = 2 + ((octant >> 1) & 1), z = 4 + ((octant >> 2) & 1);
+    const int negatives = (octant & 1) + ((octant >> 1) & 1) + ((octant >> 2) & 1);
+    if (negatives % 2 == 0)
+      m.triangles.push_back({x, y, z});
+    else
+      m.triangles.push_back({x, z, y});
+  }
+  return m;
+}
+
+Mesh make_torus(double ring, double tube, int ring_sides, int tube_sides) {
+  check_size(ring, "torus ring radius");
+  check_size(tube, "torus tube radius");
+  if (!(tube < ring))
+    throw InvalidInput("torus: the tube radius must be below the ring radius, got " +
+                       std::to_string(tube) + " and " + std::to_string(ring));
+  if (ring_sides < 3 || tube_sides < 3 || ring_sides > 10000 || tube_sides > 10000)
+    throw InvalidInput("torus sides: must be in [3, 10000]");
+  Mesh m;
+  for (int i = 0; i < ring_sides; ++i) {
+    const double u = 2.0 * M_PI * i / ring_sides;
+    for (int j = 0; j < tube_sides; ++j) {
+      const double v = 2.0 * M_PI * j / tube_sides;
+      const double rho = ring + tube * std::cos(v);
+      m.vertices.emplace_back(rho * std::cos(u), rho * std::sin(u), tube * std::sin(v));
+    }
+  }
+  for (int i = 0; i < ring_sides; ++i)
+    for (int j = 0; j < tube_sides; ++j) {
+      const int a = i * tube_sides + j, b = ((i + 1) % ring_sides) * tube_sides + j;
+      const int c = ((i + 1) % ring_sides) * tube_sides + (j + 1) % tube_sides;
+      const int d = i * tube_sides + (j + 1) % tube_sides;
+      m.triangles.push_back({a, b, c});
+      m.triangles.push_back({a, c, d});
+    }
+  return m;
+}
+
 }  // namespace clumpkit

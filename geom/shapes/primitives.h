@@ -1,5 +1,5 @@
-// Primitive closed meshes: box, cylinder, icosphere and ellipsoid, for tests, simple particles
-// and test specimens (the Brazilian disc).
+// Primitive closed meshes: box, cylinder, icosphere, ellipsoid, octahedron and torus, for tests,
+// benchmarks, simple particles and test specimens (the Brazilian disc).
 #pragma once
 
 #include "geom/mesh/mesh.h"
@@ -22,5 +22,13 @@ Mesh make_icosphere(int level);
 
 /// Ellipsoid with semi-axes (a, b, c) along x, y, z: a scaled icosphere of the given level.
 Mesh make_ellipsoid(const Vec3& semi_axes, int level = 4);
+
+/// Regular octahedron with vertices at ±`radius` on each axis (volume 4/3·radius³); 8 triangles.
+Mesh make_octahedron(double radius);
+
+/// Torus about z: tube radius `tube` on a ring of radius `ring` (> tube), `ring_sides` ×
+/// `tube_sides` quads split in two, vertices on the surface (the volume runs low by the
+/// polygons' areas: 2π²·ring·tube² at the limit).
+Mesh make_torus(double ring, double tube, int ring_sides = 96, int tube_sides = 48);
 
 }  // namespace clumpkit

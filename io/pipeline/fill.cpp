@@ -32,6 +32,18 @@ nlohmann::ordered_json fidelity_json(const Fidelity& f) {
   return j;
 }
 
+nlohmann::ordered_json refine_json(const FillResult& r, const Fidelity& before,
+                                   const Fidelity& after) {
+  nlohmann::ordered_json j;
+  j["sweeps"] = r.refine_sweeps;
+  j["moves"] = r.refine_moves;
+  j["covered_fraction_before"] = before.covered_fraction;
+  j["covered_fraction_after"] = after.covered_fraction;
+  j["overshoot_fraction_before"] = before.overshoot_fraction;
+  j["overshoot_fraction_after"] = after.overshoot_fraction;
+  return j;
+}
+
 namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
@@ -56,7 +68,7 @@ SolidFill fill_solid(const Mesh& mesh, FillOptions fo, const std::string& name,
   const MeshIndex index(mesh);
   out.seconds_index = seconds_since(t);
   t = std::chrono::steady_clock::now();
-  const DistanceField field = make_distance_field(index, fo.field);
+  const DistanceField field = make_distance_field(index, fill_field_options(mesh, fo));
   out.seconds_field = seconds_since(t);
   // The contract holds by construction on a watertight mesh (the fill's ledger keeps 10 % in
   // hand); where the report's measure disagrees with the fill's (a mesh that is not watertight:
@@ -72,8 +84,12 @@ SolidFill fill_solid(const Mesh& mesh, FillOptions fo, const std::string& name,
       throw InvalidInput(name + ": no sphere fits with --min-radius " +
                          format_number(fo.min_radius));
     t = std::chrono::steady_clock::now();
-    out.fidelity = fo.field.vote_sign ? assess_fidelity(mesh, out.fill.clump, out.fill.voxel)
-                                      : assess_fidelity(index, out.fill.clump, out.fill.voxel);
+    auto assess = [&](const Clump& clump) {
+      return fo.field.vote_sign ? assess_fidelity(mesh, clump, out.fill.voxel)
+                                : assess_fidelity(index, clump, out.fill.voxel);
+    };
+    out.fidelity = assess(out.fill.clump);
+    out.greedy_fidelity = out.fill.refine_moves > 0 ? assess(out.fill.greedy) : out.fidelity;
     out.seconds_fidelity += seconds_since(t);
     const double measured = out.fidelity.overshoot_fraction;
     if (!(measured > contract)) break;
@@ -132,6 +148,7 @@ FillJobResult run_fill_job(const FillJobOptions& options,
   FillJobResult out;
   out.fill = std::move(solid.fill);
   out.fidelity = solid.fidelity;
+  out.greedy_fidelity = solid.greedy_fidelity;
   const FillResult& r = out.fill;
   const Fidelity& f = out.fidelity;
   if (fo.spheres > 0 && static_cast<int>(r.clump.spheres.size()) < fo.spheres)
@@ -156,6 +173,7 @@ FillJobResult run_fill_job(const FillJobOptions& options,
   j["candidates"] = r.candidates;
   j["stopped_by"] = r.stopped_by;
   j["max_overshoot"] = fo.max_overshoot;
+  j["refine"] = refine_json(r, out.greedy_fidelity, f);
   j["seconds"] = seconds_since(t0);
   nlohmann::ordered_json phases;
   phases["read"] = t_read;  // reading, welding and checking the mesh

@@ -28,9 +28,10 @@ struct FillJobOptions {
 /// What the fill job did.
 struct FillJobResult {
   FillResult fill;
-  Fidelity fidelity;
+  Fidelity fidelity, greedy_fidelity;
   /// The report of `fill --json`: the fidelity, inside_outside, voxel, candidates, stopped_by,
-  /// max_overshoot, seconds, seconds_by_phase (read, index, field, fill, fidelity), triangles.
+  /// max_overshoot, refine (sweeps, moves, covered_fraction and overshoot_fraction before and
+  /// after), seconds, seconds_by_phase (read, index, field, fill, fidelity), triangles.
   nlohmann::ordered_json report;
 };
 
@@ -41,6 +42,9 @@ struct FillJobResult {
 struct SolidFill {
   FillResult fill;
   Fidelity fidelity;
+  /// The greedy pass's clump assessed the same way, when a refinement moved any sphere (else
+  /// equal to `fidelity`).
+  Fidelity greedy_fidelity;
   double seconds_index = 0, seconds_field = 0, seconds_fill = 0, seconds_fidelity = 0;
 };
 SolidFill fill_solid(const Mesh& mesh, FillOptions options, const std::string& name,
@@ -62,5 +66,10 @@ FillJobResult run_fill_job(const FillJobOptions& options,
 
 /// The fidelity record as JSON (the keys of Fidelity).
 nlohmann::ordered_json fidelity_json(const Fidelity& f);
+
+/// What the refinement did, as JSON: sweeps, moves, and the covered and overshoot fractions of
+/// the greedy clump (before) and the refined one (after).
+nlohmann::ordered_json refine_json(const FillResult& r, const Fidelity& before,
+                                   const Fidelity& after);
 
 }  // namespace clumpkit

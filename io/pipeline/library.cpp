@@ -49,7 +49,8 @@ void check_fill_memory(const ShapeRecipe& recipe, const std::vector<int>& fracti
     Rng rng = Rng::stream(recipe.seed, i);
     GeneratedShape shape = generate_shape(recipe.fractions[fraction_of[i]], rng);
     if (recipe.refine_triangles > 0) shape.mesh = refine(shape.mesh, recipe.refine_triangles);
-    const double need = fill_bytes_estimate(shape.mesh, recipe.fill.field);
+    const double need =
+        fill_bytes_estimate(shape.mesh, fill_field_options(shape.mesh, recipe.fill));
     if (!(need <= share))
       throw InvalidInput(
           "fraction " + recipe.fractions[fraction_of[i]].name + ": the fill of particle " +
@@ -112,7 +113,8 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
   // One search tree serves the field, the fill and the fidelity (generated meshes are closed).
   const MeshIndex index(shape.mesh);
   const FillResult filled =
-      fill(index, make_distance_field(index, fill_options.field), fill_options);
+      fill(index, make_distance_field(index, fill_field_options(shape.mesh, fill_options)),
+           fill_options);
   if (filled.clump.spheres.empty())
     throw InvalidInput("no sphere fits (fill.min_radius " + format_number(recipe.fill.min_radius) +
                        ")");

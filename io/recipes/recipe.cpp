@@ -105,15 +105,22 @@ ShapeRecipe parse_shape_recipe(const std::string& text, const std::string& path)
           if (!i || i->get() < 4 || i->get() > 2000)
             p.fail(field, "expected an integer in [4, 2000], got " + show(fv));
           r.fill.field.voxels = static_cast<int>(i->get());
+          r.fill.voxels_from_count = false;  // a resolution given holds, as fill --voxels
         } else if (name == "coverage") {
           r.fill.coverage = p.number(fv, field);
         } else if (name == "min_radius") {
           r.fill.min_radius = p.number(fv, field);
         } else if (name == "max_overshoot") {
           r.fill.max_overshoot = p.number(fv, field);
+        } else if (name == "refine_iterations") {
+          const auto* i = fv.as_integer();
+          if (!i || i->get() < 0 || i->get() > 1000)
+            p.fail(field, "expected an integer in [0, 1000], got " + show(fv));
+          r.fill.refine_iterations = static_cast<int>(i->get());
         } else {
           p.fail(field,
-                 "unknown key (known: spheres, coverage, min_radius, voxels, max_overshoot)");
+                 "unknown key (known: spheres, coverage, min_radius, voxels, max_overshoot, "
+                 "refine_iterations)");
         }
       }
       try {

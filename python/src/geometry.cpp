@@ -259,7 +259,8 @@ void bind_geometry(py::module_& m) {
       "fill",
       [](const Mesh& mesh, std::optional<int> spheres, std::optional<double> coverage,
          double min_radius, double max_overshoot, std::optional<int> voxels,
-         std::optional<double> voxel_size, const py::object& progress) {
+         std::optional<double> voxel_size, std::optional<int> refine_iterations,
+         const py::object& progress) {
         // The defaults of `clumpkit fill`: 50 spheres without a coverage target; the default
         // resolution within a voxel budget, an asked one as asked.
         FillOptions o;
@@ -272,6 +273,8 @@ void bind_geometry(py::module_& m) {
         if (voxels) o.field.voxels = *voxels;
         o.field.max_voxels = voxels ? 0.0 : kDefaultMaxVoxels;
         if (voxel_size) o.field.voxel_size = *voxel_size;
+        o.voxels_from_count = !voxels && !voxel_size;  // as the command: a resolution given holds
+        if (refine_iterations) o.refine_iterations = *refine_iterations;
         SolidFill out;
         run_interruptible(
             [&](const Interrupter& interrupter) {
@@ -283,9 +286,10 @@ void bind_geometry(py::module_& m) {
       },
       "mesh"_a, py::kw_only(), "spheres"_a = py::none(), "coverage"_a = py::none(),
       "min_radius"_a = 0.0, "max_overshoot"_a = 0.01, "voxels"_a = py::none(),
-      "voxel_size"_a = py::none(), "progress"_a = py::none(),
+      "voxel_size"_a = py::none(), "refine_iterations"_a = py::none(), "progress"_a = py::none(),
       "Greedy maximal-inscribed-sphere fill (`clumpkit fill`, Zhang & Zhou 2015 §2.3): the same "
-      "spheres as the command for the same mesh and options; progress(stage, fraction) is "
+      "spheres as the command for the same mesh and options (refine_iterations: its "
+      "--refine-iterations); progress(stage, fraction) is "
       "called on this thread; Ctrl-C stops it (KeyboardInterrupt)");
 
   py::class_<UnionMass>(m, "MassProperties",

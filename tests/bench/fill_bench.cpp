@@ -1,15 +1,23 @@
-// Sphere fill: time per fill at the default resolution (one thread), and covered fraction versus
-// sphere count on the Jin et al. 2017 block, greedy coverage fill against the biggest-sphere-first
-// baseline in the same run. Prints a Markdown table for tests/bench/RESULTS.md.
+// Sphere fill: time per fill at the default resolution (one thread), covered fraction versus
+// sphere count on the Jin et al. 2017 block (greedy coverage fill against the biggest-sphere-first
+// baseline in the same run), and five test shapes at 5–460 spheres before (the greedy pass at 40
+// voxels across) and after (resolution from the count and the refinement), each checked against
+// an independent point count at twice the resolution. Prints Markdown tables for
+// tests/bench/RESULTS.md. `fill_bench shapes` runs the last table only.
 #include "geom/fill/fidelity.h"
 #include "geom/fill/fill.h"
 #include "geom/shapes/block.h"
 #include "geom/shapes/primitives.h"
+#include "io/pipeline/fill.h"
 
 #include <tbb/global_control.h>
 
 #include <chrono>
 #include <cstdio>
+#include <cstring>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace clumpkit;
 
@@ -21,10 +29,86 @@ Mesh block(int seed) {
   Rng rng(seed);
   return make_block(BlockParams{75.1, 58.0, 49.8, 2, 0.8, 1.2}, rng);
 }
+// Covered fraction counted on points of a lattice of spacing δ: a point counts for the mesh
+// when it lies between a row's surface crossings 1–2, 3–4, … and for the clump when it lies in
+// some sphere. A 3-D point count, apart from the report's measure (lengths exact along x).
+double point_coverage(const Mesh& mesh, const Clump& clump, double delta) {
+  const MeshIndex index(mesh);
+  const auto bb = bounding_box(mesh);
+  long inside = 0, covered = 0;
+  for (double z = bb[0].z() + 0.5 * delta; z < bb[1].z(); z += delta)
+    for (double y = bb[0].y() + 0.5 * delta; y < bb[1].y(); y += delta) {
+      const auto xs = index.even_crossings_x(y, z, 1e-6 * delta);
+      if (xs.size() % 2) continue;
+      std::vector<std::pair<double, double>> chords;
+      for (const auto& s : clump.spheres) {
+        const double w2 = s.radius * s.radius - (y - s.center.y()) * (y - s.center.y()) -
+                          (z - s.center.z()) * (z - s.center.z());
+        if (w2 > 0) chords.emplace_back(s.center.x() - std::sqrt(w2), s.center.x() + std::sqrt(w2));
+      }
+      for (std::size_t q = 0; q + 1 < xs.size(); q += 2)
+        for (double x = bb[0].x() + 0.5 * delta; x < bb[1].x(); x += delta) {
+          if (x < xs[q].x || x > xs[q + 1].x) continue;
+          ++inside;
+          for (const auto& c : chords)
+            if (x >= c.first && x <= c.second) {
+              ++covered;
+              break;
+            }
+        }
+    }
+  return inside > 0 ? double(covered) / double(inside) : 0.0;
+}
+
+// The five shapes of the fill's acceptance table, as the users who try fills test them.
+std::vector<std::pair<std::string, Mesh>> test_shapes() {
+  return {{"unit cube", make_box(Vec3(1, 1, 1))},
+          {"octahedron", make_octahedron(1.0)},
+          {"ellipsoid 2:1:1", make_ellipsoid(Vec3(2, 1, 1))},
+          {"torus 3/1", make_torus(3.0, 1.0)},
+          {"Jin block (seed 1)", block(1)}};
+}
+
+void shapes_table() {
+  std::printf(
+      "\n## Five shapes: before (greedy, 40 voxels across) and after (resolution from the count, "
+      "refinement)\n\n| shape | spheres | covered before | overshoot before | s before | voxel "
+      "after | covered after | overshoot after | s after | points at voxel/2 | |report − "
+      "points| |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const auto& [name, mesh] : test_shapes())
+    for (int count : {5, 21, 30, 50, 100, 200, 460}) {
+      FillOptions before;
+      before.spheres = count;
+      before.field.max_voxels = kDefaultMaxVoxels;
+      before.refine_iterations = 0;
+      before.voxels_from_count = false;
+      FillOptions after = before;
+      after.refine_iterations = FillOptions{}.refine_iterations;
+      after.voxels_from_count = true;
+      auto quiet = [](const std::string&) {};
+      double t0 = now();
+      const SolidFill b = fill_solid(mesh, before, name, quiet);
+      const double tb = now() - t0;
+      t0 = now();
+      const SolidFill a = fill_solid(mesh, after, name, quiet);
+      const double ta = now() - t0;
+      const double points = point_coverage(mesh, a.fill.clump, a.fill.voxel / 2);
+      std::printf("| %s | %d | %.4f | %.4f | %.3f | %.4g | %.4f | %.4f | %.3f | %.4f | %.4f |\n",
+                  name.c_str(), count, b.fidelity.covered_fraction, b.fidelity.overshoot_fraction,
+                  tb, a.fill.voxel, a.fidelity.covered_fraction, a.fidelity.overshoot_fraction, ta,
+                  points, std::abs(points - a.fidelity.covered_fraction));
+      std::fflush(stdout);
+    }
+}
+
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
   tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  if (argc > 1 && std::strcmp(argv[1], "shapes") == 0) {
+    shapes_table();
+    return 0;
+  }
   std::printf("# fill_bench (one thread, default resolution: 40 voxels across S)\n\n");
 
   // Time per fill, field included, for 50 spheres: mean over seeds 1-5, each run 3 times.
@@ -81,5 +165,6 @@ int main() {
   const Fidelity fl = assess_fidelity(cube, l.clump, l.voxel / 2);
   std::printf("\nunit cube, 50 spheres: greedy covered %.4f (overshoot %.4f), biggest first %.4f\n",
               fg.covered_fraction, fg.overshoot_fraction, fl.covered_fraction);
+  shapes_table();
   return 0;
 }
