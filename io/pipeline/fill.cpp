@@ -9,7 +9,9 @@
 #include "io/pipeline/job.h"
 #include "io/reports/views.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <utility>
 
@@ -174,6 +176,30 @@ FillJobResult run_fill_job(const FillJobOptions& options,
   j["stopped_by"] = r.stopped_by;
   j["max_overshoot"] = fo.max_overshoot;
   j["refine"] = refine_json(r, out.greedy_fidelity, f);
+  // How fine the grid was: the smallest sphere in voxels, and, when asked, the coverage of a
+  // fill on twice the voxels (the same options otherwise).
+  nlohmann::ordered_json res;
+  double smallest = r.clump.spheres.front().radius;
+  for (const Sphere& s : r.clump.spheres) smallest = std::min(smallest, s.radius);
+  res["voxel"] = r.voxel;
+  res["smallest_sphere_voxels"] = smallest / r.voxel;
+  if (smallest < 3.0 * r.voxel)
+    warn("the smallest sphere's radius spans " + format_number(smallest / r.voxel, 2) +
+         " voxels: the grid counts such spheres coarsely; --check-resolution shows what a finer "
+         "grid changes, --voxels sets one");
+  if (options.check_resolution) {
+    FillOptions finer = fo;
+    finer.field.voxel_size = r.voxel / std::cbrt(2.0);
+    finer.field.max_voxels = 0.0;
+    finer.voxels_from_count = false;
+    const auto t = std::chrono::steady_clock::now();
+    const SolidFill check = fill_solid(mesh, finer, options.mesh, [](const std::string&) {});
+    res["finer_voxel"] = check.fill.voxel;
+    res["covered_fraction_finer"] = check.fidelity.covered_fraction;
+    res["covered_change"] = check.fidelity.covered_fraction - f.covered_fraction;
+    res["seconds"] = seconds_since(t);
+  }
+  j["resolution"] = res;
   j["seconds"] = seconds_since(t0);
   nlohmann::ordered_json phases;
   phases["read"] = t_read;  // reading, welding and checking the mesh

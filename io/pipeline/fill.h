@@ -22,6 +22,10 @@ struct FillJobOptions {
   FillOptions fill;  ///< the stop rules, the field and the overshoot contract
   /// Accept a mesh that is not watertight: inside/outside by Embree ray-parity voting.
   bool allow_open = false;
+  /// Fill again on a grid of twice the voxels and report the change of coverage (the report's
+  /// `resolution`), so the user sees whether the grid was fine enough; the clump written is the
+  /// first one.
+  bool check_resolution = false;
   MeshReadOptions read;  ///< welding on reading
 };
 
@@ -31,7 +35,9 @@ struct FillJobResult {
   Fidelity fidelity, greedy_fidelity;
   /// The report of `fill --json`: the fidelity, inside_outside, voxel, candidates, stopped_by,
   /// max_overshoot, refine (sweeps, moves, covered_fraction and overshoot_fraction before and
-  /// after), seconds, seconds_by_phase (read, index, field, fill, fidelity), triangles.
+  /// after), resolution (voxel, smallest_sphere_voxels; with check_resolution the finer voxel, its
+  /// covered_fraction and the change), seconds, seconds_by_phase (read, index, field, fill,
+  /// fidelity), triangles.
   nlohmann::ordered_json report;
 };
 

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -75,4 +76,35 @@ TEST(FillContract, EveryReportOfARandomMeshKeepsTheOvershootBudget) {
   }
   EXPECT_GE(filled, 6);  // the closed ones, at least
   std::printf("%d filled, %d refused\n", filled, refused);
+}
+
+// The report says how fine the grid was: the smallest sphere in voxels, and with
+// check_resolution the coverage of a fill on twice the voxels; the clump written is the first.
+TEST(FillJob, CheckResolutionReportsTheCoverageOnTwiceTheVoxels) {
+  const fs::path d = fs::path(::testing::TempDir()) / "clumpkit_fill_resolution";
+  fs::remove_all(d);
+  fs::create_directories(d);
+  const std::string mesh = (d / "torus.obj").string();
+  write_mesh(mesh, make_torus(3.0, 1.0, 48, 24));
+  FillJobOptions job;
+  job.mesh = mesh;
+  job.out = (d / "c.csv").string();
+  job.fill.spheres = 20;
+  job.check_resolution = true;
+  auto quiet = [](const std::string&) {};
+  const FillJobResult r = run_fill_job(job, quiet, quiet);
+  const auto& res = r.report["resolution"];
+  EXPECT_DOUBLE_EQ(res["voxel"].get<double>(), r.fill.voxel);
+  EXPECT_NEAR(res["finer_voxel"].get<double>(), r.fill.voxel / std::cbrt(2.0), 1e-12);
+  EXPECT_GT(res["smallest_sphere_voxels"].get<double>(), 10.0);  // tube radius 1, voxel ~0.05
+  EXPECT_NEAR(res["covered_change"].get<double>(),
+              res["covered_fraction_finer"].get<double>() - r.fidelity.covered_fraction, 1e-12);
+  EXPECT_LT(std::abs(res["covered_change"].get<double>()), 0.01);  // converged on a torus
+  job.check_resolution = false;
+  job.out = (d / "plain.csv").string();
+  const FillJobResult plain = run_fill_job(job, quiet, quiet);
+  EXPECT_FALSE(plain.report["resolution"].contains("covered_change"));
+  ASSERT_EQ(plain.fill.clump.spheres.size(), r.fill.clump.spheres.size());
+  for (std::size_t i = 0; i < plain.fill.clump.spheres.size(); ++i)
+    EXPECT_EQ(plain.fill.clump.spheres[i].center, r.fill.clump.spheres[i].center);
 }
