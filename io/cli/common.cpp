@@ -1,5 +1,7 @@
 #include "io/cli/common.h"
 
+#include <algorithm>
+
 #include "geom/errors.h"
 #include "io/pipeline/job.h"
 
@@ -7,6 +9,7 @@
 
 #include <time.h>
 #include <unistd.h>
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -56,6 +59,14 @@ ProgressBar::~ProgressBar() {
 }
 
 void ProgressBar::update(std::size_t done, std::size_t total) {
+  draw(done, total, false);
+}
+
+void ProgressBar::update(double fraction) {
+  draw(static_cast<std::size_t>(1000 * std::clamp(fraction, 0.0, 1.0)), 1000, true);
+}
+
+void ProgressBar::draw(std::size_t done, std::size_t total, bool percent) {
   if (!enabled_ || total == 0) return;
   const int permille = static_cast<int>(1000 * done / total);
   if (permille == last_permille_) return;
@@ -63,8 +74,10 @@ void ProgressBar::update(std::size_t done, std::size_t total) {
   const double elapsed = now() - start_;
   const double eta = done > 0 ? elapsed * (double(total) / double(done) - 1.0) : 0.0;
   const int width = 30, fill = permille * width / 1000;
-  std::fprintf(stderr, "\r%s [%.*s%*s] %zu/%zu  %.0fs elapsed, %.0fs left ", label_.c_str(), fill,
-               "##############################", width - fill, "", done, total, elapsed, eta);
+  const std::string count = percent ? std::to_string(permille / 10) + " %"
+                                    : std::to_string(done) + "/" + std::to_string(total);
+  std::fprintf(stderr, "\r%s [%.*s%*s] %s  %.0fs elapsed, %.0fs left ", label_.c_str(), fill,
+               "##############################", width - fill, "", count.c_str(), elapsed, eta);
   std::fflush(stderr);
   drawn_ = true;
 }
@@ -78,7 +91,8 @@ Interrupter signal_interrupter(ProgressBar& bar, const std::string& command) {
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
   return [&bar, command](std::string_view stage, double fraction) {
-    bar.set_label(command + ": " + std::string(stage));
+    // "library: library" says the stage twice: a stage named after its command is the command.
+    bar.set_label(stage == command ? command : command + ": " + std::string(stage));
     bar.update(fraction);
     return g_stop_requested.load();
   };

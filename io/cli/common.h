@@ -42,8 +42,9 @@ class ProgressBar {
   ProgressBar(std::string label, bool quiet);
   ~ProgressBar();
   void update(std::size_t done, std::size_t total);
-  /// The bar at `fraction` (0..1) of the work.
-  void update(double fraction) { update(static_cast<std::size_t>(1000 * fraction), 1000); }
+  /// The bar at `fraction` (0..1) of the work, drawn as a percentage (the job's own count is not
+  /// known here).
+  void update(double fraction);
   /// Changes the label (e.g. the current stage) from the next update on.
   void set_label(std::string label) {
     if (label == label_) return;
@@ -53,6 +54,8 @@ class ProgressBar {
   void finish();
 
  private:
+  void draw(std::size_t done, std::size_t total, bool percent);
+
   std::string label_;
   bool enabled_;
   double start_;
@@ -61,9 +64,10 @@ class ProgressBar {
 };
 
 /// The interrupter of a long command (geom/progress.h): shows the stage and fraction on `bar`
-/// (label "COMMAND: stage") and asks the work to stop once SIGINT or SIGTERM has arrived. The
-/// handlers are installed on the first call; a signal more than a second after the first ends
-/// the process at once. main() maps the resulting Interrupted to exit code 130.
+/// (label "COMMAND: stage", or "COMMAND" for the stage named after it) and asks the work to stop
+/// once SIGINT or SIGTERM has arrived. The handlers are installed on the first call; a signal more
+/// than a second after the first ends the process at once. main() maps the resulting Interrupted to
+/// exit code 130.
 Interrupter signal_interrupter(ProgressBar& bar, const std::string& command);
 
 /// Writes one note line "clumpkit: note: ..." to stderr.
