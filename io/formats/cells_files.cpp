@@ -21,11 +21,10 @@ void write_cells_vtp(const std::string& path, const Tessellation& t,
   std::map<std::pair<int, int>, double> factor;
   for (const CellBond& b : bonds) factor[{b.a, b.b}] = b.strength_factor;
   write_file_atomically(path, [&](std::ostream& o) {
-    std::size_t points = 0, polys = 0, corners = 0;
+    std::size_t points = 0, polys = 0;
     for (const Cell& c : t.cells) {
       points += c.vertices.size();
       polys += c.faces.size();
-      for (const CellFace& f : c.faces) corners += f.vertices.size();
     }
     o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
          "byte_order=\"LittleEndian\">\n<PolyData>\n<Piece NumberOfPoints=\""

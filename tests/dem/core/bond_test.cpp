@@ -113,7 +113,6 @@ TEST(Bond, RigidMotionCarriesNoForceAndTurnsTheForces) {
 }
 
 TEST(Bond, FragmentsAreTheComponentsOfHoldingBonds) {
-  const CohesiveParams law;
   Pair p = cubes();
   Bond held = p.bond, broken = p.bond, other = p.bond;
   for (BondPoint& q : broken.points) q.state.damage = 1.0;
