@@ -51,11 +51,9 @@ class FillContract {
   /// Takes a recorded sphere off the ledger.
   void release(const Sphere& s);
 
-  double mesh_volume() const { return mesh_volume_; }
   /// The ledger's outside volume over the mesh volume.
   double overshoot() const { return ledger_.volume() / mesh_volume_; }
   double voxel() const { return field_.h; }
-  const DistanceField& field() const { return field_; }
 
  private:
   const MeshIndex& index_;

@@ -123,8 +123,8 @@ double field_voxel_size(const Mesh& mesh, const FieldOptions& o) {
   if (!(o.count_voxel > 0.0) || !(o.count_voxel < h)) return h;
   if (!std::isfinite(o.count_voxel))
     throw InvalidInput("count voxel must be finite, got " + std::to_string(o.count_voxel));
-  return std::min(
-      h, budget_voxel(mesh, o.count_voxel, o.max_voxels > 0 ? o.max_voxels : kDefaultMaxVoxels));
+  const double fine = std::max(o.count_voxel, h / std::cbrt(kCountVoxelGrowth));
+  return std::min(h, budget_voxel(mesh, fine, o.max_voxels > 0 ? o.max_voxels : kDefaultMaxVoxels));
 }
 
 double field_voxel_count(const Mesh& mesh, const FieldOptions& options) {

@@ -15,6 +15,10 @@ namespace clumpkit {
 /// across its thickness would take 26e6.
 inline constexpr double kDefaultMaxVoxels = 1e6;
 
+/// The most voxels FieldOptions::count_voxel may add: at most this many times the grid of the
+/// resolution asked (a fill's time grows with the voxels).
+inline constexpr double kCountVoxelGrowth = 3.0;
+
 /// Resolution of the voxel grid.
 struct FieldOptions {
   /// Voxels across the smallest principal extent S of the mesh (ignored if voxel_size > 0; the
@@ -23,8 +27,8 @@ struct FieldOptions {
   int voxels = 40;
   double voxel_size = 0.0;  ///< explicit voxel edge length, units of the mesh
   /// The voxel a fill's sphere budget asks for (fill_field_options; 0: none): the voxel above
-  /// (from `voxels` or `voxel_size`) is made this fine, but never finer than max_voxels (or,
-  /// without one, kDefaultMaxVoxels) allows.
+  /// (from `voxels` or `voxel_size`) is made this fine, but to at most kCountVoxelGrowth times
+  /// its voxels and never finer than max_voxels (or, without one, kDefaultMaxVoxels) allows.
   double count_voxel = 0.0;
   /// Budget of the `voxels` resolution (0: none): voxels grow until the grid holds at most this
   /// many, so a platy or elongated shape costs about what a compact one does. `clumpkit fill`

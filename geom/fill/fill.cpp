@@ -198,8 +198,7 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
         keep(contract.place(cand[c].center, cand[c].radius > near_distance(cand[c].center)));
     }
     r.greedy = r.clump;
-    r.greedy_coverage = grid.covered_fraction();
-    r.overshoot = r.greedy_overshoot = contract.overshoot();
+    r.overshoot = contract.overshoot();
     return r;
   }
   int round = 0;
@@ -233,8 +232,6 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
     ++round;
   }
   r.greedy = r.clump;
-  r.greedy_coverage = grid.covered_fraction();
-  r.greedy_overshoot = contract.overshoot();
   if (options.refine_iterations > 0) {
     const auto budget_work = static_cast<std::int64_t>(options.refine_work * grid.work());
     const RefineStats stats = refine_spheres(
@@ -252,9 +249,8 @@ FieldOptions fill_field_options(const Mesh& mesh, const FillOptions& options) {
   FieldOptions field = options.field;
   const double volume = signed_volume(mesh);
   if (options.voxels_from_count && options.spheres > 0 && !field.vote_sign && volume > 0.0)
-    field.count_voxel = std::max(
-        kSmallestSphereOverSpacing * std::cbrt(volume / options.spheres) / kVoxelsPerSmallestRadius,
-        field_voxel_size(mesh, field) / std::cbrt(kCountVoxelGrowth));
+    field.count_voxel =
+        kSmallestSphereOverSpacing * std::cbrt(volume / options.spheres) / kVoxelsPerSmallestRadius;
   return field;
 }
 

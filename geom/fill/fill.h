@@ -66,10 +66,9 @@ struct FillResult {
   std::vector<double> coverage_curve;
   /// The ledger's outside volume over the mesh's volume (≤ 0.9 max_overshoot).
   double overshoot = 0.0;
-  /// The greedy pass's clump, grid coverage and ledger overshoot, before the refinement (equal
-  /// to the result's when no refinement ran), and what the refinement did.
+  /// The greedy pass's clump, before the refinement (the result's when no refinement ran), and
+  /// what the refinement did.
   Clump greedy;
-  double greedy_coverage = 0.0, greedy_overshoot = 0.0;
   int refine_sweeps = 0, refine_moves = 0;
   /// "spheres" (the budget), "coverage" (the target), "min-radius" (the candidates left are
   /// smaller) or "candidates" (no medial candidate left adds coverage).
@@ -84,10 +83,6 @@ inline constexpr double kSmallestSphereOverSpacing = 0.45;
 /// about 1 %, and the cube's coverage at 100 spheres stops changing there (0.948 at 50 voxels
 /// across, 0.950 at 60).
 inline constexpr double kVoxelsPerSmallestRadius = 5.5;
-
-/// The most voxels the count may add: at most this many times the grid of the resolution asked
-/// (the fill's time grows with the voxels).
-inline constexpr double kCountVoxelGrowth = 3.0;
 
 /// options.field with FieldOptions::count_voxel set from the sphere budget and the mesh volume
 /// when options.voxels_from_count holds (else unchanged).

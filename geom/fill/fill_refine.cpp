@@ -12,8 +12,6 @@ RefineStats refine_spheres(std::vector<Sphere>& spheres, std::vector<char>& reco
                            int sweeps, double min_gain, std::int64_t max_work,
                            const Interrupter& interrupter) {
   RefineStats stats;
-  stats.coverage_before = stats.coverage_after = grid.covered_fraction();
-  stats.overshoot_before = stats.overshoot_after = contract.overshoot();
   const double h = contract.voxel();
   const std::size_t n = spheres.size();
   // A sphere whose neighbours did not move since it was last searched would search the same
@@ -94,8 +92,6 @@ RefineStats refine_spheres(std::vector<Sphere>& spheres, std::vector<char>& reco
     const double gained = double(uncovered_at_start - grid.uncovered()) / double(grid.interior());
     if (gained < min_gain || spent) break;
   }
-  stats.coverage_after = grid.covered_fraction();
-  stats.overshoot_after = contract.overshoot();
   return stats;
 }
 

@@ -16,8 +16,6 @@ namespace clumpkit {
 struct RefineStats {
   int sweeps = 0;  ///< sweeps over the spheres made
   int moves = 0;   ///< spheres moved (a sphere moved in two sweeps counts twice)
-  double coverage_before = 0.0, coverage_after = 0.0;    ///< covered fraction of the grid
-  double overshoot_before = 0.0, overshoot_after = 0.0;  ///< the ledger's, over the mesh volume
 };
 
 /// Coordinate ascent on the covered volume, after the variational sphere sets of Wang et al.
