@@ -1,7 +1,6 @@
 #include "dem/core/world.h"
 
 #include "dem/core/parallel.h"
-#include "dem/core/timestep.h"
 #include "dem/core/world_step_cache.h"
 #include "geom/errors.h"
 

@@ -2,7 +2,7 @@
 // its axis at constant speed with the cell's stresses held (CTGU 2017's chamber, boundary BC1).
 #pragma once
 
-#include "dem/lab/element_test.h"
+#include "dem/lab/element_loading.h"
 
 #include <functional>
 #include <string>

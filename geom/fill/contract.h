@@ -3,7 +3,7 @@
 #pragma once
 
 #include "geom/fill/distance_field.h"
-#include "geom/fill/fill.h"
+#include "geom/fill/fill_options.h"
 #include "geom/fill/overshoot.h"
 #include "geom/mesh/mesh_index.h"
 

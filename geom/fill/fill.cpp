@@ -28,34 +28,6 @@ struct Entry {
 
 }  // namespace
 
-void validate(const FillOptions& o) {
-  if (o.spheres < 0)
-    throw InvalidInput("--spheres must be at least 1, got " + std::to_string(o.spheres));
-  if (!(o.coverage >= 0.0 && o.coverage <= 1.0))
-    throw InvalidInput("--coverage must be in (0, 1], got " + std::to_string(o.coverage));
-  if (!(o.min_radius >= 0.0) || !std::isfinite(o.min_radius))
-    throw InvalidInput("--min-radius must be non-negative, got " + std::to_string(o.min_radius));
-  if (!std::isfinite(o.tolerance) || !(o.tolerance_voxels >= 0.0) ||
-      !std::isfinite(o.tolerance_voxels))
-    throw InvalidInput("--tolerance must be finite and non-negative, got " +
-                       std::to_string(o.tolerance));
-  if (!(o.tolerance_relative >= 0.0 && o.tolerance_relative < 1.0))
-    throw InvalidInput("--relative-tolerance must be in [0, 1), got " +
-                       std::to_string(o.tolerance_relative));
-  if (!(o.max_overshoot >= 0.0 && o.max_overshoot < 1.0))
-    throw InvalidInput("--max-overshoot must be in [0, 1), got " + std::to_string(o.max_overshoot));
-  if (o.refine_iterations < 0 || o.refine_iterations > 1000)
-    throw InvalidInput("--refine-iterations must be in [0, 1000], got " +
-                       std::to_string(o.refine_iterations));
-  if (!std::isfinite(o.refine_work))
-    throw InvalidInput("refine_work must be finite, got " + std::to_string(o.refine_work));
-  if (!(o.refine_min_gain >= 0.0) || !std::isfinite(o.refine_min_gain))
-    throw InvalidInput("refine_min_gain must be finite and non-negative, got " +
-                       std::to_string(o.refine_min_gain));
-  if (!(o.ridge > 0.0 && o.ridge <= 1.0))
-    throw InvalidInput("ridge threshold must be in (0, 1], got " + std::to_string(o.ridge));
-}
-
 FillResult fill(const MeshIndex& distance, const DistanceField& field, const FillOptions& options,
                 const Interrupter& interrupter) {
   validate(options);
@@ -243,15 +215,6 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
   }
   r.overshoot = contract.overshoot();
   return r;
-}
-
-FieldOptions fill_field_options(const Mesh& mesh, const FillOptions& options) {
-  FieldOptions field = options.field;
-  const double volume = signed_volume(mesh);
-  if (options.voxels_from_count && options.spheres > 0 && !field.vote_sign && volume > 0.0)
-    field.count_voxel =
-        kSmallestSphereOverSpacing * std::cbrt(volume / options.spheres) / kVoxelsPerSmallestRadius;
-  return field;
 }
 
 FillResult fill(const Mesh& mesh, const FillOptions& options, const Interrupter& interrupter) {

@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <charconv>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -66,6 +67,19 @@ std::optional<double> to_number(std::string_view token) {
 
 std::optional<long long> to_integer(std::string_view token) {
   return whole<long long>(token);
+}
+
+std::string csv_escape(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string id_name(std::size_t i) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%05zu", i);
+  return buf;
 }
 
 }  // namespace clumpkit

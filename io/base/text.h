@@ -2,6 +2,7 @@
 // locale-independent numbers that must fill their whole token.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -24,5 +25,11 @@ std::optional<double> to_number(std::string_view token);
 
 /// The integer that is all of `token` (a leading '+' allowed), or nothing.
 std::optional<long long> to_integer(std::string_view token);
+
+/// CSV cell: quoted (with doubled quotes) when it holds a comma, quote or newline.
+std::string csv_escape(const std::string& s);
+
+/// Five-digit zero-padded particle id ("00042"), the file stem of per-particle outputs.
+std::string id_name(std::size_t i);
 
 }  // namespace clumpkit

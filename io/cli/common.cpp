@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "geom/errors.h"
-#include "io/pipeline/job.h"
 
 #include <tbb/global_control.h>
 

@@ -1,8 +1,9 @@
 // `clumpkit describe MESH`: shape descriptors of a closed mesh.
 #include "geom/descriptors/descriptors.h"
+#include "geom/format.h"
 #include "io/cli/common.h"
+#include "io/formats/descriptor_table.h"
 #include "io/formats/mesh_io.h"
-#include "io/reports/report.h"
 
 #include <cstdio>
 #include <iostream>

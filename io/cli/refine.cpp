@@ -1,10 +1,10 @@
 // `clumpkit refine MESH --triangles N -o OUT`: the same surface with at least N triangles.
 #include "geom/mesh/refine.h"
 #include "geom/errors.h"
+#include "geom/format.h"
 #include "io/cli/common.h"
 #include "io/formats/mesh_io.h"
-#include "io/pipeline/job.h"
-#include "io/reports/report.h"
+#include "io/pipeline/output_dir.h"
 
 #include <cstdio>
 #include <memory>

@@ -1,13 +1,14 @@
 // `clumpkit shape <block|hull|polyhedron|ellipsoid|cylinder|box>`: one particle to a mesh file.
 #include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"
+#include "geom/format.h"
 #include "geom/shapes/block.h"
 #include "geom/shapes/hull.h"
 #include "geom/shapes/polyhedron.h"
 #include "geom/shapes/primitives.h"
 #include "io/cli/common.h"
+#include "io/formats/descriptor_table.h"
 #include "io/formats/mesh_io.h"
-#include "io/reports/report.h"
 
 #include <cstdio>
 #include <iostream>

@@ -2,8 +2,8 @@
 #include "geom/format.h"
 #include "io/cli/common.h"
 #include "io/pipeline/cpt.h"
-#include "io/pipeline/element_test.h"
-#include "io/recipes/test_recipe.h"
+#include "io/pipeline/element_job.h"
+#include "io/recipes/lab_recipe.h"
 
 #include <nlohmann/json.hpp>
 
@@ -67,12 +67,12 @@ void register_test(CLI::App& app) {
     set_threads(o->threads);
     const TestRecipe recipe = read_test_recipe(o->recipe);
     ProgressBar bar("test", o->quiet);
-    ElementTestJobOptions jo;
+    LabJobOptions jo;
     jo.resume = o->resume;
     jo.checkpoint_seconds = o->checkpoint_seconds;
     jo.allow_dynamic = o->allow_dynamic;
     jo.save_consolidated = o->save_consolidated;
-    const ElementTestJobResult job =
+    const LabJobResult job =
         cpt ? run_cpt_job(o->specimen, recipe, o->out, jo, signal_interrupter(bar, "test"))
             : run_element_test_job(test_kind(o->kind), o->specimen, recipe, o->out, jo,
                                    signal_interrupter(bar, "test"));

@@ -5,10 +5,10 @@
 #include "geom/format.h"
 #include "geom/mesh/mesh.h"
 #include "geom/template/clump_template.h"
+#include "io/base/json_file.h"
 #include "io/formats/clump_io.h"
 #include "io/formats/library_table.h"
 #include "io/formats/mesh_io.h"
-#include "io/pipeline/job.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
 #include "io/formats/clump_io.h"
 
 #include "geom/errors.h"
+#include "geom/format.h"
 #include "geom/limits.h"
 #include "io/base/atomic_file.h"
 #include "io/base/text.h"
-#include "io/reports/report.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include "io/base/atomic_file.h"
 #include "io/base/text.h"
 #include "io/formats/clump_io.h"
-#include "io/reports/report.h"
+#include "io/formats/descriptor_table.h"
 
 #include <algorithm>
 #include <cmath>

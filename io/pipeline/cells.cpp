@@ -4,7 +4,8 @@
 #include "geom/errors.h"
 #include "io/base/atomic_file.h"
 #include "io/formats/cells_files.h"
-#include "io/pipeline/job.h"
+#include "io/pipeline/manifest.h"
+#include "io/pipeline/output_dir.h"
 
 #include <chrono>
 #include <cmath>

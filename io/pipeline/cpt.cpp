@@ -4,7 +4,7 @@
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "io/base/atomic_file.h"
-#include "io/pipeline/test_setup.h"
+#include "io/pipeline/lab_setup.h"
 #include "io/reports/plot.h"
 
 #include <algorithm>
@@ -41,9 +41,9 @@ void check_probe_in_core(const nlohmann::json& report, const std::string& report
 
 }  // namespace
 
-ElementTestJobResult run_cpt_job(const std::string& specimen_dir, const TestRecipe& recipe,
-                                 const std::string& out_dir, const ElementTestJobOptions& options,
-                                 const Interrupter& interrupter) {
+LabJobResult run_cpt_job(const std::string& specimen_dir, const TestRecipe& recipe,
+                         const std::string& out_dir, const LabJobOptions& options,
+                         const Interrupter& interrupter) {
   if (!recipe.probe)
     throw InvalidInput(recipe.path +
                        ": probe: `clumpkit test cpt` needs a [probe] section (diameter, "

@@ -2,9 +2,8 @@
 // as curve.csv, curve.png, report.json and manifest.json.
 #pragma once
 
-#include "io/pipeline/element_test.h"
-#include "io/pipeline/job.h"
-#include "io/recipes/test_recipe.h"
+#include "io/pipeline/lab_setup.h"
+#include "io/recipes/lab_recipe.h"
 
 #include <string>
 
@@ -19,9 +18,8 @@ namespace clumpkit {
 /// against depth), report.json and manifest.json; checkpoints and --resume as
 /// run_element_test_job (the stage "cpt"). Throws InvalidInput before writing anything for a
 /// recipe without [probe] or a probe the cell cannot take.
-ElementTestJobResult run_cpt_job(const std::string& specimen_dir, const TestRecipe& recipe,
-                                 const std::string& out_dir,
-                                 const ElementTestJobOptions& options = {},
-                                 const Interrupter& interrupter = {});
+LabJobResult run_cpt_job(const std::string& specimen_dir, const TestRecipe& recipe,
+                         const std::string& out_dir, const LabJobOptions& options = {},
+                         const Interrupter& interrupter = {});
 
 }  // namespace clumpkit

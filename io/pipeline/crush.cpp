@@ -6,10 +6,11 @@
 #include "geom/errors.h"
 #include "geom/shapes/primitives.h"
 #include "io/base/atomic_file.h"
+#include "io/base/json_file.h"
 #include "io/base/text.h"
-#include "io/pipeline/job.h"
+#include "io/pipeline/manifest.h"
+#include "io/pipeline/output_dir.h"
 #include "io/reports/plot.h"
-#include "io/reports/report.h"
 
 #include <tbb/parallel_for.h>
 

@@ -5,7 +5,8 @@
 #include "io/base/atomic_file.h"
 #include "io/export/export_source.h"
 #include "io/export/formats.h"
-#include "io/pipeline/job.h"
+#include "io/pipeline/manifest.h"
+#include "io/pipeline/output_dir.h"
 
 #include <nlohmann/json.hpp>
 

@@ -6,7 +6,7 @@
 #include "io/formats/clump_io.h"
 #include "io/formats/clump_vtp.h"
 #include "io/formats/mesh_io.h"
-#include "io/pipeline/job.h"
+#include "io/pipeline/output_dir.h"
 #include "io/reports/views.h"
 
 #include <algorithm>

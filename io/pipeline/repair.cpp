@@ -1,7 +1,7 @@
 #include "io/pipeline/repair.h"
 
 #include "geom/errors.h"
-#include "io/pipeline/job.h"
+#include "io/pipeline/output_dir.h"
 
 namespace clumpkit {
 

@@ -2,10 +2,15 @@
 
 #include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"
+#include "geom/format.h"
 #include "geom/mesh/refine.h"
 #include "io/base/atomic_file.h"
+#include "io/base/text.h"
+#include "io/formats/descriptor_table.h"
 #include "io/formats/mesh_io.h"
-#include "io/reports/report.h"
+#include "io/pipeline/manifest.h"
+#include "io/pipeline/output_dir.h"
+#include "io/pipeline/particle_runner.h"
 
 #include <tbb/parallel_for.h>
 #include <nlohmann/json.hpp>

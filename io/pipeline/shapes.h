@@ -1,7 +1,6 @@
 // The shapes job: a shape library from a recipe (meshes, descriptor table and manifest).
 #pragma once
 
-#include "io/pipeline/job.h"
 #include "io/recipes/recipe.h"
 
 #include <functional>

@@ -6,11 +6,12 @@
 #include "io/formats/library_table.h"
 #include "io/formats/specimen_csv.h"
 #include "io/formats/specimen_vtp.h"
-#include "io/pipeline/job.h"
 #include "io/pipeline/library.h"
+#include "io/pipeline/manifest.h"
+#include "io/pipeline/output_dir.h"
 #include "io/pipeline/stage_files.h"
 #include "io/recipes/recipe.h"
-#include "io/recipes/specimen_spec.h"
+#include "io/recipes/specimen_build.h"
 #include "io/reports/specimen_report.h"
 
 #include <cmath>

@@ -3,10 +3,12 @@
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "io/base/atomic_file.h"
+#include "io/base/json_file.h"
 #include "io/base/text.h"
 #include "io/formats/specimen_csv.h"
 #include "io/formats/specimen_vtp.h"
-#include "io/pipeline/job.h"
+#include "io/pipeline/manifest.h"
+#include "io/pipeline/output_dir.h"
 
 #include <cmath>
 #include <filesystem>

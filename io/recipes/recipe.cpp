@@ -140,4 +140,11 @@ ShapeRecipe read_shape_recipe(const std::string& path) {
   return parse_shape_recipe(read_file(path, "recipe file"), path);
 }
 
+std::vector<int> particle_fractions(const ShapeRecipe& recipe) {
+  std::vector<int> f;
+  for (std::size_t k = 0; k < recipe.fractions.size(); ++k)
+    f.insert(f.end(), static_cast<std::size_t>(recipe.fractions[k].count), static_cast<int>(k));
+  return f;
+}
+
 }  // namespace clumpkit

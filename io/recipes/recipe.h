@@ -2,7 +2,7 @@
 #pragma once
 
 #include "geom/fill/fill.h"
-#include "geom/shapes/shape_spec.h"
+#include "geom/shapes/shape_fraction.h"
 
 #include <cstdint>
 #include <string>
@@ -46,5 +46,8 @@ ShapeRecipe read_shape_recipe(const std::string& path);
 
 /// Same, from text already in memory; `path` is only used in messages.
 ShapeRecipe parse_shape_recipe(const std::string& text, const std::string& path);
+
+/// Fraction index of every particle of the recipe, in id order.
+std::vector<int> particle_fractions(const ShapeRecipe& recipe);
 
 }  // namespace clumpkit

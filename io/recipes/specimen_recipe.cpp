@@ -1,9 +1,9 @@
 #include "io/recipes/specimen_recipe.h"
 
 #include "geom/errors.h"
+#include "geom/format.h"
 #include "io/base/text.h"
 #include "io/recipes/toml_fields.h"
-#include "io/reports/report.h"
 
 #include <algorithm>
 #include <cmath>

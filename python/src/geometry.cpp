@@ -10,10 +10,10 @@
 #include "geom/shapes/primitives.h"
 #include "geom/template/clump_template.h"
 #include "geom/volume/union_of_balls.h"
+#include "io/formats/descriptor_table.h"
 #include "io/formats/mesh_io.h"
 #include "io/pipeline/fill.h"
 #include "io/pipeline/volume.h"
-#include "io/reports/report.h"
 #include "python/src/arrays.h"
 #include "python/src/run.h"
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "dem/core/timestep.h"
-#include "dem/lab/element_test.h"
+#include "dem/lab/element_loading.h"
 #include "dem/specimen/compression.h"
 
 namespace clumpkit::dem::test {

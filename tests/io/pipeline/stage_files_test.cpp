@@ -4,7 +4,7 @@
 #include "io/pipeline/stage_files.h"
 
 #include "dem/core/timestep.h"
-#include "dem/lab/element_test.h"
+#include "dem/lab/element_loading.h"
 #include "dem/specimen/compression.h"
 #include "geom/errors.h"
 #include "io/formats/checkpoint.h"

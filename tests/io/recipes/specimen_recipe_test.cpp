@@ -3,7 +3,7 @@
 #include "io/recipes/specimen_recipe.h"
 #include "../../invalid_input_message.h"
 #include "geom/errors.h"
-#include "io/recipes/specimen_spec.h"
+#include "io/recipes/specimen_build.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "geom/shapes/shape_spec.h"
+#include "geom/shapes/shape_fraction.h"
 
 #include "geom/errors.h"
 #include "geom/limits.h"

@@ -1,7 +1,4 @@
-#include "io/reports/report.h"
-
-#include <cstdio>
-#include <cstdlib>
+#include "io/formats/descriptor_table.h"
 
 namespace clumpkit {
 
@@ -65,19 +62,6 @@ std::vector<double> descriptor_csv_values(const Descriptors& d) {
           d.roundness.view[0],
           d.roundness.view[1],
           d.roundness.view[2]};
-}
-
-std::string csv_escape(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
-}
-
-std::string id_name(std::size_t i) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%05zu", i);
-  return buf;
 }
 
 }  // namespace clumpkit

@@ -1,6 +1,6 @@
-// The element test as a resumable stage (dem/lab/element_test.h): its state as a stage record,
+// The element test as a resumable stage (dem/lab/element_loading.h): its state as a stage record,
 // and the run that checkpoints it into a StageStore and continues from one.
-#include "dem/lab/element_test.h"
+#include "dem/lab/element_loading.h"
 
 #include "geom/errors.h"
 #include "geom/format.h"

@@ -1,6 +1,6 @@
-// Tests of element-test recipes (io/recipes/test_recipe.h): the bundled ones parse to their values,
+// Tests of element-test recipes (io/recipes/lab_recipe.h): the bundled ones parse to their values,
 // bad ones fail with the file, field and value in one line.
-#include "io/recipes/test_recipe.h"
+#include "io/recipes/lab_recipe.h"
 
 #include "../../invalid_input_message.h"
 #include "geom/errors.h"

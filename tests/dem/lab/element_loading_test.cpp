@@ -1,8 +1,8 @@
-// Element tests of dem/lab/element_test.h on a small compressed cube (about 130 spheres): a
+// Element tests of dem/lab/element_loading.h on a small compressed cube (about 130 spheres): a
 // triaxial and an isotropic test, each the same bytes for 1 and 2 threads. The CLI's element tests
 // run the same drive on the tiny specimen (tests/cli/element_test_test.cpp, label long); these are
 // their short siblings in the sanitizer pass.
-#include "dem/lab/element_test.h"
+#include "dem/lab/element_loading.h"
 
 #include "dem/core/timestep.h"
 #include "dem/specimen/compression.h"

@@ -1,4 +1,4 @@
-#include "io/recipes/test_recipe.h"
+#include "io/recipes/lab_recipe.h"
 
 #include "geom/errors.h"
 #include "io/base/text.h"

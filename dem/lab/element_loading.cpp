@@ -1,4 +1,4 @@
-#include "dem/lab/element_test.h"
+#include "dem/lab/element_loading.h"
 
 #include "dem/measure/strain_rate.h"
 #include "dem/measure/stress.h"

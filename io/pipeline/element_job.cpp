@@ -1,4 +1,4 @@
-#include "io/pipeline/element_test.h"
+#include "io/pipeline/element_job.h"
 
 #include "dem/core/timestep.h"
 #include "dem/measure/stress.h"
@@ -9,9 +9,8 @@
 #include "io/base/text.h"
 #include "io/formats/checkpoint.h"
 #include "io/formats/specimen_csv.h"
-#include "io/pipeline/job.h"
+#include "io/pipeline/lab_setup.h"
 #include "io/pipeline/stage_files.h"
-#include "io/pipeline/test_setup.h"
 #include "io/reports/plot.h"
 
 #include <algorithm>
@@ -113,10 +112,10 @@ void write_consolidated(const fs::path& dir, const dem::World& world, const dem:
 
 }  // namespace
 
-ElementTestJobResult run_element_test_job(dem::TestKind kind, const std::string& specimen_dir,
-                                          const TestRecipe& recipe, const std::string& out_dir,
-                                          const ElementTestJobOptions& options,
-                                          const Interrupter& interrupter) {
+LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specimen_dir,
+                                  const TestRecipe& recipe, const std::string& out_dir,
+                                  const LabJobOptions& options,
+                                  const Interrupter& interrupter) {
   TestSetup setup = setup_test(
       kind_name(kind), specimen_dir, recipe, out_dir, options.resume, options.checkpoint_seconds,
       options.allow_dynamic, recipe.settings.strain_rate, "test.strain_rate", interrupter,

@@ -3,7 +3,7 @@
 
 #include "dem/core/contact.h"
 #include "dem/lab/cpt.h"
-#include "dem/lab/element_test.h"
+#include "dem/lab/element_loading.h"
 
 #include <optional>
 #include <string>

@@ -1,7 +1,7 @@
-// The element test's state and cell as a stage record and back (dem/lab/element_test_stage.cpp,
+// The element test's state and cell as a stage record and back (dem/lab/element_loading_stage.cpp,
 // put_cell/read_cell of dem/lab/cell.h): exact numbers, malformed entries refused by name. The
 // staged test stopped and resumed: tests/io/pipeline/stage_files_test.cpp.
-#include "dem/lab/element_test.h"
+#include "dem/lab/element_loading.h"
 
 #include "geom/errors.h"
 

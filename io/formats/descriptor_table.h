@@ -2,7 +2,6 @@
 #pragma once
 
 #include "geom/descriptors/descriptors.h"
-#include "geom/format.h"  // format_number, for every user of these renderings
 
 #include <nlohmann/json.hpp>
 
@@ -19,11 +18,5 @@ nlohmann::json to_json(const Descriptors& d);
 /// CSV column names for descriptors, in the order of descriptor_csv_values.
 const std::vector<std::string>& descriptor_csv_columns();
 std::vector<double> descriptor_csv_values(const Descriptors& d);
-
-/// CSV cell: quoted (with doubled quotes) when it holds a comma, quote or newline.
-std::string csv_escape(const std::string& s);
-
-/// Five-digit zero-padded particle id ("00042"), the file stem of per-particle outputs.
-std::string id_name(std::size_t i);
 
 }  // namespace clumpkit

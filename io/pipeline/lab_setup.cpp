@@ -1,12 +1,15 @@
-#include "io/pipeline/test_setup.h"
+#include "io/pipeline/lab_setup.h"
 
 #include "dem/core/timestep.h"
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "geom/hash.h"
 #include "io/base/atomic_file.h"
+#include "io/base/json_file.h"
 #include "io/base/text.h"
 #include "io/formats/specimen_csv.h"
+#include "io/pipeline/manifest.h"
+#include "io/pipeline/output_dir.h"
 
 #include <algorithm>
 #include <cmath>
@@ -158,12 +161,10 @@ TestSetup setup_test(const std::string& kind, const std::string& specimen_dir,
   return setup;
 }
 
-ElementTestJobResult finish_test_job(const TestSetup& setup, const std::string& out_dir,
-                                     const TestRecipe& recipe, const std::string& test,
-                                     const std::string& specimen_dir,
-                                     const nlohmann::ordered_json& report,
-                                     const std::vector<std::string>& files, bool resume,
-                                     bool resumed) {
+LabJobResult finish_test_job(const TestSetup& setup, const std::string& out_dir,
+                             const TestRecipe& recipe, const std::string& test,
+                             const std::string& specimen_dir, const nlohmann::ordered_json& report,
+                             const std::vector<std::string>& files, bool resume, bool resumed) {
   const fs::path& out = setup.out;
   nlohmann::ordered_json full = report;
   full["density_scaling"] = recipe.density_scaling;
@@ -176,7 +177,7 @@ ElementTestJobResult finish_test_job(const TestSetup& setup, const std::string& 
   write_file_atomically((out / "manifest.json").string(),
                         [&](std::ostream& f) { f << m.dump(2) << "\n"; });
   publish_directory(out.string(), out_dir);
-  ElementTestJobResult result;
+  LabJobResult result;
   result.report = std::move(full);
   result.resumed = resumed;
   if (resume && !resumed)

@@ -1,4 +1,4 @@
-#include "io/recipes/specimen_spec.h"
+#include "io/recipes/specimen_build.h"
 
 #include "dem/specimen/deposition.h"
 

@@ -3,11 +3,9 @@
 // checkpoint store.
 #pragma once
 
-#include "dem/lab/element_test.h"
-#include "io/pipeline/element_test.h"
-#include "io/pipeline/job.h"
+#include "dem/lab/element_loading.h"
 #include "io/pipeline/stage_files.h"
-#include "io/recipes/test_recipe.h"
+#include "io/recipes/lab_recipe.h"
 
 #include <nlohmann/json.hpp>
 
@@ -18,6 +16,32 @@
 #include <string>
 
 namespace clumpkit {
+
+/// Options of a test job (element test, CPT).
+struct LabJobOptions {
+  /// Continue the work kept in DIR.partial (its checkpoint; refused, naming both fingerprints,
+  /// when it was made by another test, recipe, specimen or version; without one it starts
+  /// afresh, saying so).
+  bool resume = false;
+  double checkpoint_seconds = 60;  ///< wall-clock seconds between checkpoints (≤ 0: none)
+  /// Run a test whose inertial number I = ε̇·d·sqrt(ρ/σ3) exceeds 1e-2 (refused otherwise: a
+  /// dynamic test, not a quasi-static element test).
+  bool allow_dynamic = false;
+  /// Also write DIR/consolidated: the specimen at the end of consolidation as a specimen
+  /// directory (specimen.csv, report.json, manifest.json) that `clumpkit export` reads — the
+  /// cylinder cell as its container (bottom platen at z = 0), gravity 0, the test's contact law
+  /// with the specimen's viscous damping ratio — so another engine can run the same test from
+  /// the same state. Cylinder cells only (exports model cylinders).
+  bool save_consolidated = false;
+};
+
+/// What a test job (element test, CPT) did: report.json as written, and whether it continued a
+/// checkpoint (with --resume, the reason it could not, when it started afresh).
+struct LabJobResult {
+  nlohmann::ordered_json report;
+  bool resumed = false;
+  std::string afresh_reason;
+};
 
 /// A test ready to run.
 struct TestSetup {
@@ -50,11 +74,9 @@ TestSetup setup_test(
 /// the specimen, `files` besides them) written into DIR.partial, DIR.partial published as
 /// `out_dir`, and what the job did (with `resume` but no checkpoint found, the reason it
 /// started afresh).
-ElementTestJobResult finish_test_job(const TestSetup& setup, const std::string& out_dir,
-                                     const TestRecipe& recipe, const std::string& test,
-                                     const std::string& specimen_dir,
-                                     const nlohmann::ordered_json& report,
-                                     const std::vector<std::string>& files, bool resume,
-                                     bool resumed);
+LabJobResult finish_test_job(const TestSetup& setup, const std::string& out_dir,
+                             const TestRecipe& recipe, const std::string& test,
+                             const std::string& specimen_dir, const nlohmann::ordered_json& report,
+                             const std::vector<std::string>& files, bool resume, bool resumed);
 
 }  // namespace clumpkit
