@@ -114,8 +114,7 @@ void write_consolidated(const fs::path& dir, const dem::World& world, const dem:
 
 LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specimen_dir,
                                   const TestRecipe& recipe, const std::string& out_dir,
-                                  const LabJobOptions& options,
-                                  const Interrupter& interrupter) {
+                                  const LabJobOptions& options, const Interrupter& interrupter) {
   TestSetup setup = setup_test(
       kind_name(kind), specimen_dir, recipe, out_dir, options.resume, options.checkpoint_seconds,
       options.allow_dynamic, recipe.settings.strain_rate, "test.strain_rate", interrupter,
