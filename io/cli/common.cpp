@@ -45,9 +45,25 @@ extern "C" void on_stop_signal(int signal) {
 }  // namespace
 
 void set_threads(int threads) {
-  if (threads > 0)
-    g_threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                      static_cast<std::size_t>(threads));
+  g_threads = limit_threads(threads);
+}
+
+void add_job_options(CLI::App* command, JobOptions& options, JobKind kind,
+                     const std::string& json_help) {
+  command->add_option("--threads", options.threads, "Worker threads (0 = all cores)")
+      ->capture_default_str();
+  if (kind == JobKind::staged) {
+    command
+        ->add_option("--checkpoint-seconds", options.checkpoint_seconds,
+                     "Wall-clock seconds between checkpoints in DIR.partial (0: only on Ctrl-C)")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+    command->add_flag("--resume", options.resume,
+                      "Continue the checkpoint kept in DIR.partial by a killed or interrupted run "
+                      "(same bytes as an uninterrupted run)");
+  }
+  command->add_flag("--quiet", options.quiet, "No progress bar");
+  command->add_flag("--json", options.json, json_help);
 }
 
 ProgressBar::ProgressBar(std::string label, bool quiet)

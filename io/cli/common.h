@@ -1,7 +1,9 @@
 // Shared pieces of the clumpkit subcommands: registration, threads, progress bar, interruption.
 #pragma once
 
+#include "dem/run/stage_store.h"
 #include "geom/progress.h"
+#include "io/pipeline/threads.h"
 
 #include <CLI/CLI.hpp>
 
@@ -33,7 +35,26 @@ void register_repair(CLI::App& app);
 /// The --weld-tolerance option of the commands that read a mesh (MeshReadOptions).
 void add_weld_option(CLI::App* command, double& weld_tolerance);
 
-/// Thread-count control shared by parallel subcommands: 0 = all cores.
+/// The options every job command shares, declared by one call (add_job_options).
+struct JobOptions {
+  int threads = kAllCores;  ///< --threads (io/pipeline/threads.h)
+  bool quiet = false;       ///< --quiet: no progress bar
+  bool json = false;        ///< --json: one JSON object on stdout
+  bool resume = false;      ///< --resume (staged jobs)
+  /// --checkpoint-seconds (staged jobs): wall-clock seconds between checkpoints.
+  double checkpoint_seconds = dem::StageControl{}.checkpoint_every_seconds;
+};
+
+/// A parallel job takes --threads, --quiet and --json; a staged one (checkpoints in DIR.partial)
+/// also --checkpoint-seconds and --resume.
+enum class JobKind { parallel, staged };
+
+/// Adds the job options of `kind` to `command`, bound to `options`; `json_help` says what --json
+/// prints.
+void add_job_options(CLI::App* command, JobOptions& options, JobKind kind,
+                     const std::string& json_help);
+
+/// Limits the worker threads for the rest of the command (limit_threads's rule and check).
 void set_threads(int threads);
 
 /// Progress bar on stderr, drawn only when stderr is a terminal and not --quiet.

@@ -15,8 +15,7 @@ namespace clumpkit::cli {
 void register_crush(CLI::App& app) {
   struct Opts {
     std::string recipe, out;
-    int threads = 0;
-    bool quiet = false, json = false;
+    JobOptions job;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -32,20 +31,18 @@ void register_crush(CLI::App& app) {
       "same bytes, for any --threads.");
   c->add_option("--recipe", o->recipe, "Recipe file")->required();
   c->add_option("--out", o->out, "Output directory")->required();
-  c->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->capture_default_str();
-  c->add_flag("--quiet", o->quiet, "No progress bar");
-  c->add_flag("--json", o->json, "Print report.json on stdout");
+  add_job_options(c, o->job, JobKind::parallel, "Print report.json on stdout");
   c->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
-    set_threads(o->threads);
+    set_threads(o->job.threads);
     const CrushRecipe recipe = read_crush_recipe(o->recipe);
-    ProgressBar bar("crush", o->quiet);
+    ProgressBar bar("crush", o->job.quiet);
     const CrushJobResult r = run_crush(recipe, o->out, signal_interrupter(bar, "crush"));
     bar.finish();
     warn_redone(o->out, r.redone);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (o->json) {
+    if (o->job.json) {
       nlohmann::ordered_json j = r.report;
       j["resumed"] = r.resumed;
       j["seconds"] = seconds;

@@ -15,9 +15,9 @@ namespace clumpkit::cli {
 void register_library(CLI::App& app) {
   struct Opts {
     std::string recipe, out;
-    int threads = 0;
     double max_memory_gib = 0;  // 0: half of this machine's memory
-    bool png = false, vtp = false, quiet = false, json = false;
+    JobOptions job;
+    bool png = false, vtp = false;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -30,7 +30,7 @@ void register_library(CLI::App& app) {
       "same seed, same bytes, for any --threads.");
   c->add_option("--recipe", o->recipe, "Recipe file (see assets/recipes/)")->required();
   c->add_option("--out", o->out, "Output directory")->required();
-  c->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->capture_default_str();
+  add_job_options(c, o->job, JobKind::parallel, "Print a JSON summary on stdout");
   c->add_flag("--png", o->png,
               "Also write NNNNN.png (900 px: front, side, top and oblique views, spheres shaded "
               "and coloured under the translucent mesh) and DIR/contact_sheet.png (every "
@@ -41,13 +41,11 @@ void register_library(CLI::App& app) {
   c->add_option("--max-memory", o->max_memory_gib,
                 "Refuse a particle whose fill is estimated to need more than this many GiB "
                 "divided by the threads (default: half of this machine's memory)");
-  c->add_flag("--quiet", o->quiet, "No progress bar");
-  c->add_flag("--json", o->json, "Print a JSON summary on stdout");
   c->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
-    set_threads(o->threads);
+    set_threads(o->job.threads);
     const ShapeRecipe recipe = read_shape_recipe(o->recipe);
-    ProgressBar bar("library", o->quiet);
+    ProgressBar bar("library", o->job.quiet);
     LibraryOptions lo;
     lo.png = o->png;
     lo.vtp = o->vtp;
@@ -57,7 +55,7 @@ void register_library(CLI::App& app) {
     warn_redone(o->out, r.redone);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (o->json) {
+    if (o->job.json) {
       std::cout << nlohmann::json{{"particles", r.particles},
                                   {"resumed", r.resumed},
                                   {"out", r.out_dir},

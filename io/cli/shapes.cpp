@@ -14,8 +14,7 @@ namespace clumpkit::cli {
 void register_shapes(CLI::App& app) {
   struct Opts {
     std::string recipe, out;
-    int threads = 0;
-    bool quiet = false, json = false;
+    JobOptions job;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -26,16 +25,14 @@ void register_shapes(CLI::App& app) {
   c->add_option("--recipe", o->recipe, "Recipe file (see assets/recipes/)")->required();
   c->add_option("--out", o->out, "Output directory (replaced if it is a previous clumpkit output)")
       ->required();
-  c->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->capture_default_str();
-  c->add_flag("--quiet", o->quiet, "No progress bar");
-  c->add_flag("--json", o->json, "Print a JSON summary on stdout");
+  add_job_options(c, o->job, JobKind::parallel, "Print a JSON summary on stdout");
   c->callback([o] {
-    set_threads(o->threads);
+    set_threads(o->job.threads);
     const ShapeRecipe recipe = read_shape_recipe(o->recipe);
-    ProgressBar bar("shapes", o->quiet);
+    ProgressBar bar("shapes", o->job.quiet);
     const auto r = run_shape_batch(recipe, o->out, signal_interrupter(bar, "shapes"));
     bar.finish();
-    if (o->json) {
+    if (o->job.json) {
       std::cout << nlohmann::json{{"particles", r.particles}, {"out", r.out_dir}}.dump(2) << "\n";
     } else {
       std::printf("wrote %zu particles to %s (meshes/, shapes.csv, manifest.json)\n", r.particles,

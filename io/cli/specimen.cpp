@@ -15,10 +15,8 @@ namespace clumpkit::cli {
 void register_specimen(CLI::App& app) {
   struct Opts {
     std::string recipe, out;
-    int threads = 0;
-    double checkpoint_seconds = 60;
     double max_memory_gib = 0;  // 0: half of this machine's memory
-    bool resume = false, quiet = false, json = false;
+    JobOptions job;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -41,25 +39,18 @@ void register_specimen(CLI::App& app) {
       "any --threads.");
   c->add_option("--recipe", o->recipe, "Specimen recipe file (see assets/recipes/)")->required();
   c->add_option("--out", o->out, "Output directory")->required();
-  c->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->capture_default_str();
-  c->add_option("--checkpoint-seconds", o->checkpoint_seconds,
-                "Wall-clock seconds between checkpoints of a running stage")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+  add_job_options(c, o->job, JobKind::staged, "Print report.json on stdout");
   c->add_option("--max-memory", o->max_memory_gib,
                 "Refuse a recipe whose estimated memory exceeds this many GiB (default: half "
                 "of this machine's memory)");
-  c->add_flag("--resume", o->resume, "Continue a killed run from DIR.partial");
-  c->add_flag("--quiet", o->quiet, "No progress bar");
-  c->add_flag("--json", o->json, "Print report.json on stdout");
   c->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
-    set_threads(o->threads);
+    set_threads(o->job.threads);
     const SpecimenRecipe recipe = read_specimen_recipe(o->recipe);
-    ProgressBar bar("specimen", o->quiet);
+    ProgressBar bar("specimen", o->job.quiet);
     SpecimenJobOptions options;
-    options.resume = o->resume;
-    options.checkpoint_seconds = o->checkpoint_seconds;
+    options.resume = o->job.resume;
+    options.checkpoint_seconds = o->job.checkpoint_seconds;
     options.max_memory_bytes = max_memory_bytes(o->max_memory_gib);
     const SpecimenJobResult job =
         run_specimen(recipe, o->out, options, signal_interrupter(bar, "specimen"), t0);
@@ -67,7 +58,7 @@ void register_specimen(CLI::App& app) {
     const dem::SpecimenResult& result = job.specimen;
     const nlohmann::ordered_json& report = job.report;
 
-    if (o->json) {
+    if (o->job.json) {
       std::cout << report.dump(2) << "\n";
     } else if (recipe.compression) {
       std::printf(

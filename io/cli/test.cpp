@@ -17,10 +17,8 @@ namespace clumpkit::cli {
 void register_test(CLI::App& app) {
   struct Opts {
     std::string kind, specimen, recipe, out;
-    int threads = 0;
-    double checkpoint_seconds = 60;
-    bool resume = false, quiet = false, json = false, allow_dynamic = false,
-         save_consolidated = false;
+    JobOptions job;
+    bool allow_dynamic = false, save_consolidated = false;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -44,13 +42,7 @@ void register_test(CLI::App& app) {
   c->add_option("--specimen", o->specimen, "Specimen directory")->required();
   c->add_option("--recipe", o->recipe, "Test recipe (see assets/recipes/test-*.toml)")->required();
   c->add_option("--out", o->out, "Output directory")->required();
-  c->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->capture_default_str();
-  c->add_option("--checkpoint-seconds", o->checkpoint_seconds,
-                "Seconds between checkpoints in DIR.partial (0: only when interrupted)")
-      ->capture_default_str();
-  c->add_flag("--resume", o->resume,
-              "Continue the checkpoint kept in DIR.partial by a killed or interrupted run (same "
-              "bytes as an uninterrupted run)");
+  add_job_options(c, o->job, JobKind::staged, "Print report.json on stdout");
   c->add_flag("--allow-dynamic", o->allow_dynamic,
               "Run even when the strain rate gives an inertial number above 1e-2 (refused "
               "otherwise: not a quasi-static test)");
@@ -58,18 +50,16 @@ void register_test(CLI::App& app) {
               "Also write DIR/consolidated: the consolidated specimen as a specimen directory "
               "(cell as container, bottom platen at z = 0, gravity 0) for `clumpkit export`, so "
               "another engine runs the same test from the same state");
-  c->add_flag("--quiet", o->quiet, "No progress bar");
-  c->add_flag("--json", o->json, "Print report.json on stdout");
   c->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
     const bool cpt = o->kind == "cpt";
     if (!cpt) test_kind(o->kind);  // an unknown kind is refused before anything is read
-    set_threads(o->threads);
+    set_threads(o->job.threads);
     const TestRecipe recipe = read_test_recipe(o->recipe);
-    ProgressBar bar("test", o->quiet);
+    ProgressBar bar("test", o->job.quiet);
     LabJobOptions jo;
-    jo.resume = o->resume;
-    jo.checkpoint_seconds = o->checkpoint_seconds;
+    jo.resume = o->job.resume;
+    jo.checkpoint_seconds = o->job.checkpoint_seconds;
     jo.allow_dynamic = o->allow_dynamic;
     jo.save_consolidated = o->save_consolidated;
     const LabJobResult job =
@@ -89,7 +79,7 @@ void register_test(CLI::App& app) {
       warning("the probe came within one diameter of the bottom platen before its depth");
     if (!rep["consolidated"].get<bool>())
       warning("consolidation did not reach equilibrium within its step limit");
-    if (o->json) {
+    if (o->job.json) {
       std::cout << rep.dump(2) << "\n";
     } else {
       std::printf("wrote %s: %s test, %lld steps in %.1f s: curve.csv, curve.png, report.json\n",

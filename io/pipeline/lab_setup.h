@@ -23,7 +23,8 @@ struct LabJobOptions {
   /// when it was made by another test, recipe, specimen or version; without one it starts
   /// afresh, saying so).
   bool resume = false;
-  double checkpoint_seconds = 60;  ///< wall-clock seconds between checkpoints (≤ 0: none)
+  /// Wall-clock seconds between checkpoints (0: only when interrupted).
+  double checkpoint_seconds = dem::StageControl{}.checkpoint_every_seconds;
   /// Run a test whose inertial number I = ε̇·d·sqrt(ρ/σ3) exceeds 1e-2 (refused otherwise: a
   /// dynamic test, not a quasi-static element test).
   bool allow_dynamic = false;

@@ -15,8 +15,9 @@
 namespace clumpkit {
 
 struct SpecimenJobOptions {
-  bool resume = false;             ///< continue from DIR.partial instead of starting afresh
-  double checkpoint_seconds = 60;  ///< wall-clock seconds between checkpoints of a stage
+  bool resume = false;  ///< continue from DIR.partial instead of starting afresh
+  /// Wall-clock seconds between checkpoints of a stage (0: only when interrupted).
+  double checkpoint_seconds = dem::StageControl{}.checkpoint_every_seconds;
   /// Refuse, before anything is built, a recipe whose estimated_specimen_bytes exceed this
   /// (0: no limit).
   double max_memory_bytes = 0;

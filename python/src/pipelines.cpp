@@ -4,13 +4,13 @@
 #include "io/formats/specimen_csv.h"
 #include "io/pipeline/library.h"
 #include "io/pipeline/specimen.h"
+#include "io/pipeline/threads.h"
 #include "io/recipes/recipe.h"
 #include "io/recipes/specimen_recipe.h"
 #include "python/src/arrays.h"
 #include "python/src/run.h"
 
 #include <pybind11/stl.h>
-#include <tbb/global_control.h>
 
 #include <filesystem>
 #include <memory>
@@ -21,15 +21,6 @@ using namespace py::literals;
 namespace clumpkit::python {
 
 namespace {
-
-// At most `threads` worker threads for the call (0: all cores), as --threads does.
-std::unique_ptr<tbb::global_control> limit_threads(int threads) {
-  if (threads < 0)
-    throw InvalidInput("threads must be 0 (all cores) or more, got " + std::to_string(threads));
-  if (threads == 0) return nullptr;
-  return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                               static_cast<std::size_t>(threads));
-}
 
 template <class T>
 py::array_t<T> column(std::size_t n) {
@@ -129,7 +120,7 @@ void bind_pipelines(py::module_& m) {
         d["out"] = result.out_dir;
         return d;
       },
-      "recipe"_a, "out"_a, py::kw_only(), "png"_a = false, "vtp"_a = false, "threads"_a = 0,
+      "recipe"_a, "out"_a, py::kw_only(), "png"_a = false, "vtp"_a = false, "threads"_a = kAllCores,
       "progress"_a = py::none(),
       "`clumpkit library`: the clump library of a shape recipe in the folder `out` (written in "
       "out.partial; a stopped run called again resumes it to the same bytes); returns "
@@ -151,7 +142,7 @@ void bind_pipelines(py::module_& m) {
             progress);
         return python_of(report);
       },
-      "recipe"_a, "out"_a, py::kw_only(), "resume"_a = false, "threads"_a = 0,
+      "recipe"_a, "out"_a, py::kw_only(), "resume"_a = false, "threads"_a = kAllCores,
       "progress"_a = py::none(),
       "`clumpkit specimen`: builds the specimen of a recipe into the folder `out` and returns "
       "its report.json as a dict; stopped (Ctrl-C), it keeps out.partial with its checkpoints "
