@@ -43,19 +43,36 @@ double fraction_done(const CptState& st, const CptSettings& s) {
 
 }  // namespace
 
-void validate_cpt(const World& world, const TestCell& cell, const CptSettings& s) {
-  const ProbeSettings& p = s.probe;
+void validate_probe(const ProbeSettings& p) {
   auto positive = [](double v, const char* what) {
     if (!(v > 0.0) || !std::isfinite(v))
-      throw InvalidInput(std::string("cpt: probe ") + what + " must be positive, got " +
+      throw InvalidInput(std::string("probe.") + what + " must be positive, got " +
                          format_number(v));
   };
   positive(p.diameter, "diameter");
   positive(p.velocity, "velocity");
   positive(p.depth, "depth");
   if (!(p.apex_deg > 0.0 && p.apex_deg < 180.0))
-    throw InvalidInput("cpt: probe apex angle must be in (0, 180) degrees, got " +
+    throw InvalidInput("probe.apex_deg must be in (0, 180) degrees, got " +
                        format_number(p.apex_deg));
+}
+
+void validate_cpt(const World& world, const TestCell& cell, const CptSettings& s,
+                  double core_radius) {
+  const ProbeSettings& p = s.probe;
+  try {
+    validate_probe(p);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(std::string("cpt: ") + e.what());
+  }
+  if (core_radius > 0.0 && p.diameter > 2.0 * core_radius)
+    throw InvalidInput("cpt: probe.diameter " + format_number(p.diameter) +
+                       " m is wider than the specimen's core of small particles (radius " +
+                       format_number(core_radius) + " m)");
+  if (core_radius > 0.0 && core_radius < 4.0 * p.diameter)
+    throw InvalidInput("cpt: probe.diameter: the specimen's core of small particles (" +
+                       format_number(core_radius) + " m) is smaller than 4 probe diameters (" +
+                       format_number(4.0 * p.diameter) + " m)");
   const Vec3 l = cell_lengths(world, cell);
   if (!(p.diameter <= 0.5 * std::min(l.x(), l.y())))
     throw InvalidInput("cpt: probe diameter " + format_number(p.diameter) +

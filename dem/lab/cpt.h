@@ -65,9 +65,20 @@ struct CptResult {
   bool resumed = false;
 };
 
-/// Throws InvalidInput for a probe that cannot be pushed in `cell`: a non-positive diameter,
-/// speed or depth, an apex angle outside (0, 180), or a probe wider than half the cell.
-void validate_cpt(const World& world, const TestCell& cell, const CptSettings& settings);
+/// Throws InvalidInput "probe.FIELD must be ..., got V" for a probe that is none: a diameter,
+/// velocity or depth not positive and finite, an apex angle outside (0, 180) degrees. The one
+/// check of the probe's own values (recipes call it on their [probe] section, validate_cpt on
+/// its settings).
+void validate_probe(const ProbeSettings& probe);
+
+/// Throws InvalidInput for a probe that cannot be pushed in `cell`: validate_probe's cases, a
+/// probe wider than half the cell, one that a segment's walls keep off the particles, or, where
+/// the specimen is zoned radially with a core of small particles of radius `core_radius` (0: not
+/// zoned), a probe wider than that core or a core under 4 probe diameters (CTGU 2017 sizes the
+/// core at 4 probe diameters, 75 mm for 18 mm, so that the zone the cone disturbs stays in fine
+/// material).
+void validate_cpt(const World& world, const TestCell& cell, const CptSettings& settings,
+                  double core_radius = 0.0);
 
 /// Consolidates the specimen isotropically to the confining stress (consolidate_cell), then adds
 /// a probe on the cell's axis with its apex at the top platen and pushes it down at its speed,

@@ -112,9 +112,11 @@ void validate(const CompressionSpec& spec) {
   if (spec.shape == CompressionSpec::Shape::segment && !(spec.angle > 0.0 && spec.angle <= M_PI))
     throw InvalidInput("compression: a segment's angle must be in (0, 180] degrees, got " +
                        format_number(spec.angle * 180.0 / M_PI));
-  if (!(spec.porosity > 0.0 && spec.porosity < 1.0))
-    throw InvalidInput("compression: porosity must be in (0, 1), got " +
-                       format_number(spec.porosity));
+  try {
+    check_target_porosity(spec.porosity);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(std::string("compression: porosity ") + e.what());
+  }
   if (!(spec.friction >= 0.0) || !std::isfinite(spec.friction))
     throw InvalidInput("compression: friction must be non-negative, got " +
                        format_number(spec.friction));
@@ -255,6 +257,10 @@ void measure_zones(const CompressionSpec& spec, const Prism& prism, World& world
 
 }  // namespace
 
+void check_target_porosity(double n) {
+  if (!(n > 0.2 && n < 0.9)) throw InvalidInput("must be in (0.2, 0.9), got " + format_number(n));
+}
+
 CompressionResult compress_specimen(const CompressionSpec& spec, const StageControl& control) {
   validate(spec);
   const bool cuboid = spec.shape == CompressionSpec::Shape::cuboid;
@@ -300,6 +306,7 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const StageCont
                                                              container_volume(spec, spec.size)));
 
   CompressionResult r;
+  r.target_porosity = spec.porosity;
   World& world = r.world;
   TestCell cell;
   double factor = spec.loose_factor;  // of the loose packing's container

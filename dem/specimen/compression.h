@@ -24,7 +24,8 @@ struct CompressionSpec {
   /// built container keeps these proportions and is scaled (by less than one particle's share)
   /// so that the particles drawn fill it at exactly the target porosity.
   Vec3 size = Vec3(0.1, 0.1, 0.1);
-  double porosity = 0.37;  ///< target: 1 − (solid volume / container volume)
+  /// Target: 1 − (solid volume / container volume), in the range of check_target_porosity.
+  double porosity = 0.37;
   /// Interparticle friction during the compression (0: the densest packing the porosity allows);
   /// the specimen keeps contact.friction.
   double friction = 0.0;
@@ -83,6 +84,11 @@ struct ZoneResult {
   long mis_zoned = 0;
 };
 
+/// Throws InvalidInput "must be in (0.2, 0.9), got N" unless a compression can aim at porosity
+/// `n`: looser than 0.9 is no packing, denser than 0.2 beyond any packing of these particles. The
+/// one check of a target porosity (recipes call it on their key, validate on the spec).
+void check_target_porosity(double n);
+
 /// The built specimen.
 struct CompressionResult {
   World world;                    ///< bodies at rest in the container, its walls, contact.friction
@@ -91,6 +97,7 @@ struct CompressionResult {
   double radius = 0, height = 0;  ///< cylinder and segment only (m)
   double angle = 0;               ///< segment only (radians)
   double porosity = 0;            ///< 1 − Σ body volumes / container volume
+  double target_porosity = 0;     ///< the spec's
   double mean_stress = 0;         ///< Love–Weber mean stress at the end (Pa, compression +)
   double coordination = 0;        ///< mean contacts per body at the end
   long compression_steps = 0, relax_steps = 0;

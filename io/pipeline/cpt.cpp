@@ -16,27 +16,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A zoned specimen (radial zones about the probe's axis) must keep the probe well inside its
-// core of small particles: CTGU 2017 sizes the core at 4 probe diameters (75 mm for 18 mm), so
-// that the zone of disturbance around the cone stays in fine material.
-void check_probe_in_core(const nlohmann::json& report, const std::string& report_path,
-                         const dem::ProbeSettings& probe, const std::string& recipe_path) {
+// The radius of the core of small particles of a specimen zoned radially about the probe's axis,
+// from its report.json (0: not zoned so).
+double radial_core_radius(const nlohmann::json& report, const std::string& report_path) {
   const auto z = report.find("zones");
-  if (z == report.end() || !z->is_object() || z->value("coordinate", "") != "radial") return;
+  if (z == report.end() || !z->is_object() || z->value("coordinate", "") != "radial") return 0.0;
   const auto regions = z->find("regions");
   if (regions == z->end() || !regions->is_array() || regions->empty() ||
       !(*regions)[0].contains("outer") || !(*regions)[0]["outer"].is_number())
     throw InvalidInput(report_path + ": field zones.regions[0].outer missing");
-  const double core = (*regions)[0]["outer"].get<double>();
-  if (probe.diameter > 2.0 * core)
-    throw InvalidInput(recipe_path + ": probe.diameter: " + format_number(probe.diameter) +
-                       " m is wider than the specimen's core of small particles (radius " +
-                       format_number(core) + " m, " + report_path + ")");
-  if (core < 4.0 * probe.diameter)
-    throw InvalidInput(recipe_path + ": probe.diameter: the specimen's core of small particles (" +
-                       format_number(core) + " m, " + report_path +
-                       ") is smaller than 4 probe diameters (" +
-                       format_number(4.0 * probe.diameter) + " m)");
+  return (*regions)[0]["outer"].get<double>();
 }
 
 }  // namespace
@@ -58,12 +47,13 @@ LabJobResult run_cpt_job(const std::string& specimen_dir, const TestRecipe& reci
                                s.probe.velocity / s.probe.diameter, "probe.velocity", interrupter,
                                [&](const nlohmann::json& report, const std::string& report_path,
                                    const dem::CellSpecimen& specimen) {
+                                 const double core = radial_core_radius(report, report_path);
                                  try {
-                                   dem::validate_cpt(specimen.world, specimen.cell, s);
+                                   dem::validate_cpt(specimen.world, specimen.cell, s, core);
                                  } catch (const InvalidInput& e) {
-                                   throw InvalidInput(recipe.path + ": " + e.what());
+                                   throw InvalidInput(recipe.path + ": " + e.what() +
+                                                      (core > 0.0 ? " (" + report_path + ")" : ""));
                                  }
-                                 check_probe_in_core(report, report_path, s.probe, recipe.path);
                                });
   const fs::path& out = setup.out;
   dem::CptResult r;

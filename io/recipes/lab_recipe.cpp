@@ -107,14 +107,13 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
       for (const auto& [pk, pv] : f.table(val, k)) {
         const std::string q(pk.str()), field = "probe." + q;
         if (q == "diameter") {
-          p.diameter = f.positive(pv, field);
+          p.diameter = f.number(pv, field);
         } else if (q == "apex_deg") {
-          p.apex_deg = f.positive(pv, field);
-          if (!(p.apex_deg < 180.0)) f.fail(field, "must be in (0, 180), got " + toml_show(pv));
+          p.apex_deg = f.number(pv, field);
         } else if (q == "velocity") {
-          p.velocity = f.positive(pv, field);
+          p.velocity = f.number(pv, field);
         } else if (q == "depth") {
-          p.depth = f.positive(pv, field);
+          p.depth = f.number(pv, field);
           have_depth = true;
         } else if (q == "friction") {
           p.friction = f.non_negative(pv, field);
@@ -123,6 +122,11 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
         }
       }
       if (!have_depth) f.fail("probe.depth", "is required (the push below the specimen's top, m)");
+      try {
+        dem::validate_probe(p);
+      } catch (const InvalidInput& e) {
+        throw InvalidInput(f.file + ": " + e.what());
+      }
       r.probe = p;
     } else {
       f.fail(k, "unknown key (known: name, description, test, contact, probe)");

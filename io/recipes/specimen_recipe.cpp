@@ -169,8 +169,11 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
           r.compression = m == "compression";
         } else if (c == "porosity") {
           r.compression_porosity = f.number(pv, field);
-          if (!(r.compression_porosity > 0.2 && r.compression_porosity < 0.9))
-            f.fail(field, "must be in (0.2, 0.9), got " + toml_show(pv));
+          try {
+            dem::check_target_porosity(r.compression_porosity);
+          } catch (const InvalidInput& e) {
+            f.fail(field, e.what());
+          }
         } else if (c == "friction") {
           r.compression_friction = f.number(pv, field);
           if (!(r.compression_friction >= 0 && r.compression_friction <= 10))

@@ -2,6 +2,7 @@
 // target relative density of a DEM specimen (Jin et al. 2017 §4).
 #pragma once
 
+#include "dem/specimen/compression.h"
 #include "dem/specimen/zones.h"
 
 #include <array>
@@ -35,7 +36,10 @@ struct SpecimenRecipe {
   /// packing to `porosity` at `friction`, dem/specimen/compression.h — specimens for element
   /// tests).
   bool compression = false;
-  double compression_porosity = 0.37, compression_friction = 0.0;
+  /// preparation.porosity and preparation.friction: the compression's (dem::CompressionSpec
+  /// holds their defaults, dem::check_target_porosity the porosity's range).
+  double compression_porosity = dem::CompressionSpec{}.porosity;
+  double compression_friction = dem::CompressionSpec{}.friction;
   /// [zones] (compression only): variable particle-size zones, innermost first (CTGU 2017) —
   /// coordinate "radial" (distance to the axis through origin), "depth" (below origin's z) or
   /// "spherical" (distance to origin); [[zones.region]] tables with `outer` (m) and `scale` (λ;

@@ -187,7 +187,7 @@ nlohmann::ordered_json compression_report(const SpecimenRecipe& recipe,
   nlohmann::ordered_json j = report_head(recipe);
   j["method"] = "compression";
   j["porosity"] = r.porosity;
-  j["target_porosity"] = recipe.compression_porosity;
+  j["target_porosity"] = r.target_porosity;
   j["friction_compression"] = recipe.compression_friction;
   j["friction"] = recipe.friction;
   if (recipe.cuboid)
