@@ -9,6 +9,41 @@
 
 namespace clumpkit {
 
+namespace {
+
+// [probe]: the cone and its push, checked by dem::validate_probe.
+dem::ProbeSettings read_probe(const TomlFields& f, const toml::node& val) {
+  const std::string k = "probe";
+  dem::ProbeSettings p;
+  bool have_depth = false;
+  for (const auto& [pk, pv] : f.table(val, k)) {
+    const std::string q(pk.str()), field = "probe." + q;
+    if (q == "diameter") {
+      p.diameter = f.number(pv, field);
+    } else if (q == "apex_deg") {
+      p.apex_deg = f.number(pv, field);
+    } else if (q == "velocity") {
+      p.velocity = f.number(pv, field);
+    } else if (q == "depth") {
+      p.depth = f.number(pv, field);
+      have_depth = true;
+    } else if (q == "friction") {
+      p.friction = f.non_negative(pv, field);
+    } else {
+      f.fail(field, "unknown key (known: diameter, apex_deg, velocity, depth, friction)");
+    }
+  }
+  if (!have_depth) f.fail("probe.depth", "is required (the push below the specimen's top, m)");
+  try {
+    dem::validate_probe(p);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(f.file + ": " + e.what());
+  }
+  return p;
+}
+
+}  // namespace
+
 TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
   const TomlFields f{path};
   const toml::table root = parse_toml(text, path);
@@ -102,32 +137,7 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
         }
       }
     } else if (k == "probe") {
-      dem::ProbeSettings p;
-      bool have_depth = false;
-      for (const auto& [pk, pv] : f.table(val, k)) {
-        const std::string q(pk.str()), field = "probe." + q;
-        if (q == "diameter") {
-          p.diameter = f.number(pv, field);
-        } else if (q == "apex_deg") {
-          p.apex_deg = f.number(pv, field);
-        } else if (q == "velocity") {
-          p.velocity = f.number(pv, field);
-        } else if (q == "depth") {
-          p.depth = f.number(pv, field);
-          have_depth = true;
-        } else if (q == "friction") {
-          p.friction = f.non_negative(pv, field);
-        } else {
-          f.fail(field, "unknown key (known: diameter, apex_deg, velocity, depth, friction)");
-        }
-      }
-      if (!have_depth) f.fail("probe.depth", "is required (the push below the specimen's top, m)");
-      try {
-        dem::validate_probe(p);
-      } catch (const InvalidInput& e) {
-        throw InvalidInput(f.file + ": " + e.what());
-      }
-      r.probe = p;
+      r.probe = read_probe(f, val);
     } else {
       f.fail(k, "unknown key (known: name, description, test, contact, probe)");
     }

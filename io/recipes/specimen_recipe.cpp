@@ -105,187 +105,172 @@ void read_zones(const TomlFields& f, const toml::node& n, SpecimenRecipe& r, boo
   if (r.zones.regions.empty()) f.fail("zones.region", "missing (at least the core)");
 }
 
-}  // namespace
-
-SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string& path) {
-  const TomlFields f{path};
-  const toml::table root = parse_toml(text, path);
-  SpecimenRecipe r;
-  r.path = path;
-  r.text = text;
-  bool have_gradation = false;
+// What the sections said that the checks across sections need.
+struct Seen {
+  bool gradation = false, diameter = false, size = false, angle = false;
+  bool zones = false, zone_origin = false;
   std::vector<std::string> deposition_keys;  // keys that only the deposition method uses
-  bool have_diameter = false, have_size = false, have_angle = false;
-  bool have_zones = false, have_zone_origin = false;
-  for (const auto& [key, val] : root) {
-    const std::string k(key.str());
-    if (k == "target_relative_density" || k == "layers" || k == "calibration_frictions")
-      deposition_keys.push_back(k);
-    if (k == "seed") {
-      const long long s = f.integer(val, k);
-      if (s < 0) f.fail(k, "must be non-negative, got " + toml_show(val));
-      r.seed = static_cast<std::uint64_t>(s);
-    } else if (k == "name" || k == "description") {
-      f.string(val, k);
-    } else if (k == "container") {
-      for (const auto& [ck, cv] : f.table(val, k)) {
-        const std::string c(ck.str()), field = "container." + c;
-        if (c == "diameter") {
-          r.container_diameter = f.positive(cv, field);
-          have_diameter = true;
-        } else if (c == "height") {
-          r.container_height = f.positive(cv, field);
-          have_diameter = true;
-        } else if (c == "shape") {
-          const std::string shape = f.string(cv, field);
-          if (shape != "cylinder" && shape != "cuboid" && shape != "segment")
-            f.fail(field, "expected \"cylinder\", \"cuboid\" or \"segment\", got " + toml_show(cv));
-          r.cuboid = shape == "cuboid";
-          r.segment = shape == "segment";
-        } else if (c == "angle") {
-          r.segment_angle_deg = f.number(cv, field);
-          if (!(r.segment_angle_deg > 0 && r.segment_angle_deg <= 180))
-            f.fail(field, "must be in (0, 180] degrees, got " + toml_show(cv));
-          have_angle = true;
-        } else if (c == "size") {
-          const std::vector<double> v = numbers(f, cv, field);
-          if (v.size() != 3) f.fail(field, "expected [x, y, z] edges, got " + toml_show(cv));
-          for (int a = 0; a < 3; ++a) {
-            if (!(v[a] > 0)) f.fail(field, "edges must be positive, got " + toml_show(cv));
-            r.container_size[a] = v[a];
-          }
-          have_size = true;
-        } else {
-          f.fail(field, "unknown key (known: shape, diameter, height, size, angle)");
-        }
+};
+
+// [container]: shape, diameter, height, size, angle.
+void read_container(const TomlFields& f, const toml::node& val, SpecimenRecipe& r, Seen& seen) {
+  const std::string k = "container";
+  for (const auto& [ck, cv] : f.table(val, k)) {
+    const std::string c(ck.str()), field = "container." + c;
+    if (c == "diameter") {
+      r.container_diameter = f.positive(cv, field);
+      seen.diameter = true;
+    } else if (c == "height") {
+      r.container_height = f.positive(cv, field);
+      seen.diameter = true;
+    } else if (c == "shape") {
+      const std::string shape = f.string(cv, field);
+      if (shape != "cylinder" && shape != "cuboid" && shape != "segment")
+        f.fail(field, "expected \"cylinder\", \"cuboid\" or \"segment\", got " + toml_show(cv));
+      r.cuboid = shape == "cuboid";
+      r.segment = shape == "segment";
+    } else if (c == "angle") {
+      r.segment_angle_deg = f.number(cv, field);
+      if (!(r.segment_angle_deg > 0 && r.segment_angle_deg <= 180))
+        f.fail(field, "must be in (0, 180] degrees, got " + toml_show(cv));
+      seen.angle = true;
+    } else if (c == "size") {
+      const std::vector<double> v = numbers(f, cv, field);
+      if (v.size() != 3) f.fail(field, "expected [x, y, z] edges, got " + toml_show(cv));
+      for (int a = 0; a < 3; ++a) {
+        if (!(v[a] > 0)) f.fail(field, "edges must be positive, got " + toml_show(cv));
+        r.container_size[a] = v[a];
       }
-    } else if (k == "preparation") {
-      for (const auto& [pk, pv] : f.table(val, k)) {
-        const std::string c(pk.str()), field = "preparation." + c;
-        if (c == "method") {
-          const std::string m = f.string(pv, field);
-          if (m != "deposition" && m != "compression")
-            f.fail(field, "expected \"deposition\" or \"compression\", got " + toml_show(pv));
-          r.compression = m == "compression";
-        } else if (c == "porosity") {
-          r.compression_porosity = f.number(pv, field);
-          try {
-            dem::check_target_porosity(r.compression_porosity);
-          } catch (const InvalidInput& e) {
-            f.fail(field, e.what());
-          }
-        } else if (c == "friction") {
-          r.compression_friction = f.number(pv, field);
-          if (!(r.compression_friction >= 0 && r.compression_friction <= 10))
-            f.fail(field, "must be in [0, 10], got " + toml_show(pv));
-        } else {
-          f.fail(field, "unknown key (known: method, porosity, friction)");
-        }
-      }
-    } else if (k == "zones") {
-      have_zones = true;
-      read_zones(f, val, r, have_zone_origin);
-    } else if (k == "gradation") {
-      have_gradation = true;
-      for (const auto& [gk, gv] : f.table(val, k)) {
-        const std::string g(gk.str()), field = "gradation." + g;
-        if (g == "sieves")
-          r.sieves = numbers(f, gv, field);
-        else if (g == "passing")
-          r.passing = numbers(f, gv, field);
-        else
-          f.fail(field, "unknown key (known: sieves, passing)");
-      }
-    } else if (k == "soil_rock_threshold") {
-      r.soil_rock_threshold = f.positive(val, k);
-    } else if (k == "rock_mass_fraction") {
-      r.rock_mass_fraction = f.number(val, k);
-      if (r.rock_mass_fraction < 0 || r.rock_mass_fraction > 1)
-        f.fail(k, "must be in [0, 1], got " + toml_show(val));
-    } else if (k == "fines") {
-      for (const auto& [fk, fv] : f.table(val, k)) {
-        const std::string g(fk.str()), field = "fines." + g;
-        if (g == "below")
-          r.fines_below = f.positive(fv, field);
-        else if (g == "replace_with")
-          std::tie(r.fines_min, r.fines_max) = f.pair(fv, field);
-        else
-          f.fail(field, "unknown key (known: below, replace_with)");
-      }
-      if (!(r.fines_min > 0 && r.fines_min < r.fines_max))
-        f.fail("fines.replace_with", "expected 0 < low < high, got [" + format_number(r.fines_min) +
-                                         ", " + format_number(r.fines_max) + "]");
-    } else if (k == "rock") {
-      for (const auto& [rk, rv] : f.table(val, k)) {
-        const std::string g(rk.str()), field = "rock." + g;
-        if (g == "library")
-          r.library = f.string(rv, field);
-        else if (g == "recipe")
-          r.library_recipe = f.string(rv, field);
-        else
-          f.fail(field, "unknown key (known: library, recipe)");
-      }
-    } else if (k == "density") {
-      for (const auto& [dk, dv] : f.table(val, k)) {
-        const std::string g(dk.str()), field = "density." + g;
-        if (g == "soil")
-          r.soil_density = f.positive(dv, field);
-        else if (g == "rock")
-          r.rock_density = f.positive(dv, field);
-        else
-          f.fail(field, "unknown key (known: soil, rock)");
-      }
-    } else if (k == "contact") {
-      for (const auto& [ck, cv] : f.table(val, k)) {
-        const std::string g(ck.str()), field = "contact." + g;
-        if (g == "kn") {
-          r.kn = f.positive(cv, field);
-        } else if (g == "ks") {
-          r.ks = f.positive(cv, field);
-        } else if (g == "friction") {
-          r.friction = f.number(cv, field);
-          if (r.friction < 0) f.fail(field, "must not be negative, got " + toml_show(cv));
-        } else if (g == "damping_ratio") {
-          r.damping_ratio = f.number(cv, field);
-          if (!(r.damping_ratio >= 0 && r.damping_ratio < 1))
-            f.fail(field, "must be in [0, 1), got " + toml_show(cv));
-        } else if (g == "local_damping") {
-          r.local_damping = f.number(cv, field);
-          if (!(r.local_damping >= 0 && r.local_damping < 1))
-            f.fail(field, "must be in [0, 1), got " + toml_show(cv));
-        } else if (g == "stiffness_scaling") {
-          const std::string m = f.string(cv, field);
-          if (m != "none" && m != "linear")
-            f.fail(field, "expected \"none\" or \"linear\", got " + toml_show(cv));
-          r.linear_scaling = m == "linear";
-        } else if (g == "d_ref") {
-          r.d_ref = f.positive(cv, field);
-        } else {
-          f.fail(field,
-                 "unknown key (known: kn, ks, friction, damping_ratio, local_damping, "
-                 "stiffness_scaling, d_ref)");
-        }
-      }
-    } else if (k == "target_relative_density") {
-      r.target_relative_density = f.number(val, k);
-      if (r.target_relative_density < 0 || r.target_relative_density > 1)
-        f.fail(k, "must be in [0, 1], got " + toml_show(val));
-    } else if (k == "layers") {
-      const long long n = f.integer(val, k);
-      if (n < 1 || n > 100) f.fail(k, "must be in [1, 100], got " + toml_show(val));
-      r.layers = static_cast<int>(n);
-    } else if (k == "calibration_frictions") {
-      r.calibration_frictions = numbers(f, val, k);
+      seen.size = true;
     } else {
-      f.fail(
-          k,
-          "unknown key (known: seed, name, description, container, gradation, soil_rock_threshold, "
-          "rock_mass_fraction, fines, rock, density, contact, preparation, zones, "
-          "target_relative_density, layers, calibration_frictions)");
+      f.fail(field, "unknown key (known: shape, diameter, height, size, angle)");
     }
   }
+}
 
-  // The preparation and its container.
+// [preparation]: method, porosity, friction.
+void read_preparation(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
+  const std::string k = "preparation";
+  for (const auto& [pk, pv] : f.table(val, k)) {
+    const std::string c(pk.str()), field = "preparation." + c;
+    if (c == "method") {
+      const std::string m = f.string(pv, field);
+      if (m != "deposition" && m != "compression")
+        f.fail(field, "expected \"deposition\" or \"compression\", got " + toml_show(pv));
+      r.compression = m == "compression";
+    } else if (c == "porosity") {
+      r.compression_porosity = f.number(pv, field);
+      try {
+        dem::check_target_porosity(r.compression_porosity);
+      } catch (const InvalidInput& e) {
+        f.fail(field, e.what());
+      }
+    } else if (c == "friction") {
+      r.compression_friction = f.number(pv, field);
+      if (!(r.compression_friction >= 0 && r.compression_friction <= 10))
+        f.fail(field, "must be in [0, 10], got " + toml_show(pv));
+    } else {
+      f.fail(field, "unknown key (known: method, porosity, friction)");
+    }
+  }
+}
+
+// [gradation]: sieves and passing, checked with the rest (check_gradation).
+void read_gradation(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
+  const std::string k = "gradation";
+  for (const auto& [gk, gv] : f.table(val, k)) {
+    const std::string g(gk.str()), field = "gradation." + g;
+    if (g == "sieves")
+      r.sieves = numbers(f, gv, field);
+    else if (g == "passing")
+      r.passing = numbers(f, gv, field);
+    else
+      f.fail(field, "unknown key (known: sieves, passing)");
+  }
+}
+
+// [fines]: below, replace_with.
+void read_fines(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
+  const std::string k = "fines";
+  for (const auto& [fk, fv] : f.table(val, k)) {
+    const std::string g(fk.str()), field = "fines." + g;
+    if (g == "below")
+      r.fines_below = f.positive(fv, field);
+    else if (g == "replace_with")
+      std::tie(r.fines_min, r.fines_max) = f.pair(fv, field);
+    else
+      f.fail(field, "unknown key (known: below, replace_with)");
+  }
+  if (!(r.fines_min > 0 && r.fines_min < r.fines_max))
+    f.fail("fines.replace_with", "expected 0 < low < high, got [" + format_number(r.fines_min) +
+                                     ", " + format_number(r.fines_max) + "]");
+}
+
+// [rock]: library or recipe, resolved by resolve_library.
+void read_rock(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
+  const std::string k = "rock";
+  for (const auto& [rk, rv] : f.table(val, k)) {
+    const std::string g(rk.str()), field = "rock." + g;
+    if (g == "library")
+      r.library = f.string(rv, field);
+    else if (g == "recipe")
+      r.library_recipe = f.string(rv, field);
+    else
+      f.fail(field, "unknown key (known: library, recipe)");
+  }
+}
+
+// [density]: soil, rock.
+void read_density(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
+  const std::string k = "density";
+  for (const auto& [dk, dv] : f.table(val, k)) {
+    const std::string g(dk.str()), field = "density." + g;
+    if (g == "soil")
+      r.soil_density = f.positive(dv, field);
+    else if (g == "rock")
+      r.rock_density = f.positive(dv, field);
+    else
+      f.fail(field, "unknown key (known: soil, rock)");
+  }
+}
+
+// [contact]: the contact law of the specimen.
+void read_contact(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
+  const std::string k = "contact";
+  for (const auto& [ck, cv] : f.table(val, k)) {
+    const std::string g(ck.str()), field = "contact." + g;
+    if (g == "kn") {
+      r.kn = f.positive(cv, field);
+    } else if (g == "ks") {
+      r.ks = f.positive(cv, field);
+    } else if (g == "friction") {
+      r.friction = f.number(cv, field);
+      if (r.friction < 0) f.fail(field, "must not be negative, got " + toml_show(cv));
+    } else if (g == "damping_ratio") {
+      r.damping_ratio = f.number(cv, field);
+      if (!(r.damping_ratio >= 0 && r.damping_ratio < 1))
+        f.fail(field, "must be in [0, 1), got " + toml_show(cv));
+    } else if (g == "local_damping") {
+      r.local_damping = f.number(cv, field);
+      if (!(r.local_damping >= 0 && r.local_damping < 1))
+        f.fail(field, "must be in [0, 1), got " + toml_show(cv));
+    } else if (g == "stiffness_scaling") {
+      const std::string m = f.string(cv, field);
+      if (m != "none" && m != "linear")
+        f.fail(field, "expected \"none\" or \"linear\", got " + toml_show(cv));
+      r.linear_scaling = m == "linear";
+    } else if (g == "d_ref") {
+      r.d_ref = f.positive(cv, field);
+    } else {
+      f.fail(field,
+             "unknown key (known: kn, ks, friction, damping_ratio, local_damping, "
+             "stiffness_scaling, d_ref)");
+    }
+  }
+}
+
+// The preparation and its container.
+void check_preparation(const TomlFields& f, const SpecimenRecipe& r, const Seen& seen) {
   if (r.linear_scaling && !(r.d_ref > 0))
     f.fail("contact.d_ref",
            "needed by stiffness_scaling = \"linear\" (the diameter at which kn "
@@ -294,20 +279,22 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
     f.fail("container.shape",
            "a segment needs preparation.method = \"compression\" (deposition builds whole "
            "cylinders)");
-  if (have_angle && !r.segment) f.fail("container.angle", "is for shape = \"segment\"");
+  if (seen.angle && !r.segment) f.fail("container.angle", "is for shape = \"segment\"");
   if (r.cuboid && !r.compression)
     f.fail("container.shape",
            "a cuboid needs preparation.method = \"compression\" (deposition "
            "builds cylinders)");
-  if (r.cuboid && have_diameter)
+  if (r.cuboid && seen.diameter)
     f.fail("container", "a cuboid has size = [x, y, z], not diameter or height");
-  if (!r.cuboid && have_size)
+  if (!r.cuboid && seen.size)
     f.fail("container.size", "is for shape = \"cuboid\" (a cylinder has diameter and height)");
-  if (r.compression && !deposition_keys.empty())
-    f.fail(deposition_keys.front(), "applies to preparation.method = \"deposition\" only");
+  if (r.compression && !seen.deposition_keys.empty())
+    f.fail(seen.deposition_keys.front(), "applies to preparation.method = \"deposition\" only");
+}
 
-  // Gradation: sieves descending, passing descending from exactly 100.
-  if (!have_gradation) f.fail("gradation", "missing (sieves = [...], passing = [...])");
+// Gradation: sieves descending, passing descending from exactly 100; the size classes from them.
+void check_gradation(const TomlFields& f, SpecimenRecipe& r, const Seen& seen) {
+  if (!seen.gradation) f.fail("gradation", "missing (sieves = [...], passing = [...])");
   if (r.sieves.size() != r.passing.size() || r.sieves.size() < 2)
     f.fail("gradation", "sieves and passing need the same length, at least 2, got " +
                             std::to_string(r.sieves.size()) + " and " +
@@ -336,8 +323,11 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
     r.classes.push_back(SizeClass{r.sieves[i + 1], r.sieves[i], r.passing[i] - r.passing[i + 1]});
   if (r.passing.back() > 0)  // what passes the finest sieve: a class down to zero... kept as fines
     r.classes.push_back(SizeClass{0.0, r.sieves.back(), r.passing.back()});
+}
 
-  // Rock share implied by the gradation must match the stated rock fraction.
+// Rock share implied by the gradation must match the stated rock fraction; the container must hold
+// the largest particles. Returns the rock percentage.
+double check_sizes(const TomlFields& f, const SpecimenRecipe& r) {
   double rock = 0.0;
   for (const auto& c : r.classes)
     if (c.min >= r.soil_rock_threshold - 1e-12) rock += c.percent;
@@ -371,28 +361,34 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
   for (double mu : r.calibration_frictions)
     if (mu < 0)
       f.fail("calibration_frictions", "friction must not be negative, got " + format_number(mu));
+  return rock;
+}
 
-  // Zones: the layout's guard rails (dem/specimen/zones.h), with the core's largest particle.
-  if (have_zones) {
+// Zones: the layout's guard rails (dem/specimen/zones.h), with the core's largest particle.
+void check_zones(const TomlFields& f, SpecimenRecipe& r, const Seen& seen) {
+  if (seen.zones) {
     if (!r.compression)
       f.fail("zones",
              "need preparation.method = \"compression\" (zones are placed loose and "
              "compressed)");
-    if (r.zones.coordinate == dem::ZoneCoordinate::spherical && !have_zone_origin)
+    if (r.zones.coordinate == dem::ZoneCoordinate::spherical && !seen.zone_origin)
       f.fail("zones.origin", "needed by coordinate = \"spherical\" (the centre, m)");
-    if (!have_zone_origin && r.zones.coordinate == dem::ZoneCoordinate::depth)
+    if (!seen.zone_origin && r.zones.coordinate == dem::ZoneCoordinate::depth)
       r.zones.origin = Vec3(0, 0, r.cuboid ? r.container_size[2] : r.container_height);
     try {
       r.zone_warnings = dem::validate_zones(r.zones, r.sieves.front());
     } catch (const InvalidInput& e) {
-      throw InvalidInput(path + ": " + e.what());
+      throw InvalidInput(f.file + ": " + e.what());
     }
   }
-  if (r.mixed_porosity > 0 && !have_zones)
+  if (r.mixed_porosity > 0 && !seen.zones)
     f.fail("zones.mixed_porosity", "is for recipes with zones");
+}
 
-  // The rock library: an existing `clumpkit library` directory, or a recipe to make one.
-  const fs::path base = fs::path(path).parent_path();
+// The rock library: an existing `clumpkit library` directory, or a recipe to make one (paths
+// relative to the recipe).
+void resolve_library(const TomlFields& f, SpecimenRecipe& r, double rock) {
+  const fs::path base = fs::path(f.file).parent_path();
   if (rock > 0) {
     if (r.library.empty() == r.library_recipe.empty())
       f.fail("rock", "give exactly one of library (a directory from `clumpkit library`) or recipe");
@@ -408,6 +404,75 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
       r.library_recipe = rec.string();
     }
   }
+}
+
+}  // namespace
+
+SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string& path) {
+  const TomlFields f{path};
+  const toml::table root = parse_toml(text, path);
+  SpecimenRecipe r;
+  r.path = path;
+  r.text = text;
+  Seen seen;
+  for (const auto& [key, val] : root) {
+    const std::string k(key.str());
+    if (k == "target_relative_density" || k == "layers" || k == "calibration_frictions")
+      seen.deposition_keys.push_back(k);
+    if (k == "seed") {
+      const long long s = f.integer(val, k);
+      if (s < 0) f.fail(k, "must be non-negative, got " + toml_show(val));
+      r.seed = static_cast<std::uint64_t>(s);
+    } else if (k == "name" || k == "description") {
+      f.string(val, k);
+    } else if (k == "container") {
+      read_container(f, val, r, seen);
+    } else if (k == "preparation") {
+      read_preparation(f, val, r);
+    } else if (k == "zones") {
+      seen.zones = true;
+      read_zones(f, val, r, seen.zone_origin);
+    } else if (k == "gradation") {
+      seen.gradation = true;
+      read_gradation(f, val, r);
+    } else if (k == "soil_rock_threshold") {
+      r.soil_rock_threshold = f.positive(val, k);
+    } else if (k == "rock_mass_fraction") {
+      r.rock_mass_fraction = f.number(val, k);
+      if (r.rock_mass_fraction < 0 || r.rock_mass_fraction > 1)
+        f.fail(k, "must be in [0, 1], got " + toml_show(val));
+    } else if (k == "fines") {
+      read_fines(f, val, r);
+    } else if (k == "rock") {
+      read_rock(f, val, r);
+    } else if (k == "density") {
+      read_density(f, val, r);
+    } else if (k == "contact") {
+      read_contact(f, val, r);
+    } else if (k == "target_relative_density") {
+      r.target_relative_density = f.number(val, k);
+      if (r.target_relative_density < 0 || r.target_relative_density > 1)
+        f.fail(k, "must be in [0, 1], got " + toml_show(val));
+    } else if (k == "layers") {
+      const long long n = f.integer(val, k);
+      if (n < 1 || n > 100) f.fail(k, "must be in [1, 100], got " + toml_show(val));
+      r.layers = static_cast<int>(n);
+    } else if (k == "calibration_frictions") {
+      r.calibration_frictions = numbers(f, val, k);
+    } else {
+      f.fail(
+          k,
+          "unknown key (known: seed, name, description, container, gradation, soil_rock_threshold, "
+          "rock_mass_fraction, fines, rock, density, contact, preparation, zones, "
+          "target_relative_density, layers, calibration_frictions)");
+    }
+  }
+
+  check_preparation(f, r, seen);
+  check_gradation(f, r, seen);
+  const double rock = check_sizes(f, r);
+  check_zones(f, r, seen);
+  resolve_library(f, r, rock);
   return r;
 }
 

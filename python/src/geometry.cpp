@@ -70,7 +70,10 @@ struct UnionMass {
 
 }  // namespace
 
-void bind_geometry(py::module_& m) {
+namespace {
+
+// Meshes and the shape generators.
+void bind_meshes(py::module_& m) {
   py::class_<Mesh>(m, "Mesh",
                    "Closed triangle mesh, triangles counter-clockwise seen from outside (units "
                    "of the caller: every length the functions return is in them)")
@@ -173,7 +176,10 @@ void bind_geometry(py::module_& m) {
       "size"_a, "Axis-aligned box of edge lengths (x, y, z) centred at the origin");
   m.def("cylinder", &make_cylinder, "diameter"_a, "height"_a, "sides"_a = 64,
         "Prism over a regular polygon inscribed in the circle, along z, centred at the origin");
+}
 
+// Shape descriptors.
+void bind_descriptors(py::module_& m) {
   py::class_<Descriptors>(m, "Descriptors", "Every shape descriptor of a mesh (its units)")
       .def_readonly("volume", &Descriptors::volume)
       .def_readonly("area", &Descriptors::area)
@@ -205,7 +211,10 @@ void bind_geometry(py::module_& m) {
            [](const Descriptors& d) { return "<clumpkit.Descriptors " + to_json(d).dump() + ">"; });
   m.def("describe", &describe, "mesh"_a, py::call_guard<py::gil_scoped_release>(),
         "Every descriptor of a closed mesh (the GIL released: other Python threads run)");
+}
 
+// The fill and its fidelity.
+void bind_fill(py::module_& m) {
   py::class_<Fidelity>(m, "Fidelity", "How faithful a clump is to its mesh (units of the mesh)")
       .def_readonly("spheres", &Fidelity::spheres)
       .def_readonly("mesh_volume", &Fidelity::mesh_volume)
@@ -291,7 +300,10 @@ void bind_geometry(py::module_& m) {
       "spheres as the command for the same mesh and options (refine_iterations: its "
       "--refine-iterations); progress(stage, fraction) is "
       "called on this thread; Ctrl-C stops it (KeyboardInterrupt)");
+}
 
+// Exact mass properties of a union of spheres.
+void bind_volume(py::module_& m) {
   py::class_<UnionMass>(m, "MassProperties",
                         "Exact mass properties of a union of spheres (power diagram)")
       .def_property_readonly("volume", [](const UnionMass& u) { return u.u.mass.volume; })
@@ -357,6 +369,16 @@ void bind_geometry(py::module_& m) {
       "Volume of the union by `clumpkit volume`'s methods (exact, inclusion-exclusion, "
       "analytic-slice, pixel-slice, voxel): a dict of what the method gives, as `volume "
       "--json` names it; method='all' gives a dict keyed by method");
+}
+
+}  // namespace
+
+// The geometry half of the module: meshes and shapes, descriptors, the fill, exact volumes.
+void bind_geometry(py::module_& m) {
+  bind_meshes(m);
+  bind_descriptors(m);
+  bind_fill(m);
+  bind_volume(m);
 }
 
 }  // namespace clumpkit::python
