@@ -255,27 +255,12 @@ void measure_zones(const CompressionSpec& spec, const Prism& prism, World& world
   for (int k = 0; k < n; ++k) r.zones[k].porosity = sampled[k].porosity();
 }
 
-}  // namespace
-
-void check_target_porosity(double n) {
-  if (!(n > 0.2 && n < 0.9)) throw InvalidInput("must be in (0.2, 0.9), got " + format_number(n));
-}
-
-CompressionResult compress_specimen(const CompressionSpec& spec, const StageControl& control) {
-  validate(spec);
-  const bool cuboid = spec.shape == CompressionSpec::Shape::cuboid;
-  StageStore in_memory;
-  StageStore& store = control.store ? *control.store : in_memory;
-  store.open(compression_fingerprint(spec));
-
-  // The particles for the requested container, then the container resized so that they fill it
-  // at exactly the target porosity (the drawn volume misses the goal by part of a particle).
-  // Drawn on a resume too: the size follows from them.
-  // Zoned: each region drawn for its own volume and porosity (zoned_particles).
-  Rng particle_rng = Rng::stream(spec.seed, particles_stream);
-  double goal = (1.0 - spec.porosity) * container_volume(spec, spec.size);
+// The particles of the requested container: zoned, each region's for its own volume and
+// porosity (zoned_particles, `zones` filled with what each was to hold, `goal` their solid
+// volume); else one draw of the classes for `goal`.
+ZonedParticles draw_particles(const CompressionSpec& spec, Rng& particle_rng, double& goal,
+                              std::vector<ZoneResult>& zones) {
   ZonedParticles in_zones;
-  std::vector<ZoneResult> zones;
   if (zoned(spec)) {
     const ZoneVolumes v = zone_volumes(spec.zones, prism_of(spec, spec.size));
     const double n_mixed = spec.mixed_porosity > 0.0 ? spec.mixed_porosity : spec.porosity;
@@ -298,6 +283,55 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const StageCont
                                       spec.rock_density, particle_rng)
                           .bodies;
   }
+  return in_zones;
+}
+
+// The specimen: at rest, with the material friction (shear history rescaled), measured in its
+// container of `size`.
+void finish_specimen(const CompressionSpec& spec, const Vec3& size, double solid,
+                     std::vector<ZoneResult>& zones, CompressionResult& r) {
+  World& world = r.world;
+  const bool cuboid = spec.shape == CompressionSpec::Shape::cuboid;
+  stop_bodies(world);
+  world.rescale_friction(spec.contact.friction);
+  world.options().contact.local_damping = spec.contact.local_damping;
+  const Box end = container(size);
+  r.lo = end.lo;
+  r.hi = end.hi;
+  r.radius = cuboid ? 0.0 : end.radius;
+  r.angle = spec.shape == CompressionSpec::Shape::segment ? spec.angle : 0.0;
+  r.height = size.z();
+  const double volume = container_volume(spec, size);
+  r.porosity = 1.0 - solid / volume;
+  r.coordination = coordination_number(world);
+  r.mean_stress = mean_stress(love_weber_stress(
+      world, [](const Vec3&) { return true; }, volume));
+  if (zoned(spec)) {
+    r.zones = std::move(zones);
+    measure_zones(spec, prism_of(spec, size), world, r);
+  }
+}
+
+}  // namespace
+
+void check_target_porosity(double n) {
+  if (!(n > 0.2 && n < 0.9)) throw InvalidInput("must be in (0.2, 0.9), got " + format_number(n));
+}
+
+CompressionResult compress_specimen(const CompressionSpec& spec, const StageControl& control) {
+  validate(spec);
+  StageStore in_memory;
+  StageStore& store = control.store ? *control.store : in_memory;
+  store.open(compression_fingerprint(spec));
+
+  // The particles for the requested container, then the container resized so that they fill it
+  // at exactly the target porosity (the drawn volume misses the goal by part of a particle).
+  // Drawn on a resume too: the size follows from them.
+  // Zoned: each region drawn for its own volume and porosity (zoned_particles).
+  Rng particle_rng = Rng::stream(spec.seed, particles_stream);
+  double goal = (1.0 - spec.porosity) * container_volume(spec, spec.size);
+  std::vector<ZoneResult> zones;
+  const ZonedParticles in_zones = draw_particles(spec, particle_rng, goal, zones);
   if (in_zones.bodies.empty()) throw InvalidInput("compression: the container holds no particle");
   double solid = 0;
   for (const Body& b : in_zones.bodies) solid += b.volume;
@@ -397,25 +431,7 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const StageCont
     store.finish(kStage, record, &world);
   }
 
-  // The specimen: at rest, with the material friction (shear history rescaled).
-  stop_bodies(world);
-  world.rescale_friction(spec.contact.friction);
-  world.options().contact.local_damping = spec.contact.local_damping;
-  const Box end = container(size);
-  r.lo = end.lo;
-  r.hi = end.hi;
-  r.radius = cuboid ? 0.0 : end.radius;
-  r.angle = spec.shape == CompressionSpec::Shape::segment ? spec.angle : 0.0;
-  r.height = size.z();
-  const double volume = container_volume(spec, size);
-  r.porosity = 1.0 - solid / volume;
-  r.coordination = coordination_number(world);
-  r.mean_stress = mean_stress(love_weber_stress(
-      world, [](const Vec3&) { return true; }, volume));
-  if (zoned(spec)) {
-    r.zones = std::move(zones);
-    measure_zones(spec, prism_of(spec, size), world, r);
-  }
+  finish_specimen(spec, size, solid, zones, r);
   return r;
 }
 

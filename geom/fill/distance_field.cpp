@@ -195,10 +195,12 @@ std::vector<std::uint8_t> inside_by_rows(const MeshIndex& index, const DistanceF
   return in;
 }
 
-}  // namespace
+// Layers of the band around the surface voxels.
+constexpr int kBand = 2;
 
-DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& options) {
-  const Mesh& mesh = index.mesh();
+// The field's lattice (voxel size, origin, dims) with its arrays allocated; throws before
+// allocating when it is too large or over options.max_bytes.
+DistanceField empty_field(const Mesh& mesh, const FieldOptions& options) {
   init_openvdb();
   const double h = field_voxel_size(mesh, options);
   const auto bb = bounding_box(mesh);
@@ -230,7 +232,15 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
   f.d.assign(static_cast<std::size_t>(total), 0.0f);
   f.feature.assign(static_cast<std::size_t>(total), -1);
 
-  // 1. Sign: ray parity along the rows, or (a mesh that is not closed) a vote of 7 rays per voxel.
+  return f;
+}
+
+// 1. The inside flag of every voxel: ray parity along the rows (their hints left in
+// f.feature until the surface voxels are found), or, for a mesh that is not closed, a vote of 7
+// rays per voxel.
+std::vector<std::uint8_t> inside_voxels(const MeshIndex& index, DistanceField& f,
+                                        const FieldOptions& options) {
+  const Mesh& mesh = index.mesh();
   std::vector<std::uint8_t> in;
   if (options.vote_sign) {
     in.assign(f.d.size(), 0);
@@ -243,13 +253,19 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
     in = inside_by_rows(index, f, f.feature);  // f.feature holds the rows' hints until step 2
   }
 
-  // 2. The surface voxels (a face neighbour on the other side): exact nearest-triangle searches,
+  return in;
+}
+
+// 2. The surface voxels (layer 0 of the returned layers, 255 elsewhere).
+std::vector<std::uint8_t> surface_voxels(const MeshIndex& index, DistanceField& f,
+                                         const std::vector<std::uint8_t>& in) {
+  const Mesh& mesh = index.mesh();
+  const double h = f.h;
   // each bounded as tightly as is known for certain, since the bound decides how many triangles
   // it visits: by h (the segment to that neighbour crosses the surface) and by the distance to
   // any triangle already known near it (the rows' hints, the voxels before it in its z slab; the
   // slabs run in parallel, and the result, the nearest triangle with ties to the lower index,
   // does not depend on the bound).
-  constexpr int kBand = 2;
   // Triangles smaller than a voxel (by the mean edge, √(2·area/n) for a mesh of n triangles):
   // then a voxel's nearest triangle may be none of its neighbours', and walks over the surface
   // are worth their cost.
@@ -293,31 +309,40 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
       }
   });
 
-  // The nearest of the triangles that the 26 neighbours of voxel (i, j, k) keep, among those
-  // neighbours `use` accepts: a feature transform, exact wherever the voxel's nearest triangle
-  // is one of them (all but where features compete), a few dozen point–triangle distances.
-  auto nearest_of_neighbours = [&](int i, int j, int k, auto&& use) {
-    const Vec3 p = f.position(i, j, k);
-    MeshIndex::Nearest best{std::numeric_limits<double>::infinity(), -1};
-    // Neighbours mostly share a few triangles: each is measured once (the answer, the nearest
-    // with ties to the lower index, does not depend on the order).
-    int seen[27];
-    int n_seen = 0;
-    for (int c = std::max(0, k - 1); c <= std::min(f.dims[2] - 1, k + 1); ++c)
-      for (int b = std::max(0, j - 1); b <= std::min(f.dims[1] - 1, j + 1); ++b)
-        for (int a = std::max(0, i - 1); a <= std::min(f.dims[0] - 1, i + 1); ++a) {
-          const std::int64_t n = f.index(a, b, c);
-          const int t = f.feature[n];
-          if (t < 0 || std::find(seen, seen + n_seen, t) != seen + n_seen || !use(n)) continue;
-          seen[n_seen++] = t;
-          const double d = index.distance_to_triangle(p, t);
-          if (d < best.distance || (d == best.distance && t < best.triangle)) best = {d, t};
-        }
-    if (best.triangle < 0) best = index.nearest(p, std::numeric_limits<double>::infinity());
-    return best;
-  };
+  return layer;
+}
 
-  // The band: kBand layers around the surface voxels, each from the layer before.
+// The nearest of the triangles that the 26 neighbours of voxel (i, j, k) keep, among those
+// neighbours `use` accepts: a feature transform, exact wherever the voxel's nearest triangle
+// is one of them (all but where features compete), a few dozen point–triangle distances.
+template <class Use>
+MeshIndex::Nearest nearest_of_neighbours(const MeshIndex& index, const DistanceField& f, int i,
+                                         int j, int k, Use&& use) {
+  const Vec3 p = f.position(i, j, k);
+  MeshIndex::Nearest best{std::numeric_limits<double>::infinity(), -1};
+  // Neighbours mostly share a few triangles: each is measured once (the answer, the nearest
+  // with ties to the lower index, does not depend on the order).
+  int seen[27];
+  int n_seen = 0;
+  for (int c = std::max(0, k - 1); c <= std::min(f.dims[2] - 1, k + 1); ++c)
+    for (int b = std::max(0, j - 1); b <= std::min(f.dims[1] - 1, j + 1); ++b)
+      for (int a = std::max(0, i - 1); a <= std::min(f.dims[0] - 1, i + 1); ++a) {
+        const std::int64_t n = f.index(a, b, c);
+        const int t = f.feature[n];
+        if (t < 0 || std::find(seen, seen + n_seen, t) != seen + n_seen || !use(n)) continue;
+        seen[n_seen++] = t;
+        const double d = index.distance_to_triangle(p, t);
+        if (d < best.distance || (d == best.distance && t < best.triangle)) best = {d, t};
+      }
+  if (best.triangle < 0) best = index.nearest(p, std::numeric_limits<double>::infinity());
+  return best;
+}
+
+// The band: kBand layers around the surface voxels, each from the layer before; voxels left out
+// of it and outside get −(kBand + 1)·h.
+void band_voxels(const MeshIndex& index, DistanceField& f, const std::vector<std::uint8_t>& in,
+                 std::vector<std::uint8_t>& layer) {
+  const double h = f.h;
   for (int L = 1; L <= kBand; ++L) {
     tbb::parallel_for(0, f.dims[2], [&](int k) {
       for (int j = 0; j < f.dims[1]; ++j)
@@ -340,8 +365,8 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
         for (int i = 0; i < f.dims[0]; ++i) {
           const std::int64_t q = f.index(i, j, k);
           if (layer[q] != 100 + L) continue;
-          const auto n =
-              nearest_of_neighbours(i, j, k, [&](std::int64_t m) { return layer[m] < L; });
+          const auto n = nearest_of_neighbours(index, f, i, j, k,
+                                               [&](std::int64_t m) { return layer[m] < L; });
           f.feature[q] = n.triangle;
           f.d[q] = static_cast<float>(in[q] ? n.distance : -n.distance);
         }
@@ -352,7 +377,13 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
   // From here `layer[q] != 255` means voxel q has its feature: the band now, deep voxels later.
   for (std::size_t q = 0; q < layer.size(); ++q)
     if (layer[q] == 255 && !in[q]) f.d[q] = static_cast<float>(-(kBand + 1) * h);  // outside, far
+}
 
+// 3. The interior beyond the band.
+void interior_voxels(const MeshIndex& index, DistanceField& f, const std::vector<std::uint8_t>& in,
+                     std::vector<std::uint8_t>& layer) {
+  const Mesh& mesh = index.mesh();
+  const double h = f.h;
   // 3. The interior beyond the band. OpenVDB fast sweeping (first-order Eikonal, Zhao 2005)
   // from the band inwards gives every deep voxel an approximate depth (within about a voxel);
   // in that order, shallow first, each voxel then takes the nearest of the triangles its 26
@@ -380,7 +411,7 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
           }
         }
   }
-  if (deep.empty()) return f;
+  if (deep.empty()) return;
   // Inactive voxels inside the band take −background, so the sweep knows their side.
   openvdb::tools::signedFloodFill(sdf->tree());
   const auto swept = openvdb::tools::maskSdf(*sdf, *mask);
@@ -398,7 +429,8 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
   const std::int64_t nx = f.dims[0], nxy = nx * f.dims[1];
   for (const std::int64_t q : deep) {
     const int i = int(q % nx), j = int(q / nx % f.dims[1]), k = int(q / nxy);
-    auto n = nearest_of_neighbours(i, j, k, [&](std::int64_t m) { return layer[m] != 255; });
+    auto n =
+        nearest_of_neighbours(index, f, i, j, k, [&](std::int64_t m) { return layer[m] != 255; });
     // Where triangles are smaller than a voxel the nearest one may be none of the neighbours'
     // (their features run up to a third of a voxel high): a descent over the surface from the
     // best of them finds it. Larger triangles are seen by the neighbours already.
@@ -414,6 +446,16 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
     f.d[q] = static_cast<float>(n.distance);
     layer[q] = 0;
   }
+}
+
+}  // namespace
+
+DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& options) {
+  DistanceField f = empty_field(index.mesh(), options);
+  const std::vector<std::uint8_t> in = inside_voxels(index, f, options);
+  std::vector<std::uint8_t> layer = surface_voxels(index, f, in);
+  band_voxels(index, f, in, layer);
+  interior_voxels(index, f, in, layer);
   return f;
 }
 

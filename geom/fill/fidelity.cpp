@@ -48,6 +48,43 @@ double intersection_length(const std::vector<Interval>& a, const std::vector<Int
   return s;
 }
 
+// Surface points spread by area: four per spacing² (at least 2,000, at most 400,000), the
+// triangle of each drawn by stratified area and its place in it from a low-discrepancy
+// sequence. The count follows the area, not the triangles, so a scan-sized mesh costs what
+// its coarse original does.
+void surface_distances(const Mesh& mesh, const Clump& clump, double spacing, Fidelity& r) {
+  std::vector<double> cumulative(mesh.triangles.size());
+  double area = 0.0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
+    area += 0.5 * (b - a).cross(c - a).norm();
+    cumulative[t] = area;
+  }
+  const auto samples = static_cast<std::size_t>(
+      std::clamp(std::ceil(4.0 * area / (spacing * spacing)), 2000.0, 400000.0));
+  double sum = 0.0;
+  for (std::size_t q = 0; q < samples; ++q) {
+    const double at = (double(q) + 0.5) / double(samples) * area;
+    const auto t = std::min<std::size_t>(
+        mesh.triangles.size() - 1,
+        std::lower_bound(cumulative.begin(), cumulative.end(), at) - cumulative.begin());
+    const auto& tri = mesh.triangles[t];
+    const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
+    // R2 sequence (Roberts 2018) mapped uniformly onto the triangle.
+    const double u1 = std::fmod(0.5 + 0.7548776662466927 * double(q), 1.0);
+    const double u2 = std::fmod(0.5 + 0.5698402909980532 * double(q), 1.0);
+    const double s1 = std::sqrt(u1);
+    const Vec3 x = (1.0 - s1) * a + s1 * (1.0 - u2) * b + s1 * u2 * c;
+    double dmin = 1e300;
+    for (const auto& s : clump.spheres) dmin = std::min(dmin, (x - s.center).norm() - s.radius);
+    const double d = std::abs(dmin);
+    sum += d;
+    r.surface_max_distance = std::max(r.surface_max_distance, d);
+  }
+  r.surface_mean_distance = sum / double(samples);
+}
+
 // What both entry points share: `index` is set for a watertight mesh (rows from its crossings),
 // null for one that is not (rows by ray-parity voting).
 Fidelity assess(const Mesh& mesh, const MeshIndex* index, const Clump& clump, double spacing) {
@@ -145,40 +182,7 @@ Fidelity assess(const Mesh& mesh, const MeshIndex* index, const Clump& clump, do
   for (int q = 0; q < 3; ++q)
     r.inertia_error = std::max(r.inertia_error, std::abs(lc[q] - lm[q]) / lm[q]);
 
-  // Surface points spread by area: four per spacing² (at least 2,000, at most 400,000), the
-  // triangle of each drawn by stratified area and its place in it from a low-discrepancy
-  // sequence. The count follows the area, not the triangles, so a scan-sized mesh costs what
-  // its coarse original does.
-  std::vector<double> cumulative(mesh.triangles.size());
-  double area = 0.0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto& tri = mesh.triangles[t];
-    const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
-    area += 0.5 * (b - a).cross(c - a).norm();
-    cumulative[t] = area;
-  }
-  const auto samples = static_cast<std::size_t>(
-      std::clamp(std::ceil(4.0 * area / (spacing * spacing)), 2000.0, 400000.0));
-  double sum = 0.0;
-  for (std::size_t q = 0; q < samples; ++q) {
-    const double at = (double(q) + 0.5) / double(samples) * area;
-    const auto t = std::min<std::size_t>(
-        mesh.triangles.size() - 1,
-        std::lower_bound(cumulative.begin(), cumulative.end(), at) - cumulative.begin());
-    const auto& tri = mesh.triangles[t];
-    const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
-    // R2 sequence (Roberts 2018) mapped uniformly onto the triangle.
-    const double u1 = std::fmod(0.5 + 0.7548776662466927 * double(q), 1.0);
-    const double u2 = std::fmod(0.5 + 0.5698402909980532 * double(q), 1.0);
-    const double s1 = std::sqrt(u1);
-    const Vec3 x = (1.0 - s1) * a + s1 * (1.0 - u2) * b + s1 * u2 * c;
-    double dmin = 1e300;
-    for (const auto& s : clump.spheres) dmin = std::min(dmin, (x - s.center).norm() - s.radius);
-    const double d = std::abs(dmin);
-    sum += d;
-    r.surface_max_distance = std::max(r.surface_max_distance, d);
-  }
-  r.surface_mean_distance = sum / double(samples);
+  surface_distances(mesh, clump, spacing, r);
 
   // How far each sphere pokes out: radius minus the distance from its centre to the surface
   // (meaningful for centres inside the mesh, as every fill's are).

@@ -219,53 +219,17 @@ SliceMoments union_of_disks(const std::vector<Disk>& disks) {
   return m;
 }
 
-MassProperties union_properties_by_slicing(const Clump& clump) {
-  validate(clump);
-  const std::vector<Sphere>& in = clump.spheres;
-  const int n0 = static_cast<int>(in.size());
+namespace {
 
-  // Reference point: the bounding-box centre; all work is done relative to it.
-  Vec3 lo = in[0].center.array() - in[0].radius, hi = in[0].center.array() + in[0].radius;
-  for (const Sphere& s : in) {
-    lo = lo.cwiseMin(Vec3(s.center.array() - s.radius));
-    hi = hi.cwiseMax(Vec3(s.center.array() + s.radius));
-  }
-  const Vec3 ref = 0.5 * (lo + hi);
-  const double extent = (hi - lo).norm();
-
-  // Drop balls inside another ball (the first of exact duplicates stays): they change nothing.
-  BallSlicer slicer;
-  for (int i = 0; i < n0; ++i) {
-    bool hidden = false;
-    for (int j = 0; j < n0 && !hidden; ++j) {
-      if (j == i) continue;
-      const double d = (in[j].center - in[i].center).norm();
-      if (d + in[i].radius <= in[j].radius) {
-        const bool duplicate = d == 0.0 && in[i].radius == in[j].radius;
-        hidden = !duplicate || j < i;
-      }
-    }
-    if (!hidden) slicer.balls.push_back({in[i].center - ref, in[i].radius});
-  }
-  const std::vector<Sphere>& balls = slicer.balls;
-  const int n = static_cast<int>(balls.size());
-
-  // Neighbours: pairs of balls whose surfaces cross.
-  std::vector<std::vector<int>> nbr(n);
-  for (int i = 0; i < n; ++i)
-    for (int j = i + 1; j < n; ++j) {
-      const double d = (balls[j].center - balls[i].center).norm();
-      if (d < balls[i].radius + balls[j].radius &&
-          d > std::abs(balls[i].radius - balls[j].radius)) {
-        nbr[i].push_back(j);
-        nbr[j].push_back(i);
-      }
-    }
-
-  // Event heights where the slice's arc structure changes; an event strictly inside another
-  // ball leaves the union's boundary alone and is skipped.
+// Event heights where the slice's arc structure changes; an event strictly inside another
+// ball leaves the union's boundary alone and is skipped. Returns them sorted, unique, within
+// [zlo, zhi], the union's extent in z (set here).
+std::vector<double> event_heights(const std::vector<Sphere>& balls,
+                                  const std::vector<std::vector<int>>& nbr, double extent,
+                                  double& zlo, double& zhi) {
   const double margin = 1e-9 * extent;
-  double zlo = balls[0].center.z() - balls[0].radius, zhi = balls[0].center.z() + balls[0].radius;
+  const int n = static_cast<int>(balls.size());
+  zlo = balls[0].center.z() - balls[0].radius, zhi = balls[0].center.z() + balls[0].radius;
   std::vector<double> events;
   for (int i = 0; i < n; ++i) {
     const Sphere& b = balls[i];
@@ -326,6 +290,57 @@ MassProperties union_properties_by_slicing(const Clump& clump) {
   for (double& e : events) e = std::clamp(e, zlo, zhi);
   std::sort(events.begin(), events.end());
   events.erase(std::unique(events.begin(), events.end()), events.end());
+  return events;
+}
+
+}  // namespace
+
+MassProperties union_properties_by_slicing(const Clump& clump) {
+  validate(clump);
+  const std::vector<Sphere>& in = clump.spheres;
+  const int n0 = static_cast<int>(in.size());
+
+  // Reference point: the bounding-box centre; all work is done relative to it.
+  Vec3 lo = in[0].center.array() - in[0].radius, hi = in[0].center.array() + in[0].radius;
+  for (const Sphere& s : in) {
+    lo = lo.cwiseMin(Vec3(s.center.array() - s.radius));
+    hi = hi.cwiseMax(Vec3(s.center.array() + s.radius));
+  }
+  const Vec3 ref = 0.5 * (lo + hi);
+  const double extent = (hi - lo).norm();
+
+  // Drop balls inside another ball (the first of exact duplicates stays): they change nothing.
+  BallSlicer slicer;
+  for (int i = 0; i < n0; ++i) {
+    bool hidden = false;
+    for (int j = 0; j < n0 && !hidden; ++j) {
+      if (j == i) continue;
+      const double d = (in[j].center - in[i].center).norm();
+      if (d + in[i].radius <= in[j].radius) {
+        const bool duplicate = d == 0.0 && in[i].radius == in[j].radius;
+        hidden = !duplicate || j < i;
+      }
+    }
+    if (!hidden) slicer.balls.push_back({in[i].center - ref, in[i].radius});
+  }
+  const std::vector<Sphere>& balls = slicer.balls;
+  const int n = static_cast<int>(balls.size());
+
+  // Neighbours: pairs of balls whose surfaces cross.
+  std::vector<std::vector<int>> nbr(n);
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      const double d = (balls[j].center - balls[i].center).norm();
+      if (d < balls[i].radius + balls[j].radius &&
+          d > std::abs(balls[i].radius - balls[j].radius)) {
+        nbr[i].push_back(j);
+        nbr[j].push_back(i);
+      }
+    }
+
+  // Event heights where the slice's arc structure changes.
+  double zlo = 0.0, zhi = 0.0;
+  const std::vector<double> events = event_heights(balls, nbr, extent, zlo, zhi);
 
   // Scales for the convergence test of each integrand (absolute floor per unit height).
   double vsum = 0.0;
