@@ -1,6 +1,7 @@
 #include "dem/lab/cpt.h"
 
 #include "dem/measure/stress.h"
+#include "dem/run/single_stage.h"
 #include "geom/errors.h"
 #include "geom/format.h"
 
@@ -247,37 +248,33 @@ void read_cpt_record(const StageRecord& r, const std::string& where, CptState& s
 
 CptResult run_cpt(CellSpecimen& specimen, const CptSettings& settings, const StageControl& control,
                   const std::string& fingerprint) {
-  StageStore in_memory;
-  StageStore& store = control.store ? *control.store : in_memory;
-  store.open(fingerprint);
   CptState state;
-  CheckpointInfo info;
-  bool resumed = false;
-  if (std::optional<World> world = store.running(kStage, info)) {
-    read_cpt_record(info.state, std::string("cpt checkpoint"), state, specimen.cell);
+  SingleStage stage;
+  stage.stage = kStage;
+  stage.what = "cpt";
+  stage.resume = [&](const StageRecord& record, const World& world) {
+    read_cpt_record(record, std::string("cpt checkpoint"), state, specimen.cell);
     std::vector<int> walls = cell_walls(specimen.cell);
     if (state.probe >= 0) walls.push_back(state.probe);
     for (int w : walls)
-      if (w >= static_cast<int>(world->walls().size()))
+      if (w >= static_cast<int>(world.walls().size()))
         throw InvalidInput("cpt checkpoint: wall " + std::to_string(w) +
                            " is not a wall of its world");
-    if (state.probe >= 0 && world->walls()[state.probe].kind != Wall::Kind::probe)
+    if (state.probe >= 0 && world.walls()[state.probe].kind != Wall::Kind::probe)
       throw InvalidInput("cpt checkpoint: wall " + std::to_string(state.probe) + " is not a probe");
-    specimen.world = std::move(*world);
-    resumed = true;
-  }
-  StageCheckpoints checkpoints(store, control, kStage);
-  const auto stop = [&] {
-    return checkpoints.check(
-        specimen.world, [&] { return cpt_record(state, specimen.cell); }, kStage,
-        fraction_done(state, settings));
   };
-  CptResult r = run_cpt(specimen.world, specimen.cell, settings, state, stop);
-  if (r.stopped)
-    throw Interrupted(std::string("cpt: stopped on request") +
-                      (store.keeps_checkpoints() ? " (checkpoint kept)" : ""));
-  store.finish(kStage, {{"steps", std::to_string(state.curve.back().step)}}, nullptr);
-  r.resumed = resumed;
+  stage.record = [&] { return cpt_record(state, specimen.cell); };
+  stage.fraction = [&] { return fraction_done(state, settings); };
+  CptResult r;
+  r.resumed = run_single_stage(
+      specimen.world, control, fingerprint, stage,
+      [&](const std::function<bool()>& stop) {
+        r = run_cpt(specimen.world, specimen.cell, settings, state, stop);
+        return r.stopped;
+      },
+      [&] {
+        return StageRecord{{"steps", std::to_string(state.curve.back().step)}};
+      });
   return r;
 }
 

@@ -2,6 +2,7 @@
 // and the run that checkpoints it into a StageStore and continues from one.
 #include "dem/lab/element_loading.h"
 
+#include "dem/run/single_stage.h"
 #include "geom/errors.h"
 #include "geom/format.h"
 
@@ -105,37 +106,34 @@ ElementTestResult run_element_test(
     CellSpecimen& specimen, const ElementTestSettings& settings, const StageControl& control,
     const std::string& fingerprint,
     const std::function<void(const CellSpecimen&, const ElementTestState&)>& consolidated) {
-  StageStore in_memory;
-  StageStore& store = control.store ? *control.store : in_memory;
-  store.open(fingerprint);
   ElementTestState state;
-  CheckpointInfo info;
-  bool resumed = false;
-  if (std::optional<World> world = store.running(kStage, info)) {
-    read_element_test_record(info.state, std::string("element test checkpoint"), state,
-                             specimen.cell);
+  SingleStage stage;
+  stage.stage = kStage;
+  stage.what = "test";
+  stage.resume = [&](const StageRecord& record, const World& world) {
+    read_element_test_record(record, std::string("element test checkpoint"), state, specimen.cell);
     for (int w : cell_walls(specimen.cell))
-      if (w >= static_cast<int>(world->walls().size()))
+      if (w >= static_cast<int>(world.walls().size()))
         throw InvalidInput("element test checkpoint: the cell's wall " + std::to_string(w) +
                            " is not a wall of its world");
-    specimen.world = std::move(*world);
-    resumed = true;
-  }
-  StageCheckpoints checkpoints(store, control, kStage);
-  const auto stop = [&] {
-    if (consolidated && state.phase == ElementTestState::Phase::loading &&
-        state.loading_steps == 0 && state.curve.size() == 1)
-      consolidated(specimen, state);
-    return checkpoints.check(
-        specimen.world, [&] { return element_test_record(state, specimen.cell); }, kStage,
-        fraction_done(state, settings));
   };
-  ElementTestResult r = run_element_test(specimen.world, specimen.cell, settings, state, stop);
-  if (r.stopped)
-    throw Interrupted(std::string("test: stopped on request") +
-                      (store.keeps_checkpoints() ? " (checkpoint kept)" : ""));
-  store.finish(kStage, {{"steps", std::to_string(state.curve.back().step)}}, nullptr);
-  r.resumed = resumed;
+  stage.record = [&] { return element_test_record(state, specimen.cell); };
+  stage.fraction = [&] { return fraction_done(state, settings); };
+  ElementTestResult r;
+  r.resumed = run_single_stage(
+      specimen.world, control, fingerprint, stage,
+      [&](const std::function<bool()>& stop) {
+        r = run_element_test(specimen.world, specimen.cell, settings, state, [&] {
+          if (consolidated && state.phase == ElementTestState::Phase::loading &&
+              state.loading_steps == 0 && state.curve.size() == 1)
+            consolidated(specimen, state);
+          return stop();
+        });
+        return r.stopped;
+      },
+      [&] {
+        return StageRecord{{"steps", std::to_string(state.curve.back().step)}};
+      });
   return r;
 }
 

@@ -121,4 +121,9 @@ bool StageCheckpoints::check(const World& world, const std::function<StageRecord
   return true;
 }
 
+StageStore& store_of(const StageControl& control) {
+  static StageStore keeps_nothing;
+  return control.store ? *control.store : keeps_nothing;
+}
+
 }  // namespace clumpkit::dem

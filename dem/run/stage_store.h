@@ -92,6 +92,10 @@ void put_curve(StageRecord& record, const std::vector<std::vector<double>>& rows
 std::vector<std::vector<double>> record_curve(const StageRecord& record, std::size_t fields,
                                               const std::string& where);
 
+/// control.store, or where it is null a store that keeps nothing (the base StageStore: the run
+/// stays in memory and never resumes; it holds no state, so one serves every run and thread).
+StageStore& store_of(const StageControl& control);
+
 /// The checkpoints of one running stage: asked between units of work, it saves the world and
 /// the stage's state every control.checkpoint_every_seconds (when the store keeps checkpoints)
 /// and whenever the interrupter asks to stop.

@@ -320,8 +320,7 @@ void check_target_porosity(double n) {
 
 CompressionResult compress_specimen(const CompressionSpec& spec, const StageControl& control) {
   validate(spec);
-  StageStore in_memory;
-  StageStore& store = control.store ? *control.store : in_memory;
+  StageStore& store = store_of(control);
   store.open(compression_fingerprint(spec));
 
   // The particles for the requested container, then the container resized so that they fill it

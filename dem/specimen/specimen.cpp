@@ -386,8 +386,7 @@ double next_compaction_friction(const std::vector<SpecimenRound>& rounds,
 SpecimenResult build_specimen(const SpecimenSpec& spec, const StageControl& control) {
   check_spec(spec);
   SpecimenResult result;
-  StageStore in_memory;
-  StageStore& store = control.store ? *control.store : in_memory;
+  StageStore& store = store_of(control);
   store.open(spec_fingerprint(spec));
 
   const double layer_volume = M_PI * spec.radius * spec.radius * spec.height / spec.layers;
