@@ -287,4 +287,12 @@ TestCell read_cell(const StageRecord& record, const std::string& where) {
   return cell;
 }
 
+int record_phase(const StageRecord& record, const std::string& where, int phases) {
+  const long long phase = record_integer(record, "phase", where);
+  if (phase < 0 || phase >= phases)
+    throw InvalidInput(where + ": stage record phase: " + std::to_string(phase) +
+                       " is not a phase of the test");
+  return static_cast<int>(phase);
+}
+
 }  // namespace clumpkit::dem

@@ -6,7 +6,9 @@
 #include "dem/lab/servo.h"
 #include "dem/run/stage_store.h"
 
+#include <cstddef>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace clumpkit::dem {
@@ -101,5 +103,37 @@ void put_cell(StageRecord& record, const TestCell& cell);
 
 /// The cell of put_cell. Throws InvalidInput naming `where` for a missing or malformed entry.
 TestCell read_cell(const StageRecord& record, const std::string& where);
+
+/// The phase a test's stage record holds, an index in [0, phases). Throws InvalidInput "WHERE:
+/// stage record phase: N is not a phase of the test" otherwise.
+int record_phase(const StageRecord& record, const std::string& where, int phases);
+
+/// A test's curve into its stage record (put_curve): per row its step, then the numbers
+/// `fields(row)` points at (an array of double*).
+template <class Row, class Fields>
+void put_test_curve(StageRecord& record, std::vector<Row> curve, Fields fields) {
+  std::vector<std::vector<double>> rows;
+  for (Row& c : curve) {
+    rows.push_back({double(c.step)});
+    for (double* v : fields(c)) rows.back().push_back(*v);
+  }
+  put_curve(record, rows);
+}
+
+/// The curve of put_test_curve, rows of `columns` numbers (step first). Throws InvalidInput naming
+/// `where` for a missing or malformed row.
+template <class Row, class Fields>
+std::vector<Row> read_test_curve(const StageRecord& record, std::size_t columns,
+                                 const std::string& where, Fields fields) {
+  std::vector<Row> curve;
+  for (const std::vector<double>& v : record_curve(record, columns, where)) {
+    Row c;
+    c.step = static_cast<long long>(v[0]);
+    auto at = fields(c);
+    for (std::size_t f = 0; f + 1 < columns; ++f) *at[f] = v[f + 1];
+    curve.push_back(c);
+  }
+  return curve;
+}
 
 }  // namespace clumpkit::dem

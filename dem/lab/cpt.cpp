@@ -212,21 +212,12 @@ StageRecord cpt_record(const CptState& st, const TestCell& cell) {
   r["probe"] = std::to_string(st.probe);
   r["reached_bottom"] = st.reached_bottom ? "1" : "0";
   put_cell(r, cell);
-  std::vector<std::vector<double>> rows;
-  for (CptRow c : st.curve) {
-    rows.push_back({double(c.step)});
-    for (double* v : row_fields(c)) rows.back().push_back(*v);
-  }
-  put_curve(r, rows);
+  put_test_curve(r, st.curve, [](CptRow& c) { return row_fields(c); });
   return r;
 }
 
 void read_cpt_record(const StageRecord& r, const std::string& where, CptState& st, TestCell& cell) {
-  const long long phase = record_integer(r, "phase", where);
-  if (phase < 0 || phase > 3)
-    throw InvalidInput(where + ": stage record phase: " + std::to_string(phase) +
-                       " is not a phase of the test");
-  st.phase = static_cast<CptState::Phase>(phase);
+  st.phase = static_cast<CptState::Phase>(record_phase(r, where, 4));
   st.consolidation_steps = record_integer(r, "consolidation_steps", where);
   st.consolidated = record_integer(r, "consolidated", where) != 0;
   st.push_steps = record_integer(r, "push_steps", where);
@@ -236,14 +227,7 @@ void read_cpt_record(const StageRecord& r, const std::string& where, CptState& s
   st.probe = static_cast<int>(record_integer(r, "probe", where));
   st.reached_bottom = record_integer(r, "reached_bottom", where) != 0;
   cell = read_cell(r, where);
-  st.curve.clear();
-  for (const std::vector<double>& v : record_curve(r, kRowFields, where)) {
-    CptRow c;
-    c.step = static_cast<long long>(v[0]);
-    auto fields = row_fields(c);
-    for (int f = 0; f < kRowFields - 1; ++f) *fields[f] = v[f + 1];
-    st.curve.push_back(c);
-  }
+  st.curve = read_test_curve<CptRow>(r, kRowFields, where, [](CptRow& c) { return row_fields(c); });
 }
 
 CptResult run_cpt(CellSpecimen& specimen, const CptSettings& settings, const StageControl& control,

@@ -66,22 +66,13 @@ StageRecord element_test_record(const ElementTestState& st, const TestCell& cell
   put_number(r, "test_friction", st.test_friction);
   put_number(r, "interior_strain", st.interior_strain);
   put_cell(r, cell);
-  std::vector<std::vector<double>> rows;
-  for (CurveRow c : st.curve) {
-    rows.push_back({double(c.step)});
-    for (double* v : row_fields(c)) rows.back().push_back(*v);
-  }
-  put_curve(r, rows);
+  put_test_curve(r, st.curve, [](CurveRow& c) { return row_fields(c); });
   return r;
 }
 
 void read_element_test_record(const StageRecord& r, const std::string& where, ElementTestState& st,
                               TestCell& cell) {
-  const long long phase = record_integer(r, "phase", where);
-  if (phase < 0 || phase > 3)
-    throw InvalidInput(where + ": stage record phase: " + std::to_string(phase) +
-                       " is not a phase of the test");
-  st.phase = static_cast<ElementTestState::Phase>(phase);
+  st.phase = static_cast<ElementTestState::Phase>(record_phase(r, where, 4));
   st.consolidation_steps = record_integer(r, "consolidation_steps", where);
   st.consolidated = record_integer(r, "consolidated", where) != 0;
   st.loading_steps = record_integer(r, "loading_steps", where);
@@ -92,14 +83,8 @@ void read_element_test_record(const StageRecord& r, const std::string& where, El
   st.test_friction = record_number(r, "test_friction", where);
   st.interior_strain = record_number(r, "interior_strain", where);
   cell = read_cell(r, where);
-  st.curve.clear();
-  for (const std::vector<double>& v : record_curve(r, kRowFields, where)) {
-    CurveRow c;
-    c.step = static_cast<long long>(v[0]);
-    auto fields = row_fields(c);
-    for (int f = 0; f < kRowFields - 1; ++f) *fields[f] = v[f + 1];
-    st.curve.push_back(c);
-  }
+  st.curve =
+      read_test_curve<CurveRow>(r, kRowFields, where, [](CurveRow& c) { return row_fields(c); });
 }
 
 ElementTestResult run_element_test(

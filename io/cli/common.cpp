@@ -48,6 +48,18 @@ void set_threads(int threads) {
   g_threads = limit_threads(threads);
 }
 
+void add_recipe_job_options(CLI::App* command, RecipeJobOptions& options,
+                            const std::string& recipe_help, JobKind kind,
+                            const std::string& json_help) {
+  command->add_option("--recipe", options.recipe, recipe_help)->required();
+  command
+      ->add_option("--out", options.out,
+                   "Output directory (written as DIR.partial and renamed at the end; an earlier "
+                   "clumpkit output there is replaced)")
+      ->required();
+  add_job_options(command, options.job, kind, json_help);
+}
+
 void add_job_options(CLI::App* command, JobOptions& options, JobKind kind,
                      const std::string& json_help) {
   command->add_option("--threads", options.threads, "Worker threads (0 = all cores)")

@@ -54,6 +54,19 @@ enum class JobKind { parallel, staged };
 void add_job_options(CLI::App* command, JobOptions& options, JobKind kind,
                      const std::string& json_help);
 
+/// A job that runs a recipe into an output directory.
+struct RecipeJobOptions {
+  std::string recipe;  ///< --recipe
+  std::string out;     ///< --out
+  JobOptions job;
+};
+
+/// Adds --recipe (`recipe_help` says which kind) and --out, both required, then the job options
+/// of `kind` (add_job_options).
+void add_recipe_job_options(CLI::App* command, RecipeJobOptions& options,
+                            const std::string& recipe_help, JobKind kind,
+                            const std::string& json_help);
+
 /// Limits the worker threads for the rest of the command (limit_threads's rule and check).
 void set_threads(int threads);
 

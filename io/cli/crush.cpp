@@ -14,8 +14,7 @@ namespace clumpkit::cli {
 
 void register_crush(CLI::App& app) {
   struct Opts {
-    std::string recipe, out;
-    JobOptions job;
+    RecipeJobOptions run;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -29,20 +28,19 @@ void register_crush(CLI::App& app) {
       "SI), weibull.png, size.png, curves_SET.png and manifest.json, in DIR.partial renamed at "
       "the end. A killed or interrupted run restarted with the same command resumes; same seed, "
       "same bytes, for any --threads.");
-  c->add_option("--recipe", o->recipe, "Recipe file")->required();
-  c->add_option("--out", o->out, "Output directory")->required();
-  add_job_options(c, o->job, JobKind::parallel, "Print report.json on stdout");
+  add_recipe_job_options(c, o->run, "Crushing recipe (see assets/recipes/crush-*.toml)",
+                         JobKind::parallel, "Print report.json on stdout");
   c->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
-    set_threads(o->job.threads);
-    const CrushRecipe recipe = read_crush_recipe(o->recipe);
-    ProgressBar bar("crush", o->job.quiet);
-    const CrushJobResult r = run_crush(recipe, o->out, signal_interrupter(bar, "crush"));
+    set_threads(o->run.job.threads);
+    const CrushRecipe recipe = read_crush_recipe(o->run.recipe);
+    ProgressBar bar("crush", o->run.job.quiet);
+    const CrushJobResult r = run_crush(recipe, o->run.out, signal_interrupter(bar, "crush"));
     bar.finish();
-    warn_redone(o->out, r.redone);
+    warn_redone(o->run.out, r.redone);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (o->job.json) {
+    if (o->run.job.json) {
       nlohmann::ordered_json j = r.report;
       j["resumed"] = r.resumed;
       j["seconds"] = seconds;
@@ -50,7 +48,7 @@ void register_crush(CLI::App& app) {
       return;
     }
     std::printf("wrote %zu crushed particles to %s (%zu kept from an earlier run) in %.1f s\n",
-                r.particles, o->out.c_str(), r.resumed, seconds);
+                r.particles, o->run.out.c_str(), r.resumed, seconds);
     for (const auto& s : r.report["sets"]) {
       if (s["sigma0"].is_null()) {
         std::printf("  %s: %d of %d failed, no fit\n", s["name"].get<std::string>().c_str(),

@@ -14,9 +14,8 @@ namespace clumpkit::cli {
 
 void register_library(CLI::App& app) {
   struct Opts {
-    std::string recipe, out;
+    RecipeJobOptions run;
     double max_memory_gib = 0;  // 0: half of this machine's memory
-    JobOptions job;
     bool png = false, vtp = false;
   };
   auto o = std::make_shared<Opts>();
@@ -28,9 +27,8 @@ void register_library(CLI::App& app) {
       "at "
       "the end. A killed or interrupted (Ctrl-C) run restarted with the same command resumes; "
       "same seed, same bytes, for any --threads.");
-  c->add_option("--recipe", o->recipe, "Recipe file (see assets/recipes/)")->required();
-  c->add_option("--out", o->out, "Output directory")->required();
-  add_job_options(c, o->job, JobKind::parallel, "Print a JSON summary on stdout");
+  add_recipe_job_options(c, o->run, "Shape recipe with a [fill] table (see assets/recipes/)",
+                         JobKind::parallel, "Print a JSON summary on stdout");
   c->add_flag("--png", o->png,
               "Also write NNNNN.png (900 px: front, side, top and oblique views, spheres shaded "
               "and coloured under the translucent mesh) and DIR/contact_sheet.png (every "
@@ -43,19 +41,19 @@ void register_library(CLI::App& app) {
                 "divided by the threads (default: half of this machine's memory)");
   c->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
-    set_threads(o->job.threads);
-    const ShapeRecipe recipe = read_shape_recipe(o->recipe);
-    ProgressBar bar("library", o->job.quiet);
+    set_threads(o->run.job.threads);
+    const ShapeRecipe recipe = read_shape_recipe(o->run.recipe);
+    ProgressBar bar("library", o->run.job.quiet);
     LibraryOptions lo;
     lo.png = o->png;
     lo.vtp = o->vtp;
     lo.max_memory_bytes = max_memory_bytes(o->max_memory_gib);
-    const auto r = run_library(recipe, o->out, lo, signal_interrupter(bar, "library"));
+    const auto r = run_library(recipe, o->run.out, lo, signal_interrupter(bar, "library"));
     bar.finish();
-    warn_redone(o->out, r.redone);
+    warn_redone(o->run.out, r.redone);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (o->job.json) {
+    if (o->run.job.json) {
       std::cout << nlohmann::json{{"particles", r.particles},
                                   {"resumed", r.resumed},
                                   {"out", r.out_dir},

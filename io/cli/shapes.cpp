@@ -13,8 +13,7 @@ namespace clumpkit::cli {
 
 void register_shapes(CLI::App& app) {
   struct Opts {
-    std::string recipe, out;
-    JobOptions job;
+    RecipeJobOptions run;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -22,17 +21,15 @@ void register_shapes(CLI::App& app) {
       "Generate a shape library from a recipe (TOML, lengths in m): DIR/meshes/NNNNN.stl, "
       "DIR/shapes.csv (parameters + descriptors per particle), DIR/manifest.json. Same seed, same "
       "bytes, for any --threads.");
-  c->add_option("--recipe", o->recipe, "Recipe file (see assets/recipes/)")->required();
-  c->add_option("--out", o->out, "Output directory (replaced if it is a previous clumpkit output)")
-      ->required();
-  add_job_options(c, o->job, JobKind::parallel, "Print a JSON summary on stdout");
+  add_recipe_job_options(c, o->run, "Shape recipe (see assets/recipes/)", JobKind::parallel,
+                         "Print a JSON summary on stdout");
   c->callback([o] {
-    set_threads(o->job.threads);
-    const ShapeRecipe recipe = read_shape_recipe(o->recipe);
-    ProgressBar bar("shapes", o->job.quiet);
-    const auto r = run_shape_batch(recipe, o->out, signal_interrupter(bar, "shapes"));
+    set_threads(o->run.job.threads);
+    const ShapeRecipe recipe = read_shape_recipe(o->run.recipe);
+    ProgressBar bar("shapes", o->run.job.quiet);
+    const auto r = run_shape_batch(recipe, o->run.out, signal_interrupter(bar, "shapes"));
     bar.finish();
-    if (o->job.json) {
+    if (o->run.job.json) {
       std::cout << nlohmann::json{{"particles", r.particles}, {"out", r.out_dir}}.dump(2) << "\n";
     } else {
       std::printf("wrote %zu particles to %s (meshes/, shapes.csv, manifest.json)\n", r.particles,

@@ -14,9 +14,8 @@ namespace clumpkit::cli {
 
 void register_specimen(CLI::App& app) {
   struct Opts {
-    std::string recipe, out;
+    RecipeJobOptions run;
     double max_memory_gib = 0;  // 0: half of this machine's memory
-    JobOptions job;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -37,43 +36,42 @@ void register_specimen(CLI::App& app) {
       "report.json gives porosity, coordination_number, mean_stress and the container box (no "
       "calibration or slices; it checkpoints and resumes the same way). Same seed, same bytes, for "
       "any --threads.");
-  c->add_option("--recipe", o->recipe, "Specimen recipe file (see assets/recipes/)")->required();
-  c->add_option("--out", o->out, "Output directory")->required();
-  add_job_options(c, o->job, JobKind::staged, "Print report.json on stdout");
+  add_recipe_job_options(c, o->run, "Specimen recipe file (see assets/recipes/)", JobKind::staged,
+                         "Print report.json on stdout");
   c->add_option("--max-memory", o->max_memory_gib,
                 "Refuse a recipe whose estimated memory exceeds this many GiB (default: half "
                 "of this machine's memory)");
   c->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
-    set_threads(o->job.threads);
-    const SpecimenRecipe recipe = read_specimen_recipe(o->recipe);
-    ProgressBar bar("specimen", o->job.quiet);
+    set_threads(o->run.job.threads);
+    const SpecimenRecipe recipe = read_specimen_recipe(o->run.recipe);
+    ProgressBar bar("specimen", o->run.job.quiet);
     SpecimenJobOptions options;
-    options.resume = o->job.resume;
-    options.checkpoint_seconds = o->job.checkpoint_seconds;
+    options.resume = o->run.job.resume;
+    options.checkpoint_seconds = o->run.job.checkpoint_seconds;
     options.max_memory_bytes = max_memory_bytes(o->max_memory_gib);
     const SpecimenJobResult job =
-        run_specimen(recipe, o->out, options, signal_interrupter(bar, "specimen"), t0);
+        run_specimen(recipe, o->run.out, options, signal_interrupter(bar, "specimen"), t0);
     bar.finish();
     const dem::SpecimenResult& result = job.specimen;
     const nlohmann::ordered_json& report = job.report;
 
-    if (o->job.json) {
+    if (o->run.job.json) {
       std::cout << report.dump(2) << "\n";
     } else if (recipe.compression) {
       std::printf(
           "specimen %s: %zu bodies, porosity %.4f (compressed at mu %.3f), coordination %.2f, "
           "mean stress %.4g Pa, %.0f s\n",
-          o->out.c_str(), result.world.bodies().size(), result.porosity,
+          o->run.out.c_str(), result.world.bodies().size(), result.porosity,
           recipe.compression_friction, result.coordination, report["mean_stress"].get<double>(),
           report["seconds"]["total"].get<double>());
     } else {
       std::printf(
           "specimen %s: %zu bodies, porosity %.4f, relative density %.3f (target %.2f), height "
           "%.4f m, mu* %.3f, %.0f s\n",
-          o->out.c_str(), result.world.bodies().size(), result.porosity, result.relative_density,
-          recipe.target_relative_density, result.height, result.friction_compaction,
-          report["seconds"]["total"].get<double>());
+          o->run.out.c_str(), result.world.bodies().size(), result.porosity,
+          result.relative_density, recipe.target_relative_density, result.height,
+          result.friction_compaction, report["seconds"]["total"].get<double>());
     }
   });
 }

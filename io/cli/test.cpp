@@ -16,8 +16,8 @@ namespace clumpkit::cli {
 
 void register_test(CLI::App& app) {
   struct Opts {
-    std::string kind, specimen, recipe, out;
-    JobOptions job;
+    std::string kind, specimen;
+    RecipeJobOptions run;
     bool allow_dynamic = false, save_consolidated = false;
   };
   auto o = std::make_shared<Opts>();
@@ -40,9 +40,8 @@ void register_test(CLI::App& app) {
       "bytes for any --threads and after a resume.");
   c->add_option("KIND", o->kind, "isotropic, oedometer, triaxial or cpt")->required();
   c->add_option("--specimen", o->specimen, "Specimen directory")->required();
-  c->add_option("--recipe", o->recipe, "Test recipe (see assets/recipes/test-*.toml)")->required();
-  c->add_option("--out", o->out, "Output directory")->required();
-  add_job_options(c, o->job, JobKind::staged, "Print report.json on stdout");
+  add_recipe_job_options(c, o->run, "Test recipe (see assets/recipes/test-*.toml)", JobKind::staged,
+                         "Print report.json on stdout");
   c->add_flag("--allow-dynamic", o->allow_dynamic,
               "Run even when the strain rate gives an inertial number above 1e-2 (refused "
               "otherwise: not a quasi-static test)");
@@ -54,17 +53,17 @@ void register_test(CLI::App& app) {
     const auto t0 = std::chrono::steady_clock::now();
     const bool cpt = o->kind == "cpt";
     if (!cpt) test_kind(o->kind);  // an unknown kind is refused before anything is read
-    set_threads(o->job.threads);
-    const TestRecipe recipe = read_test_recipe(o->recipe);
-    ProgressBar bar("test", o->job.quiet);
+    set_threads(o->run.job.threads);
+    const TestRecipe recipe = read_test_recipe(o->run.recipe);
+    ProgressBar bar("test", o->run.job.quiet);
     LabJobOptions jo;
-    jo.resume = o->job.resume;
-    jo.checkpoint_seconds = o->job.checkpoint_seconds;
+    jo.resume = o->run.job.resume;
+    jo.checkpoint_seconds = o->run.job.checkpoint_seconds;
     jo.allow_dynamic = o->allow_dynamic;
     jo.save_consolidated = o->save_consolidated;
     const LabJobResult job =
-        cpt ? run_cpt_job(o->specimen, recipe, o->out, jo, signal_interrupter(bar, "test"))
-            : run_element_test_job(test_kind(o->kind), o->specimen, recipe, o->out, jo,
+        cpt ? run_cpt_job(o->specimen, recipe, o->run.out, jo, signal_interrupter(bar, "test"))
+            : run_element_test_job(test_kind(o->kind), o->specimen, recipe, o->run.out, jo,
                                    signal_interrupter(bar, "test"));
     bar.finish();
     if (!job.afresh_reason.empty()) note("started afresh: " + job.afresh_reason);
@@ -79,11 +78,11 @@ void register_test(CLI::App& app) {
       warning("the probe came within one diameter of the bottom platen before its depth");
     if (!rep["consolidated"].get<bool>())
       warning("consolidation did not reach equilibrium within its step limit");
-    if (o->job.json) {
+    if (o->run.job.json) {
       std::cout << rep.dump(2) << "\n";
     } else {
       std::printf("wrote %s: %s test, %lld steps in %.1f s: curve.csv, curve.png, report.json\n",
-                  o->out.c_str(), o->kind.c_str(), rep["steps"].get<long long>(), seconds);
+                  o->run.out.c_str(), o->kind.c_str(), rep["steps"].get<long long>(), seconds);
     }
   });
 }
