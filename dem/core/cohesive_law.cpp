@@ -9,7 +9,7 @@
 
 namespace clumpkit::dem {
 
-void validate(const CohesiveParams& p, double max_factor) {
+void validate_values(const CohesiveParams& p) {
   const std::pair<const char*, double> fields[] = {{"kn", p.kn},           {"kt", p.kt},
                                                    {"sigma_n", p.sigma_n}, {"sigma_t", p.sigma_t},
                                                    {"g_n", p.g_n},         {"g_t", p.g_t}};
@@ -20,6 +20,10 @@ void validate(const CohesiveParams& p, double max_factor) {
   if (!(p.friction >= 0.0) || !std::isfinite(p.friction))
     throw InvalidInput("cohesive law: friction must be non-negative and finite, got " +
                        format_number(p.friction));
+}
+
+void validate(const CohesiveParams& p, double max_factor) {
+  validate_values(p);
   const double en = 0.5 * std::pow(max_factor * p.sigma_n, 2) / p.kn;
   const double et = 0.5 * std::pow(max_factor * p.sigma_t, 2) / p.kt;
   if (p.g_n <= en)

@@ -21,10 +21,13 @@ struct CohesiveParams {
   double friction = 0.3;
 };
 
-/// Throws InvalidInput naming the field for a parameter that is not positive and finite (friction:
-/// not negative and finite), or a
-/// fracture energy below the elastic energy at onset (G < σ²/(2K) at `max_factor` times the
-/// strengths: the softening branch would run backwards).
+/// Throws InvalidInput "cohesive law: FIELD must be positive and finite, got V" for a stiffness,
+/// strength or fracture energy that is not (friction: not negative and finite). The one check of
+/// each value (recipes call it on their [bond] table as read, validate on the law as used).
+void validate_values(const CohesiveParams& p);
+
+/// validate_values, and InvalidInput for a fracture energy below the elastic energy at onset
+/// (G < σ²/(2K) at `max_factor` times the strengths: the softening branch would run backwards).
 void validate(const CohesiveParams& p, double max_factor = 1.0);
 
 /// Onset and failure of one mode mix, for the strengths × `factor` (the bond's heterogeneity).

@@ -104,24 +104,29 @@ void read_bond(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
   for (const auto& [key, v] : t) {
     const std::string k(key.str()), field = "bond." + k;
     if (k == "kn") {
-      p.kn = f.positive(v, field);
+      p.kn = f.number(v, field);
     } else if (k == "kt") {
-      p.kt = f.positive(v, field);
+      p.kt = f.number(v, field);
     } else if (k == "sigma_n") {
-      p.sigma_n = f.positive(v, field);
+      p.sigma_n = f.number(v, field);
     } else if (k == "sigma_t") {
-      p.sigma_t = f.positive(v, field);
+      p.sigma_t = f.number(v, field);
     } else if (k == "g_n") {
-      p.g_n = f.positive(v, field);
+      p.g_n = f.number(v, field);
     } else if (k == "g_t") {
-      p.g_t = f.positive(v, field);
+      p.g_t = f.number(v, field);
     } else if (k == "friction") {
-      p.friction = f.non_negative(v, field);
+      p.friction = f.number(v, field);
     } else if (k == "scale") {
       r.scale = f.positive(v, field);
     } else {
       f.fail(field, "unknown key (known: kn, kt, sigma_n, sigma_t, g_n, g_t, friction, scale)");
     }
+  }
+  try {
+    dem::validate_values(p);
+  } catch (const InvalidInput& e) {
+    f.fail("bond", e.what());
   }
 }
 

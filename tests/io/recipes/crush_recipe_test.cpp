@@ -76,7 +76,15 @@ TEST(CrushRecipe, BadValuesNameFileFieldAndValue) {
   const std::string set = "[[set]]\nname = \"a\"\ndiameter = 0.02\n";
   EXPECT_NE(error_of("[crush]\nbogus = 1\n" + set).find("r.toml: crush.bogus: unknown key"),
             std::string::npos);
-  EXPECT_NE(error_of("[bond]\ng_t = -3\n" + set).find("bond.g_t"), std::string::npos);
+  // The law's values are checked where the law is (dem::validate_values), named in the message.
+  EXPECT_NE(error_of("[bond]\ng_t = -3\n" + set)
+                .find("r.toml: bond: cohesive law: g_t must be positive and finite, got -3"),
+            std::string::npos);
+  EXPECT_NE(error_of("[bond]\nsigma_n = 0\n" + set)
+                .find("r.toml: bond: cohesive law: sigma_n must be positive and finite, got 0"),
+            std::string::npos);
+  EXPECT_NE(error_of("[bond]\nfriction = -0.1\n" + set).find("friction must be non-negative"),
+            std::string::npos);
   EXPECT_NE(error_of("[crush]\nlocal_damping = 1.5\n" + set).find("1.5"), std::string::npos);
   EXPECT_NE(error_of("[cells]\ncell_size = 0.05\n" + set).find("fewer than 2 cells"),
             std::string::npos);

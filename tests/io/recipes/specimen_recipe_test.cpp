@@ -115,6 +115,16 @@ TEST(SpecimenRecipe, SegmentContainerIsACompressedSectorOfItsCylinder) {
       << e;
   e = specimen_error_of(with("diameter = 0.3", "diameter = 0.3\nangle = 90") + prep);
   EXPECT_NE(e.find("container.angle: is for shape = \"segment\""), std::string::npos) << e;
+  // The target porosity's one range check (dem::check_target_porosity), named by its key.
+  for (const char* n : {"0.95", "0.1"}) {
+    std::string loose = prep;
+    loose.replace(loose.find("0.4"), 3, n);
+    e = specimen_error_of(with("diameter = 0.3", seg) + loose);
+    EXPECT_NE(
+        e.find("test.toml: preparation.porosity: must be in (0.2, 0.9), got " + std::string(n)),
+        std::string::npos)
+        << e;
+  }
 }
 
 // [zones]: CTGU 2017's group E layout reaches the spec; every bad layout fails naming the field.
