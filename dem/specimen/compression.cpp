@@ -1,5 +1,7 @@
 #include "dem/specimen/compression.h"
 
+#include "dem/specimen/container.h"
+
 #include "dem/core/timestep.h"
 #include "dem/lab/cell.h"
 #include "dem/measure/sampled_porosity.h"
@@ -105,8 +107,11 @@ void set_walls(World& world, const TestCell& cell, const Box& b) {
 }
 
 void validate(const CompressionSpec& spec) {
-  if (!spec.size.allFinite() || !(spec.size.minCoeff() > 0))
-    throw InvalidInput("compression: container size must be positive and finite");
+  try {
+    for (int a = 0; a < 3; ++a) check_container_length(spec.size[a]);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(std::string("compression: container size: ") + e.what());
+  }
   if (spec.shape != CompressionSpec::Shape::cuboid && spec.size.x() != spec.size.y())
     throw InvalidInput("compression: a cylinder's size is (diameter, diameter, height)");
   if (spec.shape == CompressionSpec::Shape::segment && !(spec.angle > 0.0 && spec.angle <= M_PI))

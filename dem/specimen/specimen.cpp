@@ -1,5 +1,7 @@
 #include "dem/specimen/specimen.h"
 
+#include "dem/specimen/container.h"
+
 #include "dem/core/timestep.h"
 #include "dem/run/run.h"
 #include "dem/specimen/deposition.h"
@@ -153,7 +155,12 @@ World settled_stage(const std::string& name, StageStore& store, const SpecimenSp
 
 void check_spec(const SpecimenSpec& s) {
   auto bad = [](const std::string& what) { throw InvalidInput("specimen: " + what); };
-  if (!(s.radius > 0) || !(s.height > 0)) bad("container radius and height must be positive");
+  try {
+    check_container_length(s.radius);
+    check_container_length(s.height);
+  } catch (const InvalidInput& e) {
+    bad(std::string("container radius and height: ") + e.what());
+  }
   if (s.layers < 1) bad("layers must be at least 1");
   if (s.correction_rounds < 0 || !(s.relative_density_tolerance >= 0))
     bad("correction rounds and tolerance must be non-negative");

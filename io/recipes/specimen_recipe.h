@@ -3,6 +3,8 @@
 #pragma once
 
 #include "dem/specimen/compression.h"
+#include "dem/specimen/container.h"
+#include "dem/specimen/specimen.h"
 #include "dem/specimen/zones.h"
 
 #include <array>
@@ -29,8 +31,13 @@ struct SpecimenRecipe {
   bool cuboid = false;
   bool segment = false;
   double segment_angle_deg = 90.0;
-  double container_diameter = 0.3, container_height = 0.6;  ///< cylinder [m]
-  std::array<double, 3> container_size{0.1, 0.1, 0.1};      ///< cuboid edges [m]
+  /// Cylinder [m]: the defaults are dem::SpecimenSpec's, the cuboid's dem::CompressionSpec's
+  /// (dem::check_container_length checks every length).
+  double container_diameter = 2.0 * dem::SpecimenSpec{}.radius;
+  double container_height = dem::SpecimenSpec{}.height;
+  std::array<double, 3> container_size{dem::CompressionSpec{}.size.x(),
+                                       dem::CompressionSpec{}.size.y(),
+                                       dem::CompressionSpec{}.size.z()};  ///< cuboid edges [m]
   /// [preparation] method: "deposition" (under gravity, quasi-vibration calibration, layers:
   /// Jin et al. 2017) or "compression" (gravity off: homogeneous compression of a loose random
   /// packing to `porosity` at `friction`, dem/specimen/compression.h — specimens for element

@@ -93,6 +93,16 @@ TEST(SpecimenRecipe, BadRecipesFailBeforeSimulation) {
   EXPECT_NE(e.find("the gradation gives 40 %"), std::string::npos) << e;
   e = specimen_error_of(with("passing = [100, 80, 60, 40, 20]", "passing = [100, 80, 90, 40, 20]"));
   EXPECT_NE(e.find("must not increase"), std::string::npos) << e;
+  // The container's lengths: the specs' one check (dem::check_container_length), named by key.
+  e = specimen_error_of(with("diameter = 0.3", "diameter = -0.3"));
+  EXPECT_NE(e.find("test.toml: container.diameter: must be positive and finite, got -0.3"),
+            std::string::npos)
+      << e;
+  e = specimen_error_of(with("diameter = 0.3", "shape = \"cuboid\"\nsize = [0.3, 0, 0.3]") +
+                        "[preparation]\nmethod = \"compression\"\n");
+  EXPECT_NE(e.find("test.toml: container.size[1]: must be positive and finite, got 0"),
+            std::string::npos)
+      << e;
 }
 
 // A segment of the chamber: compression only, its angle in (0, 180] degrees.
