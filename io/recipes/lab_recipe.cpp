@@ -2,7 +2,10 @@
 
 #include "geom/errors.h"
 #include "io/base/text.h"
+#include "io/recipes/section_table.h"
 #include "io/recipes/toml_fields.h"
+
+#include <algorithm>
 
 #include <fstream>
 #include <sstream>
@@ -11,38 +14,136 @@ namespace clumpkit {
 
 namespace {
 
-// [probe]: the cone and its push, checked by dem::validate_probe.
-dem::ProbeSettings read_probe(const TomlFields& f, const toml::node& val) {
-  const std::string k = "probe";
-  dem::ProbeSettings p;
-  bool have_depth = false;
-  for (const auto& [pk, pv] : f.table(val, k)) {
-    const std::string q(pk.str()), field = "probe." + q;
-    if (q == "diameter") {
-      p.diameter = f.number(pv, field);
-    } else if (q == "apex_deg") {
-      p.apex_deg = f.number(pv, field);
-    } else if (q == "velocity") {
-      p.velocity = f.number(pv, field);
-    } else if (q == "depth") {
-      p.depth = f.number(pv, field);
-      have_depth = true;
-    } else if (q == "friction") {
-      p.friction = f.non_negative(pv, field);
-    } else {
-      f.fail(field, "unknown key (known: diameter, apex_deg, velocity, depth, friction)");
-    }
-  }
-  if (!have_depth) f.fail("probe.depth", "is required (the push below the specimen's top, m)");
-  try {
-    dem::validate_probe(p);
-  } catch (const InvalidInput& e) {
-    throw InvalidInput(f.file + ": " + e.what());
-  }
-  return p;
+// A check that `x` is at most, or below, a bound: "must be ..., got VALUE".
+NumberCheck at_most(double hi, std::string why) {
+  return [hi, why](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
+    if (!(x <= hi)) f.fail(field, why + ", got " + toml_show(v));
+  };
+}
+NumberCheck below(double hi, std::string why) {
+  return [hi, why](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
+    if (!(x < hi)) f.fail(field, why + ", got " + toml_show(v));
+  };
+}
+
+template <class Spec>
+RecipeKey<Spec> custom_key(
+    std::string name, std::string unit, std::string range, std::string help, std::string shown,
+    std::function<void(const TomlFields&, const toml::node&, const std::string&, Spec&)> read) {
+  RecipeKey<Spec> k{std::move(name), std::move(unit), std::move(range),
+                    std::move(help), std::move(read), {}};
+  return shown_as(std::move(k), std::move(shown));
 }
 
 }  // namespace
+
+const RecipeSection<dem::ProbeSettings>& probe_section() {
+  using P = dem::ProbeSettings;
+  static const RecipeSection<P> s{
+      "probe",
+      "The cone of `clumpkit test cpt` and its push (required there; checked by "
+      "dem::validate_probe, and against the cell and a zoned specimen's core once the specimen "
+      "is read).",
+      {number_key<P>("diameter", "m", "> 0", "shaft diameter D_c",
+                     [](P& p) -> double& { return p.diameter; }),
+       number_key<P>("apex_deg", "degree", "(0, 180)", "apex angle of the cone",
+                     [](P& p) -> double& { return p.apex_deg; }),
+       number_key<P>("velocity", "m/s", "> 0", "push speed",
+                     [](P& p) -> double& { return p.velocity; }),
+       shown_as(number_key<P>("depth", "m", "> 0", "push distance below the specimen's top",
+                              [](P& p) -> double& { return p.depth; }),
+                "required"),
+       shown_as(number_key<P>(
+                    "friction", "", ">= 0", "μ of probe–sphere contacts",
+                    [](P& p) -> double& { return p.friction; }, &TomlFields::non_negative),
+                "the test's")}};
+  return s;
+}
+
+const RecipeSection<TestRecipe>& test_section() {
+  using R = TestRecipe;
+  static const RecipeSection<R> s{
+      "test",
+      "The loading of `clumpkit test` (consolidation to `confining`, then the test of its kind).",
+      {number_key<R>(
+           "confining", "Pa", "> 0",
+           "consolidation stress, and the lateral stress of a triaxial or CPT",
+           [](R& r) -> double& { return r.settings.confining; }, &TomlFields::positive),
+       shown_as(number_key<R>(
+                    "final_stress", "Pa", "> confining",
+                    "isotropic: stress at the end; oedometer: axial stress at the end",
+                    [](R& r) -> double& { return r.settings.final_stress; }, &TomlFields::positive),
+                "4 × confining"),
+       number_key<R>(
+           "strain_rate", "1/s", "> 0", "axial strain rate of oedometer and triaxial",
+           [](R& r) -> double& { return r.settings.strain_rate; }, &TomlFields::positive),
+       shown_as(number_key<R>(
+                    "stress_rate", "Pa/s", "> 0", "isotropic loading rate",
+                    [](R& r) -> double& { return r.settings.stress_rate; }, &TomlFields::positive),
+                "confining × strain_rate × 20"),
+       number_key<R>(
+           "density_scaling", "", "[1, 1e6]",
+           "every body's mass and moments × λ for the test (time step × √λ; reported)",
+           [](R& r) -> double& { return r.density_scaling; }, &TomlFields::number,
+           [](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
+             if (!(x >= 1 && x <= 1e6)) f.fail(field, "must be in [1, 1e6], got " + toml_show(v));
+           }),
+       number_key<R>(
+           "max_axial_strain", "", "(0, 0.9)", "where a triaxial test ends",
+           [](R& r) -> double& { return r.settings.max_axial_strain; }, &TomlFields::positive,
+           below(0.9, "must be below 0.9")),
+       number_key<R>(
+           "critical_fraction", "", "(0, 1]",
+           "last fraction of a triaxial curve averaged for the critical state",
+           [](R& r) -> double& { return r.critical_fraction; }, &TomlFields::positive,
+           at_most(1.0, "must be in (0, 1]")),
+       shown_as(number_key<R>(
+                    "friction", "", ">= 0", "μ of the test",
+                    [](R& r) -> double& { return r.settings.friction; }, &TomlFields::non_negative),
+                "the specimen's"),
+       shown_as(number_key<R>(
+                    "consolidation_friction", "", ">= 0",
+                    "μ during the consolidation (0: the densest packing at confining)",
+                    [](R& r) -> double& { return r.settings.consolidation_friction; },
+                    &TomlFields::non_negative),
+                "the test's"),
+       shown_as(
+           number_key<R>(
+               "servo_strain_rate", "1/s", "> 0",
+               "speed limit of the servo-driven walls as a strain rate",
+               [](R& r) -> double& { return r.settings.servo_strain_rate; }, &TomlFields::positive),
+           "10 × the platen speed"),
+       custom_key<R>("record_every", "steps", "[1, 1e6]", "steps between curve rows", "200",
+                     [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
+                       const long long n = f.integer(v, field);
+                       if (n < 1 || n > 1000000)
+                         f.fail(field, "must be in [1, 1e6], got " + toml_show(v));
+                       r.settings.record_every = static_cast<int>(n);
+                     }),
+       number_key<R>(
+           "timestep_safety", "", "(0, 0.5]", "time step over the critical one",
+           [](R& r) -> double& { return r.timestep_safety; }, &TomlFields::positive,
+           at_most(0.5, "must be at most 0.5")),
+       custom_key<R>("modulus_range", "", "[lo, hi], 0 <= lo < hi",
+                     "strain range of the tangent modulus", "the test's own",
+                     [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
+                       const auto range = f.pair(v, field);
+                       if (!(range.first >= 0 && range.second > range.first))
+                         f.fail(field, "must be [lo, hi] with 0 <= lo < hi, got " + toml_show(v));
+                       r.modulus_range = range;
+                     }),
+       number_key<R>(
+           "consolidation_tolerance", "", "> 0",
+           "relative stress error at the consolidation's equilibrium",
+           [](R& r) -> double& { return r.settings.consolidation_tolerance; },
+           &TomlFields::positive)}};
+  return s;
+}
+
+std::string test_recipe_reference() {
+  return section_reference(test_section(), TestRecipe{}) + "\n" +
+         section_reference(probe_section(), dem::ProbeSettings{});
+}
 
 TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
   const TomlFields f{path};
@@ -57,56 +158,8 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
     if (k == "name" || k == "description") {
       f.string(val, k);
     } else if (k == "test") {
-      for (const auto& [tk, tv] : f.table(val, k)) {
-        const std::string t(tk.str()), field = "test." + t;
-        if (t == "confining") {
-          s.confining = f.positive(tv, field);
-        } else if (t == "final_stress") {
-          s.final_stress = f.positive(tv, field);
-          have_final = true;
-        } else if (t == "strain_rate") {
-          s.strain_rate = f.positive(tv, field);
-        } else if (t == "stress_rate") {
-          s.stress_rate = f.positive(tv, field);
-        } else if (t == "max_axial_strain") {
-          s.max_axial_strain = f.positive(tv, field);
-          if (s.max_axial_strain >= 0.9) f.fail(field, "must be below 0.9, got " + toml_show(tv));
-        } else if (t == "critical_fraction") {
-          r.critical_fraction = f.positive(tv, field);
-          if (r.critical_fraction > 1) f.fail(field, "must be in (0, 1], got " + toml_show(tv));
-        } else if (t == "friction") {
-          s.friction = f.non_negative(tv, field);
-        } else if (t == "servo_strain_rate") {
-          s.servo_strain_rate = f.positive(tv, field);
-        } else if (t == "consolidation_friction") {
-          s.consolidation_friction = f.non_negative(tv, field);
-        } else if (t == "record_every") {
-          const long long n = f.integer(tv, field);
-          if (n < 1 || n > 1000000) f.fail(field, "must be in [1, 1e6], got " + toml_show(tv));
-          s.record_every = static_cast<int>(n);
-        } else if (t == "timestep_safety") {
-          r.timestep_safety = f.positive(tv, field);
-          if (r.timestep_safety > 0.5) f.fail(field, "must be at most 0.5, got " + toml_show(tv));
-        } else if (t == "modulus_range") {
-          const auto range = f.pair(tv, field);
-          if (!(range.first >= 0 && range.second > range.first))
-            f.fail(field, "must be [lo, hi] with 0 <= lo < hi, got " + toml_show(tv));
-          r.modulus_range = range;
-        } else if (t == "consolidation_tolerance") {
-          s.consolidation_tolerance = f.positive(tv, field);
-        } else if (t == "density_scaling") {
-          r.density_scaling = f.number(tv, field);
-          if (!(r.density_scaling >= 1 && r.density_scaling <= 1e6))
-            f.fail(field, "must be in [1, 1e6], got " + toml_show(tv));
-        } else {
-          f.fail(field,
-                 "unknown key (known: confining, final_stress, strain_rate, stress_rate, "
-                 "density_scaling, "
-                 "max_axial_strain, critical_fraction, friction, consolidation_friction, "
-                 "servo_strain_rate, record_every, timestep_safety, modulus_range, "
-                 "consolidation_tolerance)");
-        }
-      }
+      for (const std::string& given : read_section(f, val, test_section(), r))
+        if (given == "final_stress") have_final = true;
     } else if (k == "contact") {
       for (const auto& [ck, cv] : f.table(val, k)) {
         const std::string c(ck.str()), field = "contact." + c;
@@ -137,7 +190,16 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
         }
       }
     } else if (k == "probe") {
-      r.probe = read_probe(f, val);
+      dem::ProbeSettings p;
+      const std::vector<std::string> given = read_section(f, val, probe_section(), p);
+      if (std::find(given.begin(), given.end(), "depth") == given.end())
+        f.fail("probe.depth", "is required (the push below the specimen's top, m)");
+      try {
+        dem::validate_probe(p);
+      } catch (const InvalidInput& e) {
+        throw InvalidInput(f.file + ": " + e.what());
+      }
+      r.probe = p;
     } else {
       f.fail(k, "unknown key (known: name, description, test, contact, probe)");
     }

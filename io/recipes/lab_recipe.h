@@ -4,6 +4,7 @@
 #include "dem/core/contact.h"
 #include "dem/lab/cpt.h"
 #include "dem/lab/element_loading.h"
+#include "io/recipes/section_table.h"
 
 #include <optional>
 #include <string>
@@ -44,5 +45,12 @@ struct TestRecipe {
 /// unknown key, a wrong type or a value out of range, and IoError for a missing file.
 TestRecipe parse_test_recipe(const std::string& text, const std::string& path);
 TestRecipe read_test_recipe(const std::string& path);
+
+/// The tables of the [test] and [probe] sections (io/recipes/section_table.h).
+const RecipeSection<TestRecipe>& test_section();
+const RecipeSection<dem::ProbeSettings>& probe_section();
+
+/// The reference of the test recipe's table sections, as Markdown (docs/recipes.md).
+std::string test_recipe_reference();
 
 }  // namespace clumpkit

@@ -1,0 +1,105 @@
+// One table per recipe section: each key's unit, range, default and help beside the code that
+// reads it into the spec, so that reading (unknown keys refused, naming the known ones) and the
+// recipe reference (docs/recipes.md) come from the same place.
+#pragma once
+
+#include "geom/format.h"
+#include "io/recipes/toml_fields.h"
+
+#include <toml++/toml.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace clumpkit {
+
+/// One key of a section, reading into a spec of type Spec.
+template <class Spec>
+struct RecipeKey {
+  std::string name;
+  std::string unit;   ///< SI unit, or "" for a number without one
+  std::string range;  ///< what values it takes, as the reference prints it
+  std::string help;
+  /// Reads the value at `field` ("section.key") into the spec; throws InvalidInput through `f`.
+  std::function<void(const TomlFields& f, const toml::node& value, const std::string& field,
+                     Spec& spec)>
+      read;
+  /// The default, as text, read off a default-constructed spec.
+  std::function<std::string(const Spec& defaults)> shown;
+};
+
+/// A section: its name in the recipe, what it is, and its keys in the order the reference lists.
+template <class Spec>
+struct RecipeSection {
+  std::string name;
+  std::string help;
+  std::vector<RecipeKey<Spec>> keys;
+};
+
+/// How a number key is read: TomlFields::number (finite), positive or non_negative.
+using NumberRead = double (TomlFields::*)(const toml::node&, const std::string&) const;
+
+/// A further check of a number read (throws through `f`, naming `field` and showing `value`).
+using NumberCheck = std::function<void(const TomlFields& f, const std::string& field,
+                                       const toml::node& value, double x)>;
+
+/// A number key whose value lands in the double `at(spec)`, read by `get` and then `check`.
+template <class Spec, class At>
+RecipeKey<Spec> number_key(std::string name, std::string unit, std::string range, std::string help,
+                           At at, NumberRead get = &TomlFields::number, NumberCheck check = {}) {
+  RecipeKey<Spec> k{std::move(name), std::move(unit), std::move(range), std::move(help), {}, {}};
+  k.read = [at, get, check](const TomlFields& f, const toml::node& v, const std::string& field,
+                            Spec& s) {
+    const double x = (f.*get)(v, field);
+    if (check) check(f, field, v, x);
+    at(s) = x;
+  };
+  k.shown = [at](const Spec& defaults) {
+    Spec copy = defaults;
+    return format_number(at(copy));
+  };
+  return k;
+}
+
+/// The key `k` with its default shown as `text` (a default that is a rule, not a number).
+template <class Spec>
+RecipeKey<Spec> shown_as(RecipeKey<Spec> k, std::string text) {
+  k.shown = [text](const Spec&) { return text; };
+  return k;
+}
+
+/// Reads the table `value` of section `s` into `spec`: every key through its table entry, an
+/// unknown one refused as "FILE: SECTION.KEY: unknown key (known: ...)". Returns the keys given.
+template <class Spec>
+std::vector<std::string> read_section(const TomlFields& f, const toml::node& value,
+                                      const RecipeSection<Spec>& s, Spec& spec) {
+  std::vector<std::string> given;
+  for (const auto& [key, v] : f.table(value, s.name)) {
+    const std::string k(key.str()), field = s.name + "." + k;
+    const RecipeKey<Spec>* entry = nullptr;
+    for (const auto& candidate : s.keys)
+      if (candidate.name == k) entry = &candidate;
+    if (!entry) {
+      std::string known;
+      for (const auto& candidate : s.keys) known += (known.empty() ? "" : ", ") + candidate.name;
+      f.fail(field, "unknown key (known: " + known + ")");
+    }
+    entry->read(f, v, field, spec);
+    given.push_back(k);
+  }
+  return given;
+}
+
+/// The section as Markdown: a heading, its help, and a table of key, unit, range, default, help.
+template <class Spec>
+std::string section_reference(const RecipeSection<Spec>& s, const Spec& defaults) {
+  std::string md = "### [" + s.name + "]\n\n" + s.help + "\n\n";
+  md += "| key | unit | values | default | what |\n|---|---|---|---|---|\n";
+  for (const auto& k : s.keys)
+    md += "| `" + k.name + "` | " + k.unit + " | " + k.range + " | " + k.shown(defaults) + " | " +
+          k.help + " |\n";
+  return md;
+}
+
+}  // namespace clumpkit

@@ -1,0 +1,10 @@
+// Prints the recipe reference generated from the section tables (io/recipes/section_table.h), the
+// part of docs/recipes.md between its "generated" markers (tests/layout/docs_check.py).
+#include "io/recipes/lab_recipe.h"
+
+#include <iostream>
+
+int main() {
+  std::cout << clumpkit::test_recipe_reference();
+  return 0;
+}
