@@ -3,6 +3,7 @@
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "io/base/text.h"
+#include "io/recipes/section_table.h"
 #include "io/recipes/toml_fields.h"
 
 #include <cmath>
@@ -99,32 +100,43 @@ void read_cells(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
   }
 }
 
-void read_bond(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
-  dem::CohesiveParams& p = r.law;
-  for (const auto& [key, v] : t) {
-    const std::string k(key.str()), field = "bond." + k;
-    if (k == "kn") {
-      p.kn = f.number(v, field);
-    } else if (k == "kt") {
-      p.kt = f.number(v, field);
-    } else if (k == "sigma_n") {
-      p.sigma_n = f.number(v, field);
-    } else if (k == "sigma_t") {
-      p.sigma_t = f.number(v, field);
-    } else if (k == "g_n") {
-      p.g_n = f.number(v, field);
-    } else if (k == "g_t") {
-      p.g_t = f.number(v, field);
-    } else if (k == "friction") {
-      p.friction = f.number(v, field);
-    } else if (k == "scale") {
-      r.scale = f.positive(v, field);
-    } else {
-      f.fail(field, "unknown key (known: kn, kt, sigma_n, sigma_t, g_n, g_t, friction, scale)");
-    }
-  }
+}  // namespace
+
+const RecipeSection<CrushRecipe>& bond_section() {
+  using R = CrushRecipe;
+  static const RecipeSection<R> s{
+      "bond",
+      "The cohesive law of the bonds between cells (Hu et al. 2023 eqs. 5–11; defaults: their "
+      "granite), per unit area; checked by dem::validate_values as read and by dem::validate once "
+      "`scale` is applied.",
+      {number_key<R>("kn", "N/m³", "> 0", "K_I, normal stiffness",
+                     [](R& r) -> double& { return r.law.kn; }),
+       number_key<R>("kt", "N/m³", "> 0", "K_II, shear stiffness",
+                     [](R& r) -> double& { return r.law.kt; }),
+       number_key<R>("sigma_n", "Pa", "> 0", "σ_eI, tensile strength (× scale)",
+                     [](R& r) -> double& { return r.law.sigma_n; }),
+       number_key<R>("sigma_t", "Pa", "> 0", "σ_eII, shear strength (× scale)",
+                     [](R& r) -> double& { return r.law.sigma_t; }),
+       number_key<R>("g_n", "J/m²", "> σ_eI²/(2 K_I)", "G_I, mode I fracture energy (× scale²)",
+                     [](R& r) -> double& { return r.law.g_n; }),
+       number_key<R>("g_t", "J/m²", "> σ_eII²/(2 K_II)", "G_II, mode II fracture energy (× scale²)",
+                     [](R& r) -> double& { return r.law.g_t; }),
+       number_key<R>("friction", "", ">= 0", "Coulomb coefficient of a damaged face in compression",
+                     [](R& r) -> double& { return r.law.friction; }),
+       number_key<R>(
+           "scale", "", "> 0",
+           "calibration factor s: strengths × s, energies × s² (the Brazilian "
+           "calibration of crush-brazilian.toml gives 1.85)",
+           [](R& r) -> double& { return r.scale; }, &TomlFields::positive)}};
+  return s;
+}
+
+namespace {
+
+void read_bond(const TomlFields& f, const toml::node& t, CrushRecipe& r) {
+  read_section(f, t, bond_section(), r);
   try {
-    dem::validate_values(p);
+    dem::validate_values(r.law);
   } catch (const InvalidInput& e) {
     f.fail("bond", e.what());
   }

@@ -8,6 +8,7 @@
 #include "geom/cells/voronoi_cells.h"
 #include "geom/shapes/distribution.h"
 #include "geom/shapes/polyhedron.h"
+#include "io/recipes/section_table.h"
 
 #include <cstdint>
 #include <string>
@@ -61,5 +62,8 @@ struct CrushRecipe {
 /// unknown key, a wrong type or a value out of range, and IoError for a missing file.
 CrushRecipe parse_crush_recipe(const std::string& text, const std::string& path);
 CrushRecipe read_crush_recipe(const std::string& path);
+
+/// The table of the [bond] section (io/recipes/section_table.h).
+const RecipeSection<CrushRecipe>& bond_section();
 
 }  // namespace clumpkit

@@ -12,31 +12,6 @@
 
 namespace clumpkit {
 
-namespace {
-
-// A check that `x` is at most, or below, a bound: "must be ..., got VALUE".
-NumberCheck at_most(double hi, std::string why) {
-  return [hi, why](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
-    if (!(x <= hi)) f.fail(field, why + ", got " + toml_show(v));
-  };
-}
-NumberCheck below(double hi, std::string why) {
-  return [hi, why](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
-    if (!(x < hi)) f.fail(field, why + ", got " + toml_show(v));
-  };
-}
-
-template <class Spec>
-RecipeKey<Spec> custom_key(
-    std::string name, std::string unit, std::string range, std::string help, std::string shown,
-    std::function<void(const TomlFields&, const toml::node&, const std::string&, Spec&)> read) {
-  RecipeKey<Spec> k{std::move(name), std::move(unit), std::move(range),
-                    std::move(help), std::move(read), {}};
-  return shown_as(std::move(k), std::move(shown));
-}
-
-}  // namespace
-
 const RecipeSection<dem::ProbeSettings>& probe_section() {
   using P = dem::ProbeSettings;
   static const RecipeSection<P> s{

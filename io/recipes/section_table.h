@@ -69,6 +69,30 @@ RecipeKey<Spec> shown_as(RecipeKey<Spec> k, std::string text) {
   return k;
 }
 
+/// A check that the number is at most `hi`: "FIELD: WHY, got VALUE" otherwise.
+inline NumberCheck at_most(double hi, std::string why) {
+  return [hi, why](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
+    if (!(x <= hi)) f.fail(field, why + ", got " + toml_show(v));
+  };
+}
+
+/// A check that the number is below `hi`: "FIELD: WHY, got VALUE" otherwise.
+inline NumberCheck below(double hi, std::string why) {
+  return [hi, why](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
+    if (!(x < hi)) f.fail(field, why + ", got " + toml_show(v));
+  };
+}
+
+/// A key read by its own code (`read`), its default shown as `shown`.
+template <class Spec>
+RecipeKey<Spec> custom_key(
+    std::string name, std::string unit, std::string range, std::string help, std::string shown,
+    std::function<void(const TomlFields&, const toml::node&, const std::string&, Spec&)> read) {
+  RecipeKey<Spec> k{std::move(name), std::move(unit), std::move(range),
+                    std::move(help), std::move(read), {}};
+  return shown_as(std::move(k), std::move(shown));
+}
+
 /// Reads the table `value` of section `s` into `spec`: every key through its table entry, an
 /// unknown one refused as "FILE: SECTION.KEY: unknown key (known: ...)". Returns the keys given.
 template <class Spec>
