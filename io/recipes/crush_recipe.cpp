@@ -13,12 +13,6 @@ namespace clumpkit {
 
 namespace {
 
-double fraction(const TomlFields& f, const toml::node& n, const std::string& field) {
-  const double v = f.number(n, field);
-  if (!(v > 0 && v < 1)) f.fail(field, "must be in (0, 1), got " + toml_show(n));
-  return v;
-}
-
 int bounded(const TomlFields& f, const toml::node& n, const std::string& field, long long lo,
             long long hi) {
   const long long v = f.integer(n, field);
@@ -28,51 +22,84 @@ int bounded(const TomlFields& f, const toml::node& n, const std::string& field, 
   return static_cast<int>(v);
 }
 
-void read_crush(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
-  dem::CrushOptions& o = r.rig;
-  for (const auto& [key, v] : t) {
-    const std::string k(key.str()), field = "crush." + k;
-    if (k == "seed") {
-      const long long s = f.integer(v, field);
-      if (s < 0) f.fail(field, "must be non-negative, got " + toml_show(v));
-      r.seed = static_cast<std::uint64_t>(s);
-    } else if (k == "density") {
-      r.density = f.positive(v, field);
-    } else if (k == "strain_rate") {
-      o.strain_rate = f.positive(v, field);
-    } else if (k == "platen_friction") {
-      o.platen_friction = f.non_negative(v, field);
-    } else if (k == "platen_stiffness") {
-      o.platen_stiffness = f.positive(v, field);
-    } else if (k == "local_damping") {
-      o.local_damping = f.non_negative(v, field);
-      if (o.local_damping >= 1) f.fail(field, "must be below 1, got " + toml_show(v));
-    } else if (k == "timestep_safety") {
-      o.timestep_safety = f.positive(v, field);
-      if (o.timestep_safety > 0.5) f.fail(field, "must be at most 0.5, got " + toml_show(v));
-    } else if (k == "density_scaling") {
-      o.density_scaling = f.number(v, field);
-      if (!(o.density_scaling >= 1 && o.density_scaling <= 1e6))
-        f.fail(field, "must be in [1, 1e6], got " + toml_show(v));
-    } else if (k == "max_strain") {
-      o.max_strain = fraction(f, v, field);
-    } else if (k == "sample_strain") {
-      o.sample_strain = fraction(f, v, field);
-    } else if (k == "drop") {
-      o.rule.drop = fraction(f, v, field);
-    } else if (k == "intact_fraction") {
-      o.intact_fraction = fraction(f, v, field);
-      if (o.intact_fraction <= 0.5) f.fail(field, "must be above 0.5, got " + toml_show(v));
-    } else if (k == "bootstrap") {
-      r.bootstrap = bounded(f, v, field, 100, 100000);
-    } else {
-      f.fail(field,
-             "unknown key (known: seed, density, strain_rate, platen_friction, "
-             "platen_stiffness, local_damping, timestep_safety, density_scaling, max_strain, "
-             "sample_strain, drop, intact_fraction, bootstrap)");
-    }
-  }
-  if (!(o.sample_strain < o.max_strain))
+// A number in (0, 1): "must be in (0, 1), got VALUE" otherwise.
+void open_fraction(const TomlFields& f, const std::string& field, const toml::node& v, double x) {
+  if (!(x > 0 && x < 1)) f.fail(field, "must be in (0, 1), got " + toml_show(v));
+}
+
+}  // namespace
+
+const RecipeSection<CrushRecipe>& crush_section() {
+  using R = CrushRecipe;
+  static const RecipeSection<R> s{
+      "crush",
+      "The rig of `clumpkit crush`: rigid platens closing on one particle at a constant strain "
+      "rate (Hu et al. 2023), the peak rule, and the statistics.",
+      {custom_key<R>("seed", "", ">= 0", "seed of every random draw of the run", "1",
+                     [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
+                       const long long n = f.integer(v, field);
+                       if (n < 0) f.fail(field, "must be non-negative, got " + toml_show(v));
+                       r.seed = static_cast<std::uint64_t>(n);
+                     }),
+       number_key<R>(
+           "density", "kg/m³", "> 0", "particle density", [](R& r) -> double& { return r.density; },
+           &TomlFields::positive),
+       number_key<R>(
+           "strain_rate", "1/s", "> 0", "closing speed over the initial gap",
+           [](R& r) -> double& { return r.rig.strain_rate; }, &TomlFields::positive),
+       number_key<R>(
+           "platen_friction", "", ">= 0", "μ of cell–platen contacts",
+           [](R& r) -> double& { return r.rig.platen_friction; }, &TomlFields::non_negative),
+       number_key<R>(
+           "platen_stiffness", "N/m", "> 0", "normal and shear stiffness of a corner on a platen",
+           [](R& r) -> double& { return r.rig.platen_stiffness; }, &TomlFields::positive),
+       number_key<R>(
+           "local_damping", "", "[0, 1)", "PFC local damping α of every cell",
+           [](R& r) -> double& { return r.rig.local_damping; }, &TomlFields::non_negative,
+           below(1.0, "must be below 1")),
+       number_key<R>(
+           "timestep_safety", "", "(0, 0.5]", "time step over the critical one",
+           [](R& r) -> double& { return r.rig.timestep_safety; }, &TomlFields::positive,
+           at_most(0.5, "must be at most 0.5")),
+       number_key<R>(
+           "density_scaling", "", "[1, 1e6]",
+           "every cell's mass and moments × λ (time step × √λ; reported)",
+           [](R& r) -> double& { return r.rig.density_scaling; }, &TomlFields::number,
+           [](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
+             if (!(x >= 1 && x <= 1e6)) f.fail(field, "must be in [1, 1e6], got " + toml_show(v));
+           }),
+       number_key<R>(
+           "max_strain", "", "(0, 1)",
+           "platen travel over the gap at which a test stops without a failure",
+           [](R& r) -> double& { return r.rig.max_strain; }, &TomlFields::number, open_fraction),
+       number_key<R>(
+           "sample_strain", "", "(0, max_strain)", "travel between samples over the gap",
+           [](R& r) -> double& { return r.rig.sample_strain; }, &TomlFields::number, open_fraction),
+       number_key<R>(
+           "drop", "", "(0, 1)",
+           "the load drop, as a fraction of the running peak, that marks failure",
+           [](R& r) -> double& { return r.rig.rule.drop; }, &TomlFields::number, open_fraction),
+       number_key<R>(
+           "intact_fraction", "", "(0.5, 1)",
+           "split once no fragment holds this fraction of the particle's mass",
+           [](R& r) -> double& { return r.rig.intact_fraction; }, &TomlFields::number,
+           [](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
+             open_fraction(f, field, v, x);
+             if (x <= 0.5) f.fail(field, "must be above 0.5, got " + toml_show(v));
+           }),
+       custom_key<R>("bootstrap", "", "[100, 100000]",
+                     "bootstrap resamples of the Weibull fits' 90 % intervals", "1000",
+                     [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
+                       r.bootstrap = bounded(f, v, field, 100, 100000);
+                     })}};
+  return s;
+}
+
+namespace {
+
+void read_crush(const TomlFields& f, const toml::node& t, CrushRecipe& r) {
+  read_section(f, t, crush_section(), r);
+  if (!(r.rig.sample_strain < r.rig.max_strain))
     f.fail("crush.sample_strain", "must be below crush.max_strain");
 }
 

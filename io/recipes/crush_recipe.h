@@ -63,7 +63,8 @@ struct CrushRecipe {
 CrushRecipe parse_crush_recipe(const std::string& text, const std::string& path);
 CrushRecipe read_crush_recipe(const std::string& path);
 
-/// The table of the [bond] section (io/recipes/section_table.h).
+/// The tables of the [crush] and [bond] sections (io/recipes/section_table.h).
+const RecipeSection<CrushRecipe>& crush_section();
 const RecipeSection<CrushRecipe>& bond_section();
 
 }  // namespace clumpkit

@@ -3,6 +3,7 @@
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "io/base/text.h"
+#include "io/recipes/section_table.h"
 #include "io/recipes/toml_fields.h"
 
 #include <algorithm>
@@ -230,54 +231,68 @@ void read_rock(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
   }
 }
 
-// [density]: soil, rock.
-void read_density(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
-  const std::string k = "density";
-  for (const auto& [dk, dv] : f.table(val, k)) {
-    const std::string g(dk.str()), field = "density." + g;
-    if (g == "soil")
-      r.soil_density = f.positive(dv, field);
-    else if (g == "rock")
-      r.rock_density = f.positive(dv, field);
-    else
-      f.fail(field, "unknown key (known: soil, rock)");
-  }
+// A number in [0, 1): "must be in [0, 1), got VALUE" otherwise.
+void unit_fraction(const TomlFields& f, const std::string& field, const toml::node& v, double x) {
+  if (!(x >= 0 && x < 1)) f.fail(field, "must be in [0, 1), got " + toml_show(v));
 }
 
-// [contact]: the contact law of the specimen.
-void read_contact(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
-  const std::string k = "contact";
-  for (const auto& [ck, cv] : f.table(val, k)) {
-    const std::string g(ck.str()), field = "contact." + g;
-    if (g == "kn") {
-      r.kn = f.positive(cv, field);
-    } else if (g == "ks") {
-      r.ks = f.positive(cv, field);
-    } else if (g == "friction") {
-      r.friction = f.number(cv, field);
-      if (r.friction < 0) f.fail(field, "must not be negative, got " + toml_show(cv));
-    } else if (g == "damping_ratio") {
-      r.damping_ratio = f.number(cv, field);
-      if (!(r.damping_ratio >= 0 && r.damping_ratio < 1))
-        f.fail(field, "must be in [0, 1), got " + toml_show(cv));
-    } else if (g == "local_damping") {
-      r.local_damping = f.number(cv, field);
-      if (!(r.local_damping >= 0 && r.local_damping < 1))
-        f.fail(field, "must be in [0, 1), got " + toml_show(cv));
-    } else if (g == "stiffness_scaling") {
-      const std::string m = f.string(cv, field);
-      if (m != "none" && m != "linear")
-        f.fail(field, "expected \"none\" or \"linear\", got " + toml_show(cv));
-      r.linear_scaling = m == "linear";
-    } else if (g == "d_ref") {
-      r.d_ref = f.positive(cv, field);
-    } else {
-      f.fail(field,
-             "unknown key (known: kn, ks, friction, damping_ratio, local_damping, "
-             "stiffness_scaling, d_ref)");
-    }
-  }
+}  // namespace
+
+const RecipeSection<SpecimenRecipe>& density_section() {
+  using R = SpecimenRecipe;
+  static const RecipeSection<R> s{
+      "density",
+      "Particle densities of the specimen.",
+      {number_key<R>(
+           "soil", "kg/m³", "> 0", "density of the soil spheres",
+           [](R& r) -> double& { return r.soil_density; }, &TomlFields::positive),
+       number_key<R>(
+           "rock", "kg/m³", "> 0", "density of the rock clumps",
+           [](R& r) -> double& { return r.rock_density; }, &TomlFields::positive)}};
+  return s;
 }
+
+const RecipeSection<SpecimenRecipe>& contact_section() {
+  using R = SpecimenRecipe;
+  static const RecipeSection<R> s{
+      "contact",
+      "The contact law of the specimen (linear spring, dashpot and Coulomb friction; "
+      "dem/core/contact.h).",
+      {number_key<R>(
+           "kn", "N/m", "> 0", "normal stiffness (at d_ref with linear scaling)",
+           [](R& r) -> double& { return r.kn; }, &TomlFields::positive),
+       number_key<R>(
+           "ks", "N/m", "> 0", "shear stiffness (at d_ref with linear scaling)",
+           [](R& r) -> double& { return r.ks; }, &TomlFields::positive),
+       number_key<R>(
+           "friction", "", ">= 0", "interparticle μ", [](R& r) -> double& { return r.friction; },
+           &TomlFields::number,
+           [](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
+             if (x < 0) f.fail(field, "must not be negative, got " + toml_show(v));
+           }),
+       number_key<R>(
+           "damping_ratio", "", "[0, 1)", "viscous normal damping ratio β",
+           [](R& r) -> double& { return r.damping_ratio; }, &TomlFields::number, unit_fraction),
+       number_key<R>(
+           "local_damping", "", "[0, 1)", "PFC local damping α of the preparation",
+           [](R& r) -> double& { return r.local_damping; }, &TomlFields::number, unit_fraction),
+       custom_key<R>("stiffness_scaling", "", "\"none\" or \"linear\"",
+                     "linear: kn and ks scale with the bodies' diameters (CTGU 2017)", "\"none\"",
+                     [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
+                       const std::string m = f.string(v, field);
+                       if (m != "none" && m != "linear")
+                         f.fail(field, "expected \"none\" or \"linear\", got " + toml_show(v));
+                       r.linear_scaling = m == "linear";
+                     }),
+       shown_as(number_key<R>(
+                    "d_ref", "m", "> 0",
+                    "diameter at which kn and ks hold (stiffness_scaling = \"linear\")",
+                    [](R& r) -> double& { return r.d_ref; }, &TomlFields::positive),
+                "required with linear scaling")}};
+  return s;
+}
+
+namespace {
 
 // The preparation and its container.
 void check_preparation(const TomlFields& f, const SpecimenRecipe& r, const Seen& seen) {
@@ -456,9 +471,9 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
     } else if (k == "rock") {
       read_rock(f, val, r);
     } else if (k == "density") {
-      read_density(f, val, r);
+      read_section(f, val, density_section(), r);
     } else if (k == "contact") {
-      read_contact(f, val, r);
+      read_section(f, val, contact_section(), r);
     } else if (k == "target_relative_density") {
       r.target_relative_density = f.number(val, k);
       if (r.target_relative_density < 0 || r.target_relative_density > 1)

@@ -6,6 +6,7 @@
 #include "dem/specimen/container.h"
 #include "dem/specimen/specimen.h"
 #include "dem/specimen/zones.h"
+#include "io/recipes/section_table.h"
 
 #include <array>
 #include <cstdint>
@@ -89,6 +90,10 @@ struct SpecimenRecipe {
 /// than the largest particle, a missing library. Each gives InvalidInput "FILE: FIELD: what,
 /// got VALUE" (IoError for an unreadable recipe).
 SpecimenRecipe read_specimen_recipe(const std::string& path);
+
+/// The tables of the [density] and [contact] sections (io/recipes/section_table.h).
+const RecipeSection<SpecimenRecipe>& density_section();
+const RecipeSection<SpecimenRecipe>& contact_section();
 SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string& path);
 
 }  // namespace clumpkit

@@ -2,11 +2,18 @@
 // part of docs/recipes.md between its "generated" markers (tests/layout/docs_check.py).
 #include "io/recipes/crush_recipe.h"
 #include "io/recipes/lab_recipe.h"
+#include "io/recipes/specimen_recipe.h"
 
 #include <iostream>
 
 int main() {
-  std::cout << clumpkit::test_recipe_reference() << "\n"
-            << clumpkit::section_reference(clumpkit::bond_section(), clumpkit::CrushRecipe{});
+  using namespace clumpkit;
+  const SpecimenRecipe specimen;
+  const CrushRecipe crush;
+  std::cout << section_reference(density_section(), specimen) << "\n"
+            << section_reference(contact_section(), specimen) << "\n"
+            << test_recipe_reference() << "\n"
+            << section_reference(crush_section(), crush) << "\n"
+            << section_reference(bond_section(), crush);
   return 0;
 }
