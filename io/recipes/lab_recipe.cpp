@@ -115,11 +115,6 @@ const RecipeSection<TestRecipe>& test_section() {
   return s;
 }
 
-std::string test_recipe_reference() {
-  return section_reference(test_section(), TestRecipe{}) + "\n" +
-         section_reference(probe_section(), dem::ProbeSettings{});
-}
-
 TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
   const TomlFields f{path};
   const toml::table root = parse_toml(text, path);

@@ -50,7 +50,4 @@ TestRecipe read_test_recipe(const std::string& path);
 const RecipeSection<TestRecipe>& test_section();
 const RecipeSection<dem::ProbeSettings>& probe_section();
 
-/// The reference of the test recipe's table sections, as Markdown (docs/recipes.md).
-std::string test_recipe_reference();
-
 }  // namespace clumpkit

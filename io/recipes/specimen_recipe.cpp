@@ -28,8 +28,7 @@ std::vector<double> numbers(const TomlFields& f, const toml::node& n, const std:
 }
 
 // A container length: a number, checked by the specs' one rule (dem::check_container_length).
-double container_length(const TomlFields& f, const toml::node& n, const std::string& field) {
-  const double v = f.number(n, field);
+double container_length(const TomlFields& f, const std::string& field, double v) {
   try {
     dem::check_container_length(v);
   } catch (const InvalidInput& e) {
@@ -130,10 +129,10 @@ void read_container(const TomlFields& f, const toml::node& val, SpecimenRecipe& 
   for (const auto& [ck, cv] : f.table(val, k)) {
     const std::string c(ck.str()), field = "container." + c;
     if (c == "diameter") {
-      r.container_diameter = container_length(f, cv, field);
+      r.container_diameter = container_length(f, field, f.number(cv, field));
       seen.diameter = true;
     } else if (c == "height") {
-      r.container_height = container_length(f, cv, field);
+      r.container_height = container_length(f, field, f.number(cv, field));
       seen.diameter = true;
     } else if (c == "shape") {
       const std::string shape = f.string(cv, field);
@@ -150,8 +149,7 @@ void read_container(const TomlFields& f, const toml::node& val, SpecimenRecipe& 
       const std::vector<double> v = numbers(f, cv, field);
       if (v.size() != 3) f.fail(field, "expected [x, y, z] edges, got " + toml_show(cv));
       for (int a = 0; a < 3; ++a)
-        r.container_size[a] =
-            container_length(f, *cv.as_array()->get(a), field + "[" + std::to_string(a) + "]");
+        r.container_size[a] = container_length(f, field + "[" + std::to_string(a) + "]", v[a]);
       seen.size = true;
     } else {
       f.fail(field, "unknown key (known: shape, diameter, height, size, angle)");

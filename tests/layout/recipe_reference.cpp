@@ -12,7 +12,8 @@ int main() {
   const CrushRecipe crush;
   std::cout << section_reference(density_section(), specimen) << "\n"
             << section_reference(contact_section(), specimen) << "\n"
-            << test_recipe_reference() << "\n"
+            << section_reference(test_section(), TestRecipe{}) << "\n"
+            << section_reference(probe_section(), dem::ProbeSettings{}) << "\n"
             << section_reference(crush_section(), crush) << "\n"
             << section_reference(bond_section(), crush);
   return 0;

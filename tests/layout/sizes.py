@@ -21,8 +21,6 @@ def functions(lines):
             if (OPENING.match(line) and not line.startswith(("namespace", "struct", "class", "enum",
                                                               "union", "extern", "#"))):
                 start = i
-                if line.rstrip().endswith("{") is False and "{" not in line:
-                    pass
         elif line.startswith("}"):
             found.append((start + 1, i - start + 1, lines[start].strip()))
             start = None
