@@ -27,6 +27,25 @@ struct Fidelity {
       0.0;  ///< max over spheres of radius − centre-to-surface distance (≥ 0)
 };
 
+/// Calls visit(name, member pointer) for each field of the fidelity report, in its order: the
+/// one list the JSON record (`clumpkit fill --json`, the library's records) and the Python
+/// attributes are written from. `watertight` is not in it: the jobs report the mesh's own state.
+template <class Visit>
+void for_each_fidelity_field(Visit&& visit) {
+  visit("spheres", &Fidelity::spheres);
+  visit("mesh_volume", &Fidelity::mesh_volume);
+  visit("mesh_volume_method", &Fidelity::mesh_volume_method);
+  visit("clump_volume", &Fidelity::clump_volume);
+  visit("clump_volume_method", &Fidelity::clump_volume_method);
+  visit("covered_fraction", &Fidelity::covered_fraction);
+  visit("overshoot_fraction", &Fidelity::overshoot_fraction);
+  visit("surface_mean_distance", &Fidelity::surface_mean_distance);
+  visit("surface_max_distance", &Fidelity::surface_max_distance);
+  visit("centroid_offset", &Fidelity::centroid_offset);
+  visit("inertia_error", &Fidelity::inertia_error);
+  visit("overshoot_depth_max", &Fidelity::overshoot_depth_max);
+}
+
 /// Clump volume, centroid and inertia are exact (power diagram). The part of the clump outside
 /// the mesh comes from exact 1-D integration along x of every row of a (y, z) lattice with spacing
 /// `spacing` (mesh intervals from the row's surface crossings, clump intervals from sphere

@@ -85,24 +85,18 @@ ProgressBar::~ProgressBar() {
   finish();
 }
 
-void ProgressBar::update(std::size_t done, std::size_t total) {
-  draw(done, total, false);
-}
-
-void ProgressBar::update(double fraction) {
-  draw(static_cast<std::size_t>(1000 * std::clamp(fraction, 0.0, 1.0)), 1000, true);
-}
-
-void ProgressBar::draw(std::size_t done, std::size_t total, bool percent) {
-  if (!enabled_ || total == 0) return;
-  const int permille = static_cast<int>(1000 * done / total);
+void ProgressBar::update(const Progress& progress) {
+  if (!enabled_) return;
+  const double fraction = std::clamp(progress.fraction, 0.0, 1.0);
+  const int permille = static_cast<int>(1000 * fraction);
   if (permille == last_permille_) return;
   last_permille_ = permille;
   const double elapsed = now() - start_;
-  const double eta = done > 0 ? elapsed * (double(total) / double(done) - 1.0) : 0.0;
+  const double eta = fraction > 0 ? elapsed * (1.0 / fraction - 1.0) : 0.0;
   const int width = 30, fill = permille * width / 1000;
-  const std::string count = percent ? std::to_string(permille / 10) + " %"
-                                    : std::to_string(done) + "/" + std::to_string(total);
+  const std::string count =
+      progress.total > 0 ? std::to_string(progress.done) + "/" + std::to_string(progress.total)
+                         : std::to_string(permille / 10) + " %";
   std::fprintf(stderr, "\r%s [%.*s%*s] %s  %.0fs elapsed, %.0fs left ", label_.c_str(), fill,
                "##############################", width - fill, "", count.c_str(), elapsed, eta);
   std::fflush(stderr);
@@ -117,10 +111,10 @@ void ProgressBar::finish() {
 Interrupter signal_interrupter(ProgressBar& bar, const std::string& command) {
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
-  return [&bar, command](std::string_view stage, double fraction) {
+  return [&bar, command](std::string_view stage, Progress progress) {
     // "library: library" says the stage twice: a stage named after its command is the command.
     bar.set_label(stage == command ? command : command + ": " + std::string(stage));
-    bar.update(fraction);
+    bar.update(progress);
     return g_stop_requested.load();
   };
 }
@@ -136,6 +130,11 @@ void add_weld_option(CLI::App* command, double& weld_tolerance) {
 
 void note(const std::string& message) {
   std::fprintf(stderr, "clumpkit: note: %s\n", message.c_str());
+}
+
+void add_max_memory_option(CLI::App* command, double& gib, const std::string& refused) {
+  command->add_option("--max-memory", gib,
+                      "Refuse " + refused + " (default: half of this machine's memory)");
 }
 
 double max_memory_bytes(double gib) {

@@ -75,10 +75,9 @@ class ProgressBar {
  public:
   ProgressBar(std::string label, bool quiet);
   ~ProgressBar();
-  void update(std::size_t done, std::size_t total);
-  /// The bar at `fraction` (0..1) of the work, drawn as a percentage (the job's own count is not
-  /// known here).
-  void update(double fraction);
+  /// The bar at `progress`: the job's own units ("12/40") where it counts them, else a
+  /// percentage.
+  void update(const Progress& progress);
   /// Changes the label (e.g. the current stage) from the next update on.
   void set_label(std::string label) {
     if (label == label_) return;
@@ -88,8 +87,6 @@ class ProgressBar {
   void finish();
 
  private:
-  void draw(std::size_t done, std::size_t total, bool percent);
-
   std::string label_;
   bool enabled_;
   double start_;
@@ -110,6 +107,10 @@ void note(const std::string& message);
 /// The memory budget of --max-memory GIB in bytes: `gib` GiB when positive, otherwise half of
 /// this machine's physical memory. Throws InvalidInput for a NaN or negative value.
 double max_memory_bytes(double gib);
+
+/// Adds --max-memory GIB to `command`, read into `gib` (0: the default): "Refuse `refused`
+/// (default: half of this machine's memory)"; max_memory_bytes turns it into bytes.
+void add_max_memory_option(CLI::App* command, double& gib, const std::string& refused);
 
 /// Writes one warning line "clumpkit: warning: ..." to stderr (the command still succeeds).
 void warning(const std::string& message);

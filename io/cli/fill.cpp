@@ -58,9 +58,8 @@ void register_fill(CLI::App& app) {
   c->add_flag("--check-resolution", o->check_resolution,
               "Also fill on a grid of twice the voxels and report the change of coverage "
               "(about three times the work); the clump written is the first one");
-  c->add_option("--max-memory", o->max_memory_gib,
-                "Refuse, before allocating, a fill estimated to need more than this many GiB "
-                "(default: half of this machine's memory)");
+  add_max_memory_option(c, o->max_memory_gib,
+                        "a fill estimated to need more than this many GiB, before allocating");
   c->add_flag("--allow-open", o->allow_open,
               "Accept a mesh that is not watertight: inside/outside by Embree ray-parity voting "
               "(the report says so; volumes are then approximate, and the overshoot is measured "

@@ -36,9 +36,9 @@ void register_library(CLI::App& app) {
   c->add_flag("--vtp", o->vtp,
               "Also write NNNNN.vtp for ParaView: the mesh as polygons, the spheres as vertices "
               "with radius and diameter (Glyph: Sphere, Scale Array diameter, Scale Factor 1)");
-  c->add_option("--max-memory", o->max_memory_gib,
-                "Refuse a particle whose fill is estimated to need more than this many GiB "
-                "divided by the threads (default: half of this machine's memory)");
+  add_max_memory_option(c, o->max_memory_gib,
+                        "a particle whose fill is estimated to need more than this many GiB "
+                        "divided by the threads");
   c->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
     set_threads(o->run.job.threads);

@@ -38,9 +38,8 @@ void register_specimen(CLI::App& app) {
       "any --threads.");
   add_recipe_job_options(c, o->run, "Specimen recipe file (see assets/recipes/)", JobKind::staged,
                          "Print report.json on stdout");
-  c->add_option("--max-memory", o->max_memory_gib,
-                "Refuse a recipe whose estimated memory exceeds this many GiB (default: half "
-                "of this machine's memory)");
+  add_max_memory_option(c, o->max_memory_gib,
+                        "a recipe whose estimated memory exceeds this many GiB");
   c->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
     set_threads(o->run.job.threads);

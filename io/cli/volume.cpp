@@ -42,9 +42,9 @@ void register_volume(CLI::App& app) {
       ->capture_default_str();
   c->add_option("--png", o->png, "pixel-slice: write slice images into this directory");
   c->add_option("--voxel", o->voxel, "voxel: voxel size (default: smallest radius / 10)");
-  c->add_option("--max-memory", o->max_memory_gib,
-                "Refuse, before computing anything, a method estimated to need more than this "
-                "many GiB (default: half of this machine's memory)");
+  add_max_memory_option(c, o->max_memory_gib,
+                        "a method estimated to need more than this many GiB, before computing "
+                        "anything");
   c->add_flag("--json", o->json, "Print one JSON object keyed by method on stdout");
   c->callback([o] {
     VolumeJobOptions job;

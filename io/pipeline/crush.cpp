@@ -200,8 +200,7 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
       return;
     }
     std::lock_guard<std::mutex> lock(tell);
-    const double fraction = double(++done) / double(total);
-    if (interrupted(interrupter, "crush", fraction)) stop = true;
+    if (interrupted(interrupter, "crush", Progress(++done, total))) stop = true;
   });
   if (failure) {
     try {

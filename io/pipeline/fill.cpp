@@ -19,18 +19,7 @@ namespace clumpkit {
 
 nlohmann::ordered_json fidelity_json(const Fidelity& f) {
   nlohmann::ordered_json j;
-  j["spheres"] = f.spheres;
-  j["mesh_volume"] = f.mesh_volume;
-  j["mesh_volume_method"] = f.mesh_volume_method;
-  j["clump_volume"] = f.clump_volume;
-  j["clump_volume_method"] = f.clump_volume_method;
-  j["covered_fraction"] = f.covered_fraction;
-  j["overshoot_fraction"] = f.overshoot_fraction;
-  j["surface_mean_distance"] = f.surface_mean_distance;
-  j["surface_max_distance"] = f.surface_max_distance;
-  j["centroid_offset"] = f.centroid_offset;
-  j["inertia_error"] = f.inertia_error;
-  j["overshoot_depth_max"] = f.overshoot_depth_max;
+  for_each_fidelity_field([&](const char* name, auto member) { j[name] = f.*member; });
   return j;
 }
 

@@ -22,10 +22,7 @@ void for_each_particle(const ShapeRecipe& recipe, const std::vector<int>& fracti
   std::exception_ptr error;
   std::atomic<bool> failed{false}, stop{false};
   std::mutex report_mutex;
-  const auto fraction = [total](std::size_t n) {
-    return total ? static_cast<double>(n) / static_cast<double>(total) : 1.0;
-  };
-  if (already > 0 && interrupted(interrupter, stage, fraction(already))) stop = true;
+  if (already > 0 && interrupted(interrupter, stage, Progress(already, total))) stop = true;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, total, 1),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for (std::size_t i = r.begin(); i != r.end(); ++i) {
@@ -47,7 +44,7 @@ void for_each_particle(const ShapeRecipe& recipe, const std::vector<int>& fracti
                         const std::size_t n = ++done;
                         // Not concurrently: a thread that finds the interrupter busy goes on.
                         if (interrupter && report_mutex.try_lock()) {
-                          if (interrupter(stage, fraction(n))) stop = true;
+                          if (interrupter(stage, Progress(n, total))) stop = true;
                           report_mutex.unlock();
                         }
                       }

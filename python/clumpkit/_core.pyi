@@ -58,7 +58,9 @@ def describe(mesh: Mesh) -> Descriptors: ...
 class Fidelity:
     spheres: int
     mesh_volume: float
+    mesh_volume_method: str
     clump_volume: float
+    clump_volume_method: str
     covered_fraction: float
     overshoot_fraction: float
     surface_mean_distance: float

@@ -215,20 +215,13 @@ void bind_descriptors(py::module_& m) {
 
 // The fill and its fidelity.
 void bind_fill(py::module_& m) {
-  py::class_<Fidelity>(m, "Fidelity", "How faithful a clump is to its mesh (units of the mesh)")
-      .def_readonly("spheres", &Fidelity::spheres)
-      .def_readonly("mesh_volume", &Fidelity::mesh_volume)
-      .def_readonly("clump_volume", &Fidelity::clump_volume)
-      .def_readonly("covered_fraction", &Fidelity::covered_fraction)
-      .def_readonly("overshoot_fraction", &Fidelity::overshoot_fraction)
-      .def_readonly("surface_mean_distance", &Fidelity::surface_mean_distance)
-      .def_readonly("surface_max_distance", &Fidelity::surface_max_distance)
-      .def_readonly("centroid_offset", &Fidelity::centroid_offset)
-      .def_readonly("inertia_error", &Fidelity::inertia_error)
-      .def_readonly("overshoot_depth_max", &Fidelity::overshoot_depth_max)
-      .def(
-          "as_dict", [](const Fidelity& f) { return python_of(fidelity_json(f)); },
-          "The record as `clumpkit fill --json` names it");
+  py::class_<Fidelity> fidelity(m, "Fidelity",
+                                "How faithful a clump is to its mesh (units of the mesh)");
+  for_each_fidelity_field(
+      [&](const char* name, auto member) { fidelity.def_readonly(name, member); });
+  fidelity.def(
+      "as_dict", [](const Fidelity& f) { return python_of(fidelity_json(f)); },
+      "The record as `clumpkit fill --json` names it");
 
   py::class_<SolidFill>(m, "Clump", "A clump of overlapping spheres made by fill")
       .def_property_readonly(

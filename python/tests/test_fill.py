@@ -30,6 +30,9 @@ def test_fill_equals_the_command_line(cli, tmp_path, rock, options, flags):
     f = clump.fidelity.as_dict()
     for key in ("covered_fraction", "overshoot_fraction", "clump_volume", "mesh_volume"):
         assert f[key] == report[key], key
+    # The attributes and the record come from one list of fields: the same names and values.
+    for key, value in f.items():
+        assert getattr(clump.fidelity, key) == value, key
     assert clump.stopped_by == report["stopped_by"] and clump.voxel == report["voxel"]
     assert len(clump.coverage_curve) == len(clump) and np.all(np.diff(clump.coverage_curve) > 0)
 

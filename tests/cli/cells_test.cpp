@@ -13,25 +13,6 @@
 namespace fs = std::filesystem;
 using namespace cli_test;
 
-namespace {
-
-// The rows of a CSV file after its header line, as numbers.
-std::vector<std::vector<double>> csv_rows(const fs::path& path) {
-  std::istringstream in(slurp(path));
-  std::string line;
-  std::vector<std::vector<double>> rows;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    std::istringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  return rows;
-}
-
-}  // namespace
-
 TEST(CliCells, CutsAParticleIntoBondedCellsReproducibly) {
   const fs::path d = scratch();
   // OBJ keeps the corners' doubles exactly (an STL rounds them to floats).

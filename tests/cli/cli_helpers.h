@@ -69,6 +69,32 @@ inline Result run_cli(const std::string& args, const fs::path& dir) {
   return r;
 }
 
+/// The numeric rows of a CSV file with a one-line header (given back in `header`); with
+/// `columns` > 0 each row is expected to hold that many numbers (a row that does not is reported
+/// and left out).
+inline std::vector<std::vector<double>> csv_rows(const fs::path& path, std::size_t columns = 0,
+                                                 std::string* header = nullptr) {
+  std::istringstream in(slurp(path));
+  std::string line;
+  std::getline(in, line);
+  if (header) *header = line;
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream s(line);
+    std::vector<double> row;
+    double v;
+    while (s >> v) row.push_back(v);
+    if (columns == 0) {
+      rows.push_back(row);
+      continue;
+    }
+    EXPECT_EQ(row.size(), columns) << path << ": " << line;
+    if (row.size() == columns) rows.push_back(row);
+  }
+  return rows;
+}
+
 // Whether a program is on the PATH (the DEM engines the export tests run).
 inline bool have_program(const std::string& name) {
   return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0;

@@ -26,22 +26,9 @@ depth = 0.009
 
 // The numeric rows of curve.csv, its header checked.
 std::vector<std::vector<double>> cpt_rows(const fs::path& path) {
-  std::string text = slurp(path);
-  std::istringstream in(text);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line, "step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa");
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    for (char& c : line)
-      if (c == ',') c = ' ';
-    std::istringstream s(line);
-    std::vector<double> row;
-    double v;
-    while (s >> v) row.push_back(v);
-    EXPECT_EQ(row.size(), 6u) << line;
-    if (row.size() == 6) rows.push_back(row);
-  }
+  std::string header;
+  auto rows = csv_rows(path, 6, &header);
+  EXPECT_EQ(header, "step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa");
   return rows;
 }
 
@@ -104,32 +91,25 @@ TEST(CliCpt, BadProbesAreRefusedBeforeAnythingIsWritten) {
         {"regions", {{{"outer", core}, {"scale", 1}}, {{"outer", 1}, {"scale", 2}}}}};
     write(d / name / "report.json", report.dump(2));
   }
-  const std::string spec = " --specimen " + (d / "spec").string();
   const std::string out = (d / "out").string();
+  // `clumpkit test KIND` of specimen `spec` with recipe `recipe`, both in the scratch directory.
+  const auto command = [&](const char* kind, const char* spec, const char* recipe) {
+    return std::string("test ") + kind + " --specimen " + (d / spec).string() + " --recipe " +
+           (d / recipe).string() + " --out " + out;
+  };
   struct Case {
     std::string args, needle;
   };
   const Case cases[] = {
-      {"test cpt" + spec + " --recipe " + (d / "noprobe.toml").string() + " --out " + out,
-       "[probe]"},
-      {"test cpt" + spec + " --recipe " + (d / "wide.toml").string() + " --out " + out,
-       "half the cell"},
-      {"test cpt" + spec + " --recipe " + (d / "apex.toml").string() + " --out " + out,
-       "probe.apex_deg"},
-      {"test cpt" + spec + " --recipe " + (d / "nodepth.toml").string() + " --out " + out,
-       "probe.depth"},
-      {"test cpt" + spec + " --recipe " + (d / "unknown.toml").string() + " --out " + out,
-       "probe.speed"},
-      {"test cpt" + spec + " --recipe " + (d / "fast.toml").string() + " --out " + out,
-       "probe.velocity"},
-      {"test triaxial" + spec + " --recipe " + (d / "wide.toml").string() + " --out " + out,
-       "test cpt"},
-      {"test cpt --specimen " + (d / "core30").string() + " --recipe " +
-           (d / "probe.toml").string() + " --out " + out,
-       "smaller than 4 probe diameters"},
-      {"test cpt --specimen " + (d / "core5").string() + " --recipe " +
-           (d / "probe.toml").string() + " --out " + out,
-       "wider than the specimen's core"},
+      {command("cpt", "spec", "noprobe.toml"), "[probe]"},
+      {command("cpt", "spec", "wide.toml"), "half the cell"},
+      {command("cpt", "spec", "apex.toml"), "probe.apex_deg"},
+      {command("cpt", "spec", "nodepth.toml"), "probe.depth"},
+      {command("cpt", "spec", "unknown.toml"), "probe.speed"},
+      {command("cpt", "spec", "fast.toml"), "probe.velocity"},
+      {command("triaxial", "spec", "wide.toml"), "test cpt"},
+      {command("cpt", "core30", "probe.toml"), "smaller than 4 probe diameters"},
+      {command("cpt", "core5", "probe.toml"), "wider than the specimen's core"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.args);

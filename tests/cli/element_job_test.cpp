@@ -33,22 +33,7 @@ record_every = 400
 
 // The numeric rows of curve.csv (its header skipped), each with its 11 columns.
 std::vector<std::vector<double>> curve_rows(const fs::path& path) {
-  std::string text = slurp(path);
-  for (char& c : text)
-    if (c == ',') c = ' ';
-  std::istringstream in(text);
-  std::string line;
-  std::getline(in, line);  // header
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::istringstream s(line);
-    std::vector<double> row;
-    double v;
-    while (s >> v) row.push_back(v);
-    EXPECT_EQ(row.size(), 11u) << line;
-    if (row.size() == 11) rows.push_back(row);
-  }
-  return rows;
+  return csv_rows(path, 11);
 }
 
 }  // namespace
