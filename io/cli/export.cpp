@@ -34,9 +34,14 @@ void register_export(CLI::App& app) {
   c->add_option("SRC", o->source, "Specimen directory, library directory or clump CSV")->required();
   c->add_option("--out", o->out, "Output directory")->required();
   c->add_option("--test", o->test,
-                "lammps only: an element test after the settle: oedometer (top platen at a "
-                "constant strain rate; strain and vertical stress in oedometer.csv)")
-      ->check(CLI::IsMember({"oedometer"}));
+                "lammps only: oedometer (after the settle, a top platen at a constant strain "
+                "rate; strain and vertical stress in oedometer.csv) or cpt (the cone "
+                "penetration test of --recipe, no settle: the probe pushed from the specimen's "
+                "top in the probe's frame, tip and sleeve forces apart in cpt.csv with the "
+                "columns of `clumpkit test cpt`'s curve.csv; the chamber's walls fixed)")
+      ->check(CLI::IsMember({"oedometer", "cpt"}));
+  c->add_option("--recipe", o->options.cpt_recipe,
+                "--test cpt: the test recipe with its [probe] (as for `clumpkit test cpt`)");
   c->add_option("--max-strain", o->options.lammps.max_strain,
                 "Oedometer: the vertical strain the platen stops at")
       ->capture_default_str();
@@ -58,6 +63,9 @@ void register_export(CLI::App& app) {
   c->add_flag("--json", o->json, "Print format, bodies, spheres, files and run as JSON");
   c->callback([o] {
     o->options.lammps.oedometer = o->test == "oedometer";
+    if ((o->test == "cpt") != !o->options.cpt_recipe.empty())
+      throw InvalidInput(o->test == "cpt" ? "export: --test cpt needs --recipe TEST.toml"
+                                          : "export: --recipe is for --test cpt");
     if (!o->tile.empty()) {
       const std::size_t x = o->tile.find('x');
       try {

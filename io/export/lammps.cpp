@@ -9,46 +9,6 @@
 
 namespace clumpkit {
 
-std::string lammps_run_command(int ranks) {
-  return ranks <= 1
-             ? "lmp -in in.clumpkit"
-             : "mpirun --allow-run-as-root -np " + std::to_string(ranks) + " lmp -in in.clumpkit";
-}
-
-double lammps_atom_density(const SpecimenBody& body) {
-  double spheres_volume = 0;
-  for (const Sphere& s : body.spheres) spheres_volume += 4.0 / 3.0 * M_PI * std::pow(s.radius, 3);
-  return body.mass / spheres_volume;
-}
-
-LammpsContact lammps_contact(const SpecimenExtents& e, const EngineSettings& settings) {
-  // Contact law: kn, kt = ks, μ; the dashpot c = 2β·sqrt(m_eff·kn) becomes LAMMPS's
-  // γn = c/m_eff at the median body's m_eff = m/2 (LAMMPS scales the dashpot with each pair's
-  // m_eff, clumpkit with sqrt(m_eff)); no tangential dashpot (γt = 0), no local damping.
-  const dem::ContactParams& c = settings.contact;
-  const double m_eff = 0.5 * e.m_median;
-  const double gamma_n = 2.0 * c.damping_ratio * std::sqrt(c.kn / m_eff);
-  LammpsContact lc;
-  lc.dt = 0.2 * std::sqrt(e.m_min / c.kn);  // 1/10 of the sphere's 2·sqrt(m/k)
-  lc.skin = 0.5 * e.r_min;
-  lc.cutoff = 2 * e.reach + 2 * e.r_max + 2 * lc.skin;
-  const std::string springs =
-      format_number(c.kn) + " " + format_number(c.ks) + " " + format_number(gamma_n) + " 0 ";
-  lc.args = springs + format_number(c.friction) + " 1";
-  lc.frictionless_args = springs + "0 1";
-  return lc;
-}
-
-std::string lammps_preamble(const LammpsContact& contact) {
-  return "units       si\n"
-         "atom_style  hybrid sphere molecular\n"
-         "atom_modify map array\n"
-         "boundary    f f f\n"
-         "newton      off\n"
-         "comm_modify vel yes cutoff " +
-         format_number(contact.cutoff) + "\n";
-}
-
 std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bodies,
                                              const EngineSettings& settings, const std::string& dir,
                                              const LammpsDeck& deck) {
@@ -66,7 +26,9 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
   const bool tiled = deck.tiles_x * deck.tiles_y > 1;
   const double half_x = deck.tiles_x * settings.container_radius + pad;
   const double half_y = deck.tiles_y * settings.container_radius + pad;
-  const double z_hi = std::max(settings.container_height, e.top) + pad;
+  // The CPT's chamber rises by the push's depth (it runs in the probe's frame).
+  const double z_hi =
+      std::max(settings.container_height, e.top) + pad + (deck.cpt ? deck.cpt->probe.depth : 0.0);
   files.push_back(write_export_file(dir, "data.specimen", [&](std::ostream& o) {
     o << "clumpkit specimen: atom_style hybrid sphere molecular, SI units\n\n"
       << atoms << " atoms\n2 atom types\n\n"
@@ -86,6 +48,8 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
     }
   }));
 
+  // The CPT runs in the probe's frame: every body starts moving up at the probe's speed.
+  const double start_vz = deck.cpt ? deck.cpt->probe.velocity : 0.0;
   files.push_back(write_export_file(dir, "bodies.infile", [&](std::ostream& o) {
     o << "# clumpkit exact rigid-body properties for fix rigid/small ... infile (SI): id mass\n"
          "# xcm ycm zcm ixx iyy izz ixy ixz iyz (box frame, R diag(I1,I2,I3) R^T) vxcm vycm vzcm\n"
@@ -99,7 +63,7 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
         << format_number(b.position.y()) << " " << format_number(b.position.z()) << " "
         << format_number(I(0, 0)) << " " << format_number(I(1, 1)) << " " << format_number(I(2, 2))
         << " " << format_number(I(0, 1)) << " " << format_number(I(0, 2)) << " "
-        << format_number(I(1, 2)) << " 0 0 0 0 0 0 0 0 0\n";
+        << format_number(I(1, 2)) << " 0 0 " << format_number(start_vz) << " 0 0 0 0 0 0\n";
     }
   }));
 
@@ -119,6 +83,12 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
   const LammpsContact lc = lammps_contact(e, settings);
   const double dt = lc.dt;
   const std::string& contact_args = lc.args;
+  if (deck.cpt) {
+    files.push_back(write_export_file(dir, "in.clumpkit", [&](std::ostream& o) {
+      write_lammps_cpt_deck(o, *deck.cpt, settings, lc, rocks > 0, soils > 0);
+    }));
+    return files;
+  }
   files.push_back(write_export_file(dir, "in.clumpkit", [&](std::ostream& o) {
     o << "# clumpkit export for LAMMPS (syntax of LAMMPS 29 Sep 2021, Debian 12 `lammps`): the\n"
          "# specimen with clumpkit's exact clump mass properties forced on fix rigid/small,\n"

@@ -3,8 +3,11 @@
 #pragma once
 
 #include "io/export/engine_settings.h"
+#include "io/export/lammps_cpt.h"
+#include "io/export/lammps_deck.h"
 #include "io/formats/specimen_csv.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +21,8 @@ struct LammpsDeck {
   /// Copies of the specimen side by side (tile_bodies); more than one replaces the cylinder
   /// wall by the side planes of the box around all copies.
   int tiles_x = 1, tiles_y = 1;
+  /// A cone penetration test instead of the settle (write_lammps_cpt_deck).
+  std::optional<LammpsCpt> cpt;
 };
 
 /// Writes into `dir` (which must exist):
@@ -44,26 +49,5 @@ struct LammpsDeck {
 std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bodies,
                                              const EngineSettings& settings, const std::string& dir,
                                              const LammpsDeck& deck = {});
-
-/// What every LAMMPS deck of these bodies shares: the pair and wall arguments of the contact law
-/// ("kn kt gamma_n gamma_t mu 1" of gran/hooke/history), the time step, the neighbour skin and
-/// the ghost cutoff of fix rigid/small (the largest body must fit).
-struct LammpsContact {
-  std::string args;
-  std::string frictionless_args;  ///< the same with μ = 0 (walls of an element test)
-  double dt = 0, skin = 0, cutoff = 0;
-};
-LammpsContact lammps_contact(const SpecimenExtents& extents, const EngineSettings& settings);
-
-/// The atom density of a body's spheres that makes their masses sum to the body's mass M:
-/// M / Σ(4/3·π·r³) (the spheres overlap, so it is not the material density).
-double lammps_atom_density(const SpecimenBody& body);
-
-/// The deck lines both LAMMPS decks open with: SI units, spheres with molecule ids, fixed
-/// boundaries, newton off, ghost velocities and fix rigid/small's ghost cutoff.
-std::string lammps_preamble(const LammpsContact& contact);
-
-/// The command line that runs the deck in `dir` on `ranks` MPI ranks (1: plain lmp).
-std::string lammps_run_command(int ranks);
 
 }  // namespace clumpkit

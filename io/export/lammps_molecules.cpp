@@ -2,7 +2,7 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
-#include "io/export/lammps.h"
+#include "io/export/lammps_deck.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,6 +7,7 @@
 #include "io/export/formats.h"
 #include "io/pipeline/manifest.h"
 #include "io/pipeline/output_dir.h"
+#include "io/recipes/lab_recipe.h"
 
 #include <nlohmann/json.hpp>
 
@@ -18,6 +19,32 @@
 namespace clumpkit {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// The CPT of `options.cpt_recipe` on the specimen `src`, checked (before anything is written).
+LammpsCpt lammps_cpt_of(const ExportOptions& options, const std::string& format,
+                        const ExportSource& src, const std::string& not_specimen) {
+  if (format != "lammps")
+    throw InvalidInput("export: --test cpt is only available for lammps, not " + format);
+  if (src.templates) throw InvalidInput("export: --test cpt tests a specimen" + not_specimen);
+  if (options.lammps.tiles_x * options.lammps.tiles_y > 1)
+    throw InvalidInput("export: --tile and --test cpt do not go together (one probe, one chamber)");
+  const TestRecipe recipe = read_test_recipe(options.cpt_recipe);
+  if (!recipe.probe)
+    throw InvalidInput(recipe.path +
+                       ": probe: --test cpt needs a [probe] section (diameter, apex_deg, "
+                       "velocity, depth)");
+  LammpsCpt cpt;
+  cpt.probe = *recipe.probe;
+  const double test_friction =
+      recipe.settings.friction >= 0 ? recipe.settings.friction : src.settings.contact.friction;
+  if (cpt.probe.friction < 0) cpt.probe.friction = test_friction;
+  check_lammps_cpt(cpt, src.settings, recipe.path);
+  return cpt;
+}
+
+}  // namespace
 
 ExportResult run_export(const std::string& format, const std::string& source,
                         const std::string& out_dir, const ExportOptions& options) {
@@ -58,6 +85,8 @@ ExportResult run_export(const std::string& format, const std::string& source,
     throw InvalidInput("export: --tile copies a specimen" + not_specimen);
   if (options.lammps.oedometer && src.templates)
     throw InvalidInput("export: --test oedometer tests a specimen" + not_specimen);
+  LammpsDeck deck = options.lammps;
+  if (!options.cpt_recipe.empty()) deck.cpt = lammps_cpt_of(options, format, src, not_specimen);
   if (tiles > 1)
     bodies = tile_bodies(bodies, options.lammps.tiles_x, options.lammps.tiles_y,
                          2 * settings.container_radius);
@@ -69,8 +98,7 @@ ExportResult run_export(const std::string& format, const std::string& source,
   result.bodies = bodies.size();
   for (const SpecimenBody& b : bodies) result.spheres += b.spheres.size();
   try {
-    const std::vector<std::string> written =
-        engine->write(src, bodies, staging.string(), options.lammps);
+    const std::vector<std::string> written = engine->write(src, bodies, staging.string(), deck);
     result.run = engine->run();
     const nlohmann::json& manifest = src.manifest;
     nlohmann::ordered_json m =

@@ -20,6 +20,9 @@ struct ExportResult {
 struct ExportOptions {
   LammpsDeck lammps;             ///< lammps only: a test after the settle, tiling
   TemplateSourceOptions source;  ///< a library or clump CSV: density, length unit, mass
+  /// lammps, a specimen: the test recipe of a cone penetration test (its [probe] and [test]
+  /// friction; `clumpkit test cpt`'s), exported as the CPT deck (io/export/lammps_cpt.h).
+  std::string cpt_recipe;
 };
 
 /// Exports `source` (a specimen directory, a library directory or one clump CSV:

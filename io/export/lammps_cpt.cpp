@@ -1,0 +1,117 @@
+#include "io/export/lammps_cpt.h"
+
+#include "geom/errors.h"
+#include "geom/format.h"
+
+#include <cmath>
+
+namespace clumpkit {
+
+void check_lammps_cpt(const LammpsCpt& cpt, const EngineSettings& settings,
+                      const std::string& where) {
+  try {
+    dem::validate_probe(cpt.probe);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(where + ": " + e.what());
+  }
+  if (!(cpt.probe.friction >= 0 && std::isfinite(cpt.probe.friction)))
+    throw InvalidInput(where + ": probe.friction must be at least 0, got " +
+                       format_number(cpt.probe.friction));
+  if (!(cpt.probe.diameter < settings.container_radius))
+    throw InvalidInput(where + ": probe.diameter " + format_number(cpt.probe.diameter) +
+                       " m is wider than half the container (diameter " +
+                       format_number(2 * settings.container_radius) + " m)");
+}
+
+void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& settings,
+                           const LammpsContact& lc, bool rocks, bool soils) {
+  const dem::ProbeSettings& p = cpt.probe;
+  // The probe's law: the specimen's springs and dashpot with the probe's friction.
+  const std::string probe_args =
+      lc.frictionless_args.substr(0, lc.frictionless_args.size() - std::string("0 1").size()) +
+      format_number(p.friction) + " 1";
+  o << "# clumpkit export for LAMMPS (syntax of LAMMPS 29 Sep 2021, Debian 12 `lammps`): the cone\n"
+       "# penetration test of `clumpkit test cpt` on this specimen, in the probe's frame (the\n"
+       "# probe is one static region; the chamber moves up at the push speed). Any number of\n"
+       "# ranks:   lmp -in in.clumpkit     or     mpirun -np N lmp -in in.clumpkit\n"
+       "# cpt.csv: step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa every ${every} steps.\n"
+       "# -var apex Z: the apex's start height (default: the highest sphere surface);\n"
+       "# -var dt T: the time step. The chamber's walls are fixed (BC1's servo is not in this\n"
+       "# deck yet) and frictionless, as in clumpkit's cell.\n"
+    << "variable    dt     index " << format_number(lc.dt) << "\n"
+    << "variable    apex   index -1\n"
+       "variable    every  index 100\n"
+    << "variable    v      equal " << format_number(p.velocity) << "\n"
+    << "variable    R      equal " << format_number(0.5 * p.diameter) << "\n"
+    << "variable    depth  equal " << format_number(p.depth) << "\n"
+    << "variable    hcone  equal ${R}/tan(" << format_number(0.5 * p.apex_deg) << "*PI/180)\n"
+    << lammps_preamble(lc)
+    << "read_data   data.specimen\n"
+       "group       rock type 1\n"
+       "group       soil type 2\n"
+    << "neighbor    " << format_number(lc.skin) << " bin\n"
+    << "neigh_modify delay 0 every 1 check yes" << (rocks ? " exclude molecule/intra rock" : "")
+    << "\npair_style  gran/hooke/history " << lc.args << "\npair_coeff  * *\n"
+    << "timestep    ${dt}\n";
+  const bool gravity = settings.gravity != 0;
+  if (gravity)
+    o << "fix         grav soil gravity " << format_number(settings.gravity) << " vector 0 0 -1\n";
+  if (rocks)
+    o << "# bodies.infile starts every rock body moving up at v (the probe's frame)\n"
+      << "fix         rig rock rigid/small molecule infile bodies.infile"
+      << (gravity ? " gravity grav" : "") << "\n";
+  if (soils)
+    o << "fix         nve soil nve/sphere\n"
+         "velocity    soil set 0 0 ${v}\n";
+  o << "compute     rad all property/atom radius\n"
+       "variable    ztop atom z+c_rad\n"
+       "compute     top all reduce max v_ztop\n"
+       "thermo_style custom step c_top\n"
+       "thermo_modify lost ignore norm no\n"
+       "run         0\n"
+       "variable    top0 equal $(c_top:%.17g)\n"
+       "if \"${apex} < 0\" then \"variable H0 equal ${top0}\" else \"variable H0 equal "
+       "${apex}\"\n"
+       "variable    zs equal ${H0}+${hcone}\n"
+       "# The probe: outside a cone (apex up to the shoulder zs) and outside the shaft above it,\n"
+       "# as one region. Radius 0 gives no contacts in this version: the cone starts at radius\n"
+       "# 1e-9 m, that much above the apex, so that its faces pass through the apex exactly.\n"
+       "variable    zlo equal ${H0}+1e-9*${hcone}/${R}\n"
+       "region      cone cone z 0 0 1e-9 ${R} ${zlo} ${zs} side out\n"
+       "region      shaft cylinder z 0 0 ${R} ${zs} INF side out\n"
+       "region      probe intersect 2 cone shaft\n"
+    << "fix         probe all wall/gran/region hooke/history " << probe_args
+    << " region probe contacts\n"
+       "variable    s0 equal $(step)\n"
+       "variable    rise equal ${v}*(step-${s0})*dt\n"
+       "region      floor plane 0 0 0 0 0 1 side in units box move NULL NULL v_rise\n"
+    << "fix         floor all wall/gran/region hooke/history " << lc.frictionless_args
+    << " region floor\n"
+    << "region      lid plane 0 0 ${top0} 0 0 -1 side in units box move NULL NULL v_rise\n"
+    << "fix         lid all wall/gran/region hooke/history " << lc.frictionless_args
+    << " region lid\n"
+    << "fix         cyl all wall/gran hooke/history " << lc.frictionless_args << " zcylinder "
+    << format_number(settings.container_radius) << "\n"
+    << "# A contact below the shoulder is the tip's, else the sleeve's; forces on the probe.\n"
+       "variable    tipz atom f_probe[4]*(f_probe[7]<${zs})\n"
+       "variable    slvz atom f_probe[4]*(f_probe[7]>=${zs})\n"
+       "compute     tip all reduce sum v_tipz\n"
+       "compute     slv all reduce sum v_slvz\n"
+       "variable    tip equal -c_tip\n"
+       "variable    sleeve equal -c_slv\n"
+       "variable    qc equal v_tip/(PI*${R}^2)\n"
+    << "variable    emb equal ${top0}+v_rise-${zs}\n"
+    << "variable    fs equal (v_emb>0)*v_sleeve/(2*PI*${R}*(abs(v_emb)+(v_emb<=0)))\n"
+       "variable    npush equal ceil(${depth}/(${v}*dt))\n"
+       "fix         curve all print ${every} \"$(step-v_s0),$(v_rise:%.17g),$(v_tip:%.17g),"
+       "$(v_sleeve:%.17g),$(v_qc:%.17g),$(v_fs:%.17g)\" file cpt.csv screen no title "
+       "\"step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa\"\n"
+       "thermo_style custom step v_rise v_qc cpu\n"
+       "thermo_modify lost ignore norm no\n"
+       "thermo      1000\n"
+       "run         ${npush}\n"
+       "write_dump  all custom atoms.final.txt id mol x y z radius fx fy fz modify sort id "
+       "format float %.17g\n";
+}
+
+}  // namespace clumpkit

@@ -1,0 +1,33 @@
+// What every LAMMPS deck shares: the contact law's arguments, time step and ghost cutoff, the
+// opening lines, the atoms' density of a clump, and the command that runs a deck.
+#pragma once
+
+#include "io/export/engine_settings.h"
+#include "io/formats/specimen_csv.h"
+
+#include <string>
+
+namespace clumpkit {
+
+/// What every LAMMPS deck of these bodies shares: the pair and wall arguments of the contact law
+/// ("kn kt gamma_n gamma_t mu 1" of gran/hooke/history), the time step, the neighbour skin and
+/// the ghost cutoff of fix rigid/small (the largest body must fit).
+struct LammpsContact {
+  std::string args;
+  std::string frictionless_args;  ///< the same with μ = 0 (walls of an element test)
+  double dt = 0, skin = 0, cutoff = 0;
+};
+LammpsContact lammps_contact(const SpecimenExtents& extents, const EngineSettings& settings);
+
+/// The atom density of a body's spheres that makes their masses sum to the body's mass M:
+/// M / Σ(4/3·π·r³) (the spheres overlap, so it is not the material density).
+double lammps_atom_density(const SpecimenBody& body);
+
+/// The deck lines both LAMMPS decks open with: SI units, spheres with molecule ids, fixed
+/// boundaries, newton off, ghost velocities and fix rigid/small's ghost cutoff.
+std::string lammps_preamble(const LammpsContact& contact);
+
+/// The command line that runs the deck in `dir` on `ranks` MPI ranks (1: plain lmp).
+std::string lammps_run_command(int ranks);
+
+}  // namespace clumpkit

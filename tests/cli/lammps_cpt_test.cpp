@@ -1,0 +1,156 @@
+// The CPT deck of `clumpkit export lammps --test cpt` run in LAMMPS: one sphere pressed on the
+// cone and one on the shaft, their forces against the closed forms (as ProbeWall.* checks our
+// engine's probe), the tip/sleeve split, and bad exports refused.
+#include "cli_helpers.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+using namespace cli_test;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// Probe of 18 mm, 60° apex at z = 0.05 m; spheres of 3 mm pressed 10 µm into it, 1,000 kg each
+// so that they barely move while the tangential spring of the shaft's contact saturates.
+constexpr double kR = 0.009, kApex = 0.05, kBeta = kPi / 6, kRadius = 0.003, kDelta = 1e-5;
+constexpr double kMass = 1e3, kKn = 1e6, kMu = 0.5;
+
+std::string format(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+// A specimen directory of two soil spheres: one on the cone's face 8 mm above the apex, one on
+// the shaft 10 mm above the shoulder, each overlapping the probe by kDelta.
+void write_two_sphere_specimen(const fs::path& dir) {
+  fs::create_directories(dir);
+  const double z_face = kApex + 0.008, rho_face = 0.008 * std::tan(kBeta);
+  const double cx = rho_face + (kRadius - kDelta) * std::cos(kBeta);
+  const double cz = z_face - (kRadius - kDelta) * std::sin(kBeta);
+  const double sx = -(kR + kRadius - kDelta), sz = kApex + kR / std::tan(kBeta) + 0.01;
+  const double volume = 4.0 / 3.0 * kPi * std::pow(kRadius, 3),
+               inertia = 0.4 * kMass * kRadius * kRadius;
+  std::string csv =
+      "# clumpkit specimen format 4, SI units\n# bodies\n"
+      "body,kind,template,x,y,z,qw,qx,qy,qz,mass,volume,scale,I1,I2,I3,zone\n";
+  const double xs[] = {cx, sx}, zs[] = {cz, sz};
+  for (int i = 0; i < 2; ++i)
+    csv += std::to_string(i + 1) + ",soil,-1," + format(xs[i]) + ",0," + format(zs[i]) +
+           ",1,0,0,0," + format(kMass) + "," + format(volume) + ",1," + format(inertia) + "," +
+           format(inertia) + "," + format(inertia) + ",0\n";
+  csv += "# spheres\nsphere,body,x,y,z,r\n";
+  for (int i = 0; i < 2; ++i)
+    csv += std::to_string(i + 1) + "," + std::to_string(i + 1) + "," + format(xs[i]) + ",0," +
+           format(zs[i]) + "," + format(kRadius) + "\n";
+  write(dir / "specimen.csv", csv);
+  write(dir / "report.json",
+        R"({"container": {"diameter": 0.06, "height": 0.1}, "density": {"rock": 2650, "soil": 2650},
+            "gravity": 0, "contact": {"kn": 1e6, "ks": 1e6, "friction": 0.5, "damping_ratio": 0,
+            "local_damping": 0}})");
+  write(dir / "manifest.json", R"({"recipe_path": "x.toml", "recipe": "", "seed": 1})");
+}
+
+// A push of 5,000 steps of 0.1 µs at 20 mm/s: 10 µm.
+const char* kProbeRecipe =
+    "[test]\nconfining = 100e3\n\n[probe]\ndiameter = 0.018\n"
+    "velocity = 0.02\ndepth = 1e-5\n";
+
+}  // namespace
+
+TEST(CliLammpsCpt, OneSphereOnTheConeAndOneOnTheShaftGiveTheClosedForms) {
+  if (!have_program("lmp")) GTEST_SKIP() << "LAMMPS (lmp) not installed: run scripts/deps";
+  const fs::path d = scratch();
+  write_two_sphere_specimen(d / "spec");
+  write(d / "cpt.toml", kProbeRecipe);
+  const Result r = run_cli("export lammps " + (d / "spec").string() + " --test cpt --recipe " +
+                               (d / "cpt.toml").string() + " --out " + (d / "lmp").string(),
+                           d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const int rc = std::system(("cd " + (d / "lmp").string() +
+                              " && lmp -in in.clumpkit -var dt 1e-7 -var apex 0.05 -var every "
+                              "1000 -log none > run.txt 2>&1")
+                                 .c_str());
+  ASSERT_EQ(rc, 0) << slurp(d / "lmp" / "run.txt");
+  std::string header;
+  const auto curve = csv_rows(d / "lmp" / "cpt.csv", 6, &header);
+  EXPECT_EQ(header, "step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa");
+  ASSERT_EQ(curve.size(), 6u);
+  // The atoms at the end: id mol x y z radius fx fy fz.
+  std::istringstream in(slurp(d / "lmp" / "atoms.final.txt"));
+  std::string line;
+  for (int k = 0; k < 9; ++k) std::getline(in, line);
+  double a[2][9];
+  for (auto& row : a)
+    for (double& v : row) in >> v;
+  ASSERT_TRUE(in) << "atoms.final.txt";
+  // Cone: the force along the face's outward normal (cos β, −sin β) is kn·δ, δ from where the
+  // sphere ended (its centre's distance to the face, less its radius).
+  const double nx = std::cos(kBeta), nz = -std::sin(kBeta);
+  const double distance = a[0][2] * nx + (a[0][4] - kApex) * nz;  // the face passes the apex
+  const double delta = kRadius - distance;
+  EXPECT_GT(delta, 0.5 * kDelta);
+  EXPECT_NEAR(a[0][6] * nx + a[0][8] * nz, kKn * delta, 1e-6 * kKn * delta);
+  // Shaft: N = kn·δ radially, and once the tangential spring saturates (kt·slip > μN after
+  // 2,500 of the 5,000 steps) μ·N axially, downwards on the sphere that moves up past it.
+  const double shaft_delta = kR + kRadius + a[1][2];  // x < 0: the sphere's gap is R + r − |x|
+  EXPECT_NEAR(-a[1][6], kKn * shaft_delta, 1e-6 * kKn * shaft_delta);
+  EXPECT_NEAR(-a[1][8], kMu * kKn * shaft_delta, 1e-6 * kMu * kKn * shaft_delta);
+  // cpt.csv's last row: each contact on its own part, forces on the probe (upwards positive).
+  const auto& last = curve.back();
+  EXPECT_EQ(last[0], 5000);
+  EXPECT_NEAR(last[1], 1e-5, 1e-12);
+  EXPECT_NEAR(last[2], -a[0][8], 1e-9 * std::abs(a[0][8]));
+  EXPECT_NEAR(last[3], -a[1][8], 1e-9 * std::abs(a[1][8]));
+  EXPECT_NEAR(last[4], last[2] / (kPi * kR * kR), 1e-9 * last[4]);
+  // fs over the shaft below the lid, which starts at the highest sphere surface (the shaft
+  // sphere's top) and rises 10 µm.
+  const double shaft_top = kApex + kR / std::tan(kBeta) + 0.01 + kRadius;
+  const double embedded = shaft_top + 1e-5 - (kApex + kR / std::tan(kBeta));
+  EXPECT_NEAR(last[5], last[3] / (2 * kPi * kR * embedded), 1e-6 * last[5]);
+  // The first row, before any slip: the shaft's contact has no axial force yet.
+  EXPECT_NEAR(curve.front()[3], 0.0, 1e-12);
+}
+
+TEST(CliLammpsCpt, BadCptExportsAreRefusedWithOneLine) {
+  const fs::path d = scratch();
+  write_two_sphere_specimen(d / "spec");
+  write(d / "cpt.toml", kProbeRecipe);
+  write(d / "noprobe.toml", "[test]\nconfining = 100e3\n");
+  write(d / "wide.toml", "[test]\nconfining = 100e3\n\n[probe]\ndiameter = 0.04\ndepth = 0.01\n");
+  write(d / "unknown.toml", "[test]\nconfining = 100e3\n\n[probe]\ndepth = 0.01\nspeed = 1\n");
+  const std::string out = (d / "o").string(), spec = (d / "spec").string();
+  const auto recipe = [&](const char* name) { return " --recipe " + (d / name).string(); };
+  struct Case {
+    std::string args, needle;
+  };
+  const Case cases[] = {
+      {"export lammps " + spec + " --test cpt --out " + out, "--test cpt needs --recipe"},
+      {"export lammps " + spec + recipe("cpt.toml") + " --out " + out,
+       "--recipe is for --test cpt"},
+      {"export yade " + spec + " --test cpt" + recipe("cpt.toml") + " --out " + out,
+       "only available for lammps"},
+      {"export lammps " + spec + " --test cpt" + recipe("noprobe.toml") + " --out " + out,
+       "[probe]"},
+      {"export lammps " + spec + " --test cpt" + recipe("wide.toml") + " --out " + out,
+       "wider than half the container"},
+      {"export lammps " + spec + " --test cpt" + recipe("unknown.toml") + " --out " + out,
+       "probe.speed"},
+      {"export lammps " + spec + " --test cpt" + recipe("missing.toml") + " --out " + out,
+       "missing.toml"},
+      {"export lammps " + spec + " --test cpt" + recipe("cpt.toml") + " --tile 2x2 --out " + out,
+       "--tile and --test cpt"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.args);
+    expect_one_line_error(run_cli(c.args, d), c.needle);
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_FALSE(fs::exists(out + ".partial"));
+  }
+}
