@@ -23,6 +23,66 @@ void check_lammps_cpt(const LammpsCpt& cpt, const EngineSettings& settings,
                        format_number(2 * settings.container_radius) + " m)");
 }
 
+namespace {
+
+// The chamber in the probe's frame: the floor rises at the push speed (the base is fixed); with
+// `-var servo 1` (the default) the lid and the lateral cylinder hold the confining stress (BC1)
+// by the servo of clumpkit's cell (dem/lab/servo.h): each step a wall moves in by
+// α·A·(σ_target − σ)/(N_c·kn), at most `servo_step` (a millionth of the specimen's height),
+// the whole step when it touches nothing. LAMMPS keeps no state in a variable, so a wall's
+// travel is the running mean of its steps (fix ave/time ... ave running, which samples from the
+// run's first step on) times their count; the walls read it from the step before.
+void write_chamber(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& settings,
+                   const LammpsContact& lc) {
+  o << "variable    servo  index 1\n"
+       "variable    sigma  equal "
+    << format_number(cpt.confining) << "\n"
+    << "variable    alpha  equal 0.5\n"
+       "variable    kn     equal "
+    << format_number(settings.contact.kn) << "\n"
+    << "variable    servo_step index $(1e-6*v_top0:%.17g)\n"
+       "variable    s0 equal $(step)\n"
+       "variable    rise equal ${v}*(step-${s0})*dt\n"
+       "region      floor plane 0 0 0 0 0 1 side in units box move NULL NULL v_rise\n"
+    << "fix         floor all wall/gran/region hooke/history " << lc.frictionless_args
+    << " region floor\n"
+    << "# Stresses (compression positive): the lid's force over its area; the cylinder's radial\n"
+       "# force (force . contact point / rc) over its area between floor and lid. The walls'\n"
+       "# travel inwards (m): the running mean of their steps times their count.\n"
+       "variable    lidz equal v_rise-f_utop*(step-${s0})\n"
+       "variable    rc equal "
+    << format_number(settings.container_radius)
+    << "-f_ulat*(step-${s0})\n"
+       "variable    frad atom (f_cyl[2]*f_cyl[5]+f_cyl[3]*f_cyl[6])/v_rc\n"
+       "variable    height equal ${top0}+v_lidz-v_rise\n"
+       "variable    alid equal PI*v_rc^2\n"
+       "variable    acyl equal 2*PI*v_rc*v_height\n"
+       "variable    saxial equal -c_flid/v_alid\n"
+       "variable    slateral equal -c_fcyl/v_acyl\n"
+       "variable    etop equal "
+       "${servo}*${alpha}*v_alid*(${sigma}-v_saxial)/(${kn}*(c_nlid+(c_nlid==0)))\n"
+       "variable    elat equal "
+       "${servo}*${alpha}*v_acyl*(${sigma}-v_slateral)/(${kn}*(c_ncyl+(c_ncyl==0)))\n"
+       "variable    dtop equal v_etop-(v_etop>${servo_step})*(v_etop-${servo_step})"
+       "+(v_etop<-${servo_step})*(-${servo_step}-v_etop)\n"
+       "variable    dlat equal v_elat-(v_elat>${servo_step})*(v_elat-${servo_step})"
+       "+(v_elat<-${servo_step})*(-${servo_step}-v_elat)\n"
+       "fix         utop all ave/time 1 1 1 v_dtop ave running\n"
+       "fix         ulat all ave/time 1 1 1 v_dlat ave running\n"
+       "region      lid plane 0 0 ${top0} 0 0 -1 side in units box move NULL NULL v_lidz\n"
+    << "fix         lid all wall/gran/region hooke/history " << lc.frictionless_args
+    << " region lid contacts\n"
+    << "region      cyl cylinder z 0 0 v_rc INF INF side in units box\n"
+    << "fix         cyl all wall/gran/region hooke/history " << lc.frictionless_args
+    << " region cyl contacts\n"
+    << "compute     flid all reduce sum f_lid[4]\n"
+       "compute     nlid all reduce sum f_lid[1]\n"
+       "compute     fcyl all reduce sum v_frad\n"
+       "compute     ncyl all reduce sum f_cyl[1]\n";
+}
+
+}  // namespace
+
 void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& settings,
                            const LammpsContact& lc, bool rocks, bool soils) {
   const dem::ProbeSettings& p = cpt.probe;
@@ -36,8 +96,9 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
        "# ranks:   lmp -in in.clumpkit     or     mpirun -np N lmp -in in.clumpkit\n"
        "# cpt.csv: step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa every ${every} steps.\n"
        "# -var apex Z: the apex's start height (default: the highest sphere surface);\n"
-       "# -var dt T: the time step. The chamber's walls are fixed (BC1's servo is not in this\n"
-       "# deck yet) and frictionless, as in clumpkit's cell.\n"
+       "# -var dt T: the time step; -var servo 0: the lid and the cylinder fixed instead of\n"
+       "# holding the confining stress (BC1; the base is fixed either way). Walls frictionless,\n"
+       "# as in clumpkit's cell; the thermo output shows their stresses.\n"
     << "variable    dt     index " << format_number(lc.dt) << "\n"
     << "variable    apex   index -1\n"
        "variable    every  index 100\n"
@@ -81,18 +142,9 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
        "region      shaft cylinder z 0 0 ${R} ${zs} INF side out\n"
        "region      probe intersect 2 cone shaft\n"
     << "fix         probe all wall/gran/region hooke/history " << probe_args
-    << " region probe contacts\n"
-       "variable    s0 equal $(step)\n"
-       "variable    rise equal ${v}*(step-${s0})*dt\n"
-       "region      floor plane 0 0 0 0 0 1 side in units box move NULL NULL v_rise\n"
-    << "fix         floor all wall/gran/region hooke/history " << lc.frictionless_args
-    << " region floor\n"
-    << "region      lid plane 0 0 ${top0} 0 0 -1 side in units box move NULL NULL v_rise\n"
-    << "fix         lid all wall/gran/region hooke/history " << lc.frictionless_args
-    << " region lid\n"
-    << "fix         cyl all wall/gran hooke/history " << lc.frictionless_args << " zcylinder "
-    << format_number(settings.container_radius) << "\n"
-    << "# A contact below the shoulder is the tip's, else the sleeve's; forces on the probe.\n"
+    << " region probe contacts\n";
+  write_chamber(o, cpt, settings, lc);
+  o << "# A contact below the shoulder is the tip's, else the sleeve's; forces on the probe.\n"
        "variable    tipz atom f_probe[4]*(f_probe[7]<${zs})\n"
        "variable    slvz atom f_probe[4]*(f_probe[7]>=${zs})\n"
        "compute     tip all reduce sum v_tipz\n"
@@ -100,13 +152,13 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
        "variable    tip equal -c_tip\n"
        "variable    sleeve equal -c_slv\n"
        "variable    qc equal v_tip/(PI*${R}^2)\n"
-    << "variable    emb equal ${top0}+v_rise-${zs}\n"
-    << "variable    fs equal (v_emb>0)*v_sleeve/(2*PI*${R}*(abs(v_emb)+(v_emb<=0)))\n"
+       "variable    emb equal ${top0}+v_lidz-${zs}\n"
+       "variable    fs equal (v_emb>0)*v_sleeve/(2*PI*${R}*(abs(v_emb)+(v_emb<=0)))\n"
        "variable    npush equal ceil(${depth}/(${v}*dt))\n"
        "fix         curve all print ${every} \"$(step-v_s0),$(v_rise:%.17g),$(v_tip:%.17g),"
        "$(v_sleeve:%.17g),$(v_qc:%.17g),$(v_fs:%.17g)\" file cpt.csv screen no title "
        "\"step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa\"\n"
-       "thermo_style custom step v_rise v_qc cpu\n"
+       "thermo_style custom step v_rise v_qc v_saxial v_slateral cpu\n"
        "thermo_modify lost ignore norm no\n"
        "thermo      1000\n"
        "run         ${npush}\n"

@@ -13,6 +13,7 @@ namespace clumpkit {
 /// What the CPT deck needs besides the specimen's files.
 struct LammpsCpt {
   dem::ProbeSettings probe;  ///< friction resolved (≥ 0)
+  double confining = 0;      ///< the lateral and top stress BC1 holds (Pa)
 };
 
 /// Throws InvalidInput (naming `where`) for a probe the deck cannot push: validate_probe's

@@ -40,6 +40,7 @@ LammpsCpt lammps_cpt_of(const ExportOptions& options, const std::string& format,
   const double test_friction =
       recipe.settings.friction >= 0 ? recipe.settings.friction : src.settings.contact.friction;
   if (cpt.probe.friction < 0) cpt.probe.friction = test_friction;
+  cpt.confining = recipe.settings.confining;
   check_lammps_cpt(cpt, src.settings, recipe.path);
   return cpt;
 }

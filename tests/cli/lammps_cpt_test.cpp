@@ -73,10 +73,11 @@ TEST(CliLammpsCpt, OneSphereOnTheConeAndOneOnTheShaftGiveTheClosedForms) {
                                (d / "cpt.toml").string() + " --out " + (d / "lmp").string(),
                            d);
   ASSERT_EQ(r.rc, 0) << r.err;
-  const int rc = std::system(("cd " + (d / "lmp").string() +
-                              " && lmp -in in.clumpkit -var dt 1e-7 -var apex 0.05 -var every "
-                              "1000 -log none > run.txt 2>&1")
-                                 .c_str());
+  const int rc =
+      std::system(("cd " + (d / "lmp").string() +
+                   " && lmp -in in.clumpkit -var servo 0 -var dt 1e-7 -var apex 0.05 -var every "
+                   "1000 -log none > run.txt 2>&1")
+                      .c_str());
   ASSERT_EQ(rc, 0) << slurp(d / "lmp" / "run.txt");
   std::string header;
   const auto curve = csv_rows(d / "lmp" / "cpt.csv", 6, &header);
