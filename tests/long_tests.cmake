@@ -23,6 +23,11 @@ set(clumpkit_long_tests
   # (--save-consolidated),
   # CliImport.LammpsRoundTripKeepsTheMeasurements (export, LAMMPS, import)
   CliImport.LammpsOedometerFromTheSavedConsolidatedStateHasClumpkitsModulus
+  # `test cpt --save-consolidated` on the tiny specimen, then the CPT deck in LAMMPS ->
+  # CliLammpsCpt.OneSphereOnTheConeAndOneOnTheShaftGiveTheClosedForms (the deck's probe),
+  # CliElementTest.ShortTriaxialOfASmallCompressedCylinderSavesItsConsolidatedState
+  # (--save-consolidated)
+  CliLammpsCpt.TheSavedConsolidatedChamberStartsAtTheConfiningStressInLammps
   # the bundled test recipe on the tiny specimen (80 s) ->
   # CliElementTest.ShortTriaxialOfASmallCompressedCylinderSavesItsConsolidatedState (the job,
   # --save-consolidated), StageFiles.ElementTest... (stopped and resumed)

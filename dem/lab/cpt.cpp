@@ -231,7 +231,8 @@ void read_cpt_record(const StageRecord& r, const std::string& where, CptState& s
 }
 
 CptResult run_cpt(CellSpecimen& specimen, const CptSettings& settings, const StageControl& control,
-                  const std::string& fingerprint) {
+                  const std::string& fingerprint,
+                  const std::function<void(const CellSpecimen&, const CptState&)>& consolidated) {
   CptState state;
   SingleStage stage;
   stage.stage = kStage;
@@ -253,7 +254,12 @@ CptResult run_cpt(CellSpecimen& specimen, const CptSettings& settings, const Sta
   r.resumed = run_single_stage(
       specimen.world, control, fingerprint, stage,
       [&](const std::function<bool()>& stop) {
-        r = run_cpt(specimen.world, specimen.cell, settings, state, stop);
+        r = run_cpt(specimen.world, specimen.cell, settings, state, [&] {
+          if (consolidated && state.phase == CptState::Phase::push && state.push_steps == 0 &&
+              state.curve.size() == 1)
+            consolidated(specimen, state);
+          return stop();
+        });
         return r.stopped;
       },
       [&] {

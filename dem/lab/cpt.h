@@ -90,9 +90,13 @@ CptResult run_cpt(World& world, const TestCell& cell, const CptSettings& setting
                   const std::function<bool()>& stop = {});
 
 /// The CPT as the resumable stage "cpt" of control.store, as run_element_test's staged form: a
-/// resumed test ends with the same curve, bit for bit, as one never stopped.
-CptResult run_cpt(CellSpecimen& specimen, const CptSettings& settings, const StageControl& control,
-                  const std::string& fingerprint);
+/// resumed test ends with the same curve, bit for bit, as one never stopped. `consolidated`, when
+/// set, is called once with the specimen at the end of its consolidation (the probe added, not
+/// yet moved), as run_element_test's.
+CptResult run_cpt(
+    CellSpecimen& specimen, const CptSettings& settings, const StageControl& control,
+    const std::string& fingerprint,
+    const std::function<void(const CellSpecimen&, const CptState&)>& consolidated = {});
 
 /// What a checkpoint of the staged CPT keeps besides the world, and its reader (throws
 /// InvalidInput naming `where` for a missing or malformed entry).

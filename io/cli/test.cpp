@@ -48,7 +48,9 @@ void register_test(CLI::App& app) {
   c->add_flag("--save-consolidated", o->save_consolidated,
               "Also write DIR/consolidated: the consolidated specimen as a specimen directory "
               "(cell as container, bottom platen at z = 0, gravity 0) for `clumpkit export`, so "
-              "another engine runs the same test from the same state");
+              "another engine runs the same test from the same state (cylinder cells; for cpt "
+              "the state the probe starts from: `clumpkit export lammps DIR/consolidated --test "
+              "cpt --recipe RECIPE`)");
   c->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
     const bool cpt = o->kind == "cpt";

@@ -32,8 +32,12 @@ namespace {
 // the whole step when it touches nothing. LAMMPS keeps no state in a variable, so a wall's
 // travel is the running mean of its steps (fix ave/time ... ave running, which samples from the
 // run's first step on) times their count; the walls read it from the step before.
-void write_chamber(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& settings,
-                   const LammpsContact& lc) {
+void write_chamber(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& settings) {
+  // Frictionless and without a dashpot: LAMMPS takes the velocity of a region moved through a
+  // variable a step late, and the dashpot's answer to that drove the lid's servo into a two-step
+  // oscillation of ±10 kPa about 93 kPa (a consolidated specimen at 100 kPa).
+  const std::string walls =
+      format_number(settings.contact.kn) + " " + format_number(settings.contact.ks) + " 0 0 0 1";
   o << "variable    servo  index 1\n"
        "variable    sigma  equal "
     << format_number(cpt.confining) << "\n"
@@ -44,8 +48,7 @@ void write_chamber(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& 
        "variable    s0 equal $(step)\n"
        "variable    rise equal ${v}*(step-${s0})*dt\n"
        "region      floor plane 0 0 0 0 0 1 side in units box move NULL NULL v_rise\n"
-    << "fix         floor all wall/gran/region hooke/history " << lc.frictionless_args
-    << " region floor\n"
+    << "fix         floor all wall/gran/region hooke/history " << walls << " region floor\n"
     << "# Stresses (compression positive): the lid's force over its area; the cylinder's radial\n"
        "# force (force . contact point / rc) over its area between floor and lid. The walls'\n"
        "# travel inwards (m): the running mean of their steps times their count.\n"
@@ -70,11 +73,9 @@ void write_chamber(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& 
        "fix         utop all ave/time 1 1 1 v_dtop ave running\n"
        "fix         ulat all ave/time 1 1 1 v_dlat ave running\n"
        "region      lid plane 0 0 ${top0} 0 0 -1 side in units box move NULL NULL v_lidz\n"
-    << "fix         lid all wall/gran/region hooke/history " << lc.frictionless_args
-    << " region lid contacts\n"
+    << "fix         lid all wall/gran/region hooke/history " << walls << " region lid contacts\n"
     << "region      cyl cylinder z 0 0 v_rc INF INF side in units box\n"
-    << "fix         cyl all wall/gran/region hooke/history " << lc.frictionless_args
-    << " region cyl contacts\n"
+    << "fix         cyl all wall/gran/region hooke/history " << walls << " region cyl contacts\n"
     << "compute     flid all reduce sum f_lid[4]\n"
        "compute     nlid all reduce sum f_lid[1]\n"
        "compute     fcyl all reduce sum v_frad\n"
@@ -130,7 +131,12 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
        "thermo_style custom step c_top\n"
        "thermo_modify lost ignore norm no\n"
        "run         0\n"
-       "variable    top0 equal $(c_top:%.17g)\n"
+       "# The specimen's top: its highest sphere surface, or the container's height when\n"
+       "# lower (a consolidated state's top platen, on which the spheres press).\n"
+       "variable    ztop0 equal $(c_top:%.17g)\n"
+    << "variable    top0 equal ${ztop0}-(${ztop0}>" << format_number(settings.container_height)
+    << ")*(${ztop0}-" << format_number(settings.container_height)
+    << ")\n"
        "if \"${apex} < 0\" then \"variable H0 equal ${top0}\" else \"variable H0 equal "
        "${apex}\"\n"
        "variable    zs equal ${H0}+${hcone}\n"
@@ -143,7 +149,7 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
        "region      probe intersect 2 cone shaft\n"
     << "fix         probe all wall/gran/region hooke/history " << probe_args
     << " region probe contacts\n";
-  write_chamber(o, cpt, settings, lc);
+  write_chamber(o, cpt, settings);
   o << "# A contact below the shoulder is the tip's, else the sleeve's; forces on the probe.\n"
        "variable    tipz atom f_probe[4]*(f_probe[7]<${zs})\n"
        "variable    slvz atom f_probe[4]*(f_probe[7]>=${zs})\n"

@@ -24,21 +24,21 @@ void check_lammps_cpt(const LammpsCpt& cpt, const EngineSettings& settings,
 /// Writes in.clumpkit of the CPT. LAMMPS (29 Sep 2021) cannot move a region made of two (`region
 /// intersect` is static), and two separate wall regions for cone and shaft count the rim twice,
 /// so the test runs in the probe's frame: the probe is one static region, the intersection of
-/// the outside of a cone (apex_deg, apex at the specimen's top H0 = highest sphere surface, or
-/// `-var apex Z`) and the outside of the shaft above it; the lid (top platen) starts at H0
-/// too, as `clumpkit test cpt` starts the apex at its top platen; every body starts moving up at
-/// the probe's speed (soil by `velocity`, rock bodies by the vz column of bodies.infile, which
-/// write_lammps_export fills), and the floor and lid planes rise at it (the lateral cylinder is
-/// frictionless, so its axial motion changes nothing). A frame moving at constant speed changes
-/// no force (contacts depend on relative positions and velocities, gravity is the same), so this
-/// is the push in the laboratory's frame. A contact's
-/// point (column 7 of the probe fix's per-atom contacts) below the shoulder is the tip's, else
-/// the sleeve's: each contact on one part. Every `-var every N` steps (default 100) a row of
-/// cpt.csv: step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa as `clumpkit test cpt`'s
-/// curve.csv (forces on the probe, upwards positive; fs over the shaft below the lid); the
-/// push ends at the recipe's depth; atoms.final.txt (id mol x y z radius fx fy fz) at the end.
-/// The chamber's walls are fixed: BC1's servo of the lateral and top stress is not in this deck
-/// yet.
+/// the outside of a cone (apex_deg, apex at the specimen's top H0 — its highest sphere surface,
+/// or the container's height when lower, as for a consolidated state whose top platen the
+/// spheres press on — or `-var apex Z`) and the outside of the shaft above it; the lid (top platen)
+/// starts at H0 too, as `clumpkit test cpt` starts the apex at its top platen; every body starts
+/// moving up at the probe's speed (soil by `velocity`, rock bodies by the vz column of
+/// bodies.infile, which write_lammps_export fills), and the floor and lid planes rise at it (the
+/// lateral cylinder is frictionless, so its axial motion changes nothing). A frame moving at
+/// constant speed changes no force (contacts depend on relative positions and velocities, gravity
+/// is the same), so this is the push in the laboratory's frame. A contact's point (column 7 of the
+/// probe fix's per-atom contacts) below the shoulder is the tip's, else the sleeve's: each contact
+/// on one part. Every `-var every N` steps (default 100) a row of cpt.csv:
+/// step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa as `clumpkit test cpt`'s curve.csv (forces
+/// on the probe, upwards positive; fs over the shaft below the lid); the push ends at the recipe's
+/// depth; atoms.final.txt (id mol x y z radius fx fy fz) at the end. The chamber's walls are fixed:
+/// BC1's servo of the lateral and top stress is not in this deck yet.
 void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& settings,
                            const LammpsContact& contact, bool rocks, bool soils);
 

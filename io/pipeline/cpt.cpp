@@ -4,6 +4,7 @@
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "io/base/atomic_file.h"
+#include "io/pipeline/consolidated.h"
 #include "io/pipeline/lab_setup.h"
 #include "io/reports/plot.h"
 
@@ -37,8 +38,6 @@ LabJobResult run_cpt_job(const std::string& specimen_dir, const TestRecipe& reci
     throw InvalidInput(recipe.path +
                        ": probe: `clumpkit test cpt` needs a [probe] section (diameter, "
                        "apex_deg, velocity, depth)");
-  if (options.save_consolidated)
-    throw InvalidInput("test cpt: --save-consolidated is for the element tests");
   dem::CptSettings s;
   s.cell = recipe.settings;
   s.probe = *recipe.probe;
@@ -47,6 +46,8 @@ LabJobResult run_cpt_job(const std::string& specimen_dir, const TestRecipe& reci
                                s.probe.velocity / s.probe.diameter, "probe.velocity", interrupter,
                                [&](const nlohmann::json& report, const std::string& report_path,
                                    const dem::CellSpecimen& specimen) {
+                                 if (options.save_consolidated)
+                                   check_consolidated_container(report, report_path);
                                  const double core = radial_core_radius(report, report_path);
                                  try {
                                    dem::validate_cpt(specimen.world, specimen.cell, s, core);
@@ -58,7 +59,13 @@ LabJobResult run_cpt_job(const std::string& specimen_dir, const TestRecipe& reci
   const fs::path& out = setup.out;
   dem::CptResult r;
   try {
-    r = dem::run_cpt(setup.specimen, s, setup.control, setup.fingerprint);
+    r = dem::run_cpt(setup.specimen, s, setup.control, setup.fingerprint,
+                     [&](const dem::CellSpecimen& c, const dem::CptState& st) {
+                       if (options.save_consolidated)
+                         write_consolidated(out / "consolidated", c.world, c.cell,
+                                            setup.spec_report, setup.options.contact,
+                                            st.test_friction, s.cell.confining);
+                     });
   } catch (const Interrupted& e) {
     throw Interrupted(std::string(e.what()) + "; " + out.string() +
                       " is kept: continue with --resume");
@@ -117,8 +124,12 @@ LabJobResult run_cpt_job(const std::string& specimen_dir, const TestRecipe& reci
   for (const dem::CptRow& c : r.curve) plot.x.push_back(c.depth), plot.y.push_back(c.qc / 1e6);
   write_line_plot((out / "curve.png").string(), plot, "depth (m)", "cone resistance qc (MPa)",
                   "CPT, " + format_number(s.cell.confining / 1e3, 4) + " kPa");
-  return finish_test_job(setup, out_dir, recipe, "cpt", specimen_dir, rep,
-                         {"curve.csv", "curve.png", "report.json"}, options.resume, r.resumed);
+  return finish_test_job(
+      setup, out_dir, recipe, "cpt", specimen_dir, rep,
+      options.save_consolidated
+          ? std::vector<std::string>{"curve.csv", "curve.png", "report.json", "consolidated/"}
+          : std::vector<std::string>{"curve.csv", "curve.png", "report.json"},
+      options.resume, r.resumed);
 }
 
 }  // namespace clumpkit

@@ -9,6 +9,7 @@
 #include "io/base/text.h"
 #include "io/formats/checkpoint.h"
 #include "io/formats/specimen_csv.h"
+#include "io/pipeline/consolidated.h"
 #include "io/pipeline/lab_setup.h"
 #include "io/pipeline/stage_files.h"
 #include "io/reports/plot.h"
@@ -65,51 +66,6 @@ nlohmann::ordered_json measured(double v) {
   return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
 }
 
-// The consolidated specimen as a specimen directory for `clumpkit export`: bodies shifted so the
-// bottom platen is the floor z = 0, the cylinder cell as the container, no gravity (the test has
-// none), the test's contact law with the specimen's dashpot (engines without PFC's local damping
-// need one to settle).
-void write_consolidated(const fs::path& dir, const dem::World& world, const dem::TestCell& cell,
-                        const nlohmann::json& spec_report, const dem::ContactParams& law,
-                        double test_friction, const dem::CurveRow& row, double confining) {
-  const double floor = world.walls()[cell.bottom].point.z();
-  std::vector<SpecimenBody> bodies = specimen_bodies(world);
-  std::size_t spheres = 0;
-  for (SpecimenBody& b : bodies) {
-    b.position.z() -= floor;
-    for (Sphere& sp : b.spheres) sp.center.z() -= floor;
-    spheres += b.spheres.size();
-  }
-  fs::create_directories(dir);
-  write_specimen_csv((dir / "specimen.csv").string(), bodies);
-  nlohmann::ordered_json rep;
-  rep["source"] = "consolidated state of clumpkit test";
-  rep["bodies"] = bodies.size();
-  rep["spheres"] = spheres;
-  rep["confining_stress"] = confining;
-  rep["porosity"] = row.porosity;
-  rep["coordination_number"] = row.coordination;
-  rep["gravity"] = 0.0;
-  rep["container"] = {{"diameter", 2.0 * world.walls()[cell.lateral.front()].radius},
-                      {"height", cell_height(world, cell)}};
-  rep["density"] = spec_report.at("density");
-  rep["contact"] = {
-      {"kn", law.kn},
-      {"ks", law.ks},
-      {"friction", test_friction},
-      {"damping_ratio", spec_report.at("contact").value("damping_ratio", 0.0)},
-      {"local_damping", law.local_damping},
-      {"stiffness_scaling", law.scaling == dem::StiffnessScaling::linear ? "linear" : "none"},
-      {"d_ref", law.d_ref}};
-  write_file_atomically((dir / "report.json").string(),
-                        [&](std::ostream& f) { f << rep.dump(2) << "\n"; });
-  nlohmann::ordered_json m;
-  m["command"] = "test";
-  m["files"] = {"specimen.csv", "report.json"};
-  write_file_atomically((dir / "manifest.json").string(),
-                        [&](std::ostream& f) { f << m.dump(2) << "\n"; });
-}
-
 }  // namespace
 
 LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specimen_dir,
@@ -125,12 +81,7 @@ LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specime
                              ": probe: a [probe] section is for `clumpkit test cpt` "
                              "only, not the " +
                              std::string(kind_name(kind)) + " test");
-        if (options.save_consolidated && spec_report.contains("container") &&
-            spec_report["container"].value("shape", std::string("cylinder")) != "cylinder")
-          throw InvalidInput(report_path + ": container.shape: \"" +
-                             spec_report["container"]["shape"].get<std::string>() +
-                             "\": --save-consolidated writes cylinder cells only (the engine "
-                             "exports model a whole cylinder container)");
+        if (options.save_consolidated) check_consolidated_container(spec_report, report_path);
       });
   const nlohmann::json& spec_report = setup.spec_report;
   const dem::WorldOptions& o = setup.options;
@@ -145,7 +96,7 @@ LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specime
   const auto consolidated = [&](const dem::CellSpecimen& c, const dem::ElementTestState& st) {
     if (options.save_consolidated)
       write_consolidated(out / "consolidated", c.world, c.cell, spec_report, o.contact,
-                         st.test_friction, st.curve.front(), s.confining);
+                         st.test_friction, s.confining);
   };
   dem::ElementTestResult r;
   try {

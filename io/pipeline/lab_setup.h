@@ -32,7 +32,8 @@ struct LabJobOptions {
   /// directory (specimen.csv, report.json, manifest.json) that `clumpkit export` reads — the
   /// cylinder cell as its container (bottom platen at z = 0), gravity 0, the test's contact law
   /// with the specimen's viscous damping ratio — so another engine can run the same test from
-  /// the same state. Cylinder cells only (exports model cylinders).
+  /// the same state (for the CPT, the state its probe starts from). Cylinder cells only (exports
+  /// model cylinders).
   bool save_consolidated = false;
 };
 

@@ -5,9 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 using namespace cli_test;
@@ -154,4 +157,64 @@ TEST(CliLammpsCpt, BadCptExportsAreRefusedWithOneLine) {
     EXPECT_FALSE(fs::exists(out));
     EXPECT_FALSE(fs::exists(out + ".partial"));
   }
+}
+
+// `clumpkit test cpt --save-consolidated` on the tiny specimen, then its chamber in LAMMPS: the
+// deck starts at the state clumpkit's push starts from (apex and lid at the top platen, both
+// stresses at the confining stress) and its servo holds them during a short push.
+TEST(CliLammpsCpt, TheSavedConsolidatedChamberStartsAtTheConfiningStressInLammps) {
+  if (!have_program("lmp")) GTEST_SKIP() << "LAMMPS (lmp) not installed: run scripts/deps";
+  const fs::path d = scratch();
+  ASSERT_NO_FATAL_FAILURE(build_tiny_specimen(d));
+  // A 12 mm probe pushed 1 mm at 80 mm/s into the 60 mm cylinder at 100 kPa.
+  write(d / "cpt.toml",
+        "[test]\nconfining = 100e3\nrecord_every = 2000\n\n[probe]\ndiameter = 0.012\n"
+        "velocity = 0.08\ndepth = 0.001\n");
+  const Result t =
+      run_cli("test cpt --quiet --save-consolidated --specimen " + (d / "spec").string() +
+                  " --recipe " + (d / "cpt.toml").string() + " --out " + (d / "c").string(),
+              d);
+  ASSERT_EQ(t.rc, 0) << t.err;
+  const nlohmann::json consolidated =
+      nlohmann::json::parse(slurp(d / "c" / "consolidated" / "report.json"));
+  EXPECT_EQ(consolidated["gravity"], 0.0);
+  EXPECT_EQ(consolidated["confining_stress"], 100e3);
+  const Result e =
+      run_cli("export lammps " + (d / "c" / "consolidated").string() + " --test cpt --recipe " +
+                  (d / "cpt.toml").string() + " --out " + (d / "lmp").string(),
+              d);
+  ASSERT_EQ(e.rc, 0) << e.err;
+  const int rc = std::system(
+      ("cd " + (d / "lmp").string() + " && lmp -in in.clumpkit -log log.txt > run.txt 2>&1")
+          .c_str());
+  ASSERT_EQ(rc, 0) << slurp(d / "lmp" / "run.txt");
+  // The push's thermo rows: step rise qc axial_stress lateral_stress cpu.
+  std::istringstream log(slurp(d / "lmp" / "log.txt"));
+  std::string line;
+  std::vector<std::vector<double>> rows;
+  bool in_push = false;
+  while (std::getline(log, line)) {
+    if (line.find("Step v_rise v_qc v_saxial v_slateral") != std::string::npos)
+      in_push = true;
+    else if (in_push && line.rfind("Loop time", 0) == 0)
+      break;
+    else if (in_push) {
+      std::istringstream s(line);
+      std::vector<double> row;
+      for (double v; s >> v;) row.push_back(v);
+      if (row.size() == 6) rows.push_back(row);
+    }
+  }
+  ASSERT_GE(rows.size(), 2u);
+  // Consolidated by clumpkit to 1 % (its tolerance), loaded as such: within 1 % at step 0, and
+  // held within 5 % while the cone goes in.
+  EXPECT_NEAR(rows.front()[3], 100e3, 1e3);
+  EXPECT_NEAR(rows.front()[4], 100e3, 1e3);
+  for (const auto& r : rows) {
+    EXPECT_NEAR(r[3], 100e3, 5e3) << "step " << r[0];
+    EXPECT_NEAR(r[4], 100e3, 5e3) << "step " << r[0];
+  }
+  const auto curve = csv_rows(d / "lmp" / "cpt.csv", 6);
+  ASSERT_FALSE(curve.empty());
+  EXPECT_NEAR(curve.back()[1], 0.001, 0.001 * 0.01);
 }
