@@ -28,6 +28,7 @@ set(clumpkit_long_tests
   # CliElementTest.ShortTriaxialOfASmallCompressedCylinderSavesItsConsolidatedState
   # (--save-consolidated)
   CliLammpsCpt.TheSavedConsolidatedChamberStartsAtTheConfiningStressInLammps
+  CliLammpsCpt.TheSavedSegmentChamberStartsAtTheConfiningStressInLammps
   # the bundled test recipe on the tiny specimen (80 s) ->
   # CliElementTest.ShortTriaxialOfASmallCompressedCylinderSavesItsConsolidatedState (the job,
   # --save-consolidated), StageFiles.ElementTest... (stopped and resumed)

@@ -58,6 +58,26 @@ void validate_probe(const ProbeSettings& p) {
                        format_number(p.apex_deg));
 }
 
+void check_segment_reach(const std::vector<Body>& bodies, const Vec3& axis, double angle,
+                         const ProbeSettings& p) {
+  // A sphere of diameter d between the segment's radial walls keeps its centre at least
+  // (d/2)/sin(θ/2) from the axis, its surface (d/2)/sin(θ/2) − d/2: the probe must reach at
+  // least one diameter past that into the packing around it (the largest particle within two
+  // probe diameters of its shaft), or it barely touches the particles (a 30° segment of 6 mm
+  // spheres keeps them 8.6 mm from the axis, an 18 mm cone's radius 9 mm).
+  double d = 0.0;
+  for (const Body& b : bodies)
+    if (std::hypot(b.position.x() - axis.x(), b.position.y() - axis.y()) <
+        0.5 * p.diameter + 2.0 * p.diameter)
+      for (const Sphere& sp : b.spheres) d = std::max(d, 2.0 * sp.radius);
+  const double gap = 0.5 * d / std::sin(0.5 * angle) - 0.5 * d;
+  if (d > 0.0 && 0.5 * p.diameter - gap < d)
+    throw InvalidInput("cpt: the segment's walls keep particles of " + format_number(d) + " m " +
+                       format_number(gap) + " m from the axis: a probe of radius " +
+                       format_number(0.5 * p.diameter) + " m reaches less than one particle " +
+                       "past that (widen the segment or the probe)");
+}
+
 void validate_cpt(const World& world, const TestCell& cell, const CptSettings& s,
                   double core_radius) {
   const ProbeSettings& p = s.probe;
@@ -79,25 +99,8 @@ void validate_cpt(const World& world, const TestCell& cell, const CptSettings& s
     throw InvalidInput("cpt: probe diameter " + format_number(p.diameter) +
                        " m exceeds half the cell's width " + format_number(std::min(l.x(), l.y())) +
                        " m");
-  if (cell.shape == TestCell::Shape::segment) {
-    // A sphere of diameter d between the segment's radial walls keeps its centre at least
-    // (d/2)/sin(θ/2) from the axis, its surface (d/2)/sin(θ/2) − d/2: the probe must reach at
-    // least one diameter past that into the packing around it (the largest particle within two
-    // probe diameters of its shaft), or it barely touches the particles (a 30° segment of 6 mm
-    // spheres keeps them 8.6 mm from the axis, an 18 mm cone's radius 9 mm).
-    const Vec3 axis = cell_axis(world, cell);
-    double d = 0.0;
-    for (const Body& b : world.bodies())
-      if (std::hypot(b.position.x() - axis.x(), b.position.y() - axis.y()) <
-          0.5 * p.diameter + 2.0 * p.diameter)
-        for (const Sphere& sp : b.spheres) d = std::max(d, 2.0 * sp.radius);
-    const double gap = 0.5 * d / std::sin(0.5 * cell.angle) - 0.5 * d;
-    if (d > 0.0 && 0.5 * p.diameter - gap < d)
-      throw InvalidInput("cpt: the segment's walls keep particles of " + format_number(d) + " m " +
-                         format_number(gap) + " m from the axis: a probe of radius " +
-                         format_number(0.5 * p.diameter) + " m reaches less than one particle " +
-                         "past that (widen the segment or the probe)");
-  }
+  if (cell.shape == TestCell::Shape::segment)
+    check_segment_reach(world.bodies(), cell_axis(world, cell), cell.angle, p);
   if (s.cell.record_every < 1) throw InvalidInput("cpt: record_every must be at least 1");
   if (!(s.cell.confining > 0.0)) throw InvalidInput("cpt: the confining stress must be positive");
 }

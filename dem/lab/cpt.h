@@ -71,6 +71,13 @@ struct CptResult {
 /// its settings).
 void validate_probe(const ProbeSettings& probe);
 
+/// Throws InvalidInput when a segment of `angle` radians about the vertical `axis` keeps the
+/// bodies near it (the largest sphere within two probe diameters of the shaft) so far from the
+/// axis that the probe reaches less than one of them past that gap: it would barely touch the
+/// particles. validate_cpt's check for segments; the LAMMPS export's too.
+void check_segment_reach(const std::vector<Body>& bodies, const Vec3& axis, double angle,
+                         const ProbeSettings& probe);
+
 /// Throws InvalidInput for a probe that cannot be pushed in `cell`: validate_probe's cases, a
 /// probe wider than half the cell, one that a segment's walls keep off the particles, or, where
 /// the specimen is zoned radially with a core of small particles of radius `core_radius` (0: not

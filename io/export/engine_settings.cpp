@@ -23,10 +23,6 @@ EngineSettings engine_settings_from_report(const nlohmann::json& report, const s
     throw InvalidInput(path +
                        ": container.shape: \"cuboid\" specimens are not exported yet (the decks "
                        "model a cylinder container): export a cylinder specimen");
-  if (report.contains("container") && report["container"].value("shape", "") == "segment")
-    throw InvalidInput(path +
-                       ": container.shape: \"segment\" specimens are not exported yet (the decks "
-                       "model a whole cylinder container): export a cylinder specimen");
   if (report.contains("contact") && report["contact"].value("stiffness_scaling", "") == "linear")
     throw InvalidInput(path +
                        ": contact.stiffness_scaling: \"linear\" (kn ∝ d) is not exported yet "
@@ -34,6 +30,12 @@ EngineSettings engine_settings_from_report(const nlohmann::json& report, const s
   EngineSettings s;
   s.container_radius = 0.5 * field("container", "diameter");
   s.container_height = field("container", "height");
+  if (report["container"].value("shape", "") == "segment") {
+    s.segment_angle_deg = field("container", "angle_deg");
+    if (!(s.segment_angle_deg > 0 && s.segment_angle_deg <= 180))
+      throw InvalidInput(path + ": container.angle_deg must be in (0, 180], got " +
+                         format_number(s.segment_angle_deg));
+  }
   s.rock_density = field("density", "rock");
   s.soil_density = field("density", "soil");
   s.contact.kn = field("contact", "kn");

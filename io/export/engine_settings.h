@@ -17,8 +17,11 @@ namespace clumpkit {
 
 struct EngineSettings {
   double container_radius = 0.15, container_height = 0.6;  ///< m
-  double rock_density = 2870, soil_density = 2700;         ///< kg/m³
-  dem::ContactParams contact;                              ///< the material friction
+  /// A segment container's angle (degrees, in (0, 180]; its radial planes at φ = 0 and φ =
+  /// angle); 0 for a whole cylinder. Only the CPT deck takes segments (io/pipeline/export.cpp).
+  double segment_angle_deg = 0.0;
+  double rock_density = 2870, soil_density = 2700;  ///< kg/m³
+  dem::ContactParams contact;                       ///< the material friction
   /// m/s², downwards: report.json "gravity" when it has one (0 for the consolidated state of an
   /// element test, `clumpkit test --save-consolidated`), else Earth's.
   double gravity = 9.81;

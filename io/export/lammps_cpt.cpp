@@ -32,6 +32,23 @@ namespace {
 // the whole step when it touches nothing. LAMMPS keeps no state in a variable, so a wall's
 // travel is the running mean of its steps (fix ave/time ... ave running, which samples from the
 // run's first step on) times their count; the walls read it from the step before.
+// A segment's radial planes through the axis, at φ = 0 (normal +y) and φ = angle (normal
+// (sin θ, −cos θ, 0)), frictionless and fixed: planes of symmetry of the whole chamber, which a
+// translation along the axis leaves where they are. Empty for a whole cylinder.
+std::string radial_planes(const EngineSettings& settings, const std::string& walls) {
+  if (settings.segment_angle_deg <= 0) return "";
+  const double a = settings.segment_angle_deg * M_PI / 180.0;
+  return "region      side0 plane 0 0 0 0 1 0 side in units box\n"
+         "fix         side0 all wall/gran/region hooke/history " +
+         walls +
+         " region side0\n"
+         "region      side1 plane 0 0 0 " +
+         format_number(std::sin(a)) + " " + format_number(-std::cos(a)) +
+         " 0 side in units box\n"
+         "fix         side1 all wall/gran/region hooke/history " +
+         walls + " region side1\n";
+}
+
 void write_chamber(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& settings) {
   // Frictionless and without a dashpot: LAMMPS takes the velocity of a region moved through a
   // variable a step late, and the dashpot's answer to that drove the lid's servo into a two-step
@@ -58,8 +75,8 @@ void write_chamber(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& 
     << "-f_ulat*(step-${s0})\n"
        "variable    frad atom (f_cyl[2]*f_cyl[5]+f_cyl[3]*f_cyl[6])/v_rc\n"
        "variable    height equal ${top0}+v_lidz-v_rise\n"
-       "variable    alid equal PI*v_rc^2\n"
-       "variable    acyl equal 2*PI*v_rc*v_height\n"
+       "variable    alid equal 0.5*${angle}*v_rc^2\n"
+       "variable    acyl equal ${angle}*v_rc*v_height\n"
        "variable    saxial equal -c_flid/v_alid\n"
        "variable    slateral equal -c_fcyl/v_acyl\n"
        "variable    etop equal "
@@ -76,6 +93,7 @@ void write_chamber(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& 
     << "fix         lid all wall/gran/region hooke/history " << walls << " region lid contacts\n"
     << "region      cyl cylinder z 0 0 v_rc INF INF side in units box\n"
     << "fix         cyl all wall/gran/region hooke/history " << walls << " region cyl contacts\n"
+    << radial_planes(settings, walls)
     << "compute     flid all reduce sum f_lid[4]\n"
        "compute     nlid all reduce sum f_lid[1]\n"
        "compute     fcyl all reduce sum v_frad\n"
@@ -105,6 +123,10 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
        "variable    every  index 100\n"
     << "variable    v      equal " << format_number(p.velocity) << "\n"
     << "variable    R      equal " << format_number(0.5 * p.diameter) << "\n"
+    << "variable    angle  equal "
+    << (settings.segment_angle_deg > 0 ? format_number(settings.segment_angle_deg) + "*PI/180"
+                                       : std::string("2*PI"))
+    << "\n"
     << "variable    depth  equal " << format_number(p.depth) << "\n"
     << "variable    hcone  equal ${R}/tan(" << format_number(0.5 * p.apex_deg) << "*PI/180)\n"
     << lammps_preamble(lc)
@@ -155,12 +177,14 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
        "variable    slvz atom f_probe[4]*(f_probe[7]>=${zs})\n"
        "compute     tip all reduce sum v_tipz\n"
        "compute     slv all reduce sum v_slvz\n"
-       "variable    tip equal -c_tip\n"
-       "variable    sleeve equal -c_slv\n"
+       "# Forces for the whole chamber: a segment's times 2 pi / its angle.\n"
+       "variable    tip equal -c_tip*2*PI/${angle}\n"
+       "variable    sleeve equal -c_slv*2*PI/${angle}\n"
        "variable    qc equal v_tip/(PI*${R}^2)\n"
        "variable    emb equal ${top0}+v_lidz-${zs}\n"
        "variable    fs equal (v_emb>0)*v_sleeve/(2*PI*${R}*(abs(v_emb)+(v_emb<=0)))\n"
-       "variable    npush equal ceil(${depth}/(${v}*dt))\n"
+       "# Whole rows, as clumpkit's push: the last at or just past the depth.\n"
+       "variable    npush equal ${every}*ceil(${depth}/(${v}*dt*${every}))\n"
        "fix         curve all print ${every} \"$(step-v_s0),$(v_rise:%.17g),$(v_tip:%.17g),"
        "$(v_sleeve:%.17g),$(v_qc:%.17g),$(v_fs:%.17g)\" file cpt.csv screen no title "
        "\"step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa\"\n"

@@ -30,7 +30,8 @@ void check_lammps_cpt(const LammpsCpt& cpt, const EngineSettings& settings,
 /// starts at H0 too, as `clumpkit test cpt` starts the apex at its top platen; every body starts
 /// moving up at the probe's speed (soil by `velocity`, rock bodies by the vz column of
 /// bodies.infile, which write_lammps_export fills), and the floor and lid planes rise at it (the
-/// lateral cylinder is frictionless, so its axial motion changes nothing). A frame moving at
+/// lateral cylinder is frictionless, so its axial motion changes nothing); a segment's radial
+/// planes stay, and its forces count for the whole chamber (× 2π / angle). A frame moving at
 /// constant speed changes no force (contacts depend on relative positions and velocities, gravity
 /// is the same), so this is the push in the laboratory's frame. A contact's point (column 7 of the
 /// probe fix's per-atom contacts) below the shoulder is the tip's, else the sleeve's: each contact

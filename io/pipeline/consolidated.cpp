@@ -12,11 +12,10 @@ namespace fs = std::filesystem;
 void check_consolidated_container(const nlohmann::json& spec_report,
                                   const std::string& report_path) {
   if (spec_report.contains("container") &&
-      spec_report["container"].value("shape", std::string("cylinder")) != "cylinder")
-    throw InvalidInput(report_path + ": container.shape: \"" +
-                       spec_report["container"]["shape"].get<std::string>() +
-                       "\": --save-consolidated writes cylinder cells only (the engine "
-                       "exports model a whole cylinder container)");
+      spec_report["container"].value("shape", std::string("cylinder")) == "cuboid")
+    throw InvalidInput(report_path +
+                       ": container.shape: \"cuboid\": --save-consolidated writes cylinder and "
+                       "segment cells only (the engine exports model cylinders)");
 }
 
 void write_consolidated(const fs::path& dir, const dem::World& world, const dem::TestCell& cell,
@@ -44,6 +43,12 @@ void write_consolidated(const fs::path& dir, const dem::World& world, const dem:
   rep["gravity"] = 0.0;
   rep["container"] = {{"diameter", 2.0 * world.walls()[cell.lateral.front()].radius},
                       {"height", cell_height(world, cell)}};
+  // A segment keeps the specimen's angle as its recipe gave it (degrees, no round trip).
+  if (cell.shape == dem::TestCell::Shape::segment)
+    rep["container"] = {{"shape", "segment"},
+                        {"diameter", 2.0 * world.walls()[cell.lateral.front()].radius},
+                        {"height", cell_height(world, cell)},
+                        {"angle_deg", spec_report.at("container").at("angle_deg")}};
   rep["density"] = spec_report.at("density");
   rep["contact"] = {
       {"kn", law.kn},

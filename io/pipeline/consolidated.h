@@ -12,14 +12,15 @@
 
 namespace clumpkit {
 
-/// Throws InvalidInput naming `report_path` unless the specimen's container is a cylinder (the
-/// engine exports model a whole cylinder).
+/// Throws InvalidInput naming `report_path` for a cuboid container (the engine exports model
+/// cylinders and, for the CPT, segments).
 void check_consolidated_container(const nlohmann::json& spec_report,
                                   const std::string& report_path);
 
 /// Writes `dir` (specimen.csv, report.json, manifest.json): the bodies shifted so the bottom
-/// platen is the floor z = 0, the cylinder cell as the container (its height the platens'
-/// distance, so the top platen is at the container's height), no gravity (the tests have none),
+/// platen is the floor z = 0, the cylinder or segment cell as the container (its height the
+/// platens' distance, so the top platen is at the container's height; a segment's angle as the
+/// specimen's report gives it), no gravity (the tests have none),
 /// porosity and coordination number now, the test's contact law with the specimen's dashpot
 /// (engines without PFC's local damping need one to settle) and `test_friction`.
 void write_consolidated(const std::filesystem::path& dir, const dem::World& world,

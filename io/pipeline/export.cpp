@@ -42,6 +42,16 @@ LammpsCpt lammps_cpt_of(const ExportOptions& options, const std::string& format,
   if (cpt.probe.friction < 0) cpt.probe.friction = test_friction;
   cpt.confining = recipe.settings.confining;
   check_lammps_cpt(cpt, src.settings, recipe.path);
+  if (src.settings.segment_angle_deg > 0) {
+    std::vector<dem::Body> bodies;
+    for (const SpecimenBody& b : src.bodies) bodies.push_back(dem_body(b));
+    try {
+      dem::check_segment_reach(bodies, Vec3::Zero(), src.settings.segment_angle_deg * M_PI / 180.0,
+                               cpt.probe);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(recipe.path + ": " + e.what());
+    }
+  }
   return cpt;
 }
 
@@ -88,6 +98,12 @@ ExportResult run_export(const std::string& format, const std::string& source,
     throw InvalidInput("export: --test oedometer tests a specimen" + not_specimen);
   LammpsDeck deck = options.lammps;
   if (!options.cpt_recipe.empty()) deck.cpt = lammps_cpt_of(options, format, src, not_specimen);
+  // What the other decks cannot carry is refused rather than dropped silently.
+  if (settings.segment_angle_deg > 0 && !deck.cpt)
+    throw InvalidInput(source +
+                       ": container.shape: \"segment\" specimens are exported only as a CPT "
+                       "chamber (--test cpt; the other decks model a whole cylinder container): "
+                       "export a cylinder specimen");
   if (tiles > 1)
     bodies = tile_bodies(bodies, options.lammps.tiles_x, options.lammps.tiles_y,
                          2 * settings.container_radius);

@@ -159,17 +159,21 @@ TEST(CliLammpsCpt, BadCptExportsAreRefusedWithOneLine) {
   }
 }
 
-// `clumpkit test cpt --save-consolidated` on the tiny specimen, then its chamber in LAMMPS: the
-// deck starts at the state clumpkit's push starts from (apex and lid at the top platen, both
+namespace {
+
+// The time step the deck runs with (its `variable dt index T` line).
+double consolidated_dt(const fs::path& deck) {
+  const std::string text = slurp(deck), key = "variable    dt     index ";
+  const std::size_t at = text.find(key);
+  return at == std::string::npos ? 0.0 : std::stod(text.substr(at + key.size()));
+}
+
+// `clumpkit test cpt --save-consolidated` on the specimen in d/spec, then its chamber in LAMMPS:
+// the deck starts at the state clumpkit's push starts from (apex and lid at the top platen, both
 // stresses at the confining stress) and its servo holds them during a short push.
-TEST(CliLammpsCpt, TheSavedConsolidatedChamberStartsAtTheConfiningStressInLammps) {
-  if (!have_program("lmp")) GTEST_SKIP() << "LAMMPS (lmp) not installed: run scripts/deps";
-  const fs::path d = scratch();
-  ASSERT_NO_FATAL_FAILURE(build_tiny_specimen(d));
-  // A 12 mm probe pushed 1 mm at 80 mm/s into the 60 mm cylinder at 100 kPa.
-  write(d / "cpt.toml",
-        "[test]\nconfining = 100e3\nrecord_every = 2000\n\n[probe]\ndiameter = 0.012\n"
-        "velocity = 0.08\ndepth = 0.001\n");
+void push_saved_chamber_in_lammps(const fs::path& d, const std::string& diameter) {
+  write(d / "cpt.toml", "[test]\nconfining = 100e3\nrecord_every = 2000\n\n[probe]\ndiameter = " +
+                            diameter + "\nvelocity = 0.08\ndepth = 0.001\n");
   const Result t =
       run_cli("test cpt --quiet --save-consolidated --specimen " + (d / "spec").string() +
                   " --recipe " + (d / "cpt.toml").string() + " --out " + (d / "c").string(),
@@ -216,5 +220,45 @@ TEST(CliLammpsCpt, TheSavedConsolidatedChamberStartsAtTheConfiningStressInLammps
   }
   const auto curve = csv_rows(d / "lmp" / "cpt.csv", 6);
   ASSERT_FALSE(curve.empty());
-  EXPECT_NEAR(curve.back()[1], 0.001, 0.001 * 0.01);
+  // Whole rows of 100 steps, the last at or just past the depth (one row: 100 v dt).
+  const double dt = consolidated_dt(d / "lmp" / "in.clumpkit");
+  EXPECT_GE(curve.back()[1], 0.001 - 1e-12);
+  EXPECT_LT(curve.back()[1], 0.001 + 100 * 0.08 * dt);
+}
+
+}  // namespace
+
+TEST(CliLammpsCpt, TheSavedConsolidatedChamberStartsAtTheConfiningStressInLammps) {
+  if (!have_program("lmp")) GTEST_SKIP() << "LAMMPS (lmp) not installed: run scripts/deps";
+  const fs::path d = scratch();
+  ASSERT_NO_FATAL_FAILURE(build_tiny_specimen(d));
+  // A 12 mm probe pushed 1 mm at 80 mm/s into the 60 mm cylinder at 100 kPa.
+  ASSERT_NO_FATAL_FAILURE(push_saved_chamber_in_lammps(d, "0.012"));
+}
+
+TEST(CliLammpsCpt, TheSavedSegmentChamberStartsAtTheConfiningStressInLammps) {
+  if (!have_program("lmp")) GTEST_SKIP() << "LAMMPS (lmp) not installed: run scripts/deps";
+  const fs::path d = scratch();
+  // A 90° segment of 120 mm, 60 mm tall, of 6 mm spheres compressed to porosity 0.36 (960
+  // spheres); an 18 mm probe, as CTGU 2017's segment on a small scale.
+  write(d / "seg.toml",
+        "name = \"seg\"\nseed = 1\nsoil_rock_threshold = 1.0\nrock_mass_fraction = 0.0\n"
+        "[container]\nshape = \"segment\"\nangle = 90\ndiameter = 0.12\nheight = 0.06\n"
+        "[preparation]\nmethod = \"compression\"\nporosity = 0.36\nfriction = 0.0\n"
+        "[gradation]\nsieves = [0.00601, 0.00599]\npassing = [100, 0]\n[density]\nsoil = 2650\n"
+        "[contact]\nkn = 5e5\nks = 5e5\nfriction = 0.5\n");
+  const Result s = run_cli(
+      "specimen --quiet --recipe " + (d / "seg.toml").string() + " --out " + (d / "spec").string(),
+      d);
+  ASSERT_EQ(s.rc, 0) << s.err;
+  ASSERT_NO_FATAL_FAILURE(push_saved_chamber_in_lammps(d, "0.018"));
+  // The radial planes are in the deck; the settle deck refuses the segment.
+  const std::string deck = slurp(d / "lmp" / "in.clumpkit");
+  EXPECT_NE(deck.find("region      side1 plane 0 0 0 1 -6.123233995736766e-17 0 side in"),
+            std::string::npos);
+  expect_one_line_error(run_cli("export lammps " + (d / "c" / "consolidated").string() + " --out " +
+                                    (d / "settle").string(),
+                                d),
+                        "exported only as a CPT chamber");
+  EXPECT_FALSE(fs::exists(d / "settle"));
 }
