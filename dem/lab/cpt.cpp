@@ -58,6 +58,17 @@ void validate_probe(const ProbeSettings& p) {
                        format_number(p.apex_deg));
 }
 
+void check_probe_core(const ProbeSettings& p, double core_radius) {
+  if (core_radius > 0.0 && p.diameter > 2.0 * core_radius)
+    throw InvalidInput("cpt: probe.diameter " + format_number(p.diameter) +
+                       " m is wider than the specimen's core of small particles (radius " +
+                       format_number(core_radius) + " m)");
+  if (core_radius > 0.0 && core_radius < 4.0 * p.diameter)
+    throw InvalidInput("cpt: probe.diameter: the specimen's core of small particles (" +
+                       format_number(core_radius) + " m) is smaller than 4 probe diameters (" +
+                       format_number(4.0 * p.diameter) + " m)");
+}
+
 void check_segment_reach(const std::vector<Body>& bodies, const Vec3& axis, double angle,
                          const ProbeSettings& p) {
   // A sphere of diameter d between the segment's radial walls keeps its centre at least
@@ -86,14 +97,7 @@ void validate_cpt(const World& world, const TestCell& cell, const CptSettings& s
   } catch (const InvalidInput& e) {
     throw InvalidInput(std::string("cpt: ") + e.what());
   }
-  if (core_radius > 0.0 && p.diameter > 2.0 * core_radius)
-    throw InvalidInput("cpt: probe.diameter " + format_number(p.diameter) +
-                       " m is wider than the specimen's core of small particles (radius " +
-                       format_number(core_radius) + " m)");
-  if (core_radius > 0.0 && core_radius < 4.0 * p.diameter)
-    throw InvalidInput("cpt: probe.diameter: the specimen's core of small particles (" +
-                       format_number(core_radius) + " m) is smaller than 4 probe diameters (" +
-                       format_number(4.0 * p.diameter) + " m)");
+  check_probe_core(p, core_radius);
   const Vec3 l = cell_lengths(world, cell);
   if (!(p.diameter <= 0.5 * std::min(l.x(), l.y())))
     throw InvalidInput("cpt: probe diameter " + format_number(p.diameter) +

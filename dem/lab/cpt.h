@@ -71,6 +71,13 @@ struct CptResult {
 /// its settings).
 void validate_probe(const ProbeSettings& probe);
 
+/// Throws InvalidInput where the specimen is zoned radially with a core of small particles of
+/// radius `core_radius` (0: not zoned so) and the probe is wider than that core or the core is
+/// under 4 probe diameters (CTGU 2017 sizes the core at 4 probe diameters, 75 mm for 18 mm, so
+/// that the zone the cone disturbs stays in fine material). validate_cpt's check; the LAMMPS
+/// export's too.
+void check_probe_core(const ProbeSettings& probe, double core_radius);
+
 /// Throws InvalidInput when a segment of `angle` radians about the vertical `axis` keeps the
 /// bodies near it (the largest sphere within two probe diameters of the shaft) so far from the
 /// axis that the probe reaches less than one of them past that gap: it would barely touch the

@@ -33,6 +33,9 @@ void register_compare_curves(CLI::App& app) {
   c->add_option("--from", o->job.from,
                 "Compare only where x >= this (default: the overlap's start)");
   c->add_option("--to", o->job.to, "Compare only where x <= this (default: the overlap's end)");
+  c->add_option("--png", o->job.png,
+                "Also draw both whole curves on one plot here (A blue, B red, labelled with "
+                "their files)");
   c->add_flag("--json", o->json, "Print the result as one JSON object");
   c->callback([o] {
     const nlohmann::ordered_json r = compare_curves(o->job);

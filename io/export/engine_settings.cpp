@@ -50,6 +50,13 @@ EngineSettings engine_settings_from_report(const nlohmann::json& report, const s
                          " is not a non-negative number (m/s²)");
     s.gravity = g.get<double>();
   }
+  if (report.contains("test_timestep")) {
+    const auto& t = report["test_timestep"];
+    if (!t.is_number() || !(t.get<double>() > 0.0) || !std::isfinite(t.get<double>()))
+      throw InvalidInput(path + ": field test_timestep: " + t.dump() +
+                         " is not a positive number (s)");
+    s.test_timestep = t.get<double>();
+  }
   return s;
 }
 

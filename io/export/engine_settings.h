@@ -25,6 +25,9 @@ struct EngineSettings {
   /// m/s², downwards: report.json "gravity" when it has one (0 for the consolidated state of an
   /// element test, `clumpkit test --save-consolidated`), else Earth's.
   double gravity = 9.81;
+  /// s: report.json "test_timestep" of a test's consolidated state (the step its test ran with,
+  /// which the CPT deck takes, so both engines push with the same step); 0 otherwise.
+  double test_timestep = 0.0;
 };
 
 /// The settings recorded in a specimen's report.json ("container", "density", "contact").

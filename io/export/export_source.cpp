@@ -122,6 +122,7 @@ ExportSource read_export_source(const std::string& source, const TemplateSourceO
     const nlohmann::json report = read_json_file((src / "report.json").string());
     out.manifest = read_json_file((src / "manifest.json").string());
     out.settings = engine_settings_from_report(report, (src / "report.json").string());
+    out.report = report;
     out.bodies = read_specimen_csv((src / "specimen.csv").string());
     return out;
   }

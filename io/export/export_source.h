@@ -27,6 +27,7 @@ struct ExportSource {
   std::vector<SpecimenBody> bodies;
   EngineSettings settings;
   nlohmann::json manifest;  ///< the source's manifest.json (empty for a clump CSV)
+  nlohmann::json report;    ///< a specimen's report.json (empty for the others)
   /// Template sources: each body is one template, at rest on a grid on the floor of a
   /// container made to hold them (layout_templates), ids from 1 in template order.
   bool templates = false;

@@ -17,11 +17,13 @@ struct CompareCurvesOptions {
   /// Window on x: only the overlap within [from, to] is compared (unbounded by default).
   double from = -std::numeric_limits<double>::infinity();
   double to = std::numeric_limits<double>::infinity();
+  /// Also draw both curves (whole, A blue, B red, each labelled with its file) into this PNG.
+  std::string png;
 };
 
 /// Reads both curves and returns {a, b, x, y, from, to (the range compared), points,
-/// residual_abs, residual_rel, relative_points}. Throws IoError / InvalidInput naming the file for
-/// bad input.
+/// residual_abs, residual_rel, relative_points}, after writing `png` when asked. Throws IoError /
+/// InvalidInput naming the file for bad input.
 nlohmann::ordered_json compare_curves(const CompareCurvesOptions& o);
 
 }  // namespace clumpkit

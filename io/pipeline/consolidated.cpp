@@ -20,7 +20,7 @@ void check_consolidated_container(const nlohmann::json& spec_report,
 
 void write_consolidated(const fs::path& dir, const dem::World& world, const dem::TestCell& cell,
                         const nlohmann::json& spec_report, const dem::ContactParams& law,
-                        double test_friction, double confining) {
+                        double test_friction, double confining, double density_scaling) {
   const double floor = world.walls()[cell.bottom].point.z();
   std::vector<SpecimenBody> bodies = specimen_bodies(world);
   std::size_t spheres = 0;
@@ -41,6 +41,10 @@ void write_consolidated(const fs::path& dir, const dem::World& world, const dem:
   rep["porosity"] = 1.0 - solid / cell_volume(world, cell);
   rep["coordination_number"] = dem::coordination_number(world);
   rep["gravity"] = 0.0;
+  // The masses are the test's (× its density_scaling), and so is its step: another engine
+  // pushing from here runs the same dynamics.
+  rep["density_scaling"] = density_scaling;
+  rep["test_timestep"] = world.options().timestep;
   rep["container"] = {{"diameter", 2.0 * world.walls()[cell.lateral.front()].radius},
                       {"height", cell_height(world, cell)}};
   // A segment keeps the specimen's angle as its recipe gave it (degrees, no round trip).
@@ -50,6 +54,7 @@ void write_consolidated(const fs::path& dir, const dem::World& world, const dem:
                         {"height", cell_height(world, cell)},
                         {"angle_deg", spec_report.at("container").at("angle_deg")}};
   rep["density"] = spec_report.at("density");
+  if (spec_report.contains("zones")) rep["zones"] = spec_report["zones"];  // the probe's core
   rep["contact"] = {
       {"kn", law.kn},
       {"ks", law.ks},

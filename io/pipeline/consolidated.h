@@ -22,9 +22,12 @@ void check_consolidated_container(const nlohmann::json& spec_report,
 /// platens' distance, so the top platen is at the container's height; a segment's angle as the
 /// specimen's report gives it), no gravity (the tests have none),
 /// porosity and coordination number now, the test's contact law with the specimen's dashpot
-/// (engines without PFC's local damping need one to settle) and `test_friction`.
+/// (engines without PFC's local damping need one to settle) and `test_friction`; the bodies'
+/// masses as the test ran them (× `density_scaling`, recorded) and its time step
+/// ("test_timestep"), so another engine runs the same dynamics.
 void write_consolidated(const std::filesystem::path& dir, const dem::World& world,
                         const dem::TestCell& cell, const nlohmann::json& spec_report,
-                        const dem::ContactParams& law, double test_friction, double confining);
+                        const dem::ContactParams& law, double test_friction, double confining,
+                        double density_scaling);
 
 }  // namespace clumpkit

@@ -15,22 +15,6 @@ namespace clumpkit {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-// The radius of the core of small particles of a specimen zoned radially about the probe's axis,
-// from its report.json (0: not zoned so).
-double radial_core_radius(const nlohmann::json& report, const std::string& report_path) {
-  const auto z = report.find("zones");
-  if (z == report.end() || !z->is_object() || z->value("coordinate", "") != "radial") return 0.0;
-  const auto regions = z->find("regions");
-  if (regions == z->end() || !regions->is_array() || regions->empty() ||
-      !(*regions)[0].contains("outer") || !(*regions)[0]["outer"].is_number())
-    throw InvalidInput(report_path + ": field zones.regions[0].outer missing");
-  return (*regions)[0]["outer"].get<double>();
-}
-
-}  // namespace
-
 LabJobResult run_cpt_job(const std::string& specimen_dir, const TestRecipe& recipe,
                          const std::string& out_dir, const LabJobOptions& options,
                          const Interrupter& interrupter) {
@@ -64,7 +48,8 @@ LabJobResult run_cpt_job(const std::string& specimen_dir, const TestRecipe& reci
                        if (options.save_consolidated)
                          write_consolidated(out / "consolidated", c.world, c.cell,
                                             setup.spec_report, setup.options.contact,
-                                            st.test_friction, s.cell.confining);
+                                            st.test_friction, s.cell.confining,
+                                            recipe.density_scaling);
                      });
   } catch (const Interrupted& e) {
     throw Interrupted(std::string(e.what()) + "; " + out.string() +

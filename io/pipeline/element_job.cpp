@@ -96,7 +96,7 @@ LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specime
   const auto consolidated = [&](const dem::CellSpecimen& c, const dem::ElementTestState& st) {
     if (options.save_consolidated)
       write_consolidated(out / "consolidated", c.world, c.cell, spec_report, o.contact,
-                         st.test_friction, s.confining);
+                         st.test_friction, s.confining, recipe.density_scaling);
   };
   dem::ElementTestResult r;
   try {

@@ -5,6 +5,7 @@
 #include "io/base/atomic_file.h"
 #include "io/export/export_source.h"
 #include "io/export/formats.h"
+#include "io/pipeline/lab_setup.h"
 #include "io/pipeline/manifest.h"
 #include "io/pipeline/output_dir.h"
 #include "io/recipes/lab_recipe.h"
@@ -24,7 +25,8 @@ namespace {
 
 // The CPT of `options.cpt_recipe` on the specimen `src`, checked (before anything is written).
 LammpsCpt lammps_cpt_of(const ExportOptions& options, const std::string& format,
-                        const ExportSource& src, const std::string& not_specimen) {
+                        const std::string& source, const ExportSource& src,
+                        const std::string& not_specimen) {
   if (format != "lammps")
     throw InvalidInput("export: --test cpt is only available for lammps, not " + format);
   if (src.templates) throw InvalidInput("export: --test cpt tests a specimen" + not_specimen);
@@ -42,6 +44,13 @@ LammpsCpt lammps_cpt_of(const ExportOptions& options, const std::string& format,
   if (cpt.probe.friction < 0) cpt.probe.friction = test_friction;
   cpt.confining = recipe.settings.confining;
   check_lammps_cpt(cpt, src.settings, recipe.path);
+  const std::string report_path = (fs::path(source) / "report.json").string();
+  const double core = radial_core_radius(src.report, report_path);
+  try {
+    dem::check_probe_core(cpt.probe, core);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(recipe.path + ": " + e.what() + " (" + report_path + ")");
+  }
   if (src.settings.segment_angle_deg > 0) {
     std::vector<dem::Body> bodies;
     for (const SpecimenBody& b : src.bodies) bodies.push_back(dem_body(b));
@@ -97,7 +106,8 @@ ExportResult run_export(const std::string& format, const std::string& source,
   if (options.lammps.oedometer && src.templates)
     throw InvalidInput("export: --test oedometer tests a specimen" + not_specimen);
   LammpsDeck deck = options.lammps;
-  if (!options.cpt_recipe.empty()) deck.cpt = lammps_cpt_of(options, format, src, not_specimen);
+  if (!options.cpt_recipe.empty())
+    deck.cpt = lammps_cpt_of(options, format, source, src, not_specimen);
   // What the other decks cannot carry is refused rather than dropped silently.
   if (settings.segment_angle_deg > 0 && !deck.cpt)
     throw InvalidInput(source +

@@ -185,4 +185,14 @@ LabJobResult finish_test_job(const TestSetup& setup, const std::string& out_dir,
   return result;
 }
 
+double radial_core_radius(const nlohmann::json& report, const std::string& report_path) {
+  const auto z = report.find("zones");
+  if (z == report.end() || !z->is_object() || z->value("coordinate", "") != "radial") return 0.0;
+  const auto regions = z->find("regions");
+  if (regions == z->end() || !regions->is_array() || regions->empty() ||
+      !(*regions)[0].contains("outer") || !(*regions)[0]["outer"].is_number())
+    throw InvalidInput(report_path + ": field zones.regions[0].outer missing");
+  return (*regions)[0]["outer"].get<double>();
+}
+
 }  // namespace clumpkit

@@ -81,4 +81,9 @@ LabJobResult finish_test_job(const TestSetup& setup, const std::string& out_dir,
                              const std::string& specimen_dir, const nlohmann::ordered_json& report,
                              const std::vector<std::string>& files, bool resume, bool resumed);
 
+/// The radius of the core of small particles of a specimen zoned radially about the probe's
+/// axis, from its report.json (0: not zoned so). Throws InvalidInput naming `report_path` for a
+/// radial zoning without its first region's outer bound.
+double radial_core_radius(const nlohmann::json& report, const std::string& report_path);
+
 }  // namespace clumpkit

@@ -129,6 +129,19 @@ TEST(CliLammpsCpt, BadCptExportsAreRefusedWithOneLine) {
   write(d / "noprobe.toml", "[test]\nconfining = 100e3\n");
   write(d / "wide.toml", "[test]\nconfining = 100e3\n\n[probe]\ndiameter = 0.04\ndepth = 0.01\n");
   write(d / "unknown.toml", "[test]\nconfining = 100e3\n\n[probe]\ndepth = 0.01\nspeed = 1\n");
+  // The probe against the specimen: a radially zoned one whose core of small particles (30 mm)
+  // is under 4 probe diameters, and a 10° segment whose walls keep the 6 mm spheres 31 mm from
+  // the axis, out of the 18 mm probe's reach.
+  fs::copy(d / "spec", d / "zoned", fs::copy_options::recursive);
+  fs::copy(d / "spec", d / "narrow", fs::copy_options::recursive);
+  nlohmann::json zoned = nlohmann::json::parse(slurp(d / "spec" / "report.json"));
+  zoned["zones"] = {{"coordinate", "radial"},
+                    {"regions", {{{"outer", 0.03}, {"scale", 1}}, {{"outer", 1}, {"scale", 2}}}}};
+  write(d / "zoned" / "report.json", zoned.dump());
+  nlohmann::json narrow = nlohmann::json::parse(slurp(d / "spec" / "report.json"));
+  narrow["container"]["shape"] = "segment";
+  narrow["container"]["angle_deg"] = 10;
+  write(d / "narrow" / "report.json", narrow.dump());
   const std::string out = (d / "o").string(), spec = (d / "spec").string();
   const auto recipe = [&](const char* name) { return " --recipe " + (d / name).string(); };
   struct Case {
@@ -150,6 +163,14 @@ TEST(CliLammpsCpt, BadCptExportsAreRefusedWithOneLine) {
        "missing.toml"},
       {"export lammps " + spec + " --test cpt" + recipe("cpt.toml") + " --tile 2x2 --out " + out,
        "--tile and --test cpt"},
+      {"export lammps " + (d / "zoned").string() + " --test cpt" + recipe("cpt.toml") + " --out " +
+           out,
+       "smaller than 4 probe diameters"},
+      {"export lammps " + (d / "narrow").string() + " --test cpt" + recipe("cpt.toml") + " --out " +
+           out,
+       "the segment's walls keep particles"},
+      {"export yade " + (d / "narrow").string() + " --out " + out,
+       "exported only as a CPT chamber"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.args);
