@@ -22,7 +22,10 @@ void register_import(CLI::App& app) {
       "The final dump of a run of an exported deck (positions and orientations by body id) "
       "back into a specimen directory: specimen.csv, specimen.vtp, slices/ and report.json with "
       "porosity, relative density, per-layer porosity and coordination number measured as "
-      "`clumpkit specimen` measures; with the deck's oedometer.csv also oedometer.png.");
+      "`clumpkit specimen` measures; with the deck's oedometer.csv also oedometer.png. A run of "
+      "the CPT deck (its cpt.csv) is read as `clumpkit test cpt` reports a push: curve.csv, "
+      "curve.png and report.json (qc_max, the second half's mean qc and fs) beside the final "
+      "state's bodies.");
   c->add_option("ENGINE", o->engine, "lammps")->required();
   c->add_option("RUN_DIR", o->run_dir, "Directory where the exported deck ran")->required();
   c->add_option("--specimen", o->specimen, "The specimen directory that was exported")->required();

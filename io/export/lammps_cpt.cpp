@@ -123,7 +123,7 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
     << "variable    dt     index "
     << format_number(settings.test_timestep > 0 ? settings.test_timestep : lc.dt) << "\n"
     << "variable    apex   index -1\n"
-       "variable    every  index 100\n"
+    << "variable    every  index " << cpt.record_every << "\n"
     << "variable    v      equal " << format_number(p.velocity) << "\n"
     << "variable    R      equal " << format_number(0.5 * p.diameter) << "\n"
     << "variable    angle  equal "

@@ -14,6 +14,7 @@ namespace clumpkit {
 struct LammpsCpt {
   dem::ProbeSettings probe;  ///< friction resolved (≥ 0)
   double confining = 0;      ///< the lateral and top stress BC1 holds (Pa)
+  int record_every = 200;    ///< steps between rows of cpt.csv (the test's record_every)
 };
 
 /// Throws InvalidInput (naming `where`) for a probe the deck cannot push: validate_probe's
@@ -35,7 +36,7 @@ void check_lammps_cpt(const LammpsCpt& cpt, const EngineSettings& settings,
 /// constant speed changes no force (contacts depend on relative positions and velocities, gravity
 /// is the same), so this is the push in the laboratory's frame. A contact's point (column 7 of the
 /// probe fix's per-atom contacts) below the shoulder is the tip's, else the sleeve's: each contact
-/// on one part. Every `-var every N` steps (default 100) a row of cpt.csv:
+/// on one part. Every `-var every N` steps (default the test's record_every) a row of cpt.csv:
 /// step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa as `clumpkit test cpt`'s curve.csv (forces
 /// on the probe, upwards positive; fs over the shaft below the lid); the push ends at the recipe's
 /// depth; atoms.final.txt (id mol x y z radius fx fy fz) at the end. The chamber's walls are fixed:

@@ -3,10 +3,10 @@
 #include "dem/lab/cpt.h"
 #include "geom/errors.h"
 #include "geom/format.h"
-#include "io/base/atomic_file.h"
+#include "io/formats/cpt_curve.h"
 #include "io/pipeline/consolidated.h"
 #include "io/pipeline/lab_setup.h"
-#include "io/reports/plot.h"
+#include "io/reports/cpt_report.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -57,13 +57,7 @@ LabJobResult run_cpt_job(const std::string& specimen_dir, const TestRecipe& reci
   }
   fs::remove_all(out / "checkpoints");
 
-  write_file_atomically((out / "curve.csv").string(), [&](std::ostream& f) {
-    f << "step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa\n";
-    for (const dem::CptRow& c : r.curve)
-      f << c.step << "," << format_number(c.depth) << "," << format_number(c.tip_force) << ","
-        << format_number(c.sleeve_force) << "," << format_number(c.qc) << "," << format_number(c.fs)
-        << "\n";
-  });
+  write_cpt_curve((out / "curve.csv").string(), r.curve);
 
   const dem::ContactParams& law = setup.options.contact;
   const double test_friction = s.cell.friction >= 0 ? s.cell.friction : law.friction;
@@ -94,21 +88,9 @@ LabJobResult run_cpt_job(const std::string& specimen_dir, const TestRecipe& reci
   rep["steps"] = last.step;
   rep["final_depth"] = last.depth;
   rep["reached_bottom"] = r.reached_bottom;
-  // qc and fs at their largest, and averaged over the push's second half (the steady part once
-  // the cone is buried).
-  double qc_max = 0, qc_sum = 0, fs_sum = 0;
-  int n = 0;
-  for (const dem::CptRow& c : r.curve) {
-    qc_max = std::max(qc_max, c.qc);
-    if (c.depth >= 0.5 * last.depth) qc_sum += c.qc, fs_sum += c.fs, ++n;
-  }
-  rep["qc_max"] = qc_max;
-  rep["qc_mean_second_half"] = n ? qc_sum / n : 0.0;
-  rep["fs_mean_second_half"] = n ? fs_sum / n : 0.0;
-  PlotCurve plot;
-  for (const dem::CptRow& c : r.curve) plot.x.push_back(c.depth), plot.y.push_back(c.qc / 1e6);
-  write_line_plot((out / "curve.png").string(), plot, "depth (m)", "cone resistance qc (MPa)",
-                  "CPT, " + format_number(s.cell.confining / 1e3, 4) + " kPa");
+  add_cpt_summary(rep, r.curve);
+  write_cpt_plot((out / "curve.png").string(), r.curve,
+                 "CPT, " + format_number(s.cell.confining / 1e3, 4) + " kPa");
   return finish_test_job(
       setup, out_dir, recipe, "cpt", specimen_dir, rep,
       options.save_consolidated

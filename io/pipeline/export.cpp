@@ -43,6 +43,7 @@ LammpsCpt lammps_cpt_of(const ExportOptions& options, const std::string& format,
       recipe.settings.friction >= 0 ? recipe.settings.friction : src.settings.contact.friction;
   if (cpt.probe.friction < 0) cpt.probe.friction = test_friction;
   cpt.confining = recipe.settings.confining;
+  cpt.record_every = recipe.settings.record_every;
   check_lammps_cpt(cpt, src.settings, recipe.path);
   const std::string report_path = (fs::path(source) / "report.json").string();
   const double core = radial_core_radius(src.report, report_path);

@@ -6,10 +6,12 @@
 #include "io/base/json_file.h"
 #include "io/export/engine_settings.h"
 #include "io/export/lammps_import.h"
+#include "io/formats/cpt_curve.h"
 #include "io/formats/specimen_csv.h"
 #include "io/formats/specimen_vtp.h"
 #include "io/pipeline/manifest.h"
 #include "io/pipeline/output_dir.h"
+#include "io/reports/cpt_report.h"
 #include "io/reports/plot.h"
 #include "io/reports/specimen_report.h"
 
@@ -57,6 +59,107 @@ PlotCurve read_oedometer(const fs::path& path) {
   return c;
 }
 
+// The run's bodies at its final dump, fitted to the source specimen's bodies.
+struct ImportedBodies {
+  std::vector<SpecimenBody> bodies;  ///< ids from 1
+  std::vector<long> source_id;       ///< each body's id in the source specimen.csv
+  std::string dump;
+  std::size_t lost = 0;
+  double fit_residual = 0;
+};
+
+ImportedBodies import_bodies(const std::string& run_dir,
+                             const std::vector<SpecimenBody>& specimen) {
+  ImportedBodies im;
+  im.dump = final_lammps_dump(run_dir);
+  const std::vector<LammpsAtom> atoms = read_lammps_dump(im.dump);
+  im.bodies = bodies_from_lammps_atoms(specimen, atoms, im.dump, im.lost, im.fit_residual);
+  if (im.bodies.empty()) throw InvalidInput(im.dump + ": the engine lost every body");
+  for (std::size_t k = 0; k < im.bodies.size(); ++k) {
+    im.source_id.push_back(im.bodies[k].id);
+    im.bodies[k].id = static_cast<long>(k + 1);
+  }
+  return im;
+}
+
+// specimen.csv, specimen.vtp and bodies_map.csv of the imported bodies.
+std::vector<std::string> write_imported_bodies(const fs::path& staging, const ImportedBodies& im) {
+  write_specimen_csv((staging / "specimen.csv").string(), im.bodies);
+  write_specimen_vtp((staging / "specimen.vtp").string(), im.bodies);
+  write_file_atomically((staging / "bodies_map.csv").string(), [&](std::ostream& o) {
+    o << "# imported body id -> body id of the source specimen.csv\nbody,source_body\n";
+    for (std::size_t k = 0; k < im.bodies.size(); ++k) o << k + 1 << "," << im.source_id[k] << "\n";
+  });
+  return {"specimen.csv", "specimen.vtp", "bodies_map.csv"};
+}
+
+// report.json's head: where the run came from and how well its bodies fitted.
+nlohmann::ordered_json import_head(const std::string& engine, const std::string& run_dir,
+                                   const fs::path& src, const ImportedBodies& im) {
+  nlohmann::ordered_json r;
+  r["engine"] = engine;
+  r["run_dir"] = fs::absolute(run_dir).lexically_normal().string();
+  r["dump"] = fs::absolute(im.dump).lexically_normal().string();
+  r["source"] = fs::absolute(src).lexically_normal().string();
+  r["bodies"] = im.bodies.size();
+  r["lost_bodies"] = im.lost;
+  r["fit_residual"] = im.fit_residual;
+  return r;
+}
+
+// report.json and manifest.json into `staging`, which is then published as `out_dir`.
+void finish_import(const fs::path& staging, const std::string& out_dir, const std::string& engine,
+                   const nlohmann::ordered_json& r, std::vector<std::string>& names) {
+  write_file_atomically((staging / "report.json").string(),
+                        [&](std::ostream& o) { o << r.dump(2) << "\n"; });
+  nlohmann::ordered_json m = manifest_head("import", "", "", 0);
+  m["engine"] = engine;
+  m["run_dir"] = r["run_dir"];
+  m["source"] = r["source"];
+  write_file_atomically((staging / "manifest.json").string(),
+                        [&](std::ostream& o) { o << m.dump(2) << "\n"; });
+  names.push_back("report.json");
+  names.push_back("manifest.json");
+  publish_directory(staging.string(), out_dir);
+}
+
+// A run of the CPT deck: its push (cpt.csv) as `clumpkit test cpt` reports one, and the final
+// state of its bodies.
+ImportResult import_cpt(const std::string& engine, const std::string& run_dir, const fs::path& src,
+                        const nlohmann::json& report, const std::vector<SpecimenBody>& specimen,
+                        const std::string& out_dir) {
+  const std::vector<dem::CptRow> curve = read_cpt_curve((fs::path(run_dir) / "cpt.csv").string());
+  const ImportedBodies im = import_bodies(run_dir, specimen);
+  ImportResult result;
+  result.engine = engine;
+  result.bodies = im.bodies.size();
+  result.lost = im.lost;
+  result.fit_residual = im.fit_residual;
+  const fs::path staging = begin_staging(out_dir);
+  std::error_code ec;
+  std::vector<std::string> names;
+  try {
+    names = write_imported_bodies(staging, im);
+    write_cpt_curve((staging / "curve.csv").string(), curve);
+    write_cpt_plot((staging / "curve.png").string(), curve, "CPT in " + engine);
+    names.push_back("curve.csv");
+    names.push_back("curve.png");
+    nlohmann::ordered_json r = import_head(engine, run_dir, src, im);
+    r["test"] = "cpt";
+    r["steps"] = curve.back().step;
+    r["final_depth"] = curve.back().depth;
+    add_cpt_summary(r, curve);
+    for (const char* key : {"container", "density", "contact"})
+      if (report.contains(key)) r[key] = report[key];
+    finish_import(staging, out_dir, engine, r, names);
+  } catch (...) {
+    fs::remove_all(staging, ec);
+    throw;
+  }
+  for (const std::string& n : names) result.files.push_back((fs::path(out_dir) / n).string());
+  return result;
+}
+
 }  // namespace
 
 ImportResult run_import(const std::string& engine, const std::string& run_dir,
@@ -72,18 +175,14 @@ ImportResult run_import(const std::string& engine, const std::string& run_dir,
   const nlohmann::json report = read_json_file(report_path);
   const EngineSettings settings = engine_settings_from_report(report, report_path);
   const std::vector<SpecimenBody> specimen = read_specimen_csv((src / "specimen.csv").string());
-  const std::string dump = final_lammps_dump(run_dir);
-  const std::vector<LammpsAtom> atoms = read_lammps_dump(dump);
+  if (fs::exists(fs::path(run_dir) / "cpt.csv"))
+    return import_cpt(engine, run_dir, src, report, specimen, out_dir);
+  const ImportedBodies im = import_bodies(run_dir, specimen);
+  const std::vector<SpecimenBody>& bodies = im.bodies;
   ImportResult result;
   result.engine = engine;
-  std::vector<SpecimenBody> bodies =
-      bodies_from_lammps_atoms(specimen, atoms, dump, result.lost, result.fit_residual);
-  if (bodies.empty()) throw InvalidInput(dump + ": the engine lost every body");
-  std::vector<long> source_id;
-  for (std::size_t k = 0; k < bodies.size(); ++k) {
-    source_id.push_back(bodies[k].id);
-    bodies[k].id = static_cast<long>(k + 1);
-  }
+  result.lost = im.lost;
+  result.fit_residual = im.fit_residual;
 
   // Measure as the specimen command does: same container, margin and layers.
   dem::SpecimenResult measured;
@@ -113,13 +212,7 @@ ImportResult run_import(const std::string& engine, const std::string& run_dir,
   std::error_code ec;
   std::vector<std::string> names;
   try {
-    write_specimen_csv((staging / "specimen.csv").string(), bodies);
-    write_specimen_vtp((staging / "specimen.vtp").string(), bodies);
-    write_file_atomically((staging / "bodies_map.csv").string(), [&](std::ostream& o) {
-      o << "# imported body id -> body id of the source specimen.csv\nbody,source_body\n";
-      for (std::size_t k = 0; k < bodies.size(); ++k) o << k + 1 << "," << source_id[k] << "\n";
-    });
-    names = {"specimen.csv", "specimen.vtp", "bodies_map.csv"};
+    names = write_imported_bodies(staging, im);
     std::vector<double> heights;
     const int slices = 2 * layers + 1;
     for (int k = 1; k <= slices; ++k) heights.push_back(measured.height * k / (slices + 1));
@@ -134,14 +227,7 @@ ImportResult run_import(const std::string& engine, const std::string& run_dir,
       names.push_back("oedometer.csv");
       names.push_back("oedometer.png");
     }
-    nlohmann::ordered_json r;
-    r["engine"] = engine;
-    r["run_dir"] = fs::absolute(run_dir).lexically_normal().string();
-    r["dump"] = fs::absolute(dump).lexically_normal().string();
-    r["source"] = fs::absolute(src).lexically_normal().string();
-    r["bodies"] = result.bodies;
-    r["lost_bodies"] = result.lost;
-    r["fit_residual"] = result.fit_residual;
+    nlohmann::ordered_json r = import_head(engine, run_dir, src, im);
     r["porosity"] = measured.porosity;
     r["relative_density"] = measured.relative_density;
     r["source_relative_density"] = result.source_relative_density;
@@ -158,17 +244,7 @@ ImportResult run_import(const std::string& engine, const std::string& run_dir,
     r["container"] = report["container"];
     r["density"] = report["density"];
     r["contact"] = report["contact"];
-    write_file_atomically((staging / "report.json").string(),
-                          [&](std::ostream& o) { o << r.dump(2) << "\n"; });
-    nlohmann::ordered_json m = manifest_head("import", "", "", 0);
-    m["engine"] = engine;
-    m["run_dir"] = r["run_dir"];
-    m["source"] = r["source"];
-    write_file_atomically((staging / "manifest.json").string(),
-                          [&](std::ostream& o) { o << m.dump(2) << "\n"; });
-    names.push_back("report.json");
-    names.push_back("manifest.json");
-    publish_directory(staging.string(), out_dir);
+    finish_import(staging, out_dir, engine, r, names);
   } catch (...) {
     fs::remove_all(staging, ec);
     throw;

@@ -22,7 +22,11 @@ struct ImportResult {
 /// per-band porosity and coordination number of the same central region, the source's relative
 /// density, bodies lost, the fit residual, and the container, densities and contact law, so the
 /// result exports again) and manifest.json; with the deck's oedometer.csv also a copy of it and
-/// oedometer.png. Engines: "lammps". Throws InvalidInput naming the file for bad input before
+/// oedometer.png. A run of the CPT deck (its cpt.csv, `clumpkit export lammps --test cpt`) is
+/// read as `clumpkit test cpt` reports a push instead: curve.csv and curve.png, report.json with
+/// the steps, final depth, qc_max and the second half's mean qc and fs (and the source's
+/// container, densities and contact law), beside the final state's specimen.csv, specimen.vtp and
+/// bodies_map.csv. Engines: "lammps". Throws InvalidInput naming the file for bad input before
 /// anything is written.
 ImportResult run_import(const std::string& engine, const std::string& run_dir,
                         const std::string& specimen_dir, const std::string& out_dir);

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -120,6 +121,21 @@ TEST(CliLammpsCpt, OneSphereOnTheConeAndOneOnTheShaftGiveTheClosedForms) {
   EXPECT_NEAR(last[5], last[3] / (2 * kPi * kR * embedded), 1e-6 * last[5]);
   // The first row, before any slip: the shaft's contact has no axial force yet.
   EXPECT_NEAR(curve.front()[3], 0.0, 1e-12);
+  // The way back: the push read as `clumpkit test cpt` reports one.
+  const Result im = run_cli("import lammps " + (d / "lmp").string() + " --specimen " +
+                                (d / "spec").string() + " --out " + (d / "imp").string(),
+                            d);
+  ASSERT_EQ(im.rc, 0) << im.err;
+  const nlohmann::json rep = nlohmann::json::parse(slurp(d / "imp" / "report.json"));
+  double qc_max = 0;
+  for (const auto& row : curve) qc_max = std::max(qc_max, row[4]);
+  EXPECT_EQ(rep["test"], "cpt");
+  EXPECT_EQ(rep["qc_max"].get<double>(), qc_max);
+  EXPECT_EQ(rep["final_depth"].get<double>(), last[1]);
+  EXPECT_EQ(rep["steps"].get<double>(), 5000);
+  EXPECT_EQ(rep["bodies"], 2);
+  EXPECT_EQ(csv_rows(d / "imp" / "curve.csv", 6), curve);
+  EXPECT_TRUE(fs::exists(d / "imp" / "curve.png"));
 }
 
 TEST(CliLammpsCpt, BadCptExportsAreRefusedWithOneLine) {
@@ -142,6 +158,10 @@ TEST(CliLammpsCpt, BadCptExportsAreRefusedWithOneLine) {
   narrow["container"]["shape"] = "segment";
   narrow["container"]["angle_deg"] = 10;
   write(d / "narrow" / "report.json", narrow.dump());
+  // A run whose cpt.csv was cut in the middle of a row.
+  fs::create_directories(d / "run");
+  write(d / "run" / "cpt.csv",
+        "step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa\n0,0,0,0,0,0\n100,2e-06,1.5\n");
   const std::string out = (d / "o").string(), spec = (d / "spec").string();
   const auto recipe = [&](const char* name) { return " --recipe " + (d / name).string(); };
   struct Case {
@@ -171,6 +191,8 @@ TEST(CliLammpsCpt, BadCptExportsAreRefusedWithOneLine) {
        "the segment's walls keep particles"},
       {"export yade " + (d / "narrow").string() + " --out " + out,
        "exported only as a CPT chamber"},
+      {"import lammps " + (d / "run").string() + " --specimen " + spec + " --out " + out,
+       "cpt.csv:3: not six finite numbers"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.args);
@@ -193,7 +215,7 @@ double consolidated_dt(const fs::path& deck) {
 // the deck starts at the state clumpkit's push starts from (apex and lid at the top platen, both
 // stresses at the confining stress) and its servo holds them during a short push.
 void push_saved_chamber_in_lammps(const fs::path& d, const std::string& diameter) {
-  write(d / "cpt.toml", "[test]\nconfining = 100e3\nrecord_every = 2000\n\n[probe]\ndiameter = " +
+  write(d / "cpt.toml", "[test]\nconfining = 100e3\nrecord_every = 200\n\n[probe]\ndiameter = " +
                             diameter + "\nvelocity = 0.08\ndepth = 0.001\n");
   const Result t =
       run_cli("test cpt --quiet --save-consolidated --specimen " + (d / "spec").string() +
@@ -241,10 +263,12 @@ void push_saved_chamber_in_lammps(const fs::path& d, const std::string& diameter
   }
   const auto curve = csv_rows(d / "lmp" / "cpt.csv", 6);
   ASSERT_FALSE(curve.empty());
-  // Whole rows of 100 steps, the last at or just past the depth (one row: 100 v dt).
+  // Whole rows of the recipe's record_every (200 steps), the last at or just past the depth
+  // (one row: 200 v dt).
   const double dt = consolidated_dt(d / "lmp" / "in.clumpkit");
   EXPECT_GE(curve.back()[1], 0.001 - 1e-12);
-  EXPECT_LT(curve.back()[1], 0.001 + 100 * 0.08 * dt);
+  EXPECT_LT(curve.back()[1], 0.001 + 200 * 0.08 * dt);
+  EXPECT_EQ(curve.back()[0] - curve[curve.size() - 2][0], 200);
 }
 
 }  // namespace
