@@ -167,28 +167,23 @@ TEST(CliLammpsCpt, BadCptExportsAreRefusedWithOneLine) {
   struct Case {
     std::string args, needle;
   };
+  // `export lammps SOURCE --test cpt --recipe RECIPE` into `out`, both in the scratch directory.
+  const auto cpt = [&](const fs::path& source, const char* name) {
+    return "export lammps " + source.string() + " --test cpt" + recipe(name) + " --out " + out;
+  };
   const Case cases[] = {
       {"export lammps " + spec + " --test cpt --out " + out, "--test cpt needs --recipe"},
       {"export lammps " + spec + recipe("cpt.toml") + " --out " + out,
        "--recipe is for --test cpt"},
       {"export yade " + spec + " --test cpt" + recipe("cpt.toml") + " --out " + out,
        "only available for lammps"},
-      {"export lammps " + spec + " --test cpt" + recipe("noprobe.toml") + " --out " + out,
-       "[probe]"},
-      {"export lammps " + spec + " --test cpt" + recipe("wide.toml") + " --out " + out,
-       "wider than half the container"},
-      {"export lammps " + spec + " --test cpt" + recipe("unknown.toml") + " --out " + out,
-       "probe.speed"},
-      {"export lammps " + spec + " --test cpt" + recipe("missing.toml") + " --out " + out,
-       "missing.toml"},
-      {"export lammps " + spec + " --test cpt" + recipe("cpt.toml") + " --tile 2x2 --out " + out,
-       "--tile and --test cpt"},
-      {"export lammps " + (d / "zoned").string() + " --test cpt" + recipe("cpt.toml") + " --out " +
-           out,
-       "smaller than 4 probe diameters"},
-      {"export lammps " + (d / "narrow").string() + " --test cpt" + recipe("cpt.toml") + " --out " +
-           out,
-       "the segment's walls keep particles"},
+      {cpt(spec, "noprobe.toml"), "[probe]"},
+      {cpt(spec, "wide.toml"), "wider than half the container"},
+      {cpt(spec, "unknown.toml"), "probe.speed"},
+      {cpt(spec, "missing.toml"), "missing.toml"},
+      {cpt(spec, "cpt.toml") + " --tile 2x2", "--tile and --test cpt"},
+      {cpt(d / "zoned", "cpt.toml"), "smaller than 4 probe diameters"},
+      {cpt(d / "narrow", "cpt.toml"), "the segment's walls keep particles"},
       {"export yade " + (d / "narrow").string() + " --out " + out,
        "exported only as a CPT chamber"},
       {"import lammps " + (d / "run").string() + " --specimen " + spec + " --out " + out,
