@@ -106,9 +106,7 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
                            const LammpsContact& lc, bool rocks, bool soils) {
   const dem::ProbeSettings& p = cpt.probe;
   // The probe's law: the specimen's springs and dashpot with the probe's friction.
-  const std::string probe_args =
-      lc.frictionless_args.substr(0, lc.frictionless_args.size() - std::string("0 1").size()) +
-      format_number(p.friction) + " 1";
+  const std::string probe_args = lammps_contact_args(lc, p.friction);
   o << "# clumpkit export for LAMMPS (syntax of LAMMPS 29 Sep 2021, Debian 12 `lammps`): the cone\n"
        "# penetration test of `clumpkit test cpt` on this specimen, in the probe's frame (the\n"
        "# probe is one static region; the chamber moves up at the push speed). Any number of\n"
@@ -116,10 +114,10 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
        "# cpt.csv: step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa every ${every} steps.\n"
        "# -var apex Z: the apex's start height (default: the highest sphere surface);\n"
        "# -var dt T: the time step (default: the test's of a consolidated state, else a tenth\n"
-       "# of the lightest sphere's period); -var servo 0: the lid and the cylinder fixed instead "
-       "of\n"
-       "# holding the confining stress (BC1; the base is fixed either way). Walls frictionless,\n"
-       "# as in clumpkit's cell; the thermo output shows their stresses.\n"
+       "# of the lightest sphere's period); -var depth D: push to D (m) instead; -var every N:\n"
+       "# a row every N steps; -var servo 0: the lid and the cylinder fixed instead of holding\n"
+       "# the confining stress (BC1; the base is fixed either way). Walls frictionless, as in\n"
+       "# clumpkit's cell; the thermo output shows their stresses.\n"
     << "variable    dt     index "
     << format_number(settings.test_timestep > 0 ? settings.test_timestep : lc.dt) << "\n"
     << "variable    apex   index -1\n"
@@ -130,7 +128,7 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
     << (settings.segment_angle_deg > 0 ? format_number(settings.segment_angle_deg) + "*PI/180"
                                        : std::string("2*PI"))
     << "\n"
-    << "variable    depth  equal " << format_number(p.depth) << "\n"
+    << "variable    depth  index " << format_number(p.depth) << "\n"
     << "variable    hcone  equal ${R}/tan(" << format_number(0.5 * p.apex_deg) << "*PI/180)\n"
     << lammps_preamble(lc)
     << "read_data   data.specimen\n"

@@ -29,11 +29,15 @@ LammpsContact lammps_contact(const SpecimenExtents& e, const EngineSettings& set
   lc.dt = 0.2 * std::sqrt(e.m_min / c.kn);  // 1/10 of the sphere's 2·sqrt(m/k)
   lc.skin = 0.5 * e.r_min;
   lc.cutoff = 2 * e.reach + 2 * e.r_max + 2 * lc.skin;
-  const std::string springs =
-      format_number(c.kn) + " " + format_number(c.ks) + " " + format_number(gamma_n) + " 0 ";
-  lc.args = springs + format_number(c.friction) + " 1";
-  lc.frictionless_args = springs + "0 1";
+  lc.springs =
+      format_number(c.kn) + " " + format_number(c.ks) + " " + format_number(gamma_n) + " 0";
+  lc.args = lammps_contact_args(lc, c.friction);
+  lc.frictionless_args = lammps_contact_args(lc, 0.0);
   return lc;
+}
+
+std::string lammps_contact_args(const LammpsContact& contact, double mu) {
+  return contact.springs + " " + format_number(mu) + " 1";
 }
 
 std::string lammps_preamble(const LammpsContact& contact) {

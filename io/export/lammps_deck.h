@@ -13,11 +13,15 @@ namespace clumpkit {
 /// ("kn kt gamma_n gamma_t mu 1" of gran/hooke/history), the time step, the neighbour skin and
 /// the ghost cutoff of fix rigid/small (the largest body must fit).
 struct LammpsContact {
-  std::string args;
+  std::string springs;            ///< "kn kt gamma_n gamma_t": the law without its friction
+  std::string args;               ///< springs with the specimen's μ
   std::string frictionless_args;  ///< the same with μ = 0 (walls of an element test)
   double dt = 0, skin = 0, cutoff = 0;
 };
 LammpsContact lammps_contact(const SpecimenExtents& extents, const EngineSettings& settings);
+
+/// The contact law's arguments with friction μ (a probe's, say): "kn kt gamma_n gamma_t μ 1".
+std::string lammps_contact_args(const LammpsContact& contact, double mu);
 
 /// The atom density of a body's spheres that makes their masses sum to the body's mass M:
 /// M / Σ(4/3·π·r³) (the spheres overlap, so it is not the material density).

@@ -61,28 +61,28 @@ nlohmann::ordered_json run_cells_job(const CellsJobOptions& o,
   r["strength_factor"] = describe(o.strength);
   r["seed"] = o.seed;
 
-  const std::string staging = begin_staging(o.out);
-  const fs::path dir = staging;
-  write_cells_vtp((dir / "cells.vtp").string(), t, bonds);
-  write_cells_csv((dir / "cells.csv").string(), t, bonds);
-  write_bonds_csv((dir / "bonds.csv").string(), (dir / "bond_points.csv").string(), bonds);
-  r["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  nlohmann::ordered_json report = r;
-  report.erase("seconds");  // report.json is the same bytes for the same command
-  write_file_atomically((dir / "report.json").string(),
-                        [&](std::ostream& f) { f << report.dump(2) << "\n"; });
-  nlohmann::ordered_json m = manifest_head("cells", "", "", o.seed);
-  m["mesh"] = fs::absolute(o.mesh).lexically_normal().string();
-  if (o.cells.count > 0)
-    m["count"] = o.cells.count;
-  else
-    m["cell_size"] = o.cells.cell_size;
-  m["lloyd"] = o.cells.lloyd;
-  m["strength_factor"] = describe(o.strength);
-  m["files"] = {"cells.vtp", "cells.csv", "bonds.csv", "bond_points.csv", "report.json"};
-  write_file_atomically((dir / "manifest.json").string(),
-                        [&](std::ostream& f) { f << m.dump(2) << "\n"; });
-  publish_directory(staging, o.out);
+  write_staged(o.out, [&](const std::string& staging) {
+    const fs::path dir = staging;
+    write_cells_vtp((dir / "cells.vtp").string(), t, bonds);
+    write_cells_csv((dir / "cells.csv").string(), t, bonds);
+    write_bonds_csv((dir / "bonds.csv").string(), (dir / "bond_points.csv").string(), bonds);
+    r["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    nlohmann::ordered_json report = r;
+    report.erase("seconds");  // report.json is the same bytes for the same command
+    write_file_atomically((dir / "report.json").string(),
+                          [&](std::ostream& f) { f << report.dump(2) << "\n"; });
+    nlohmann::ordered_json m = manifest_head("cells", "", "", o.seed);
+    m["mesh"] = fs::absolute(o.mesh).lexically_normal().string();
+    if (o.cells.count > 0)
+      m["count"] = o.cells.count;
+    else
+      m["cell_size"] = o.cells.cell_size;
+    m["lloyd"] = o.cells.lloyd;
+    m["strength_factor"] = describe(o.strength);
+    m["files"] = {"cells.vtp", "cells.csv", "bonds.csv", "bond_points.csv", "report.json"};
+    write_file_atomically((dir / "manifest.json").string(),
+                          [&](std::ostream& f) { f << m.dump(2) << "\n"; });
+  });
   return r;
 }
 

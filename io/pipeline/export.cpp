@@ -119,14 +119,14 @@ ExportResult run_export(const std::string& format, const std::string& source,
     bodies = tile_bodies(bodies, options.lammps.tiles_x, options.lammps.tiles_y,
                          2 * settings.container_radius);
 
-  const fs::path staging = begin_staging(out_dir);
-  std::error_code ec;
   ExportResult result;
   result.format = format;
   result.bodies = bodies.size();
   for (const SpecimenBody& b : bodies) result.spheres += b.spheres.size();
-  try {
-    const std::vector<std::string> written = engine->write(src, bodies, staging.string(), deck);
+  std::vector<std::string> written;
+  write_staged(out_dir, [&](const std::string& dir) {
+    const fs::path staging = dir;
+    written = engine->write(src, bodies, staging.string(), deck);
     result.run = engine->run();
     const nlohmann::json& manifest = src.manifest;
     nlohmann::ordered_json m =
@@ -152,14 +152,10 @@ ExportResult run_export(const std::string& format, const std::string& source,
                    {"strain_rate", options.lammps.strain_rate}};
     write_file_atomically((staging / "manifest.json").string(),
                           [&](std::ostream& o) { o << m.dump(2) << "\n"; });
-    publish_directory(staging.string(), out_dir);
-    for (const std::string& f : written)
-      result.files.push_back((fs::path(out_dir) / fs::path(f).filename()).string());
-    result.files.push_back((fs::path(out_dir) / "manifest.json").string());
-  } catch (...) {
-    fs::remove_all(staging, ec);
-    throw;
-  }
+  });
+  for (const std::string& f : written)
+    result.files.push_back((fs::path(out_dir) / fs::path(f).filename()).string());
+  result.files.push_back((fs::path(out_dir) / "manifest.json").string());
   return result;
 }
 

@@ -107,8 +107,8 @@ nlohmann::ordered_json import_head(const std::string& engine, const std::string&
   return r;
 }
 
-// report.json and manifest.json into `staging`, which is then published as `out_dir`.
-void finish_import(const fs::path& staging, const std::string& out_dir, const std::string& engine,
+// report.json and manifest.json into `staging`.
+void finish_import(const fs::path& staging, const std::string& engine,
                    const nlohmann::ordered_json& r, std::vector<std::string>& names) {
   write_file_atomically((staging / "report.json").string(),
                         [&](std::ostream& o) { o << r.dump(2) << "\n"; });
@@ -120,7 +120,6 @@ void finish_import(const fs::path& staging, const std::string& out_dir, const st
                         [&](std::ostream& o) { o << m.dump(2) << "\n"; });
   names.push_back("report.json");
   names.push_back("manifest.json");
-  publish_directory(staging.string(), out_dir);
 }
 
 // A run of the CPT deck: its push (cpt.csv) as `clumpkit test cpt` reports one, and the final
@@ -135,10 +134,9 @@ ImportResult import_cpt(const std::string& engine, const std::string& run_dir, c
   result.bodies = im.bodies.size();
   result.lost = im.lost;
   result.fit_residual = im.fit_residual;
-  const fs::path staging = begin_staging(out_dir);
-  std::error_code ec;
   std::vector<std::string> names;
-  try {
+  write_staged(out_dir, [&](const std::string& dir) {
+    const fs::path staging = dir;
     names = write_imported_bodies(staging, im);
     write_cpt_curve((staging / "curve.csv").string(), curve);
     write_cpt_plot((staging / "curve.png").string(), curve, "CPT in " + engine);
@@ -151,11 +149,8 @@ ImportResult import_cpt(const std::string& engine, const std::string& run_dir, c
     add_cpt_summary(r, curve);
     for (const char* key : {"container", "density", "contact"})
       if (report.contains(key)) r[key] = report[key];
-    finish_import(staging, out_dir, engine, r, names);
-  } catch (...) {
-    fs::remove_all(staging, ec);
-    throw;
-  }
+    finish_import(staging, engine, r, names);
+  });
   for (const std::string& n : names) result.files.push_back((fs::path(out_dir) / n).string());
   return result;
 }
@@ -208,10 +203,9 @@ ImportResult run_import(const std::string& engine, const std::string& run_dir,
   const PlotCurve curve =
       oedometer ? read_oedometer(fs::path(run_dir) / "oedometer.csv") : PlotCurve{};
 
-  const fs::path staging = begin_staging(out_dir);
-  std::error_code ec;
   std::vector<std::string> names;
-  try {
+  write_staged(out_dir, [&](const std::string& dir) {
+    const fs::path staging = dir;
     names = write_imported_bodies(staging, im);
     std::vector<double> heights;
     const int slices = 2 * layers + 1;
@@ -244,11 +238,8 @@ ImportResult run_import(const std::string& engine, const std::string& run_dir,
     r["container"] = report["container"];
     r["density"] = report["density"];
     r["contact"] = report["contact"];
-    finish_import(staging, out_dir, engine, r, names);
-  } catch (...) {
-    fs::remove_all(staging, ec);
-    throw;
-  }
+    finish_import(staging, engine, r, names);
+  });
   for (const std::string& n : names) result.files.push_back((fs::path(out_dir) / n).string());
   return result;
 }

@@ -59,4 +59,16 @@ std::string begin_staging(const std::string& dir) {
   return staging.string();
 }
 
+void write_staged(const std::string& dir, const std::function<void(const std::string&)>& write) {
+  const std::string staging = begin_staging(dir);
+  try {
+    write(staging);
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove_all(staging, ec);
+    throw;
+  }
+  publish_directory(staging, dir);
+}
+
 }  // namespace clumpkit

@@ -2,6 +2,7 @@
 // end, and never an input overwritten.
 #pragma once
 
+#include <functional>
 #include <string>
 
 namespace clumpkit {
@@ -32,5 +33,10 @@ std::string begin_staging(const std::string& dir);
 
 /// Replaces `dir` by `staging` (check_output_directory's rule is checked again).
 void publish_directory(const std::string& staging, const std::string& dir);
+
+/// A job's whole output in one call: begin_staging, `write` fills the staging directory (its
+/// path given), publish_directory. When `write` throws, the staging directory is removed and the
+/// exception passed on: a failed job leaves neither DIR nor DIR.partial.
+void write_staged(const std::string& dir, const std::function<void(const std::string&)>& write);
 
 }  // namespace clumpkit

@@ -76,20 +76,20 @@ nlohmann::ordered_json run_specimen_scale(const std::string& specimen_dir, doubl
   rep["scaled_from"] = specimen_dir;
   rep["scale_factor"] = factor;
 
-  const std::string staging = begin_staging(out_dir);
-  const fs::path out = staging;
-  write_specimen_csv((out / "specimen.csv").string(), rows);
-  write_specimen_vtp((out / "specimen.vtp").string(), rows);
-  write_file_atomically((out / "report.json").string(),
-                        [&](std::ostream& f) { f << rep.dump(2) << "\n"; });
-  nlohmann::ordered_json m = manifest_head("specimen-scale", "", "", 0);
-  m["source"] = specimen_dir;
-  m["factor"] = factor;
-  m["bodies"] = rows.size();
-  m["files"] = {"specimen.csv", "specimen.vtp", "report.json"};
-  write_file_atomically((out / "manifest.json").string(),
-                        [&](std::ostream& f) { f << m.dump(2) << "\n"; });
-  publish_directory(staging, out_dir);
+  write_staged(out_dir, [&](const std::string& staging) {
+    const fs::path out = staging;
+    write_specimen_csv((out / "specimen.csv").string(), rows);
+    write_specimen_vtp((out / "specimen.vtp").string(), rows);
+    write_file_atomically((out / "report.json").string(),
+                          [&](std::ostream& f) { f << rep.dump(2) << "\n"; });
+    nlohmann::ordered_json m = manifest_head("specimen-scale", "", "", 0);
+    m["source"] = specimen_dir;
+    m["factor"] = factor;
+    m["bodies"] = rows.size();
+    m["files"] = {"specimen.csv", "specimen.vtp", "report.json"};
+    write_file_atomically((out / "manifest.json").string(),
+                          [&](std::ostream& f) { f << m.dump(2) << "\n"; });
+  });
   return rep;
 }
 

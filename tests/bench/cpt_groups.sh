@@ -2,7 +2,9 @@
 # CTGU 2017's CPT groups A–E and A′ (A with another seed): each specimen built from
 # assets/recipes/cpt-X.toml with the seed set, pushed with assets/recipes/test-cpt.toml, then
 # the residual of each qc–depth curve against A's of the same seed (`clumpkit compare-curves`,
-# 200 points), the mean qc at depths 5–8 D_c, and wall times.
+# 200 points), the mean qc at depths 5–8 D_c, and wall times; then CTGU 2017's ranking with its
+# 90 % bootstrap intervals over the seeds (tests/bench/cpt_ranking.py, from the surface and from
+# 1 D_c; RESIDUALS=tests/bench/cpt_residuals_recorded.csv pools the recorded seeds 1–3).
 #   tests/bench/cpt_groups.sh [OUT]   (default /tmp/clumpkit-cpt-groups)
 # Environment: SEEDS (default "1 2 3"), CPT_GROUPS (default "A B C D E"), DENSITY_SCALING (default 1:
 # none; the masses × λ shorten the push by √λ steps — check it against λ = 1 first), DEPTH (push
@@ -16,6 +18,7 @@ groups=${CPT_GROUPS:-A B C D E}
 lambda=${DENSITY_SCALING:-1}
 depth=${DEPTH:-0.144}
 threads=${THREADS:-2}
+recorded=${RESIDUALS:+$(realpath "$RESIDUALS")}
 mkdir -p "$out" && cd "$out"
 sed -e "s/^depth = .*/depth = $depth/" \
     -e "s/^\[test\]/[test]\ndensity_scaling = $lambda/" "$root/assets/recipes/test-cpt.toml" > test.toml
@@ -60,3 +63,8 @@ for s in seeds:
         print(f"| {s} | {g if g != 'Aprime' else 'A′'} | {e:.4g} | {mean_qc(c) / 1e6:.3f} | "
               f"{float(open(f'{g}{s}-test/seconds').read()):.0f} |")
 PY
+for start in 0 0.018; do
+  echo
+  python3 "$root/tests/bench/cpt_ranking.py" --clumpkit "$bin" --from "$start" \
+    ${recorded:+--residuals "$recorded"} --json "ranking-from-$start.json" .
+done

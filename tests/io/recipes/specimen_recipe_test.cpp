@@ -59,6 +59,32 @@ TEST(SpecimenRecipe, BundledRecipesParse) {
   EXPECT_EQ(cpt.container_height, 0.216);
   EXPECT_EQ(cpt.compression_porosity, 0.36);
   EXPECT_EQ(cpt.zones.regions.size(), 1u);
+  // The full chambers: whole cylinders of 600 mm (R_d 33.3 for the 18 mm cone), each its
+  // segment's zones inside 150 mm, then 24 mm spheres (λ 4) to the wall in the zoned groups.
+  for (const char* group : {"A", "B", "C", "D", "E"}) {
+    SCOPED_TRACE(group);
+    const SpecimenRecipe seg = read_specimen_recipe(kDir + "cpt-" + group + ".toml");
+    const SpecimenRecipe full = read_specimen_recipe(kDir + "cpt-" + group + "-full.toml");
+    EXPECT_FALSE(full.segment);
+    EXPECT_TRUE(full.compression);
+    EXPECT_EQ(full.container_diameter, 0.6);
+    EXPECT_GE(full.container_diameter / 0.018, 33.0);
+    EXPECT_EQ(full.container_height, seg.container_height);
+    EXPECT_EQ(full.kn, seg.kn);
+    EXPECT_EQ(full.linear_scaling, seg.linear_scaling);
+    EXPECT_EQ(full.d_ref, seg.d_ref);
+    const auto& zs = seg.zones.regions;
+    const auto& zf = full.zones.regions;
+    const bool zoned = zs.size() > 1;
+    ASSERT_EQ(zf.size(), zs.size() + (zoned ? 1 : 0));
+    for (std::size_t k = 0; k + 1 < zs.size(); ++k) {
+      EXPECT_EQ(zf[k].outer, zs[k].outer);
+      EXPECT_EQ(zf[k].mixed, zs[k].mixed);
+      EXPECT_EQ(zf[k].scale, zs[k].scale);
+    }
+    EXPECT_EQ(zf.back().outer, 0.3);
+    EXPECT_EQ(zf.back().scale, zoned ? 4.0 : 1.0);
+  }
   const SpecimenRecipe quick = read_specimen_recipe(kDir + "quick-specimen.toml");
   EXPECT_EQ(quick.layers, 2);
   EXPECT_EQ(quick.classes.size(), 2u);
