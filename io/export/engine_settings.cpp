@@ -23,10 +23,6 @@ EngineSettings engine_settings_from_report(const nlohmann::json& report, const s
     throw InvalidInput(path +
                        ": container.shape: \"cuboid\" specimens are not exported yet (the decks "
                        "model a cylinder container): export a cylinder specimen");
-  if (report.contains("contact") && report["contact"].value("stiffness_scaling", "") == "linear")
-    throw InvalidInput(path +
-                       ": contact.stiffness_scaling: \"linear\" (kn ∝ d) is not exported yet "
-                       "(the decks use one kn and ks for every contact)");
   EngineSettings s;
   s.container_radius = 0.5 * field("container", "diameter");
   s.container_height = field("container", "height");
@@ -43,6 +39,14 @@ EngineSettings engine_settings_from_report(const nlohmann::json& report, const s
   s.contact.friction = field("contact", "friction");
   s.contact.damping_ratio = field("contact", "damping_ratio");
   s.contact.local_damping = field("contact", "local_damping");
+  // Linear scaling (kn ∝ d): only the LAMMPS CPT deck carries it (io/pipeline/export.cpp).
+  if (report["contact"].value("stiffness_scaling", "") == "linear") {
+    s.contact.scaling = dem::StiffnessScaling::linear;
+    s.contact.d_ref = field("contact", "d_ref");
+    if (!(s.contact.d_ref > 0) || !std::isfinite(s.contact.d_ref))
+      throw InvalidInput(path + ": contact.d_ref must be positive, got " +
+                         format_number(s.contact.d_ref));
+  }
   if (report.contains("gravity")) {
     const auto& g = report["gravity"];
     if (!g.is_number() || !(g.get<double>() >= 0.0) || !std::isfinite(g.get<double>()))

@@ -29,9 +29,13 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
   // The CPT's chamber rises by the push's depth (it runs in the probe's frame).
   const double z_hi =
       std::max(settings.container_height, e.top) + pad + (deck.cpt ? deck.cpt->probe.depth : 0.0);
+  // Linear stiffness scaling: soil sphere of size class k is type 2 + k (lammps_stiffness.h).
+  const std::vector<StiffnessClass> no_classes;
+  const std::vector<StiffnessClass>& classes = deck.cpt ? deck.cpt->classes : no_classes;
   files.push_back(write_export_file(dir, "data.specimen", [&](std::ostream& o) {
     o << "clumpkit specimen: atom_style hybrid sphere molecular, SI units\n\n"
-      << atoms << " atoms\n2 atom types\n\n"
+      << atoms << " atoms\n"
+      << (classes.empty() ? 2 : classes.size() + 1) << " atom types\n\n"
       << format_number(-half_x) << " " << format_number(half_x) << " xlo xhi\n"
       << format_number(-half_y) << " " << format_number(half_y) << " ylo yhi\n"
       << format_number(-pad) << " " << format_number(z_hi) << " zlo zhi\n\nAtoms # hybrid\n\n";
@@ -40,8 +44,9 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
       const bool rock = b.kind == dem::BodyKind::rock;
       // Rock: Σ m_i = M (per-atom quantities only; the rigid fix takes M from the infile).
       const double density = lammps_atom_density(b);
+      const int type = rock ? 1 : classes.empty() ? 2 : 2 + stiffness_class_of(classes, b);
       for (const Sphere& s : b.spheres)
-        o << ++id << " " << (rock ? 1 : 2) << " " << format_number(s.center.x()) << " "
+        o << ++id << " " << type << " " << format_number(s.center.x()) << " "
           << format_number(s.center.y()) << " " << format_number(s.center.z()) << " "
           << format_number(2 * s.radius) << " " << format_number(density) << " "
           << (rock ? b.id : 0) << "\n";

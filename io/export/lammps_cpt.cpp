@@ -4,6 +4,8 @@
 #include "geom/format.h"
 
 #include <cmath>
+#include <functional>
+#include <vector>
 
 namespace clumpkit {
 
@@ -32,29 +34,98 @@ namespace {
 // the whole step when it touches nothing. LAMMPS keeps no state in a variable, so a wall's
 // travel is the running mean of its steps (fix ave/time ... ave running, which samples from the
 // run's first step on) times their count; the walls read it from the step before.
+// The laws of the walls: one fix for every atom under the specimen's law, or, with stiffness
+// classes, one per class (group kN, fix NAME_N) under the class's law; their per-atom columns
+// are summed wherever the deck reads a wall.
+struct WallLaws {
+  std::vector<std::string> group, suffix;
+  std::vector<std::string> chamber;  ///< frictionless, no dashpot
+  std::vector<std::string> probe;    ///< the probe's friction and the dashpot
+  std::vector<double> kn;            ///< a chamber wall's normal stiffness (the servo's)
+};
+
+WallLaws wall_laws(const LammpsCpt& cpt, const EngineSettings& settings, const LammpsContact& lc) {
+  const dem::ContactParams& c = settings.contact;
+  WallLaws w;
+  if (cpt.classes.empty()) {
+    w.group = {"all"};
+    w.suffix = {""};
+    w.chamber = {"hooke/history " + format_number(c.kn) + " " + format_number(c.ks) + " 0 0 0 1"};
+    w.probe = {"hooke/history " + lammps_contact_args(lc, cpt.probe.friction)};
+    w.kn = {c.kn};
+    return w;
+  }
+  for (std::size_t k = 0; k < cpt.classes.size(); ++k) {
+    const StiffnessClass& cl = cpt.classes[k];
+    w.group.push_back("k" + std::to_string(k + 1));
+    w.suffix.push_back("_" + std::to_string(k + 1));
+    w.chamber.push_back(lammps_class_wall_law(cl, c, 0.0, false));
+    w.probe.push_back(lammps_class_wall_law(cl, c, cpt.probe.friction, true));
+    w.kn.push_back(c.kn * dem::wall_stiffness_factor(c, cl.diameter));
+  }
+  return w;
+}
+
+// The fixes of the wall `name` on `region_args` ("region R [contacts]"), one per law.
+std::string wall_fixes(const WallLaws& w, const std::string& name,
+                       const std::vector<std::string>& law, const std::string& region_args) {
+  std::string s;
+  for (std::size_t k = 0; k < law.size(); ++k)
+    s += "fix         " + name + w.suffix[k] + " " + w.group[k] + " wall/gran/region " + law[k] +
+         " " + region_args + "\n";
+  return s;
+}
+
+// term(fix) summed over the wall's fixes (the one term itself for one law).
+std::string summed(const WallLaws& w, const std::string& name,
+                   const std::function<std::string(const std::string&)>& term) {
+  if (w.suffix.size() == 1) return term(name + w.suffix[0]);
+  std::string s = "(";
+  for (std::size_t k = 0; k < w.suffix.size(); ++k) s += (k ? "+" : "") + term(name + w.suffix[k]);
+  return s + ")";
+}
+
+// `compute ID all reduce sum` of column `col` of the wall's fixes.
+std::string reduce_column(const WallLaws& w, const std::string& id, const std::string& name,
+                          int col) {
+  const auto column = [col](const std::string& f) {
+    return "f_" + f + "[" + std::to_string(col) + "]";
+  };
+  if (w.suffix.size() == 1) return "compute     " + id + " all reduce sum " + column(name) + "\n";
+  return "variable    " + id + "_atom atom " + summed(w, name, column) + "\ncompute     " + id +
+         " all reduce sum v_" + id + "_atom\n";
+}
+
+// The servo's stiffness of the wall's contacts: N_c·kn (one law) or Σ N_c,k·kn_k, never 0.
+std::string contact_stiffness(const WallLaws& w, const std::string& n) {
+  if (w.suffix.size() == 1) return "${kn}*(c_" + n + "+(c_" + n + "==0))";
+  return "(c_" + n + "+(c_" + n + "==0)*${kn})";
+}
+std::string stiffness_reduce(const WallLaws& w, const std::string& id, const std::string& name) {
+  if (w.suffix.size() == 1) return reduce_column(w, id, name, 1);
+  std::string s = "variable    " + id + "_atom atom (";
+  for (std::size_t k = 0; k < w.suffix.size(); ++k)
+    s += std::string(k ? "+" : "") + "f_" + name + w.suffix[k] + "[1]*" + format_number(w.kn[k]);
+  return s + ")\ncompute     " + id + " all reduce sum v_" + id + "_atom\n";
+}
+
 // A segment's radial planes through the axis, at φ = 0 (normal +y) and φ = angle (normal
 // (sin θ, −cos θ, 0)), frictionless and fixed: planes of symmetry of the whole chamber, which a
 // translation along the axis leaves where they are. Empty for a whole cylinder.
-std::string radial_planes(const EngineSettings& settings, const std::string& walls) {
+std::string radial_planes(const EngineSettings& settings, const WallLaws& w) {
   if (settings.segment_angle_deg <= 0) return "";
   const double a = settings.segment_angle_deg * M_PI / 180.0;
-  return "region      side0 plane 0 0 0 0 1 0 side in units box\n"
-         "fix         side0 all wall/gran/region hooke/history " +
-         walls +
-         " region side0\n"
-         "region      side1 plane 0 0 0 " +
-         format_number(std::sin(a)) + " " + format_number(-std::cos(a)) +
-         " 0 side in units box\n"
-         "fix         side1 all wall/gran/region hooke/history " +
-         walls + " region side1\n";
+  return "region      side0 plane 0 0 0 0 1 0 side in units box\n" +
+         wall_fixes(w, "side0", w.chamber, "region side0") + "region      side1 plane 0 0 0 " +
+         format_number(std::sin(a)) + " " + format_number(-std::cos(a)) + " 0 side in units box\n" +
+         wall_fixes(w, "side1", w.chamber, "region side1");
 }
 
-void write_chamber(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& settings) {
+void write_chamber(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& settings,
+                   const WallLaws& w) {
   // Frictionless and without a dashpot: LAMMPS takes the velocity of a region moved through a
   // variable a step late, and the dashpot's answer to that drove the lid's servo into a two-step
   // oscillation of ±10 kPa about 93 kPa (a consolidated specimen at 100 kPa).
-  const std::string walls =
-      format_number(settings.contact.kn) + " " + format_number(settings.contact.ks) + " 0 0 0 1";
   o << "variable    servo  index 1\n"
        "variable    sigma  equal "
     << format_number(cpt.confining) << "\n"
@@ -65,7 +136,7 @@ void write_chamber(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& 
        "variable    s0 equal $(step)\n"
        "variable    rise equal ${v}*(step-${s0})*dt\n"
        "region      floor plane 0 0 0 0 0 1 side in units box move NULL NULL v_rise\n"
-    << "fix         floor all wall/gran/region hooke/history " << walls << " region floor\n"
+    << wall_fixes(w, "floor", w.chamber, "region floor")
     << "# Stresses (compression positive): the lid's force over its area; the cylinder's radial\n"
        "# force (force . contact point / rc) over its area between floor and lid. The walls'\n"
        "# travel inwards (m): the running mean of their steps times their count.\n"
@@ -73,16 +144,25 @@ void write_chamber(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& 
        "variable    rc equal "
     << format_number(settings.container_radius)
     << "-f_ulat*(step-${s0})\n"
-       "variable    frad atom (f_cyl[2]*f_cyl[5]+f_cyl[3]*f_cyl[6])/v_rc\n"
+       "variable    frad atom ("
+    << summed(w, "cyl",
+              [](const std::string& f) {
+                return "f_" + f + "[2]*f_" + f + "[5]+f_" + f + "[3]*f_" + f + "[6]";
+              })
+    << ")/v_rc\n"
        "variable    height equal ${top0}+v_lidz-v_rise\n"
        "variable    alid equal 0.5*${angle}*v_rc^2\n"
        "variable    acyl equal ${angle}*v_rc*v_height\n"
        "variable    saxial equal -c_flid/v_alid\n"
        "variable    slateral equal -c_fcyl/v_acyl\n"
        "variable    etop equal "
-       "${servo}*${alpha}*v_alid*(${sigma}-v_saxial)/(${kn}*(c_nlid+(c_nlid==0)))\n"
+       "${servo}*${alpha}*v_alid*(${sigma}-v_saxial)/("
+    << contact_stiffness(w, "nlid")
+    << ")\n"
        "variable    elat equal "
-       "${servo}*${alpha}*v_acyl*(${sigma}-v_slateral)/(${kn}*(c_ncyl+(c_ncyl==0)))\n"
+       "${servo}*${alpha}*v_acyl*(${sigma}-v_slateral)/("
+    << contact_stiffness(w, "ncyl")
+    << ")\n"
        "variable    dtop equal v_etop-(v_etop>${servo_step})*(v_etop-${servo_step})"
        "+(v_etop<-${servo_step})*(-${servo_step}-v_etop)\n"
        "variable    dlat equal v_elat-(v_elat>${servo_step})*(v_elat-${servo_step})"
@@ -90,14 +170,12 @@ void write_chamber(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& 
        "fix         utop all ave/time 1 1 1 v_dtop ave running\n"
        "fix         ulat all ave/time 1 1 1 v_dlat ave running\n"
        "region      lid plane 0 0 ${top0} 0 0 -1 side in units box move NULL NULL v_lidz\n"
-    << "fix         lid all wall/gran/region hooke/history " << walls << " region lid contacts\n"
+    << wall_fixes(w, "lid", w.chamber, "region lid contacts")
     << "region      cyl cylinder z 0 0 v_rc INF INF side in units box\n"
-    << "fix         cyl all wall/gran/region hooke/history " << walls << " region cyl contacts\n"
-    << radial_planes(settings, walls)
-    << "compute     flid all reduce sum f_lid[4]\n"
-       "compute     nlid all reduce sum f_lid[1]\n"
-       "compute     fcyl all reduce sum v_frad\n"
-       "compute     ncyl all reduce sum f_cyl[1]\n";
+    << wall_fixes(w, "cyl", w.chamber, "region cyl contacts") << radial_planes(settings, w)
+    << reduce_column(w, "flid", "lid", 4) << stiffness_reduce(w, "nlid", "lid")
+    << "compute     fcyl all reduce sum v_frad\n"
+    << stiffness_reduce(w, "ncyl", "cyl");
 }
 
 }  // namespace
@@ -106,7 +184,8 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
                            const LammpsContact& lc, bool rocks, bool soils) {
   const dem::ProbeSettings& p = cpt.probe;
   // The probe's law: the specimen's springs and dashpot with the probe's friction.
-  const std::string probe_args = lammps_contact_args(lc, p.friction);
+  const WallLaws w = wall_laws(cpt, settings, lc);
+  const std::size_t types = cpt.classes.size();
   o << "# clumpkit export for LAMMPS (syntax of LAMMPS 29 Sep 2021, Debian 12 `lammps`): the cone\n"
        "# penetration test of `clumpkit test cpt` on this specimen, in the probe's frame (the\n"
        "# probe is one static region; the chamber moves up at the push speed). Any number of\n"
@@ -133,11 +212,28 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
     << lammps_preamble(lc)
     << "read_data   data.specimen\n"
        "group       rock type 1\n"
-       "group       soil type 2\n"
-    << "neighbor    " << format_number(lc.skin) << " bin\n"
+    << (types == 0 ? std::string("group       soil type 2\n")
+                   : "group       soil type <> 2 " + std::to_string(types + 1) + "\n");
+  for (std::size_t k = 0; k < types; ++k)
+    o << "group       " << w.group[k] << " type " << k + 2 << "\n";
+  o << "neighbor    " << format_number(lc.skin) << " bin\n"
     << "neigh_modify delay 0 every 1 check yes" << (rocks ? " exclude molecule/intra rock" : "")
-    << "\npair_style  gran/hooke/history " << lc.args << "\npair_coeff  * *\n"
-    << "timestep    ${dt}\n";
+    << "\n";
+  if (types == 0) {
+    o << "pair_style  gran/hooke/history " << lc.args << "\npair_coeff  * *\n";
+  } else {
+    const dem::ContactParams& c = settings.contact;
+    o << "# Contact stiffness ∝ diameter: soil type 2 + k is size class k (diameters "
+         "within\n# "
+      << format_number(100 * stiffness_class_error(cpt.classes))
+      << " % of its mean), each pair of types its kn, kt and dashpot (type 1 holds no atom).\n"
+         "pair_style  granular\n"
+         "pair_coeff  * * hooke "
+      << format_number(c.kn) << " 0 tangential linear_history " << format_number(c.ks) << " 0 "
+      << format_number(c.friction) << " damping mass_velocity\n"
+      << lammps_class_pair_coeffs(cpt.classes, 2, c);
+  }
+  o << "timestep    ${dt}\n";
   const bool gravity = settings.gravity != 0;
   if (gravity)
     o << "fix         grav soil gravity " << format_number(settings.gravity) << " vector 0 0 -1\n";
@@ -170,12 +266,16 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
        "region      cone cone z 0 0 1e-9 ${R} ${zlo} ${zs} side out\n"
        "region      shaft cylinder z 0 0 ${R} ${zs} INF side out\n"
        "region      probe intersect 2 cone shaft\n"
-    << "fix         probe all wall/gran/region hooke/history " << probe_args
-    << " region probe contacts\n";
-  write_chamber(o, cpt, settings);
+    << wall_fixes(w, "probe", w.probe, "region probe contacts");
+  write_chamber(o, cpt, settings, w);
   o << "# A contact below the shoulder is the tip's, else the sleeve's; forces on the probe.\n"
-       "variable    tipz atom f_probe[4]*(f_probe[7]<${zs})\n"
-       "variable    slvz atom f_probe[4]*(f_probe[7]>=${zs})\n"
+       "variable    tipz atom "
+    << summed(w, "probe",
+              [](const std::string& f) { return "f_" + f + "[4]*(f_" + f + "[7]<${zs})"; })
+    << "\nvariable    slvz atom "
+    << summed(w, "probe",
+              [](const std::string& f) { return "f_" + f + "[4]*(f_" + f + "[7]>=${zs})"; })
+    << "\n"
        "compute     tip all reduce sum v_tipz\n"
        "compute     slv all reduce sum v_slvz\n"
        "# Forces for the whole chamber: a segment's times 2 pi / its angle.\n"

@@ -5,6 +5,7 @@
 #include "dem/lab/cpt.h"
 #include "io/export/engine_settings.h"
 #include "io/export/lammps_deck.h"
+#include "io/export/lammps_stiffness.h"
 
 #include <ostream>
 
@@ -15,6 +16,9 @@ struct LammpsCpt {
   dem::ProbeSettings probe;  ///< friction resolved (≥ 0)
   double confining = 0;      ///< the lateral and top stress BC1 holds (Pa)
   int record_every = 200;    ///< steps between rows of cpt.csv (the test's record_every)
+  /// Linear stiffness scaling (stiffness_classes): class k is soil atom type 2 + k, each pair
+  /// of types and each wall its own law. Empty: one law, gran/hooke/history.
+  std::vector<StiffnessClass> classes;
 };
 
 /// Throws InvalidInput (naming `where`) for a probe the deck cannot push: validate_probe's
@@ -39,8 +43,9 @@ void check_lammps_cpt(const LammpsCpt& cpt, const EngineSettings& settings,
 /// on one part. Every `-var every N` steps (default the test's record_every) a row of cpt.csv:
 /// step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa as `clumpkit test cpt`'s curve.csv (forces
 /// on the probe, upwards positive; fs over the shaft below the lid); the push ends at the recipe's
-/// depth; atoms.final.txt (id mol x y z radius fx fy fz) at the end. The chamber's walls are fixed:
-/// BC1's servo of the lateral and top stress is not in this deck yet.
+/// depth; atoms.final.txt (id mol x y z radius fx fy fz) at the end. With stiffness classes the
+/// pairs run pair_style granular (hooke, linear_history, mass_velocity damping: the same law) and
+/// every wall is one fix per class, their forces summed.
 void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& settings,
                            const LammpsContact& contact, bool rocks, bool soils);
 

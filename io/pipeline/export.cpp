@@ -52,6 +52,8 @@ LammpsCpt lammps_cpt_of(const ExportOptions& options, const std::string& format,
   } catch (const InvalidInput& e) {
     throw InvalidInput(recipe.path + ": " + e.what() + " (" + report_path + ")");
   }
+  if (src.settings.contact.scaling == dem::StiffnessScaling::linear)
+    cpt.classes = stiffness_classes(src.bodies, report_path);
   if (src.settings.segment_angle_deg > 0) {
     std::vector<dem::Body> bodies;
     for (const SpecimenBody& b : src.bodies) bodies.push_back(dem_body(b));
@@ -115,6 +117,11 @@ ExportResult run_export(const std::string& format, const std::string& source,
                        ": container.shape: \"segment\" specimens are exported only as a CPT "
                        "chamber (--test cpt; the other decks model a whole cylinder container): "
                        "export a cylinder specimen");
+  if (settings.contact.scaling == dem::StiffnessScaling::linear && !deck.cpt)
+    throw InvalidInput((fs::path(source) / "report.json").string() +
+                       ": contact.stiffness_scaling: \"linear\" (kn ∝ d) is exported only in "
+                       "the LAMMPS CPT deck (--test cpt); the other decks use one kn and ks for "
+                       "every contact");
   if (tiles > 1)
     bodies = tile_bodies(bodies, options.lammps.tiles_x, options.lammps.tiles_y,
                          2 * settings.container_radius);
@@ -145,6 +152,19 @@ ExportResult run_export(const std::string& format, const std::string& source,
     m["bodies"] = result.bodies;
     m["spheres"] = result.spheres;
     m["run"] = result.run;
+    if (deck.cpt && !deck.cpt->classes.empty()) {
+      nlohmann::ordered_json classes = nlohmann::ordered_json::array();
+      for (std::size_t k = 0; k < deck.cpt->classes.size(); ++k) {
+        const StiffnessClass& c = deck.cpt->classes[k];
+        classes.push_back({{"type", k + 2},
+                           {"diameter", c.diameter},
+                           {"d_min", c.d_min},
+                           {"d_max", c.d_max},
+                           {"bodies", c.bodies}});
+      }
+      m["stiffness_classes"] = classes;
+      m["stiffness_class_error"] = stiffness_class_error(deck.cpt->classes);
+    }
     if (tiles > 1) m["tiles"] = {options.lammps.tiles_x, options.lammps.tiles_y};
     if (options.lammps.oedometer)
       m["test"] = {{"kind", "oedometer"},

@@ -31,34 +31,75 @@ std::string format(double v) {
   return s.str();
 }
 
-// A specimen directory of two soil spheres: one on the cone's face 8 mm above the apex, one on
-// the shaft 10 mm above the shoulder, each overlapping the probe by kDelta.
-void write_two_sphere_specimen(const fs::path& dir) {
+struct Ball {
+  double x, z, r;
+};
+
+// A specimen directory of soil spheres (at y = 0) of kMass each; `contact` the report's law.
+void write_specimen(const fs::path& dir, const std::vector<Ball>& balls,
+                    const std::string& contact) {
   fs::create_directories(dir);
-  const double z_face = kApex + 0.008, rho_face = 0.008 * std::tan(kBeta);
-  const double cx = rho_face + (kRadius - kDelta) * std::cos(kBeta);
-  const double cz = z_face - (kRadius - kDelta) * std::sin(kBeta);
-  const double sx = -(kR + kRadius - kDelta), sz = kApex + kR / std::tan(kBeta) + 0.01;
-  const double volume = 4.0 / 3.0 * kPi * std::pow(kRadius, 3),
-               inertia = 0.4 * kMass * kRadius * kRadius;
   std::string csv =
       "# clumpkit specimen format 4, SI units\n# bodies\n"
       "body,kind,template,x,y,z,qw,qx,qy,qz,mass,volume,scale,I1,I2,I3,zone\n";
-  const double xs[] = {cx, sx}, zs[] = {cz, sz};
-  for (int i = 0; i < 2; ++i)
-    csv += std::to_string(i + 1) + ",soil,-1," + format(xs[i]) + ",0," + format(zs[i]) +
-           ",1,0,0,0," + format(kMass) + "," + format(volume) + ",1," + format(inertia) + "," +
-           format(inertia) + "," + format(inertia) + ",0\n";
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    const Ball& b = balls[i];
+    const double volume = 4.0 / 3.0 * kPi * std::pow(b.r, 3), inertia = 0.4 * kMass * b.r * b.r;
+    csv += std::to_string(i + 1) + ",soil,-1," + format(b.x) + ",0," + format(b.z) + ",1,0,0,0," +
+           format(kMass) + "," + format(volume) + ",1," + format(inertia) + "," + format(inertia) +
+           "," + format(inertia) + ",0\n";
+  }
   csv += "# spheres\nsphere,body,x,y,z,r\n";
-  for (int i = 0; i < 2; ++i)
-    csv += std::to_string(i + 1) + "," + std::to_string(i + 1) + "," + format(xs[i]) + ",0," +
-           format(zs[i]) + "," + format(kRadius) + "\n";
+  for (std::size_t i = 0; i < balls.size(); ++i)
+    csv += std::to_string(i + 1) + "," + std::to_string(i + 1) + "," + format(balls[i].x) + ",0," +
+           format(balls[i].z) + "," + format(balls[i].r) + "\n";
   write(dir / "specimen.csv", csv);
   write(dir / "report.json",
         R"({"container": {"diameter": 0.06, "height": 0.1}, "density": {"rock": 2650, "soil": 2650},
-            "gravity": 0, "contact": {"kn": 1e6, "ks": 1e6, "friction": 0.5, "damping_ratio": 0,
-            "local_damping": 0}})");
+            "gravity": 0, "contact": )" +
+            contact + "}");
   write(dir / "manifest.json", R"({"recipe_path": "x.toml", "recipe": "", "seed": 1})");
+}
+
+// One sphere of radius r0 on the cone's face 8 mm above the apex and one of radius r1 on the
+// shaft 10 mm above the shoulder, each overlapping the probe by kDelta.
+std::vector<Ball> cone_and_shaft(double r0, double r1) {
+  const double z_face = kApex + 0.008, rho_face = 0.008 * std::tan(kBeta);
+  return {
+      {rho_face + (r0 - kDelta) * std::cos(kBeta), z_face - (r0 - kDelta) * std::sin(kBeta), r0},
+      {-(kR + r1 - kDelta), kApex + kR / std::tan(kBeta) + 0.01, r1}};
+}
+
+const char* kUniformLaw =
+    R"({"kn": 1e6, "ks": 1e6, "friction": 0.5, "damping_ratio": 0, "local_damping": 0})";
+
+void write_two_sphere_specimen(const fs::path& dir) {
+  write_specimen(dir, cone_and_shaft(kRadius, kRadius), kUniformLaw);
+}
+
+// Runs the exported deck of `spec` for the 5,000-step push with the walls fixed; "" or the error.
+std::string export_and_run(const fs::path& d, const fs::path& spec, const std::string& out) {
+  const Result r = run_cli("export lammps " + spec.string() + " --test cpt --recipe " +
+                               (d / "cpt.toml").string() + " --out " + (d / out).string(),
+                           d);
+  if (r.rc != 0) return "export: " + r.err;
+  const int rc =
+      std::system(("cd " + (d / out).string() +
+                   " && lmp -in in.clumpkit -var servo 0 -var dt 1e-7 -var apex 0.05 -var every "
+                   "1000 -log none > run.txt 2>&1")
+                      .c_str());
+  return rc == 0 ? "" : slurp(d / out / "run.txt");
+}
+
+// The atoms at the end: id mol x y z radius fx fy fz, one row each.
+std::vector<std::vector<double>> final_atoms(const fs::path& run, std::size_t count) {
+  std::istringstream in(slurp(run / "atoms.final.txt"));
+  std::string line;
+  for (int k = 0; k < 9; ++k) std::getline(in, line);
+  std::vector<std::vector<double>> a(count, std::vector<double>(9));
+  for (auto& row : a)
+    for (double& v : row) in >> v;
+  return in ? a : std::vector<std::vector<double>>{};
 }
 
 // A push of 5,000 steps of 0.1 µs at 20 mm/s: 10 µm.
@@ -73,28 +114,14 @@ TEST(CliLammpsCpt, OneSphereOnTheConeAndOneOnTheShaftGiveTheClosedForms) {
   const fs::path d = scratch();
   write_two_sphere_specimen(d / "spec");
   write(d / "cpt.toml", kProbeRecipe);
-  const Result r = run_cli("export lammps " + (d / "spec").string() + " --test cpt --recipe " +
-                               (d / "cpt.toml").string() + " --out " + (d / "lmp").string(),
-                           d);
-  ASSERT_EQ(r.rc, 0) << r.err;
-  const int rc =
-      std::system(("cd " + (d / "lmp").string() +
-                   " && lmp -in in.clumpkit -var servo 0 -var dt 1e-7 -var apex 0.05 -var every "
-                   "1000 -log none > run.txt 2>&1")
-                      .c_str());
-  ASSERT_EQ(rc, 0) << slurp(d / "lmp" / "run.txt");
+  const std::string error = export_and_run(d, d / "spec", "lmp");
+  ASSERT_EQ(error, "");
   std::string header;
   const auto curve = csv_rows(d / "lmp" / "cpt.csv", 6, &header);
   EXPECT_EQ(header, "step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa");
   ASSERT_EQ(curve.size(), 6u);
-  // The atoms at the end: id mol x y z radius fx fy fz.
-  std::istringstream in(slurp(d / "lmp" / "atoms.final.txt"));
-  std::string line;
-  for (int k = 0; k < 9; ++k) std::getline(in, line);
-  double a[2][9];
-  for (auto& row : a)
-    for (double& v : row) in >> v;
-  ASSERT_TRUE(in) << "atoms.final.txt";
+  const auto a = final_atoms(d / "lmp", 2);
+  ASSERT_EQ(a.size(), 2u) << "atoms.final.txt";
   // Cone: the force along the face's outward normal (cos β, −sin β) is kn·δ, δ from where the
   // sphere ended (its centre's distance to the face, less its radius).
   const double nx = std::cos(kBeta), nz = -std::sin(kBeta);
@@ -136,6 +163,52 @@ TEST(CliLammpsCpt, OneSphereOnTheConeAndOneOnTheShaftGiveTheClosedForms) {
   EXPECT_EQ(rep["bodies"], 2);
   EXPECT_EQ(csv_rows(d / "imp" / "curve.csv", 6), curve);
   EXPECT_TRUE(fs::exists(d / "imp" / "curve.png"));
+}
+
+// Contact stiffness ∝ diameter (CTGU 2017's groups D–E): d_ref = 6 mm, a 6 mm sphere on the cone
+// (against a wall 2·d/d_ref = 2 × kn), a 9 mm one on the shaft (3 × kn, and μ·N axially), and a
+// 6 mm and a 9 mm sphere pressed together away from the probe (2·d_i·d_j/((d_i + d_j)·d_ref) =
+// 1.2 × kn): the closed forms of dem::wall_stiffness_factor and pair_stiffness_factor.
+TEST(CliLammpsCpt, LinearStiffnessScalingGivesEachSizeItsOwnSprings) {
+  if (!have_program("lmp")) GTEST_SKIP() << "LAMMPS (lmp) not installed: run scripts/deps";
+  const fs::path d = scratch();
+  std::vector<Ball> balls = cone_and_shaft(0.003, 0.0045);
+  const double px = 0.015, pz = kApex + 0.03;  // 3 mm clear of the shaft
+  balls.push_back({px, pz, 0.003});
+  balls.push_back({px + 0.0075 - kDelta, pz, 0.0045});
+  write_specimen(d / "spec", balls,
+                 R"({"kn": 1e6, "ks": 1e6, "friction": 0.5, "damping_ratio": 0,
+                     "local_damping": 0, "stiffness_scaling": "linear", "d_ref": 0.006})");
+  write(d / "cpt.toml", kProbeRecipe);
+  const std::string error = export_and_run(d, d / "spec", "lmp");
+  ASSERT_EQ(error, "");
+  const nlohmann::json m = nlohmann::json::parse(slurp(d / "lmp" / "manifest.json"));
+  ASSERT_EQ(m["stiffness_classes"].size(), 2u);
+  EXPECT_EQ(m["stiffness_classes"][1]["diameter"].get<double>(), 0.009);
+  EXPECT_EQ(m["stiffness_class_error"].get<double>(), 0.0);
+  const auto a = final_atoms(d / "lmp", 4);
+  ASSERT_EQ(a.size(), 4u) << "atoms.final.txt";
+  const double nx = std::cos(kBeta), nz = -std::sin(kBeta);
+  const double delta = 0.003 - (a[0][2] * nx + (a[0][4] - kApex) * nz);
+  EXPECT_GT(delta, 0.5 * kDelta);
+  EXPECT_NEAR(a[0][6] * nx + a[0][8] * nz, 2 * kKn * delta, 1e-6 * 2 * kKn * delta);
+  const double shaft_delta = kR + 0.0045 + a[1][2];
+  EXPECT_NEAR(-a[1][6], 3 * kKn * shaft_delta, 1e-6 * 3 * kKn * shaft_delta);
+  EXPECT_NEAR(-a[1][8], kMu * 3 * kKn * shaft_delta, 1e-6 * kMu * 3 * kKn * shaft_delta);
+  const double pair_delta = 0.0075 - (a[3][2] - a[2][2]);
+  EXPECT_GT(pair_delta, 0.5 * kDelta);
+  EXPECT_NEAR(-a[2][6], 1.2 * kKn * pair_delta, 1e-6 * 1.2 * kKn * pair_delta);
+  EXPECT_NEAR(a[3][6], 1.2 * kKn * pair_delta, 1e-6 * 1.2 * kKn * pair_delta);
+  // The tip and the sleeve read every class's fix: the last row holds both spheres' forces.
+  const auto curve = csv_rows(d / "lmp" / "cpt.csv", 6);
+  ASSERT_FALSE(curve.empty());
+  EXPECT_NEAR(curve.back()[2], -a[0][8], 1e-9 * std::abs(a[0][8]));
+  EXPECT_NEAR(curve.back()[3], -a[1][8], 1e-9 * std::abs(a[1][8]));
+  // A clump under linear scaling, and linear scaling in any other deck, are refused.
+  const Result other =
+      run_cli("export lammps " + (d / "spec").string() + " --out " + (d / "settle").string(), d);
+  expect_one_line_error(other, "contact.stiffness_scaling");
+  EXPECT_FALSE(fs::exists(d / "settle"));
 }
 
 TEST(CliLammpsCpt, BadCptExportsAreRefusedWithOneLine) {
