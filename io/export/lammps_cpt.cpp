@@ -51,7 +51,9 @@ WallLaws wall_laws(const LammpsCpt& cpt, const EngineSettings& settings, const L
     w.group = {"all"};
     w.suffix = {""};
     w.chamber = {"hooke/history " + format_number(c.kn) + " " + format_number(c.ks) + " 0 0 0 1"};
-    w.probe = {"hooke/history " + lammps_contact_args(lc, cpt.probe.friction)};
+    // The probe is a wall: the body's mass is the contact's m_eff (as in clumpkit's probe).
+    w.probe = {"hooke/history " + format_number(c.kn) + " " + format_number(c.ks) + " " +
+               format_number(lc.wall_gamma_n) + " 0 " + format_number(cpt.probe.friction) + " 1"};
     w.kn = {c.kn};
     return w;
   }
@@ -183,7 +185,6 @@ void write_chamber(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& 
 void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& settings,
                            const LammpsContact& lc, bool rocks, bool soils) {
   const dem::ProbeSettings& p = cpt.probe;
-  // The probe's law: the specimen's springs and dashpot with the probe's friction.
   const WallLaws w = wall_laws(cpt, settings, lc);
   const std::size_t types = cpt.classes.size();
   o << "# clumpkit export for LAMMPS (syntax of LAMMPS 29 Sep 2021, Debian 12 `lammps`): the cone\n"

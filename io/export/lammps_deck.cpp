@@ -33,6 +33,7 @@ LammpsContact lammps_contact(const SpecimenExtents& e, const EngineSettings& set
       format_number(c.kn) + " " + format_number(c.ks) + " " + format_number(gamma_n) + " 0";
   lc.args = lammps_contact_args(lc, c.friction);
   lc.frictionless_args = lammps_contact_args(lc, 0.0);
+  lc.wall_gamma_n = 2.0 * c.damping_ratio * std::sqrt(c.kn / e.m_median);
   return lc;
 }
 

@@ -16,6 +16,9 @@ struct LammpsContact {
   std::string springs;            ///< "kn kt gamma_n gamma_t": the law without its friction
   std::string args;               ///< springs with the specimen's μ
   std::string frictionless_args;  ///< the same with μ = 0 (walls of an element test)
+  /// γn of a wall contact: a wall's m_eff is the body's mass m, so the dashpot 2β·sqrt(m·kn)
+  /// is γn·m with γn = 2β·sqrt(kn/m) at the median body's m (twice the pairs' m_eff).
+  double wall_gamma_n = 0;
   double dt = 0, skin = 0, cutoff = 0;
 };
 LammpsContact lammps_contact(const SpecimenExtents& extents, const EngineSettings& settings);
