@@ -38,7 +38,9 @@ void register_export(CLI::App& app) {
                 "rate; strain and vertical stress in oedometer.csv) or cpt (the cone "
                 "penetration test of --recipe, no settle: the probe pushed from the specimen's "
                 "top in the probe's frame, tip and sleeve forces apart in cpt.csv with the "
-                "columns of `clumpkit test cpt`'s curve.csv; the chamber's walls fixed)")
+                "columns of `clumpkit test cpt`'s curve.csv; lid and lateral wall held at the "
+                "recipe's confining stress, base fixed (BC1); segments keep their radial walls; "
+                "stiffness ∝ d as one atom type per size class)")
       ->check(CLI::IsMember({"oedometer", "cpt"}));
   c->add_option("--recipe", o->options.cpt_recipe,
                 "--test cpt: the test recipe with its [probe] (as for `clumpkit test cpt`)");
