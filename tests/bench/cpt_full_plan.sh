@@ -7,7 +7,7 @@
 # imports each finished cpt.csv into X{s}-test/ (as `clumpkit test cpt` names its output) and
 # prints the ranking with its bootstrap intervals (tests/bench/cpt_ranking.py).
 #   tests/bench/cpt_full_plan.sh prepare|collect [OUT]   (default /tmp/clumpkit-cpt-full)
-# Environment: SEEDS ("1 2 3 4 5 6 7 8"), CPT_GROUPS ("A B C D E"), DENSITY_SCALING (100, as the
+# Environment: SEEDS ("1 2 3 4 5 6 7 8"), CPT_GROUPS ("A B C D E"), APRIME (1; 0: no A′ runs), DENSITY_SCALING (100, as the
 # segment runs), RANKS (64), THREADS (2, clumpkit's), RANK_SECONDS (seconds per push step per
 # sphere on one rank: 1.4e-7, measured on this project's 2-core machine with the A-full deck at
 # np 1 — a cluster core is usually faster; rank counts beyond ~1 per 2,000 spheres stop scaling).
@@ -27,7 +27,7 @@ mkdir -p "$out" && cd "$out"
 names() {  # NAME GROUP SEED for every run
   for s in $seeds; do
     for g in $groups; do echo "$g$s $g $s"; done
-    echo "Aprime$s A $((s + 100))"
+    [ "${APRIME:-1}" = 0 ] || echo "Aprime$s A $((s + 100))"
   done
 }
 
