@@ -47,7 +47,10 @@ EngineSettings engine_settings_from_report(const nlohmann::json& report, const s
       throw InvalidInput(path + ": contact.d_ref must be positive, got " +
                          format_number(s.contact.d_ref));
   }
-  if (report.contains("gravity")) {
+  if (report.contains("gravity") && report["gravity"].is_boolean()) {
+    // A compression specimen's report says whether gravity was on: false, prepared without it.
+    if (!report["gravity"].get<bool>()) s.gravity = 0.0;
+  } else if (report.contains("gravity")) {
     const auto& g = report["gravity"];
     if (!g.is_number() || !(g.get<double>() >= 0.0) || !std::isfinite(g.get<double>()))
       throw InvalidInput(path + ": field gravity: " + g.dump() +

@@ -23,7 +23,8 @@ struct EngineSettings {
   double rock_density = 2870, soil_density = 2700;  ///< kg/m³
   dem::ContactParams contact;                       ///< the material friction
   /// m/s², downwards: report.json "gravity" when it has one (0 for the consolidated state of an
-  /// element test, `clumpkit test --save-consolidated`), else Earth's.
+  /// element test, `clumpkit test --save-consolidated`; `false`, a compression specimen's, is
+  /// 0 too), else Earth's.
   double gravity = 9.81;
   /// s: report.json "test_timestep" of a test's consolidated state (the step its test ran with,
   /// which the CPT deck takes, so both engines push with the same step); 0 otherwise.

@@ -36,8 +36,8 @@ struct Ball {
 };
 
 // A specimen directory of soil spheres (at y = 0) of kMass each; `contact` the report's law.
-void write_specimen(const fs::path& dir, const std::vector<Ball>& balls,
-                    const std::string& contact) {
+void write_specimen(const fs::path& dir, const std::vector<Ball>& balls, const std::string& contact,
+                    const std::string& gravity = "0") {
   fs::create_directories(dir);
   std::string csv =
       "# clumpkit specimen format 4, SI units\n# bodies\n"
@@ -56,8 +56,8 @@ void write_specimen(const fs::path& dir, const std::vector<Ball>& balls,
   write(dir / "specimen.csv", csv);
   write(dir / "report.json",
         R"({"container": {"diameter": 0.06, "height": 0.1}, "density": {"rock": 2650, "soil": 2650},
-            "gravity": 0, "contact": )" +
-            contact + "}");
+            "gravity": )" +
+            gravity + R"(, "contact": )" + contact + "}");
   write(dir / "manifest.json", R"({"recipe_path": "x.toml", "recipe": "", "seed": 1})");
 }
 
@@ -178,10 +178,12 @@ TEST(CliLammpsCpt, LinearStiffnessScalingGivesEachSizeItsOwnSprings) {
   balls.push_back({px + 0.0075 - kDelta, pz, 0.0045});
   write_specimen(d / "spec", balls,
                  R"({"kn": 1e6, "ks": 1e6, "friction": 0.5, "damping_ratio": 0,
-                     "local_damping": 0, "stiffness_scaling": "linear", "d_ref": 0.006})");
+                     "local_damping": 0, "stiffness_scaling": "linear", "d_ref": 0.006})",
+                 "false");  // a compression specimen's report: prepared without gravity
   write(d / "cpt.toml", kProbeRecipe);
   const std::string error = export_and_run(d, d / "spec", "lmp");
   ASSERT_EQ(error, "");
+  EXPECT_EQ(slurp(d / "lmp" / "in.clumpkit").find("gravity"), std::string::npos);
   const nlohmann::json m = nlohmann::json::parse(slurp(d / "lmp" / "manifest.json"));
   ASSERT_EQ(m["stiffness_classes"].size(), 2u);
   EXPECT_EQ(m["stiffness_classes"][1]["diameter"].get<double>(), 0.009);
