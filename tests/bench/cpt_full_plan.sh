@@ -8,9 +8,12 @@
 # prints the ranking with its bootstrap intervals (tests/bench/cpt_ranking.py).
 #   tests/bench/cpt_full_plan.sh prepare|collect [OUT]   (default /tmp/clumpkit-cpt-full)
 # Environment: SEEDS ("1 2 3 4 5 6 7 8"), CPT_GROUPS ("A B C D E"), APRIME (1; 0: no A′ runs), DENSITY_SCALING (100, as the
-# segment runs), RANKS (64), THREADS (2, clumpkit's), RANK_SECONDS (seconds per push step per
-# sphere on one rank: 1.4e-7, measured on this project's 2-core machine with the A-full deck at
-# np 1 — a cluster core is usually faster; rank counts beyond ~1 per 2,000 spheres stop scaling).
+# segment runs), RANKS (64), THREADS (2, clumpkit's), RANK_SECONDS (rank-seconds per push step
+# per sphere: 3.9e-7, measured on this project's 2-core machine with the A-full deck at np 2, 100
+# push steps of 342,638 spheres in 6.72 s; decks with stiffness classes (D, E: pair_style
+# granular) take 1.71 times that, measured with D-full's; a cluster core is usually faster, and
+# rank counts beyond about one per 2,000 spheres stop scaling). Building A-full took 53 min and
+# its consolidation about 5 min on 2 cores: the A and A′ specimens are most of `prepare`.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 bin=${CLUMPKIT:-$root/build/io/clumpkit}
@@ -21,7 +24,7 @@ groups=${CPT_GROUPS:-A B C D E}
 lambda=${DENSITY_SCALING:-100}
 ranks=${RANKS:-64}
 threads=${THREADS:-2}
-rank_seconds=${RANK_SECONDS:-1.4e-7}
+rank_seconds=${RANK_SECONDS:-3.9e-7}
 mkdir -p "$out" && cd "$out"
 
 names() {  # NAME GROUP SEED for every run
@@ -53,6 +56,7 @@ m = json.load(open(f"{name}-lmp/manifest.json"))
 rep = json.load(open(f"{name}-c/consolidated/report.json"))
 v, depth, every = 0.02, 0.144, 2000  # test-cpt.toml's probe and record_every
 steps = every * math.ceil(depth / (v * rep["test_timestep"] * every))
+per *= 1.71 if "stiffness_classes" in m else 1.0  # pair_style granular (measured, D-full)
 hours = steps * m["spheres"] * per / ranks / 3600
 print(f"{name}-lmp\tmpirun -np {ranks} lmp -in in.clumpkit -log log.txt\t"
       f"{m['spheres']} spheres, {steps} steps, about {hours:.1f} h on {ranks} ranks")
@@ -68,7 +72,7 @@ elif [ "$mode" = collect ]; then
   done
   for start in 0 0.018; do
     python3 "$root/tests/bench/cpt_ranking.py" --clumpkit "$bin" --from "$start" \
-      --json "ranking-from-$start.json" .
+      --json "ranking-from-$start.json" . || echo "(no group beside A finished yet)"
     echo
   done
 else
