@@ -50,11 +50,13 @@ if [ "$mode" = prepare ]; then
       "$bin" export lammps "$name-c/consolidated" --test cpt --recipe test.toml \
         --out "$name-lmp" > /dev/null
     python3 - "$name" "$ranks" "$rank_seconds" >> jobs.txt <<'PY'
-import json, math, sys
+import json, math, sys, tomllib
 name, ranks, per = sys.argv[1], int(sys.argv[2]), float(sys.argv[3])
 m = json.load(open(f"{name}-lmp/manifest.json"))
 rep = json.load(open(f"{name}-c/consolidated/report.json"))
-v, depth, every = 0.02, 0.144, 2000  # test-cpt.toml's probe and record_every
+test = tomllib.load(open("test.toml", "rb"))  # the push the deck runs (as npush counts it)
+v, depth = test["probe"]["velocity"], test["probe"]["depth"]
+every = test["test"]["record_every"]
 steps = every * math.ceil(depth / (v * rep["test_timestep"] * every))
 per *= 1.71 if "stiffness_classes" in m else 1.0  # pair_style granular (measured, D-full)
 hours = steps * m["spheres"] * per / ranks / 3600
