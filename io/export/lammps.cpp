@@ -87,7 +87,7 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
   const dem::ContactParams& c = settings.contact;
   const LammpsContact lc = lammps_contact(e, settings);
   const double dt = lc.dt;
-  const std::string& contact_args = lc.args;
+  const std::string contact_args = lammps_contact_args(lc);
   if (deck.cpt) {
     files.push_back(write_export_file(dir, "in.clumpkit", [&](std::ostream& o) {
       write_lammps_cpt_deck(o, *deck.cpt, settings, lc, rocks > 0, soils > 0);
@@ -180,13 +180,13 @@ std::vector<std::string> write_lammps_export(const std::vector<SpecimenBody>& bo
            "variable    s0 equal $(step)\n"
            "variable    dz equal -${rate}*${H0}*(step-${s0})*dt\n"
            "unfix       floor\n"
-        << "fix         floor all wall/gran hooke/history " << lc.frictionless_args
+        << "fix         floor all wall/gran hooke/history " << lammps_contact_args(lc, 0.0)
         << " zplane 0.0 NULL\n"
         << "unfix       cyl\n"
-        << "fix         cyl all wall/gran hooke/history " << lc.frictionless_args << " zcylinder "
-        << format_number(settings.container_radius) << "\n"
+        << "fix         cyl all wall/gran hooke/history " << lammps_contact_args(lc, 0.0)
+        << " zcylinder " << format_number(settings.container_radius) << "\n"
         << "region      platen plane 0 0 ${H0} 0 0 -1 side in units box move NULL NULL v_dz\n"
-        << "fix         platen all wall/gran/region hooke/history " << lc.frictionless_args
+        << "fix         platen all wall/gran/region hooke/history " << lammps_contact_args(lc, 0.0)
         << " region platen contacts\n"
         << "compute     pf all reduce sum f_platen[4]\n"
            "variable    strain equal -v_dz/${H0}\n"

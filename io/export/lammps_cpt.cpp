@@ -50,10 +50,10 @@ WallLaws wall_laws(const LammpsCpt& cpt, const EngineSettings& settings, const L
   if (cpt.classes.empty()) {
     w.group = {"all"};
     w.suffix = {""};
-    w.chamber = {"hooke/history " + format_number(c.kn) + " " + format_number(c.ks) + " 0 0 0 1"};
+    w.chamber = {"hooke/history " + lammps_hooke_args(c.kn, c.ks, 0.0, 0.0)};
     // The probe is a wall: the body's mass is the contact's m_eff (as in clumpkit's probe).
-    w.probe = {"hooke/history " + format_number(c.kn) + " " + format_number(c.ks) + " " +
-               format_number(lc.wall_gamma_n) + " 0 " + format_number(cpt.probe.friction) + " 1"};
+    w.probe = {"hooke/history " +
+               lammps_hooke_args(c.kn, c.ks, lc.wall_gamma_n, cpt.probe.friction)};
     w.kn = {c.kn};
     return w;
   }
@@ -98,13 +98,11 @@ std::string reduce_column(const WallLaws& w, const std::string& id, const std::s
          " all reduce sum v_" + id + "_atom\n";
 }
 
-// The servo's stiffness of the wall's contacts: N_c·kn (one law) or Σ N_c,k·kn_k, never 0.
-std::string contact_stiffness(const WallLaws& w, const std::string& n) {
-  if (w.suffix.size() == 1) return "${kn}*(c_" + n + "+(c_" + n + "==0))";
+// The servo's stiffness of the wall's contacts Σ N_c,k·kn_k (one term for one law), never 0.
+std::string contact_stiffness(const std::string& n) {
   return "(c_" + n + "+(c_" + n + "==0)*${kn})";
 }
 std::string stiffness_reduce(const WallLaws& w, const std::string& id, const std::string& name) {
-  if (w.suffix.size() == 1) return reduce_column(w, id, name, 1);
   std::string s = "variable    " + id + "_atom atom (";
   for (std::size_t k = 0; k < w.suffix.size(); ++k)
     s += std::string(k ? "+" : "") + "f_" + name + w.suffix[k] + "[1]*" + format_number(w.kn[k]);
@@ -159,11 +157,11 @@ void write_chamber(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& 
        "variable    slateral equal -c_fcyl/v_acyl\n"
        "variable    etop equal "
        "${servo}*${alpha}*v_alid*(${sigma}-v_saxial)/("
-    << contact_stiffness(w, "nlid")
+    << contact_stiffness("nlid")
     << ")\n"
        "variable    elat equal "
        "${servo}*${alpha}*v_acyl*(${sigma}-v_slateral)/("
-    << contact_stiffness(w, "ncyl")
+    << contact_stiffness("ncyl")
     << ")\n"
        "variable    dtop equal v_etop-(v_etop>${servo_step})*(v_etop-${servo_step})"
        "+(v_etop<-${servo_step})*(-${servo_step}-v_etop)\n"
@@ -221,7 +219,7 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
     << "neigh_modify delay 0 every 1 check yes" << (rocks ? " exclude molecule/intra rock" : "")
     << "\n";
   if (types == 0) {
-    o << "pair_style  gran/hooke/history " << lc.args << "\npair_coeff  * *\n";
+    o << "pair_style  gran/hooke/history " << lammps_contact_args(lc) << "\npair_coeff  * *\n";
   } else {
     const dem::ContactParams& c = settings.contact;
     o << "# Contact stiffness ∝ diameter: soil type 2 + k is size class k (diameters "

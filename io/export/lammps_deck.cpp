@@ -24,21 +24,24 @@ LammpsContact lammps_contact(const SpecimenExtents& e, const EngineSettings& set
   // m_eff, clumpkit with sqrt(m_eff)); no tangential dashpot (γt = 0), no local damping.
   const dem::ContactParams& c = settings.contact;
   const double m_eff = 0.5 * e.m_median;
-  const double gamma_n = 2.0 * c.damping_ratio * std::sqrt(c.kn / m_eff);
   LammpsContact lc;
   lc.dt = 0.2 * std::sqrt(e.m_min / c.kn);  // 1/10 of the sphere's 2·sqrt(m/k)
   lc.skin = 0.5 * e.r_min;
   lc.cutoff = 2 * e.reach + 2 * e.r_max + 2 * lc.skin;
-  lc.springs =
-      format_number(c.kn) + " " + format_number(c.ks) + " " + format_number(gamma_n) + " 0";
-  lc.args = lammps_contact_args(lc, c.friction);
-  lc.frictionless_args = lammps_contact_args(lc, 0.0);
-  lc.wall_gamma_n = 2.0 * c.damping_ratio * std::sqrt(c.kn / e.m_median);
+  lc.kn = c.kn;
+  lc.kt = c.ks;
+  lc.gamma_n = lammps_dashpot(c.kn, m_eff, c.damping_ratio);
+  lc.wall_gamma_n = lammps_dashpot(c.kn, e.m_median, c.damping_ratio);
+  lc.friction = c.friction;
   return lc;
 }
 
 std::string lammps_contact_args(const LammpsContact& contact, double mu) {
-  return contact.springs + " " + format_number(mu) + " 1";
+  return lammps_hooke_args(contact.kn, contact.kt, contact.gamma_n, mu);
+}
+
+std::string lammps_contact_args(const LammpsContact& contact) {
+  return lammps_contact_args(contact, contact.friction);
 }
 
 std::string lammps_preamble(const LammpsContact& contact) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "io/export/engine_settings.h"
+#include "io/export/lammps_stiffness.h"
 #include "io/formats/specimen_csv.h"
 
 #include <string>
@@ -13,9 +14,9 @@ namespace clumpkit {
 /// ("kn kt gamma_n gamma_t mu 1" of gran/hooke/history), the time step, the neighbour skin and
 /// the ghost cutoff of fix rigid/small (the largest body must fit).
 struct LammpsContact {
-  std::string springs;            ///< "kn kt gamma_n gamma_t": the law without its friction
-  std::string args;               ///< springs with the specimen's μ
-  std::string frictionless_args;  ///< the same with μ = 0 (walls of an element test)
+  double kn = 0, kt = 0;  ///< N/m
+  double gamma_n = 0;     ///< pairs' normal dashpot (1/s; γt = 0)
+  double friction = 0;    ///< the specimen's μ
   /// γn of a wall contact: a wall's m_eff is the body's mass m, so the dashpot 2β·sqrt(m·kn)
   /// is γn·m with γn = 2β·sqrt(kn/m) at the median body's m (twice the pairs' m_eff).
   double wall_gamma_n = 0;
@@ -23,8 +24,11 @@ struct LammpsContact {
 };
 LammpsContact lammps_contact(const SpecimenExtents& extents, const EngineSettings& settings);
 
-/// The contact law's arguments with friction μ (a probe's, say): "kn kt gamma_n gamma_t μ 1".
+/// The pairs' contact law with friction μ: "kn kt γn 0 μ 1" (lammps_hooke_args); μ = 0 for the
+/// walls of an element test.
 std::string lammps_contact_args(const LammpsContact& contact, double mu);
+/// The same with the specimen's μ.
+std::string lammps_contact_args(const LammpsContact& contact);
 
 /// The atom density of a body's spheres that makes their masses sum to the body's mass M:
 /// M / Σ(4/3·π·r³) (the spheres overlap, so it is not the material density).

@@ -90,7 +90,7 @@ std::vector<std::string> write_lammps_molecules(const std::vector<SpecimenBody>&
     o << "\n"
       << "neighbor    " << format_number(lc.skin) << " bin\n"
       << "neigh_modify delay 0 every 1 check yes exclude molecule/intra all\n"
-      << "pair_style  gran/hooke/history " << lc.args << "\n"
+      << "pair_style  gran/hooke/history " << lammps_contact_args(lc) << "\n"
       << "pair_coeff  * *\n"
       << "timestep    " << format_number(lc.dt) << "\n"
       << "# Gravity reaches the bodies through the rigid fix (M*g at each centroid); the atoms\n"
@@ -108,8 +108,9 @@ std::vector<std::string> write_lammps_molecules(const std::vector<SpecimenBody>&
       for (std::size_t j = 0; j < n; ++j) o << (j == k ? " 1" : " 0");
       o << " rigid rig\n";
     }
-    o << "fix         floor all wall/gran hooke/history " << lc.args << " zplane 0.0 NULL\n"
-      << "fix         cyl all wall/gran hooke/history " << lc.args << " zcylinder "
+    o << "fix         floor all wall/gran hooke/history " << lammps_contact_args(lc)
+      << " zplane 0.0 NULL\n"
+      << "fix         cyl all wall/gran hooke/history " << lammps_contact_args(lc) << " zcylinder "
       << format_number(R) << "\n"
       << "compute     rl all rigid/local rig id mol mass x y z inertiax inertiay inertiaz\n"
          "dump        bodies all local ${nsteps} deposit_bodies.*.txt c_rl[1] c_rl[2] c_rl[3] "

@@ -14,13 +14,16 @@ double soil_diameter(const SpecimenBody& b) {
   return 2.0 * b.spheres.front().radius;
 }
 
-// 2β·sqrt(kn/m_eff): clumpkit's dashpot c = 2β·sqrt(m_eff·kn) over m_eff, as LAMMPS's
-// mass_velocity damping multiplies the coefficient by each contact's m_eff.
-double dashpot(double kn, double m_eff, double beta) {
+}  // namespace
+
+double lammps_dashpot(double kn, double m_eff, double beta) {
   return 2.0 * beta * std::sqrt(kn / m_eff);
 }
 
-}  // namespace
+std::string lammps_hooke_args(double kn, double kt, double gamma_n, double mu) {
+  return format_number(kn) + " " + format_number(kt) + " " + format_number(gamma_n) + " 0 " +
+         format_number(mu) + " 1";
+}
 
 std::vector<StiffnessClass> stiffness_classes(const std::vector<SpecimenBody>& bodies,
                                               const std::string& where, double tolerance,
@@ -87,7 +90,7 @@ std::string lammps_class_pair_coeffs(const std::vector<StiffnessClass>& classes,
       const double m_eff = a.mass * b.mass / (a.mass + b.mass);
       s += "pair_coeff  " + std::to_string(first_type + i) + " " + std::to_string(first_type + j) +
            " hooke " + format_number(p.kn * f) + " " +
-           format_number(dashpot(p.kn * f, m_eff, p.damping_ratio)) +
+           format_number(lammps_dashpot(p.kn * f, m_eff, p.damping_ratio)) +
            " tangential linear_history " + format_number(p.ks * f) + " 0 " +
            format_number(p.friction) + " damping mass_velocity\n";
     }
@@ -98,7 +101,7 @@ std::string lammps_class_wall_law(const StiffnessClass& c, const dem::ContactPar
                                   bool damped) {
   const double f = dem::wall_stiffness_factor(p, c.diameter);
   return "granular hooke " + format_number(p.kn * f) + " " +
-         format_number(damped ? dashpot(p.kn * f, c.mass, p.damping_ratio) : 0.0) +
+         format_number(damped ? lammps_dashpot(p.kn * f, c.mass, p.damping_ratio) : 0.0) +
          " tangential linear_history " + format_number(p.ks * f) + " 0 " + format_number(mu) +
          " damping mass_velocity";
 }

@@ -10,6 +10,14 @@
 
 namespace clumpkit {
 
+/// LAMMPS's normal dashpot γn = 2β·sqrt(kn/m_eff): clumpkit's c = 2β·sqrt(m_eff·kn) over m_eff,
+/// as LAMMPS multiplies its coefficient by each contact's m_eff (a wall's m_eff is the body's m).
+double lammps_dashpot(double kn, double m_eff, double beta);
+
+/// The arguments of gran/hooke/history (pairs and walls): "kn kt γn 0 μ 1" (no tangential
+/// dashpot, friction limited).
+std::string lammps_hooke_args(double kn, double kt, double gamma_n, double mu);
+
 /// Spheres of one size: LAMMPS's granular styles take a stiffness per pair of atom types, not
 /// per atom, so linear scaling becomes one type per class (the class's mean diameter) of
 /// soil spheres whose diameters lie within the class's tolerance.
