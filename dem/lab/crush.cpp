@@ -64,6 +64,7 @@ void validate(const CrushOptions& o) {
   require(o.max_strain > 0 && o.max_strain < 1, "max_strain", o.max_strain, "in (0, 1)");
   require(o.sample_strain > 0 && o.sample_strain < o.max_strain, "sample_strain", o.sample_strain,
           "positive and below max_strain");
+  require(o.bed_depth >= 0 && o.bed_depth < 0.5, "bed_depth", o.bed_depth, "in [0, 0.5)");
   require(o.intact_fraction > 0.5 && o.intact_fraction < 1, "intact_fraction", o.intact_fraction,
           "in (0.5, 1)");
 }
@@ -95,6 +96,14 @@ CrushResult crush_particle(World& world, double diameter, const CrushOptions& o,
   }
   CrushResult r;
   r.gap = high - low;
+  if (o.bed_depth > 0)
+    for (Body& b : world.bodies()) {
+      double lowest = std::numeric_limits<double>::infinity();
+      for (const Vec3& v : b.vertices)
+        lowest = std::min(lowest, (b.position + b.orientation * v)[axis]);
+      b.rotation_locked = lowest <= low + o.bed_depth * r.gap;
+      r.bedded += b.rotation_locked ? 1 : 0;
+    }
   const double speed = o.strain_rate * r.gap;  // closing speed, half on each platen
   const Vec3 n = Vec3::Unit(axis);
   Wall bottom = Wall::plane(n * low, n, 0.5 * speed * n);

@@ -29,6 +29,13 @@ struct CrushOptions {
   /// The particle counts as split once no fragment (cells joined by intact bonds) holds this
   /// fraction of its mass (Huillca et al. 2021's rule: no component of ≥ 90 % of the volume).
   double intact_fraction = 0.9;
+  /// The seat: cells with a corner within bed_depth × gap of the lower platen are bedded, their
+  /// rotation locked (Body::rotation_locked), as a particle's end set in a plaster or putty bed
+  /// is held square to the platen. An elongated or platy particle stood on its end then cannot
+  /// tip over between the platens (it must break first), while every bond, the bed's included,
+  /// can still fail. 0: no seat (the particle rests on the platen, Hu et al. 2023's rig as
+  /// drawn).
+  double bed_depth = 0.0;
   PeakRule rule;
 };
 
@@ -42,6 +49,7 @@ struct CrushResult {
   double gap = 0.0;       ///< initial platen gap: the particle's extent along the axis (m)
   double timestep = 0.0;  ///< s
   std::int64_t steps = 0;
+  int bedded = 0;                 ///< cells held by the seat (bed_depth)
   int fragments = 0;              ///< fragments at the end (connected by intact bonds)
   double largest_fragment = 0.0;  ///< its mass fraction
   /// Mean difference of the two platens' forces over the samples up to the peak, over the peak
@@ -52,12 +60,12 @@ struct CrushResult {
 
 /// Crushes the particle held by `world` (its cells' bodies and bonds, e.g. crushable_particle):
 /// gravity off, two plane walls touching its extreme corners along `axis`, closing at
-/// strain_rate × gap, each moving half of it, until the peak rule is met (crushing_peak with
-/// `diameter`, the volume-equivalent diameter) or max_strain. The world's walls, contact
-/// friction (the platens', also between fragments' spheres), corner stiffness, damping, masses
-/// and time step are set here. The interrupter hears stage "crush" with travel/max travel and
-/// may stop the test (Interrupted). Throws InvalidInput for bad options, a world without corners
-/// or with walls.
+/// strain_rate × gap, each moving half of it, the lowest cells bedded (bed_depth), until the peak
+/// rule is met (crushing_peak with `diameter`, the volume-equivalent diameter) or max_strain. The
+/// world's walls, contact friction (the platens', also between fragments' spheres), corner
+/// stiffness, damping, masses and time step are set here. The interrupter hears stage "crush" with
+/// travel/max travel and may stop the test (Interrupted). Throws InvalidInput for bad options, a
+/// world without corners or with walls.
 CrushResult crush_particle(World& world, double diameter, const CrushOptions& options,
                            const Interrupter& interrupter = {});
 

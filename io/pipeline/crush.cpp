@@ -108,6 +108,7 @@ nlohmann::ordered_json crush_one(const CrushRecipe& recipe, const Job& job, std:
   rec["sample"] = job.sample;
   rec["diameter"] = diameter;
   rec["cells"] = cells.cells.size();
+  rec["bedded"] = r.bedded;
   rec["bonds"] = bonds.size();
   rec["bond_points"] = points;
   rec["gap"] = r.gap;
@@ -249,6 +250,7 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
   report["units"] = "SI: m, N, Pa (the paper's mm and MPa: × 1e3 and × 1e-6)";
   report["bond_scale"] = recipe.scale;
   report["density_scaling"] = recipe.rig.density_scaling;
+  report["bed_depth"] = recipe.rig.bed_depth;
   report["survivors"] =
       "a particle without a failure by the end of its test enters its set's fits as a "
       "right-censored sample at the largest stress it carried (least squares: Johnson's adjusted "

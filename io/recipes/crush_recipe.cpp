@@ -87,6 +87,12 @@ const RecipeSection<CrushRecipe>& crush_section() {
              open_fraction(f, field, v, x);
              if (x <= 0.5) f.fail(field, "must be above 0.5, got " + toml_show(v));
            }),
+       number_key<R>(
+           "bed_depth", "", "[0, 0.5)",
+           "the seat: cells within this fraction of the gap above the lower platen do not "
+           "rotate (a bedded end); 0 for none",
+           [](R& r) -> double& { return r.rig.bed_depth; }, &TomlFields::non_negative,
+           below(0.5, "must be below 0.5")),
        custom_key<R>("bootstrap", "", "[100, 100000]",
                      "bootstrap resamples of the Weibull fits' 90 % intervals", "1000",
                      [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {

@@ -82,6 +82,40 @@ TEST(Crush, SameBytesForOneAndTwoThreads) {
   EXPECT_EQ(one.peak.force, two.peak.force);
 }
 
+TEST(Crush, TheSeatHoldsTheLowestCellsSquareToThePlaten) {
+  double d = 0;
+  World w = small_particle(&d);
+  std::vector<Eigen::Quaterniond> before;
+  for (const Body& b : w.bodies()) before.push_back(b.orientation);
+  CrushOptions o = fast();
+  o.bed_depth = 0.2;
+  const CrushResult r = crush_particle(w, d, o);
+  ASSERT_TRUE(r.peak.found);
+  // Bedded: the cells with a corner in the lowest fifth of the gap, some but not all of them.
+  double low = 1e300;
+  for (const Body& b : w.bodies())
+    for (const Vec3& v : b.vertices) low = std::min(low, (b.position + b.orientation * v).z());
+  int locked = 0;
+  for (std::size_t k = 0; k < w.bodies().size(); ++k) {
+    const Body& b = w.bodies()[k];
+    if (!b.rotation_locked) continue;
+    ++locked;
+    // Held square: a bedded cell ends the test in the orientation it started with.
+    EXPECT_EQ(b.orientation.coeffs(), before[k].coeffs()) << "cell " << k;
+  }
+  EXPECT_EQ(locked, r.bedded);
+  EXPECT_GT(r.bedded, 0);
+  EXPECT_LT(r.bedded, static_cast<int>(w.bodies().size()));
+  // Without the seat nothing is held, and the cells turn as they are loaded.
+  World free = small_particle(&d);
+  const CrushResult f = crush_particle(free, d, fast());
+  EXPECT_EQ(f.bedded, 0);
+  int turned = 0;
+  for (std::size_t k = 0; k < free.bodies().size(); ++k)
+    turned += free.bodies()[k].orientation.coeffs() != before[k].coeffs() ? 1 : 0;
+  EXPECT_GT(turned, 0);
+}
+
 TEST(Crush, RefusesBadSettings) {
   double d = 0;
   World w = small_particle(&d);
@@ -90,6 +124,9 @@ TEST(Crush, RefusesBadSettings) {
   EXPECT_THROW(crush_particle(w, d, o), InvalidInput);
   o = CrushOptions{};
   o.axis = 3;
+  EXPECT_THROW(crush_particle(w, d, o), InvalidInput);
+  o = CrushOptions{};
+  o.bed_depth = 0.5;
   EXPECT_THROW(crush_particle(w, d, o), InvalidInput);
   o = CrushOptions{};
   o.local_damping = 1;
