@@ -1,8 +1,8 @@
 #include "dem/lab/crushable.h"
 
 #include "geom/errors.h"
+#include "geom/fill/fill.h"
 #include "geom/format.h"
-
 #include "geom/template/clump_template.h"
 
 #include <algorithm>
@@ -38,6 +38,18 @@ Body cell_body(const Cell& cell, double density) {
   return b;
 }
 
+Body cell_clump_body(const Cell& cell, double density, const FillOptions& fill_options) {
+  Body b = cell_body(cell, density);
+  const FillResult filled = fill(cell_mesh(cell), fill_options);
+  // The fill's spheres are in the parent's frame: into the body's principal frame.
+  const Eigen::Quaterniond to_body = b.orientation.conjugate();
+  b.spheres.clear();
+  for (const Sphere& s : filled.clump.spheres)
+    b.spheres.push_back(Sphere{to_body * (s.center - b.position), s.radius});
+  b.vertices.clear();
+  return b;
+}
+
 void add_cell_bonds(World& w, const std::vector<CellBond>& bonds) {
   for (const CellBond& f : bonds) {
     std::vector<Vec3> points;
@@ -52,6 +64,15 @@ World crushable_particle(const Tessellation& cells, const std::vector<CellBond>&
                          double density, const WorldOptions& options) {
   World w(options);
   for (const Cell& cell : cells.cells) w.add_body(cell_body(cell, density));
+  add_cell_bonds(w, bonds);
+  return w;
+}
+
+World crushable_clump_particle(const Tessellation& cells, const std::vector<CellBond>& bonds,
+                               double density, const FillOptions& fill,
+                               const WorldOptions& options) {
+  World w(options);
+  for (const Cell& cell : cells.cells) w.add_body(cell_clump_body(cell, density, fill));
   add_cell_bonds(w, bonds);
   return w;
 }

@@ -6,6 +6,7 @@
 #include "dem/core/world.h"
 #include "geom/cells/cell_bonds.h"
 #include "geom/cells/voronoi_cells.h"
+#include "geom/fill/fill_options.h"
 
 #include <vector>
 
@@ -20,6 +21,14 @@ namespace clumpkit::dem {
 /// a cell without volume.
 Body cell_body(const Cell& cell, double density);
 
+/// The body of one cell for a packing (a crushable particle among others): cell_body's mass
+/// properties and pose, its spheres the project's fill of the cell (fill of cell_mesh with
+/// `fill`; overshoot within its contract) so that other particles' cells meet the cell's shape,
+/// not one inner sphere, and without corners: its spheres meet every wall, as a clump's do.
+/// Spheres of two bonded cells overlap across their face; the World keeps such pairs apart while
+/// the bond holds. Throws what cell_body and fill throw.
+Body cell_clump_body(const Cell& cell, double density, const FillOptions& fill);
+
 /// Adds one bond per shared face to `world`, whose bodies 0… are the cells in order at the
 /// cells' positions (make_bond with the face's integration points and strength factor). Throws
 /// InvalidInput from add_bond.
@@ -30,5 +39,9 @@ void add_cell_bonds(World& world, const std::vector<CellBond>& bonds);
 /// from add_body and add_bond.
 World crushable_particle(const Tessellation& cells, const std::vector<CellBond>& bonds,
                          double density, const WorldOptions& options);
+/// The same with each cell a cell_clump_body.
+World crushable_clump_particle(const Tessellation& cells, const std::vector<CellBond>& bonds,
+                               double density, const FillOptions& fill,
+                               const WorldOptions& options);
 
 }  // namespace clumpkit::dem

@@ -88,3 +88,50 @@ TEST(CrushableParticle, MovedAsOneRigidPieceItCarriesNoBondForce) {
   EXPECT_TRUE(w.contacts().empty());
   for (const Bond& b : w.bonds()) EXPECT_EQ(b.points[0].state.damage, 0.0);
 }
+
+TEST(CrushableParticle, FilledCellsKeepTheCellsMassAndShapeAndBondedOnesNeverTouch) {
+  const Particle p = particle();
+  FillOptions fill;  // a few spheres on a coarse grid: what a packing of many cells affords
+  fill.spheres = 6;
+  fill.field.voxels = 16;
+  fill.voxels_from_count = false;
+  WorldOptions o;
+  o.gravity = Vec3::Zero();
+  World w = crushable_clump_particle(p.cells, p.bonds, 2650, fill, o);
+  ASSERT_EQ(w.bodies().size(), p.cells.cells.size());
+  int overlapping = 0;  // sphere pairs of bonded cells that overlap across their face
+  for (std::size_t k = 0; k < w.bodies().size(); ++k) {
+    const Body& b = w.bodies()[k];
+    const Cell& c = p.cells.cells[k];
+    EXPECT_NEAR(b.mass, 2650 * c.mass.volume, 1e-12 * b.mass);  // the cell's, not the clump's
+    EXPECT_TRUE(b.vertices.empty());                            // its spheres meet the walls
+    ASSERT_GE(b.spheres.size(), 2u);
+    ASSERT_LE(b.spheres.size(), 6u);
+    // Each sphere reaches past the cell's faces by at most the fill's tolerance: 3 % of its
+    // radius plus a voxel, far below the cell's size.
+    for (const Sphere& s : b.spheres) {
+      const Vec3 x = b.position + b.orientation * s.center;
+      for (const CellFace& f : c.faces) {
+        const PolygonProperties pp = polygon_properties(c.vertices, f.vertices);
+        if (pp.area > 0) EXPECT_GT(pp.normal.dot(pp.centroid - x), 0.9 * s.radius);
+      }
+    }
+  }
+  for (const CellBond& f : p.bonds)
+    for (const Sphere& sa : w.bodies()[f.a].spheres)
+      for (const Sphere& sb : w.bodies()[f.b].spheres) {
+        const Body &a = w.bodies()[f.a], &b = w.bodies()[f.b];
+        const double gap =
+            (a.position + a.orientation * sa.center - (b.position + b.orientation * sb.center))
+                .norm() -
+            sa.radius - sb.radius;
+        overlapping += gap < 0 ? 1 : 0;
+      }
+  EXPECT_GT(overlapping, 0);
+  // Bonded, those spheres carry no contact: at rest nothing moves and no force acts.
+  w.options().timestep = 0.2 * critical_timestep(w);
+  w.step(200);
+  EXPECT_TRUE(w.contacts().empty());
+  const double scale = 1e-9 * w.options().cohesive.sigma_n * 0.0065 * 0.0065;
+  for (const Body& b : w.bodies()) EXPECT_LT(b.force.norm(), scale);
+}
