@@ -50,30 +50,52 @@ Body cell_clump_body(const Cell& cell, double density, const FillOptions& fill_o
   return b;
 }
 
+namespace {
+
+// The bond of face f between the cells' bodies a and b at their present poses.
+Bond cell_bond(const Body& a, const Body& b, const CellBond& f) {
+  std::vector<Vec3> points;
+  std::vector<double> areas;
+  for (const FacePoint& q : f.points) points.push_back(q.position), areas.push_back(q.area);
+  return make_bond(a, b, f.a, f.b, f.normal, points, areas, f.strength_factor);
+}
+
+}  // namespace
+
 void add_cell_bonds(World& w, const std::vector<CellBond>& bonds) {
-  for (const CellBond& f : bonds) {
-    std::vector<Vec3> points;
-    std::vector<double> areas;
-    for (const FacePoint& p : f.points) points.push_back(p.position), areas.push_back(p.area);
-    w.add_bond(make_bond(w.bodies()[f.a], w.bodies()[f.b], f.a, f.b, f.normal, points, areas,
-                         f.strength_factor));
+  for (const CellBond& f : bonds) w.add_bond(cell_bond(w.bodies()[f.a], w.bodies()[f.b], f));
+}
+
+CrushableBodies crushable_bodies(const Tessellation& cells, const std::vector<CellBond>& bonds,
+                                 double density, const FillOptions* fill) {
+  CrushableBodies p;
+  for (const Cell& cell : cells.cells)
+    p.cells.push_back(fill ? cell_clump_body(cell, density, *fill) : cell_body(cell, density));
+  for (const CellBond& f : bonds) p.bonds.push_back(cell_bond(p.cells[f.a], p.cells[f.b], f));
+  return p;
+}
+
+int add_crushable(World& world, const CrushableBodies& particle, const Eigen::Quaterniond& q,
+                  const Vec3& t) {
+  const int first = static_cast<int>(world.bodies().size());
+  for (Body b : particle.cells) {
+    b.position = q * b.position + t;
+    b.orientation = q * b.orientation;  // exact for the identity: the rig's bytes unchanged
+    world.add_body(std::move(b));
   }
+  for (Bond bond : particle.bonds) {
+    bond.a += first;
+    bond.b += first;
+    world.add_bond(std::move(bond));
+  }
+  return first;
 }
 
 World crushable_particle(const Tessellation& cells, const std::vector<CellBond>& bonds,
                          double density, const WorldOptions& options) {
   World w(options);
-  for (const Cell& cell : cells.cells) w.add_body(cell_body(cell, density));
-  add_cell_bonds(w, bonds);
-  return w;
-}
-
-World crushable_clump_particle(const Tessellation& cells, const std::vector<CellBond>& bonds,
-                               double density, const FillOptions& fill,
-                               const WorldOptions& options) {
-  World w(options);
-  for (const Cell& cell : cells.cells) w.add_body(cell_clump_body(cell, density, fill));
-  add_cell_bonds(w, bonds);
+  add_crushable(w, crushable_bodies(cells, bonds, density), Eigen::Quaterniond::Identity(),
+                Vec3::Zero());
   return w;
 }
 

@@ -34,14 +34,31 @@ Body cell_clump_body(const Cell& cell, double density, const FillOptions& fill);
 /// InvalidInput from add_bond.
 void add_cell_bonds(World& world, const std::vector<CellBond>& bonds);
 
-/// A world holding the particle: one body per cell (cell_body, in cell order) and one bond per
-/// shared face (add_cell_bonds), with the given options (their cohesive law). Throws InvalidInput
-/// from add_body and add_bond.
+/// A crushable particle apart from any world: its cells' bodies where the cells are (the parent's
+/// frame), in cell order, and one bond per shared face (make_bond with the face's integration
+/// points and strength factor; body indices within the particle). A bond keeps its points and
+/// normal in its bodies' frames, so the particle may be moved rigidly anywhere
+/// (add_crushable) with its bonds at rest.
+struct CrushableBodies {
+  std::vector<Body> cells;
+  std::vector<Bond> bonds;
+};
+
+/// The particle's bodies: cell_clump_body with `fill`, or cell_body (one inner sphere and the
+/// corners, for the platens of the crushing rig) without. Throws what they throw.
+CrushableBodies crushable_bodies(const Tessellation& cells, const std::vector<CellBond>& bonds,
+                                 double density, const FillOptions* fill = nullptr);
+
+/// Adds the particle to `world` moved by x → q·x + t (its bodies' poses composed with it, its
+/// bonds renumbered to the world's bodies) and returns the index of its first body. Throws
+/// InvalidInput from add_body and add_bond.
+int add_crushable(World& world, const CrushableBodies& particle, const Eigen::Quaterniond& q,
+                  const Vec3& t);
+
+/// A world holding the particle where its cells are: one body per cell (cell_body, in cell
+/// order) and one bond per shared face, with the given options (their cohesive law). Throws
+/// InvalidInput from add_body and add_bond.
 World crushable_particle(const Tessellation& cells, const std::vector<CellBond>& bonds,
                          double density, const WorldOptions& options);
-/// The same with each cell a cell_clump_body.
-World crushable_clump_particle(const Tessellation& cells, const std::vector<CellBond>& bonds,
-                               double density, const FillOptions& fill,
-                               const WorldOptions& options);
 
 }  // namespace clumpkit::dem

@@ -97,7 +97,9 @@ TEST(CrushableParticle, FilledCellsKeepTheCellsMassAndShapeAndBondedOnesNeverTou
   fill.voxels_from_count = false;
   WorldOptions o;
   o.gravity = Vec3::Zero();
-  World w = crushable_clump_particle(p.cells, p.bonds, 2650, fill, o);
+  World w(o);
+  add_crushable(w, crushable_bodies(p.cells, p.bonds, 2650, &fill), Eigen::Quaterniond::Identity(),
+                Vec3::Zero());
   ASSERT_EQ(w.bodies().size(), p.cells.cells.size());
   int overlapping = 0;  // sphere pairs of bonded cells that overlap across their face
   for (std::size_t k = 0; k < w.bodies().size(); ++k) {
@@ -134,4 +136,34 @@ TEST(CrushableParticle, FilledCellsKeepTheCellsMassAndShapeAndBondedOnesNeverTou
   EXPECT_TRUE(w.contacts().empty());
   const double scale = 1e-9 * w.options().cohesive.sigma_n * 0.0065 * 0.0065;
   for (const Body& b : w.bodies()) EXPECT_LT(b.force.norm(), scale);
+}
+
+TEST(CrushableParticle, MovedAnywhereWithItsBondsItStaysAtRest) {
+  // The particle built where its cells are, then added turned and shifted: every cell where the
+  // rigid motion puts it, and its bonds (points and normals in the cells' frames) unloaded.
+  const Particle p = particle();
+  const CrushableBodies bodies = crushable_bodies(p.cells, p.bonds, 2650);
+  const Eigen::Quaterniond q(Eigen::AngleAxisd(1.1, Vec3(0.3, -1, 0.5).normalized()));
+  const Vec3 t(0.4, -0.2, 0.9);
+  WorldOptions o;
+  o.gravity = Vec3::Zero();
+  World w(o);
+  w.add_body(bodies.cells.front());  // a body before it: the bonds are renumbered
+  ASSERT_EQ(add_crushable(w, bodies, q, t), 1);
+  ASSERT_EQ(w.bonds().size(), p.bonds.size());
+  for (std::size_t k = 0; k < p.cells.cells.size(); ++k) {
+    const Body& b = w.bodies()[k + 1];
+    for (std::size_t v = 0; v < b.vertices.size(); ++v)
+      EXPECT_LT(
+          (b.position + b.orientation * b.vertices[v] - (q * p.cells.cells[k].vertices[v] + t))
+              .norm(),
+          1e-15);
+  }
+  w.bodies().front().position.z() += 1.0;  // out of the way
+  w.options().timestep = 0.2 * critical_timestep(w);
+  w.step(200);
+  const double scale = 1e-9 * w.options().cohesive.sigma_n * 0.0065 * 0.0065;
+  for (const Body& b : w.bodies()) EXPECT_LT(b.force.norm(), scale);
+  for (const Bond& b : w.bonds()) EXPECT_EQ(b.points[0].state.damage, 0.0);
+  EXPECT_EQ(w.bonds().front().a, p.bonds.front().a + 1);
 }
