@@ -5,10 +5,12 @@
 #include "dem/core/contact.h"
 #include "dem/core/world.h"
 #include "dem/run/stage_store.h"
+#include "dem/specimen/crushable_particles.h"
 #include "dem/specimen/specimen_particles.h"
 #include "dem/specimen/zones.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -60,6 +62,14 @@ struct CompressionSpec {
   /// to n = 0.39 and 0.38 overall gave 0.3615 and 0.3523 one diameter from the walls, an excess
   /// of 0.094 and 0.091 diameters.
   double wall_excess = 0.09;
+  /// A crushable specimen: every class drawn as crushable particles of this material
+  /// (crushable_particles: bonded Voronoi cells, each filled with spheres) instead of library
+  /// clumps or soil spheres, their bonds following `cohesive`. While the container closes each
+  /// particle moves as one piece (its centroid mapped, its cells translated with it), so its
+  /// bonds are not strained by the map; they stay intact unless the packing's contacts break
+  /// them. Not with zones.
+  std::optional<CrushableMaterial> crushable;
+  CohesiveParams cohesive;
 };
 
 /// One region of a zoned specimen, as built.

@@ -139,6 +139,29 @@ std::string compression_fingerprint(const CompressionSpec& s) {
     line("zones.mixed_porosity", format_number(s.mixed_porosity));
     line("zones.wall_excess", format_number(s.wall_excess));
   }
+  if (s.crushable) {  // absent for rigid particles: their fingerprints stay
+    const CrushableMaterial& m = *s.crushable;
+    const auto numbers = [](std::initializer_list<double> v) {
+      std::string t;
+      for (double x : v) t += (t.empty() ? "" : " ") + format_number(x);
+      return t;
+    };
+    line("crushable.shape",
+         numbers({double(m.shape.planes), m.shape.E, m.shape.F, m.shape.offset_min,
+                  m.shape.offset_max, double(m.shape.sphere_level)}));
+    line("crushable.cells", numbers({double(m.cells.count), m.cells.cell_size,
+                                     double(m.cells.lloyd), double(m.face_subdivision)}));
+    line("crushable.strength", numbers({double(static_cast<int>(m.strength.kind)), m.strength.a,
+                                        m.strength.b, m.strength.min, m.strength.max}));
+    line("crushable.fill",
+         numbers({double(m.fill.spheres), m.fill.coverage, m.fill.min_radius,
+                  double(m.fill.field.voxels), m.fill.field.voxel_size, m.fill.field.max_voxels,
+                  double(m.fill.voxels_from_count), m.fill.max_overshoot, double(m.fill.refine),
+                  double(m.fill.refine_iterations)}));
+    line("crushable.density", format_number(m.density));
+    const CohesiveParams& c = s.cohesive;
+    line("crushable.bond", numbers({c.kn, c.kt, c.sigma_n, c.sigma_t, c.g_n, c.g_t, c.friction}));
+  }
   return fingerprint(line.text());
 }
 

@@ -1,0 +1,108 @@
+#include "dem/specimen/crushable_particles.h"
+
+#include "geom/cells/cell_bonds.h"
+#include "geom/errors.h"
+#include "geom/format.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace clumpkit::dem {
+
+namespace {
+
+// The random streams of particle i: 3i + 1 its shape, 3i + 2 its cells' seeds, 3i + 3 its
+// faces' strength factors.
+CrushableBodies make_particle(double diameter, const CrushableMaterial& m, std::uint64_t seed,
+                              std::uint64_t i) {
+  PolyhedronParams shape = m.shape;
+  shape.diameter = diameter;
+  Rng shape_rng = Rng::stream(seed, 3 * i + 1), cell_rng = Rng::stream(seed, 3 * i + 2),
+      bond_rng = Rng::stream(seed, 3 * i + 3);
+  const Mesh parent = make_polyhedron(shape, shape_rng);
+  const Tessellation cells = voronoi_cells(parent, m.cells, cell_rng);
+  const std::vector<CellBond> bonds = cell_bonds(cells, m.strength, bond_rng, m.face_subdivision);
+  return crushable_bodies(cells, bonds, m.density, &m.fill);
+}
+
+}  // namespace
+
+void validate(const CrushableMaterial& m) {
+  validate(m.shape);
+  validate(m.cells);
+  validate(m.strength, "crushable.strength_factor");
+  validate(m.fill);
+  if (!(m.density > 0 && std::isfinite(m.density)))
+    throw InvalidInput("crushable particles: density must be positive, got " +
+                       format_number(m.density));
+  if (m.face_subdivision < 0 || m.face_subdivision > 3)
+    throw InvalidInput("crushable particles: face_subdivision must be in [0, 3], got " +
+                       std::to_string(m.face_subdivision));
+}
+
+std::vector<CrushableBodies> crushable_particles(const std::vector<ParticleClass>& classes,
+                                                 double solid_volume,
+                                                 const CrushableMaterial& material,
+                                                 std::uint64_t seed, Rng& rng) {
+  validate(material);
+  const std::vector<double> goal =
+      class_volumes(classes, solid_volume, material.density, material.density);
+  std::vector<double> diameters;
+  for (std::size_t k = 0; k < classes.size(); ++k) {
+    const ParticleClass& c = classes[k];
+    if (!c.rock)
+      throw InvalidInput("crushable particles: class " + std::to_string(k) + " (" +
+                         format_number(c.min_size) + "–" + format_number(c.max_size) +
+                         " m) is soil; a crushable specimen holds rock particles only");
+    if (!(c.min_size > 0) || !(c.max_size >= c.min_size))
+      throw InvalidInput("crushable particles: class " + std::to_string(k) + " has bad sizes");
+    double volume = 0;
+    while (volume < goal[k]) {
+      const double d = rng.uniform(c.min_size, c.max_size);
+      const double v = M_PI / 6 * d * d * d;
+      if (volume + v - goal[k] > goal[k] - volume) break;
+      volume += v;
+      diameters.push_back(d);
+    }
+  }
+  // Every parent's cell count first: a cell size at or above a particle is refused before any
+  // work (cell_count names the sizes).
+  for (double d : diameters) cell_count(material.cells, M_PI / 6 * d * d * d);
+  std::vector<CrushableBodies> particles(diameters.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, diameters.size(), 1),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i != r.end(); ++i)
+                        particles[i] = make_particle(diameters[i], material, seed, i);
+                    });
+  // Largest first (stable: equal sizes keep the draw order).
+  std::vector<std::size_t> order(particles.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return diameters[a] > diameters[b]; });
+  std::vector<CrushableBodies> sorted;
+  sorted.reserve(particles.size());
+  for (std::size_t i : order) sorted.push_back(std::move(particles[i]));
+  return sorted;
+}
+
+PlacementItem placement_item(const CrushableBodies& particle) {
+  PlacementItem item;
+  for (const Body& b : particle.cells)
+    for (const Sphere& s : b.spheres) {
+      item.spheres.push_back(Sphere{b.position + b.orientation * s.center, s.radius});
+      item.bounding_radius =
+          std::max(item.bounding_radius, item.spheres.back().center.norm() + s.radius);
+    }
+  return item;
+}
+
+double particle_volume(const CrushableBodies& particle) {
+  double v = 0;
+  for (const Body& b : particle.cells) v += b.volume;
+  return v;
+}
+
+}  // namespace clumpkit::dem
