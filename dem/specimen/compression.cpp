@@ -331,10 +331,15 @@ void measure_zones(const CompressionSpec& spec, const Prism& prism, World& world
 
 // The particles of the requested container: zoned, each region's for its own volume and
 // porosity (zoned_particles, `zones` filled with what each was to hold, `goal` their solid
-// volume); else one draw of the classes for `goal`.
+// volume); crushable, into `crushable`; else one draw of the classes for `goal`.
 ZonedParticles draw_particles(const CompressionSpec& spec, Rng& particle_rng, double& goal,
-                              std::vector<ZoneResult>& zones) {
+                              std::vector<ZoneResult>& zones,
+                              std::vector<CrushableBodies>& crushable) {
   ZonedParticles in_zones;
+  if (spec.crushable) {
+    crushable = crushable_particles(spec.classes, goal, *spec.crushable, spec.seed, particle_rng);
+    return in_zones;
+  }
   if (zoned(spec)) {
     const ZoneVolumes v = zone_volumes(spec.zones, prism_of(spec, spec.size));
     const double n_mixed = spec.mixed_porosity > 0.0 ? spec.mixed_porosity : spec.porosity;
@@ -405,12 +410,8 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const StageCont
   Rng particle_rng = Rng::stream(spec.seed, particles_stream);
   double goal = (1.0 - spec.porosity) * container_volume(spec, spec.size);
   std::vector<ZoneResult> zones;
-  ZonedParticles in_zones;
   std::vector<CrushableBodies> crushable;
-  if (spec.crushable)
-    crushable = crushable_particles(spec.classes, goal, *spec.crushable, spec.seed, particle_rng);
-  else
-    in_zones = draw_particles(spec, particle_rng, goal, zones);
+  const ZonedParticles in_zones = draw_particles(spec, particle_rng, goal, zones, crushable);
   if (in_zones.bodies.empty() && crushable.empty())
     throw InvalidInput("compression: the container holds no particle");
   double solid = 0;
