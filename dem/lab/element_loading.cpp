@@ -1,5 +1,6 @@
 #include "dem/lab/element_loading.h"
 
+#include "dem/measure/fragment_sizes.h"
 #include "dem/measure/strain_rate.h"
 #include "dem/measure/stress.h"
 #include "geom/errors.h"
@@ -118,6 +119,7 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
     c.unbalanced = mean_unbalanced_force_ratio(world);
     // The rate integrates to the gauge's logarithmic strain; as the others, engineering.
     c.interior_axial_strain = -std::expm1(-st.interior_strain);
+    if (!s.initial_grading.empty()) measure_breakage(world, s, c);
     return c;
   };
   if (st.phase == Phase::loading) {
@@ -176,6 +178,35 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
     st.phase = Phase::done;
   }
   return result(false);
+}
+
+void measure_breakage(const World& world, const ElementTestSettings& s, CurveRow& row) {
+  const std::vector<Body>& bodies = world.bodies();
+  const int n = static_cast<int>(bodies.size());
+  const std::vector<Bond>& bonds = world.bonds();
+  std::vector<Bond> joined = bonds;  // the particles: every bond as if intact
+  for (Bond& b : joined)
+    for (BondPoint& p : b.points) p.state = CohesiveState{};
+  const std::vector<int> particle = fragments(n, joined), piece = fragments(n, bonds);
+  // A particle is broken when one of its bodies lies in another fragment than its first body.
+  std::vector<int> first_piece(n, -1);
+  std::vector<char> broken(n, 0);
+  for (int k = 0; k < n; ++k) {
+    int& f = first_piece[particle[k]];
+    if (f < 0) f = piece[k];
+    if (piece[k] != f) broken[particle[k]] = 1;
+  }
+  row.bonds_broken = 0;
+  for (const Bond& b : bonds) row.bonds_broken += b.holds() ? 0 : 1;
+  row.fragments = row.particles_broken = 0;
+  for (int k = 0; k < n; ++k) {
+    row.fragments += piece[k] == k ? 1 : 0;
+    row.particles_broken += broken[k];
+  }
+  const std::vector<SievedPiece> now = fragment_pieces(s.reference, bonds);
+  row.hardin_br = hardin_breakage(s.initial_grading, now, s.breakage_limits);
+  row.einav_b = einav_breakage(s.initial_grading, now, s.breakage_limits);
+  row.marsal_bg = marsal_breakage(s.initial_grading, now, s.sieves);
 }
 
 double tangent_modulus(const std::vector<CurveRow>& curve, double (*stress)(const CurveRow&),

@@ -5,6 +5,7 @@
 #include "dem/core/world.h"
 #include "dem/lab/cell.h"
 #include "dem/lab/servo.h"
+#include "dem/measure/breakage.h"
 #include "dem/run/stage_store.h"
 
 #include <array>
@@ -54,6 +55,14 @@ struct ElementTestSettings {
   /// specimen grows as λ^1.5).
   double servo_strain_rate = 0.0;
   int record_every = 200;  ///< steps between curve rows
+  /// A crushable specimen (bonded cells): its bodies as built (the reference poses: a fragment
+  /// is sized from its cells there, so cells that only deform their bonds change no size), its
+  /// grading then (fragment_pieces) and the sieves of Marsal's Bg. Empty: no breakage columns
+  /// (rigid bodies). The world's bodies must keep their indices (sort_every 0).
+  std::vector<Body> reference;
+  std::vector<SievedPiece> initial_grading;
+  std::vector<double> sieves;
+  BreakageLimits breakage_limits;
 };
 
 /// One row of the curve. Strains and stresses compression positive; strains from the start of
@@ -68,7 +77,15 @@ struct CurveRow {
   double axial_stress = 0, lateral_stress = 0, p = 0, q = 0;
   double porosity = 0, coordination = 0, unbalanced = 0;
   double interior_axial_strain = 0;
+  /// Breakage (ElementTestSettings::initial_grading given; else 0): bonds with every point
+  /// failed, fragments (bodies joined by intact bonds), particles of the specimen (bodies joined
+  /// by any bond) in more than one fragment, and the indices against the initial grading.
+  double bonds_broken = 0, fragments = 0, particles_broken = 0;
+  double hardin_br = 0, einav_b = 0, marsal_bg = 0;
 };
+
+/// The breakage columns of `row` for the world's bodies and bonds (settings as above).
+void measure_breakage(const World& world, const ElementTestSettings& settings, CurveRow& row);
 
 /// Where a test is: everything besides the world that its later steps depend on, so a test
 /// stopped between two records (or consolidation checks) and saved with its world continues to

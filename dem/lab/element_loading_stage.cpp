@@ -19,14 +19,27 @@ namespace clumpkit::dem {
 namespace {
 
 constexpr const char* kStage = "test";
-constexpr int kRowFields = 11;
+constexpr int kRowFields = 17;
 
 // The curve row's numbers in file order (the step is the first, written as a double: exact up
 // to 2^53 steps).
 std::array<double*, kRowFields - 1> row_fields(CurveRow& c) {
-  return {
-      &c.axial_strain, &c.volumetric_strain, &c.axial_stress, &c.lateral_stress,       &c.p, &c.q,
-      &c.porosity,     &c.coordination,      &c.unbalanced,   &c.interior_axial_strain};
+  return {&c.axial_strain,
+          &c.volumetric_strain,
+          &c.axial_stress,
+          &c.lateral_stress,
+          &c.p,
+          &c.q,
+          &c.porosity,
+          &c.coordination,
+          &c.unbalanced,
+          &c.interior_axial_strain,
+          &c.bonds_broken,
+          &c.fragments,
+          &c.particles_broken,
+          &c.hardin_br,
+          &c.einav_b,
+          &c.marsal_bg};
 }
 
 // How far the test is (0..1): the consolidation is the first tenth (by its step cap), the

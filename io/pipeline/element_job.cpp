@@ -9,6 +9,7 @@
 #include "io/base/text.h"
 #include "io/formats/checkpoint.h"
 #include "io/formats/specimen_csv.h"
+#include "io/pipeline/breakage_outputs.h"
 #include "io/pipeline/consolidated.h"
 #include "io/pipeline/lab_setup.h"
 #include "io/pipeline/stage_files.h"
@@ -93,6 +94,8 @@ LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specime
 
   dem::ElementTestSettings s = recipe.settings;
   s.kind = kind;
+  track_breakage(specimen.world, s);  // a crushable specimen's grading as built
+  const bool crushable = !s.initial_grading.empty();
   const auto consolidated = [&](const dem::CellSpecimen& c, const dem::ElementTestState& st) {
     if (options.save_consolidated)
       write_consolidated(out / "consolidated", c.world, c.cell, spec_report, o.contact,
@@ -110,13 +113,18 @@ LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specime
 
   write_file_atomically((out / "curve.csv").string(), [&](std::ostream& f) {
     f << "step,axial_strain,volumetric_strain,axial_stress_pa,radial_stress_pa,p_pa,q_pa,"
-         "porosity,coordination_number,unbalanced_force,interior_axial_strain\n";
-    for (const dem::CurveRow& c : r.curve)
+         "porosity,coordination_number,unbalanced_force,interior_axial_strain"
+      << (crushable ? breakage_header() : "") << "\n";
+    const std::vector<double> work = input_work(r.curve);
+    for (std::size_t k = 0; k < r.curve.size(); ++k) {
+      const dem::CurveRow& c = r.curve[k];
       f << c.step << "," << format_number(c.axial_strain) << ","
         << format_number(c.volumetric_strain) << "," << format_number(c.axial_stress) << ","
         << format_number(c.lateral_stress) << "," << format_number(c.p) << "," << format_number(c.q)
         << "," << format_number(c.porosity) << "," << format_number(c.coordination) << ","
-        << format_number(c.unbalanced) << "," << format_number(c.interior_axial_strain) << "\n";
+        << format_number(c.unbalanced) << "," << format_number(c.interior_axial_strain)
+        << (crushable ? breakage_values(c, work[k]) : "") << "\n";
+    }
   });
 
   nlohmann::ordered_json rep;
@@ -207,6 +215,7 @@ LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specime
       (out / "curve.png").string(), plot, x_label, y_label,
       std::string(kind_name(kind)) + " test, " + format_number(s.confining / 1e3, 4) + " kPa");
   std::vector<std::string> files = {"curve.csv", "curve.png", "report.json"};
+  if (crushable) write_breakage_outputs(out, world, s, r.curve, rep, files);
   if (options.save_consolidated) files.push_back("consolidated/");
   return finish_test_job(setup, out_dir, recipe, kind_name(kind), specimen_dir, rep, files,
                          options.resume, r.resumed);

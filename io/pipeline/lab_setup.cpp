@@ -7,12 +7,14 @@
 #include "io/base/atomic_file.h"
 #include "io/base/json_file.h"
 #include "io/base/text.h"
+#include "io/formats/bonds_csv.h"
 #include "io/formats/specimen_csv.h"
 #include "io/pipeline/manifest.h"
 #include "io/pipeline/output_dir.h"
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace clumpkit {
 
@@ -105,6 +107,13 @@ TestSetup setup_test(const std::string& kind, const std::string& specimen_dir,
   fp.add(std::string_view(recipe.text));
   fp.add(std::string_view(read_file((src / "specimen.csv").string())));
   fp.add(std::string_view(read_file(report_path)));
+  // A crushable specimen's bonds between its cells' bodies (bonds.csv beside specimen.csv).
+  const fs::path bonds_path = src / "bonds.csv";
+  std::optional<SpecimenBonds> bonds;
+  if (fs::exists(bonds_path)) {
+    bonds = read_bonds_csv(bonds_path.string(), rows.size());
+    fp.add(std::string_view(read_file(bonds_path.string())));
+  }
   fp.add(std::string_view(CLUMPKIT_VERSION));
   const std::string fingerprint = fp.hex();
 
@@ -120,8 +129,14 @@ TestSetup setup_test(const std::string& kind, const std::string& specimen_dir,
       z_hi = std::max(z_hi, s.center.z() + s.radius);
     }
   }
-  const dem::WorldOptions o =
+  dem::WorldOptions o =
       dem::element_test_world_options(bodies, contact_law(spec_report, report_path, recipe));
+  if (bonds) {
+    o.cohesive = bonds->law;
+    // Bodies keep their indices: the breakage measures size each fragment from its cells as
+    // built (ElementTestSettings::reference).
+    o.sort_every = 0;
+  }
   // Refused before anything is written unless the user asks for a dynamic test.
   const double inertial = dem::inertial_number(bodies, strain_rate, recipe.settings.confining);
   if (inertial > 1e-2 && !allow_dynamic)
@@ -132,6 +147,8 @@ TestSetup setup_test(const std::string& kind, const std::string& specimen_dir,
 
   dem::CellSpecimen specimen{dem::World(o), {}};
   for (dem::Body& b : bodies) specimen.world.add_body(std::move(b));
+  if (bonds)
+    for (dem::Bond& b : bonds->bonds) specimen.world.add_bond(std::move(b));
   specimen.cell = test_cell(specimen.world, spec_report, report_path, z_lo, z_hi);
   specimen.world.options().timestep =
       recipe.timestep_safety * dem::critical_timestep(specimen.world);

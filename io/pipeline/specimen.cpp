@@ -1,8 +1,10 @@
 #include "io/pipeline/specimen.h"
 
+#include "dem/measure/fragment_sizes.h"
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "io/base/atomic_file.h"
+#include "io/formats/bonds_csv.h"
 #include "io/formats/library_table.h"
 #include "io/formats/specimen_csv.h"
 #include "io/formats/specimen_vtp.h"
@@ -58,6 +60,23 @@ SpecimenJobResult compress_into(const SpecimenRecipe& recipe, const std::string&
   write_specimen_csv((staging / "specimen.csv").string(), bodies);
   write_specimen_vtp((staging / "specimen.vtp").string(), bodies);
   nlohmann::ordered_json report = compression_report(recipe, result);
+  if (recipe.crushable) {  // the bonds between the cells, beside specimen.csv
+    const dem::World& w = result.world;
+    write_bonds_csv((staging / "bonds.csv").string(), {w.options().cohesive, w.bonds()});
+    const dem::CohesiveParams& l = w.options().cohesive;
+    report["crushable"] = {{"particles", dem::fragment_pieces(w.bodies(), w.bonds()).size()},
+                           {"cells", w.bodies().size()},
+                           {"bonds", w.bonds().size()},
+                           {"bond_scale", recipe.bond_scale},
+                           {"bond_law",
+                            {{"kn", l.kn},
+                             {"kt", l.kt},
+                             {"sigma_n", l.sigma_n},
+                             {"sigma_t", l.sigma_t},
+                             {"g_n", l.g_n},
+                             {"g_t", l.g_t},
+                             {"friction", l.friction}}}};
+  }
   if (!library.empty()) report["library"] = library_entry(library, staging, out_dir);
   write_report_and_manifest(staging, recipe, report, started);
   fs::remove_all(staging / "checkpoints");

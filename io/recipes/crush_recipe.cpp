@@ -15,11 +15,7 @@ namespace {
 
 int bounded(const TomlFields& f, const toml::node& n, const std::string& field, long long lo,
             long long hi) {
-  const long long v = f.integer(n, field);
-  if (v < lo || v > hi)
-    f.fail(field, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
-                      toml_show(n));
-  return static_cast<int>(v);
+  return f.integer_in(n, field, lo, hi);
 }
 
 // A number in (0, 1): "must be in (0, 1), got VALUE" otherwise.
@@ -109,7 +105,9 @@ void read_crush(const TomlFields& f, const toml::node& t, CrushRecipe& r) {
     f.fail("crush.sample_strain", "must be below crush.max_strain");
 }
 
-void read_cells(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
+}  // namespace
+
+void read_cells_table(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
   for (const auto& [key, v] : t) {
     const std::string k(key.str()), field = "cells." + k;
     if (k == "cell_size") {
@@ -132,8 +130,6 @@ void read_cells(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
     }
   }
 }
-
-}  // namespace
 
 const RecipeSection<CrushRecipe>& bond_section() {
   using R = CrushRecipe;
@@ -164,9 +160,7 @@ const RecipeSection<CrushRecipe>& bond_section() {
   return s;
 }
 
-namespace {
-
-void read_bond(const TomlFields& f, const toml::node& t, CrushRecipe& r) {
+void read_bond_table(const TomlFields& f, const toml::node& t, CrushRecipe& r) {
   read_section(f, t, bond_section(), r);
   try {
     dem::validate_values(r.law);
@@ -174,6 +168,23 @@ void read_bond(const TomlFields& f, const toml::node& t, CrushRecipe& r) {
     f.fail("bond", e.what());
   }
 }
+
+void apply_bond_scale(const TomlFields& f, CrushRecipe& r) {
+  // The calibration factor s (the paper's single factor on σ and G): strengths × s, energies ×
+  // s², so that the openings at onset and at failure both scale by s and the softening keeps its
+  // shape (G × s would leave less than the elastic energy at onset for s above about 1.1).
+  r.law.sigma_n *= r.scale;
+  r.law.sigma_t *= r.scale;
+  r.law.g_n *= r.scale * r.scale;
+  r.law.g_t *= r.scale * r.scale;
+  try {
+    dem::validate(r.law, upper_bound(r.strength));
+  } catch (const InvalidInput& e) {
+    f.fail("bond", e.what());
+  }
+}
+
+namespace {
 
 CrushSet read_set(const TomlFields& f, const toml::table& t, const std::string& prefix) {
   CrushSet s;
@@ -264,9 +275,9 @@ CrushRecipe parse_crush_recipe(const std::string& text, const std::string& path)
     } else if (k == "crush") {
       read_crush(f, f.table(val, k), r);
     } else if (k == "cells") {
-      read_cells(f, f.table(val, k), r);
+      read_cells_table(f, f.table(val, k), r);
     } else if (k == "bond") {
-      read_bond(f, f.table(val, k), r);
+      read_bond_table(f, f.table(val, k), r);
     } else if (k == "set") {
       const auto* sets = val.as_array();
       if (!sets) f.fail(k, "expected [[set]] tables, got " + toml_show(val));
@@ -295,18 +306,7 @@ CrushRecipe parse_crush_recipe(const std::string& text, const std::string& path)
       f.fail("cells.cell_size", format_number(r.cells.cell_size) + " gives set \"" + s.name +
                                     "\" more than 100000 cells");
   }
-  // The calibration factor s (the paper's single factor on σ and G): strengths × s, energies ×
-  // s², so that the openings at onset and at failure both scale by s and the softening keeps its
-  // shape (G × s would leave less than the elastic energy at onset for s above about 1.1).
-  r.law.sigma_n *= r.scale;
-  r.law.sigma_t *= r.scale;
-  r.law.g_n *= r.scale * r.scale;
-  r.law.g_t *= r.scale * r.scale;
-  try {
-    dem::validate(r.law, upper_bound(r.strength));
-  } catch (const InvalidInput& e) {
-    f.fail("bond", e.what());
-  }
+  apply_bond_scale(f, r);
   return r;
 }
 

@@ -63,6 +63,14 @@ struct CrushRecipe {
 CrushRecipe parse_crush_recipe(const std::string& text, const std::string& path);
 CrushRecipe read_crush_recipe(const std::string& path);
 
+/// The [cells] and [bond] tables of a crushing recipe, read into `r` (a crushable specimen's
+/// recipe reads the same tables); apply_bond_scale then multiplies the strengths by [bond] scale
+/// and the energies by its square and checks the law against the strength factors' upper
+/// bound. Each throws InvalidInput naming the file, field and value.
+void read_cells_table(const TomlFields& f, const toml::table& t, CrushRecipe& r);
+void read_bond_table(const TomlFields& f, const toml::node& t, CrushRecipe& r);
+void apply_bond_scale(const TomlFields& f, CrushRecipe& r);
+
 /// The tables of the [crush] and [bond] sections (io/recipes/section_table.h).
 const RecipeSection<CrushRecipe>& crush_section();
 const RecipeSection<CrushRecipe>& bond_section();

@@ -54,6 +54,10 @@ dem::CompressionSpec compression_spec(const SpecimenRecipe& r,
   c.seed = r.seed;
   c.zones = r.zones;
   c.mixed_porosity = r.mixed_porosity;
+  if (r.crushable) {
+    c.crushable = r.crushable_material;
+    c.cohesive = r.bond;
+  }
   return c;
 }
 

@@ -3,6 +3,7 @@
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "io/base/text.h"
+#include "io/recipes/crush_recipe.h"
 #include "io/recipes/section_table.h"
 #include "io/recipes/toml_fields.h"
 
@@ -119,6 +120,7 @@ void read_zones(const TomlFields& f, const toml::node& n, SpecimenRecipe& r, boo
 // What the sections said that the checks across sections need.
 struct Seen {
   bool gradation = false, diameter = false, size = false, angle = false;
+  bool cells = false, bond = false;
   bool zones = false, zone_origin = false;
   std::vector<std::string> deposition_keys;  // keys that only the deposition method uses
 };
@@ -218,15 +220,77 @@ void read_fines(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
 // [rock]: library or recipe, resolved by resolve_library.
 void read_rock(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
   const std::string k = "rock";
+  dem::CrushableMaterial& m = r.crushable_material;
   for (const auto& [rk, rv] : f.table(val, k)) {
     const std::string g(rk.str()), field = "rock." + g;
-    if (g == "library")
+    if (g == "library") {
       r.library = f.string(rv, field);
-    else if (g == "recipe")
+    } else if (g == "recipe") {
       r.library_recipe = f.string(rv, field);
-    else
-      f.fail(field, "unknown key (known: library, recipe)");
+    } else if (g == "crushable") {
+      const auto* b = rv.as_boolean();
+      if (!b) f.fail(field, "expected true or false, got " + toml_show(rv));
+      r.crushable = b->get();
+    } else if (g == "planes") {
+      m.shape.planes = f.integer_in(rv, field, 4, 10000);
+    } else if (g == "E") {
+      m.shape.E = f.positive(rv, field);
+    } else if (g == "F") {
+      m.shape.F = f.positive(rv, field);
+    } else if (g == "offset_min") {
+      m.shape.offset_min = f.positive(rv, field);
+    } else if (g == "offset_max") {
+      m.shape.offset_max = f.positive(rv, field);
+    } else if (g == "spheres_per_cell") {
+      m.fill.spheres = f.integer_in(rv, field, 1, 100);
+    } else if (g == "cell_voxels") {
+      m.fill.field.voxels = f.integer_in(rv, field, 8, 200);
+    } else {
+      f.fail(field,
+             "unknown key (known: library, recipe, crushable, planes, E, F, offset_min, "
+             "offset_max, spheres_per_cell, cell_voxels)");
+    }
   }
+}
+
+// A crushable specimen's material from [rock], [cells] and [bond]: compression only, every
+// class rock, no zones, no library; the cells' and the fill's settings checked.
+void check_crushable(const TomlFields& f, SpecimenRecipe& r, const Seen& seen,
+                     CrushRecipe& tables) {
+  if (!r.crushable) {
+    if (seen.cells || seen.bond)
+      f.fail(seen.cells ? "cells" : "bond", "is for crushable particles ([rock] crushable = true)");
+    return;
+  }
+  if (!r.compression) f.fail("rock.crushable", "needs preparation.method = \"compression\"");
+  if (seen.zones) f.fail("rock.crushable", "a crushable specimen cannot be zoned");
+  if (!r.library.empty() || !r.library_recipe.empty())
+    f.fail("rock", "crushable particles are made from [cells], not from a library");
+  if (std::abs(r.rock_mass_fraction - 1.0) > 1e-12)
+    f.fail("rock_mass_fraction",
+           "a crushable specimen is all rock (1, with soil_rock_threshold at or below the "
+           "finest sieve), got " +
+               format_number(r.rock_mass_fraction));
+  apply_bond_scale(f, tables);
+  dem::CrushableMaterial& m = r.crushable_material;
+  m.cells = tables.cells;
+  m.face_subdivision = tables.face_subdivision;
+  m.strength = tables.strength;
+  m.density = r.rock_density;
+  m.fill.voxels_from_count = false;
+  r.bond = tables.law;
+  r.bond_scale = tables.scale;
+  try {
+    dem::validate(m);
+  } catch (const InvalidInput& e) {
+    f.fail("rock", e.what());
+  }
+  // A cell as large as the smallest parent leaves it one cell: refused before any work.
+  const double d = r.sieves.back();
+  if (std::round(std::pow(d / m.cells.cell_size, 3)) < 2 && m.cells.count == 0)
+    f.fail("cells.cell_size", format_number(m.cells.cell_size) +
+                                  " leaves the smallest particles (" + format_number(d) +
+                                  " m) fewer than 2 cells");
 }
 
 // A number in [0, 1): "must be in [0, 1), got VALUE" otherwise.
@@ -363,10 +427,14 @@ double check_sizes(const TomlFields& f, const SpecimenRecipe& r) {
                                ? *std::min_element(r.container_size.begin(), r.container_size.end())
                                : std::min(r.container_diameter, r.container_height);
   if (r.compression) {
-    if (4 * r.sieves.front() > narrowest)
+    // Crushable classes are sized by the parents' volume-equivalent diameter D, above their
+    // sieve size (intermediate dimension): three D across hold about four sieve sizes.
+    const double across = r.crushable ? 3 : 4;
+    if (across * r.sieves.front() > narrowest)
       f.fail(r.cuboid ? "container.size" : "container.diameter",
-             "must be at least four largest particles (" + format_number(r.sieves.front()) +
-                 " m) across, got " + format_number(narrowest));
+             "must be at least " + std::string(r.crushable ? "three" : "four") +
+                 " largest particles (" + format_number(r.sieves.front()) + " m) across, got " +
+                 format_number(narrowest));
   } else if (2 * r.sieves.front() >= r.container_diameter)
     f.fail("container.diameter", "not wider than twice the largest particle (" +
                                      format_number(r.sieves.front()) + " m), got " +
@@ -438,6 +506,11 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
   r.path = path;
   r.text = text;
   Seen seen;
+  CrushRecipe tables;  // [cells] and [bond] of crushable particles, with the crushing defaults
+  tables.strength = default_strength_factor();
+  tables.cells.cell_size = 0.0065;
+  r.crushable_material.fill.spheres = 6;
+  r.crushable_material.fill.field.voxels = 16;
   for (const auto& [key, val] : root) {
     const std::string k(key.str());
     if (k == "target_relative_density" || k == "layers" || k == "calibration_frictions")
@@ -468,6 +541,12 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
       read_fines(f, val, r);
     } else if (k == "rock") {
       read_rock(f, val, r);
+    } else if (k == "cells" || k == "bond") {
+      (k == "cells" ? seen.cells : seen.bond) = true;
+      if (k == "cells")  // the crushing recipes' tables
+        read_cells_table(f, f.table(val, k), tables);
+      else
+        read_bond_table(f, f.table(val, k), tables);
     } else if (k == "density") {
       read_section(f, val, density_section(), r);
     } else if (k == "contact") {
@@ -486,16 +565,17 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
       f.fail(
           k,
           "unknown key (known: seed, name, description, container, gradation, soil_rock_threshold, "
-          "rock_mass_fraction, fines, rock, density, contact, preparation, zones, "
+          "rock_mass_fraction, fines, rock, cells, bond, density, contact, preparation, zones, "
           "target_relative_density, layers, calibration_frictions)");
     }
   }
 
   check_preparation(f, r, seen);
   check_gradation(f, r, seen);
+  check_crushable(f, r, seen, tables);
   const double rock = check_sizes(f, r);
   check_zones(f, r, seen);
-  resolve_library(f, r, rock);
+  if (!r.crushable) resolve_library(f, r, rock);
   return r;
 }
 

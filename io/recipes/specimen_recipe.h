@@ -65,7 +65,17 @@ struct SpecimenRecipe {
   double rock_mass_fraction = 0.4;    ///< rock mass / total mass, 40 % in Jin et al. 2017
   double fines_below = 0.005;         ///< soil finer than this ...
   double fines_min = 0.005, fines_max = 0.010;  ///< ... is replaced by the same mass in this range
-  std::string library;                          ///< directory made by `clumpkit library`, or
+  /// [rock] crushable = true (compression only, every class rock): the rock particles are
+  /// crushable — parents of Hu et al. 2023's kind (planes, E, F, offset_min, offset_max of
+  /// [rock]; the classes' sizes their volume-equivalent diameters) cut into the cells of
+  /// [cells], each cell filled with spheres_per_cell spheres on a grid of cell_voxels voxels
+  /// across, bonded by the law of [bond] (the tables of the crushing recipes, scale applied)
+  /// — instead of library clumps.
+  bool crushable = false;
+  dem::CrushableMaterial crushable_material;
+  dem::CohesiveParams bond;  ///< strengths × scale, energies × scale²
+  double bond_scale = 1.0;
+  std::string library;  ///< directory made by `clumpkit library`, or
   std::string
       library_recipe;  ///< a shapes recipe with [fill] to build one (paths relative to the recipe)
   double soil_density = 2700.0, rock_density = 2870.0;  ///< [kg/m³]

@@ -50,6 +50,15 @@ long long TomlFields::integer(const toml::node& n, const std::string& field) con
   return i->get();
 }
 
+int TomlFields::integer_in(const toml::node& n, const std::string& field, long long lo,
+                           long long hi) const {
+  const long long v = integer(n, field);
+  if (v < lo || v > hi)
+    fail(field, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+                    toml_show(n));
+  return static_cast<int>(v);
+}
+
 std::string TomlFields::string(const toml::node& n, const std::string& field) const {
   const auto* s = n.as_string();
   if (!s) fail(field, "expected a string, got " + toml_show(n));

@@ -23,6 +23,8 @@ struct TomlFields {
   double non_negative(const toml::node& n, const std::string& field) const;  ///< number >= 0
   std::pair<double, double> pair(const toml::node& n, const std::string& field) const;
   long long integer(const toml::node& n, const std::string& field) const;
+  /// An integer in [lo, hi]: "must be in [lo, hi], got VALUE" otherwise.
+  int integer_in(const toml::node& n, const std::string& field, long long lo, long long hi) const;
   std::string string(const toml::node& n, const std::string& field) const;
   const toml::table& table(const toml::node& n, const std::string& field) const;
   /// A number, or one of { uniform = [a, b] }, { integers = [a, b] }, { normal = { mu, sigma,

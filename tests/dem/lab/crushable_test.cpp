@@ -109,13 +109,15 @@ TEST(CrushableParticle, FilledCellsKeepTheCellsMassAndShapeAndBondedOnesNeverTou
     EXPECT_TRUE(b.vertices.empty());                            // its spheres meet the walls
     ASSERT_GE(b.spheres.size(), 2u);
     ASSERT_LE(b.spheres.size(), 6u);
-    // Each sphere reaches past the cell's faces by at most the fill's tolerance: 3 % of its
-    // radius plus a voxel, far below the cell's size.
+    // Each sphere reaches past the cell's faces by at most a tenth of its radius (the fill's
+    // tolerance is 3 % of the radius plus a voxel).
     for (const Sphere& s : b.spheres) {
       const Vec3 x = b.position + b.orientation * s.center;
       for (const CellFace& f : c.faces) {
         const PolygonProperties pp = polygon_properties(c.vertices, f.vertices);
-        if (pp.area > 0) EXPECT_GT(pp.normal.dot(pp.centroid - x), 0.9 * s.radius);
+        if (pp.area > 0) {
+          EXPECT_GT(pp.normal.dot(pp.centroid - x), 0.9 * s.radius);
+        }
       }
     }
   }

@@ -1,0 +1,36 @@
+// What an element test on a crushable specimen writes besides its curve: the breakage columns,
+// the input work, the grading before and after, and their plots.
+#pragma once
+
+#include "dem/lab/element_loading.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace clumpkit {
+
+/// For a world with bonds (a crushable specimen), sets the settings' reference bodies (the
+/// specimen as read), its grading (fragment_pieces) and Marsal's sieves (√2 steps from √2
+/// times the largest piece down to a 64th of it); leaves them empty otherwise.
+void track_breakage(const dem::World& world, dem::ElementTestSettings& settings);
+
+/// The input work per unit volume W = ∫ σa dεa + 2 ∫ σr dεr (Pa = J/m³) at each row, from the
+/// consolidated state (trapezoids; εr = (εv − εa)/2).
+std::vector<double> input_work(const std::vector<dem::CurveRow>& curve);
+
+/// curve.csv's breakage columns (header with a leading comma, and one row's values).
+std::string breakage_header();
+std::string breakage_values(const dem::CurveRow& row, double work);
+
+/// grading.csv (sieve_m, passing_initial, passing_final), grading.png (both curves against
+/// log10 of the sieve in mm) and breakage.png (Br against the axial stress and against the
+/// work), and the report's "breakage" entry; their names are added to `files`.
+void write_breakage_outputs(const std::filesystem::path& out, const dem::World& world,
+                            const dem::ElementTestSettings& settings,
+                            const std::vector<dem::CurveRow>& curve, nlohmann::ordered_json& report,
+                            std::vector<std::string>& files);
+
+}  // namespace clumpkit

@@ -1,0 +1,150 @@
+// A crushable specimen through the CLI: bonded cells written beside specimen.csv, an oedometer
+// that breaks them with the breakage columns, the grading and the volume conserved, the same
+// bytes for one and two threads, and bad crushable recipes refused with one line.
+#include "cli_helpers.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+using namespace cli_test;
+
+namespace {
+
+// About 30 particles of 14–18 mm, 8 mm cells of four spheres, in a 55 mm cylinder at n = 0.45;
+// `scale` sets the bonds' strength (0.15: weak enough that a 2 MPa oedometer breaks them).
+std::string crushable_recipe(const std::string& scale, const std::string& extra = "") {
+  return R"(seed = 4
+soil_rock_threshold = 0.001
+rock_mass_fraction = 1.0
+[container]
+diameter = 0.055
+height = 0.055
+[preparation]
+method = "compression"
+porosity = 0.45
+[gradation]
+sieves = [0.018, 0.014]
+passing = [100, 0]
+[density]
+rock = 2650
+[contact]
+kn = 1e6
+ks = 1e6
+friction = 0.5
+local_damping = 0.7
+[rock]
+crushable = true
+spheres_per_cell = 4
+cell_voxels = 12
+[cells]
+cell_size = 0.008
+lloyd = 1
+[bond]
+scale = )" +
+         scale + "\n" + extra;
+}
+
+constexpr const char* kOedometer =
+    "[test]\nconfining = 50e3\nfinal_stress = 2e6\nstrain_rate = 0.5\nrecord_every = "
+    "200\ndensity_scaling = 1000\n";
+
+}  // namespace
+
+TEST(CliCrushable, OedometerBreaksTheCellsConservingVolumeSameBytesForAnyThreads) {
+  const fs::path d = scratch();
+  write(d / "weak.toml", crushable_recipe("0.15"));
+  Result r = run_cli(
+      "specimen --quiet --recipe " + (d / "weak.toml").string() + " --out " + (d / "spec").string(),
+      d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto spec = nlohmann::json::parse(slurp(d / "spec" / "report.json"));
+  ASSERT_TRUE(fs::exists(d / "spec" / "bonds.csv"));
+  EXPECT_GE(spec["crushable"]["particles"].get<int>(), 20);
+  EXPECT_GT(spec["crushable"]["bonds"].get<int>(), spec["crushable"]["cells"].get<int>());
+  write(d / "oed.toml", kOedometer);
+  const std::string base = "test oedometer --quiet --allow-dynamic --specimen " +
+                           (d / "spec").string() + " --recipe " + (d / "oed.toml").string();
+  r = run_cli(base + " --threads 1 --out " + (d / "one").string(), d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  r = run_cli(base + " --threads 2 --out " + (d / "two").string(), d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_EQ(slurp(d / "one" / "curve.csv"), slurp(d / "two" / "curve.csv"));
+  EXPECT_EQ(slurp(d / "one" / "grading.csv"), slurp(d / "two" / "grading.csv"));
+  const auto rep = nlohmann::json::parse(slurp(d / "one" / "report.json"));
+  const auto& b = rep["breakage"];
+  // Broken: bonds failed, particles split into more fragments, the grading moved finer.
+  EXPECT_GT(b["bonds_broken"].get<double>(), 0);
+  EXPECT_GT(b["particles_broken"].get<double>(), 0);
+  EXPECT_GT(b["fragments"].get<double>(), b["particles"].get<double>());
+  EXPECT_GT(b["hardin_br"].get<double>(), 0);
+  EXPECT_LT(b["hardin_br"].get<double>(), 1);
+  EXPECT_GT(b["einav_b"].get<double>(), 0);
+  EXPECT_GT(b["marsal_bg"].get<double>(), 0);
+  EXPECT_GT(b["work_pa"].get<double>(), 0);
+  // Conservation: the fragments hold the particles' solid volume.
+  EXPECT_NEAR(b["solid_volume_final"].get<double>() / b["solid_volume_initial"].get<double>(), 1,
+              1e-12);
+  std::string header;
+  const std::vector<std::vector<double>> rows = csv_rows(d / "one" / "curve.csv", 18, &header);
+  ASSERT_GT(rows.size(), 3u);
+  EXPECT_EQ(header.substr(header.rfind(',') + 1), "work_pa");
+  EXPECT_EQ(rows[0][13], 0);  // no particle broken at the consolidated state
+  EXPECT_EQ(rows[0][17], 0);  // nor any work done
+  for (const char* f : {"grading.png", "breakage.png", "breakage_work.png"})
+    EXPECT_TRUE(fs::exists(d / "one" / f)) << f;
+}
+
+TEST(CliCrushable, StrongBondsLeaveTheGradingUnchanged) {
+  // The calibrated law at a low stress: no bond fails, so no index moves and the grading after is
+  // the grading before (every fragment sized from its cells as built).
+  const fs::path d = scratch();
+  write(d / "strong.toml", crushable_recipe("1.85"));
+  Result r = run_cli("specimen --quiet --recipe " + (d / "strong.toml").string() + " --out " +
+                         (d / "spec").string(),
+                     d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  write(d / "oed.toml",
+        "[test]\nconfining = 50e3\nfinal_stress = 3e5\nstrain_rate = 0.5\nrecord_every = "
+        "200\ndensity_scaling = 1000\n");
+  r = run_cli("test oedometer --quiet --allow-dynamic --specimen " + (d / "spec").string() +
+                  " --recipe " + (d / "oed.toml").string() + " --out " + (d / "oed").string(),
+              d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto b = nlohmann::json::parse(slurp(d / "oed" / "report.json"))["breakage"];
+  EXPECT_EQ(b["bonds_broken"].get<double>(), 0);
+  EXPECT_EQ(b["hardin_br"].get<double>(), 0);
+  EXPECT_EQ(b["einav_b"].get<double>(), 0);
+  EXPECT_EQ(b["marsal_bg"].get<double>(), 0);
+  for (const auto& row : csv_rows(d / "oed" / "grading.csv", 3)) EXPECT_EQ(row[1], row[2]);
+}
+
+TEST(CliCrushable, BadCrushableRecipesAreRefusedWithOneLine) {
+  const fs::path d = scratch();
+  struct Case {
+    std::string recipe, needle;
+  };
+  const std::vector<Case> cases = {
+      {crushable_recipe("0"), "bond.scale"},
+      {crushable_recipe("1.85", "[zz]\n"), "zz: unknown key"},
+      {[] {
+         std::string s = crushable_recipe("1.85");
+         return s.replace(s.find("cell_size = 0.008"), 17, "cell_size = 0.030");
+       }(),
+       "cells.cell_size"},
+      {[] {
+         std::string s = crushable_recipe("1.85");
+         return s.replace(s.find("method = \"compression\""), 22, "method = \"deposition\"");
+       }(),
+       "rock.crushable"},
+  };
+  for (const Case& c : cases) {
+    write(d / "bad.toml", c.recipe);
+    SCOPED_TRACE(c.needle);
+    expect_one_line_error(run_cli("specimen --quiet --recipe " + (d / "bad.toml").string() +
+                                      " --out " + (d / "out").string(),
+                                  d),
+                          c.needle);
+    EXPECT_FALSE(fs::exists(d / "out"));
+    EXPECT_FALSE(fs::exists(d / "out.partial"));
+  }
+}
