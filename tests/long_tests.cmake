@@ -29,12 +29,13 @@ set(clumpkit_long_tests
   # (--save-consolidated)
   CliLammpsCpt.TheSavedConsolidatedChamberStartsAtTheConfiningStressInLammps
   CliLammpsCpt.TheSavedSegmentChamberStartsAtTheConfiningStressInLammps
-  # a crushable specimen and its oedometer through the CLI (61 and 25 s in Release) ->
+  # a crushable specimen and its oedometer through the CLI, and its control (61 and 30 s in
+  # Release) ->
   # CrushableCompression.* (the preparation, 1 and 2 threads), DemElementTest.* (the drive),
   # BondsCsv.* (the files), Breakage.* and FragmentSizes.* (the measures) and
   # CliCrushable.BadCrushableRecipesAreRefusedWithOneLine (the recipe's checks)
   CliCrushable.OedometerBreaksTheCellsConservingVolumeSameBytesForAnyThreads
-  CliCrushable.StrongBondsLeaveTheGradingUnchanged
+  CliCrushable.TheUnbreakableControlKeepsItsGrading
   # the bundled test recipe on the tiny specimen (80 s) ->
   # CliElementTest.ShortTriaxialOfASmallCompressedCylinderSavesItsConsolidatedState (the job,
   # --save-consolidated), StageFiles.ElementTest... (stopped and resumed)

@@ -9,6 +9,13 @@
 
 namespace clumpkit::dem {
 
+CohesiveParams unbreakable(const CohesiveParams& p) {
+  CohesiveParams u = p;
+  u.sigma_n *= 1e6, u.sigma_t *= 1e6;
+  u.g_n *= 1e12, u.g_t *= 1e12;
+  return u;
+}
+
 void validate_values(const CohesiveParams& p) {
   const std::pair<const char*, double> fields[] = {{"kn", p.kn},           {"kt", p.kt},
                                                    {"sigma_n", p.sigma_n}, {"sigma_t", p.sigma_t},

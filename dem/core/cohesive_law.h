@@ -21,6 +21,10 @@ struct CohesiveParams {
   double friction = 0.3;
 };
 
+/// The law with the same stiffness whose bonds cannot fail: strengths × 1e6 and energies × 1e12
+/// (openings at onset and failure × 1e6, far beyond any contact's reach): elastic throughout.
+CohesiveParams unbreakable(const CohesiveParams& p);
+
 /// Throws InvalidInput "cohesive law: FIELD must be positive and finite, got V" for a stiffness,
 /// strength or fracture energy that is not (friction: not negative and finite). The one check of
 /// each value (recipes call it on their [bond] table as read, validate on the law as used).

@@ -201,12 +201,9 @@ World loose_packing(const CompressionSpec& spec, std::vector<Body> bodies,
     // Intact bonds while the specimen is made: the closing's map and its quenches load the
     // contacts far above the final stress (a mean stress of 0.8 MPa while closing at 1e-4 per
     // step to n = 0.65, 0.17 MPa at 1e-5, against kPa once relaxed), which would break bonds
-    // that the specimen at rest never loads. The same stiffness, strengths and energies × 1e6
-    // (openings at onset and failure × 1e6): elastic throughout. finish_specimen restores the
-    // material's law.
-    o.cohesive = spec.cohesive;
-    o.cohesive.sigma_n *= 1e6, o.cohesive.sigma_t *= 1e6;
-    o.cohesive.g_n *= 1e12, o.cohesive.g_t *= 1e12;
+    // that the specimen at rest never loads: the same stiffness, bonds that cannot fail
+    // (dem::unbreakable). finish_specimen restores the material's law.
+    o.cohesive = unbreakable(spec.cohesive);
     // Bodies keep their indices: the closing moves each particle's cells together (groups).
     o.sort_every = 0;
   }

@@ -231,6 +231,10 @@ void read_rock(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
       const auto* b = rv.as_boolean();
       if (!b) f.fail(field, "expected true or false, got " + toml_show(rv));
       r.crushable = b->get();
+    } else if (g == "unbreakable") {
+      const auto* b = rv.as_boolean();
+      if (!b) f.fail(field, "expected true or false, got " + toml_show(rv));
+      r.unbreakable = b->get();
     } else if (g == "planes") {
       m.shape.planes = f.integer_in(rv, field, 4, 10000);
     } else if (g == "E") {
@@ -247,8 +251,8 @@ void read_rock(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
       m.fill.field.voxels = f.integer_in(rv, field, 8, 200);
     } else {
       f.fail(field,
-             "unknown key (known: library, recipe, crushable, planes, E, F, offset_min, "
-             "offset_max, spheres_per_cell, cell_voxels)");
+             "unknown key (known: library, recipe, crushable, unbreakable, planes, E, F, "
+             "offset_min, offset_max, spheres_per_cell, cell_voxels)");
     }
   }
 }
@@ -258,6 +262,7 @@ void read_rock(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
 void check_crushable(const TomlFields& f, SpecimenRecipe& r, const Seen& seen,
                      CrushRecipe& tables) {
   if (!r.crushable) {
+    if (r.unbreakable) f.fail("rock.unbreakable", "is for crushable particles (crushable = true)");
     if (seen.cells || seen.bond)
       f.fail(seen.cells ? "cells" : "bond", "is for crushable particles ([rock] crushable = true)");
     return;
@@ -280,6 +285,7 @@ void check_crushable(const TomlFields& f, SpecimenRecipe& r, const Seen& seen,
   m.fill.voxels_from_count = false;
   r.bond = tables.law;
   r.bond_scale = tables.scale;
+  if (r.unbreakable) r.bond = dem::unbreakable(r.bond);  // the control
   try {
     dem::validate(m);
   } catch (const InvalidInput& e) {

@@ -72,6 +72,9 @@ struct SpecimenRecipe {
   /// across, bonded by the law of [bond] (the tables of the crushing recipes, scale applied)
   /// — instead of library clumps.
   bool crushable = false;
+  /// [rock] unbreakable = true: the control of a crushable specimen — the same particles, cells
+  /// and bonds, whose bonds cannot fail (strengths × 1e6, energies × 1e12: the same stiffness).
+  bool unbreakable = false;
   dem::CrushableMaterial crushable_material;
   dem::CohesiveParams bond;  ///< strengths × scale, energies × scale²
   double bond_scale = 1.0;

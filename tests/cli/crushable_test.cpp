@@ -94,18 +94,19 @@ TEST(CliCrushable, OedometerBreaksTheCellsConservingVolumeSameBytesForAnyThreads
     EXPECT_TRUE(fs::exists(d / "one" / f)) << f;
 }
 
-TEST(CliCrushable, StrongBondsLeaveTheGradingUnchanged) {
-  // The calibrated law at a low stress: no bond fails, so no index moves and the grading after is
-  // the grading before (every fragment sized from its cells as built).
+TEST(CliCrushable, TheUnbreakableControlKeepsItsGrading) {
+  // The weak specimen's control (the same particles, cells and bonds, which cannot fail) under
+  // the same oedometer: no bond fails, no index moves, and the grading after is the grading
+  // before (every fragment sized from its cells as built).
   const fs::path d = scratch();
-  write(d / "strong.toml", crushable_recipe("1.85"));
-  Result r = run_cli("specimen --quiet --recipe " + (d / "strong.toml").string() + " --out " +
+  std::string recipe = crushable_recipe("0.15");
+  recipe.replace(recipe.find("crushable = true"), 16, "crushable = true\nunbreakable = true");
+  write(d / "control.toml", recipe);
+  Result r = run_cli("specimen --quiet --recipe " + (d / "control.toml").string() + " --out " +
                          (d / "spec").string(),
                      d);
   ASSERT_EQ(r.rc, 0) << r.err;
-  write(d / "oed.toml",
-        "[test]\nconfining = 50e3\nfinal_stress = 3e5\nstrain_rate = 0.5\nrecord_every = "
-        "200\ndensity_scaling = 1000\n");
+  write(d / "oed.toml", kOedometer);
   r = run_cli("test oedometer --quiet --allow-dynamic --specimen " + (d / "spec").string() +
                   " --recipe " + (d / "oed.toml").string() + " --out " + (d / "oed").string(),
               d);
