@@ -53,6 +53,8 @@ TEST(CrushRecipe, BundledRecipesHoldThePapersSets) {
   EXPECT_EQ(t2.sets[4].axis, 0);  // S3 long
   EXPECT_EQ(t2.sets[6].axis, 2);  // S3 short
   for (const CrushSet& s : t2.sets) EXPECT_FALSE(s.size_law);
+  EXPECT_EQ(t2.rig.bed_depth, 0.15);  // the seat: the lowest cells bedded
+  EXPECT_EQ(t1.rig.bed_depth, 0.0);   // Table 1's particles rest on a face
 
   const CrushRecipe b = read_crush_recipe(recipe("crush-brazilian.toml"));
   ASSERT_EQ(b.sets.size(), 1u);

@@ -39,6 +39,28 @@ std::string with(const std::string& from, const std::string& to) {
 }
 }  // namespace
 
+TEST(SpecimenRecipe, BundledRockfillAndItsControlDifferOnlyInTheBonds) {
+  // Hu et al. 2023's particles and Table 1's 6.5 mm cells with the calibrated law; the control
+  // has the same everything with bonds that cannot fail (the same stiffness).
+  const SpecimenRecipe a = read_specimen_recipe(kDir + "rockfill-crushable.toml");
+  const SpecimenRecipe b = read_specimen_recipe(kDir + "rockfill-unbreakable.toml");
+  EXPECT_TRUE(a.crushable);
+  EXPECT_FALSE(a.unbreakable);
+  EXPECT_TRUE(b.unbreakable);
+  EXPECT_EQ(a.container_diameter, 0.15);
+  EXPECT_EQ(a.sieves.front(), 0.040);
+  EXPECT_EQ(a.sieves.back(), 0.020);
+  EXPECT_EQ(a.crushable_material.cells.cell_size, 0.0065);
+  EXPECT_EQ(a.crushable_material.shape.planes, 30);
+  EXPECT_EQ(a.bond_scale, 1.85);
+  EXPECT_DOUBLE_EQ(a.bond.sigma_n, 9e6 * 1.85);
+  EXPECT_EQ(b.bond.kn, a.bond.kn);
+  EXPECT_EQ(b.bond.kt, a.bond.kt);
+  EXPECT_EQ(b.bond.sigma_n, 1e6 * a.bond.sigma_n);
+  EXPECT_EQ(b.seed, a.seed);
+  EXPECT_EQ(b.compression_porosity, a.compression_porosity);
+}
+
 TEST(SpecimenRecipe, BundledRecipesParse) {
   const SpecimenRecipe full = read_specimen_recipe(kDir + "srm40-triaxial.toml");
   EXPECT_DOUBLE_EQ(full.container_diameter, 0.3);
