@@ -199,10 +199,22 @@ void measure_breakage(const World& world, const ElementTestSettings& s, CurveRow
   row.bonds_broken = 0;
   for (const Bond& b : bonds) row.bonds_broken += b.holds() ? 0 : 1;
   row.fragments = row.particles_broken = 0;
+  std::vector<double> volume(n, 0.0);
+  for (int k = 0; k < n; ++k) volume[particle[k]] += bodies[k].volume;
+  std::array<double, kBreakageClasses> in_class{};
+  row.broken_by_class.fill(0.0);
   for (int k = 0; k < n; ++k) {
     row.fragments += piece[k] == k ? 1 : 0;
     row.particles_broken += broken[k];
+    if (particle[k] != k || s.class_bounds.size() != kBreakageClasses + 1) continue;
+    const double d = std::cbrt(6.0 * volume[k] / M_PI);
+    int c = 0;
+    while (c + 1 < kBreakageClasses && d >= s.class_bounds[c + 1]) ++c;
+    in_class[c] += 1;
+    row.broken_by_class[c] += broken[k];
   }
+  for (int c = 0; c < kBreakageClasses; ++c)
+    row.broken_by_class[c] = in_class[c] > 0 ? row.broken_by_class[c] / in_class[c] : 0.0;
   const std::vector<SievedPiece> now = fragment_pieces(s.reference, bonds);
   row.hardin_br = hardin_breakage(s.initial_grading, now, s.breakage_limits);
   row.einav_b = einav_breakage(s.initial_grading, now, s.breakage_limits);

@@ -62,8 +62,14 @@ struct ElementTestSettings {
   std::vector<Body> reference;
   std::vector<SievedPiece> initial_grading;
   std::vector<double> sieves;
+  /// Bounds of the size classes (volume-equivalent diameters of the particles, m, ascending,
+  /// kBreakageClasses + 1 of them) whose fractions of broken particles the rows carry.
+  std::vector<double> class_bounds;
   BreakageLimits breakage_limits;
 };
+
+/// Size classes of a crushable specimen's particles whose broken fractions are tracked.
+inline constexpr int kBreakageClasses = 4;
 
 /// One row of the curve. Strains and stresses compression positive; strains from the start of
 /// loading (the end of consolidation). `interior_axial_strain` is the axial strain of the
@@ -82,6 +88,9 @@ struct CurveRow {
   /// by any bond) in more than one fragment, and the indices against the initial grading.
   double bonds_broken = 0, fragments = 0, particles_broken = 0;
   double hardin_br = 0, einav_b = 0, marsal_bg = 0;
+  /// Fraction of each size class's particles that are broken (class_bounds; 0 for an empty
+  /// class).
+  std::array<double, kBreakageClasses> broken_by_class{};
 };
 
 /// The breakage columns of `row` for the world's bodies and bonds (settings as above).

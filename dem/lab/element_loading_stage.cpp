@@ -19,7 +19,7 @@ namespace clumpkit::dem {
 namespace {
 
 constexpr const char* kStage = "test";
-constexpr int kRowFields = 17;
+constexpr int kRowFields = 17 + kBreakageClasses;
 
 // The curve row's numbers in file order (the step is the first, written as a double: exact up
 // to 2^53 steps).
@@ -39,7 +39,11 @@ std::array<double*, kRowFields - 1> row_fields(CurveRow& c) {
           &c.particles_broken,
           &c.hardin_br,
           &c.einav_b,
-          &c.marsal_bg};
+          &c.marsal_bg,
+          &c.broken_by_class[0],
+          &c.broken_by_class[1],
+          &c.broken_by_class[2],
+          &c.broken_by_class[3]};
 }
 
 // How far the test is (0..1): the consolidation is the first tenth (by its step cap), the

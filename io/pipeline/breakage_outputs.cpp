@@ -14,12 +14,23 @@ void track_breakage(const dem::World& world, dem::ElementTestSettings& s) {
   s.reference.clear();
   s.initial_grading.clear();
   s.sieves.clear();
+  s.class_bounds.clear();
   if (world.bonds().empty()) return;
   s.reference = world.bodies();
   s.initial_grading = dem::fragment_pieces(s.reference, world.bonds());
   double largest = 0;
   for (const dem::SievedPiece& p : s.initial_grading) largest = std::max(largest, p.size);
   s.sieves = dem::sieve_series(largest / 64, largest * std::sqrt(2.0), std::sqrt(2.0));
+  // Size classes: the particles' volume-equivalent diameters in equal steps from the smallest
+  // to the largest (the last bound a hair above it, so the largest falls in the last class).
+  double d_lo = 1e300, d_hi = 0;
+  for (const dem::SievedPiece& p : s.initial_grading) {
+    const double d = std::cbrt(6.0 * p.volume / M_PI);
+    d_lo = std::min(d_lo, d), d_hi = std::max(d_hi, d);
+  }
+  for (int c = 0; c <= dem::kBreakageClasses; ++c)
+    s.class_bounds.push_back(d_lo + (d_hi - d_lo) * c / dem::kBreakageClasses);
+  s.class_bounds.back() *= 1.0 + 1e-12;
 }
 
 std::vector<double> input_work(const std::vector<dem::CurveRow>& curve) {
@@ -35,13 +46,26 @@ std::vector<double> input_work(const std::vector<dem::CurveRow>& curve) {
 }
 
 std::string breakage_header() {
-  return ",bonds_broken,fragments,particles_broken,hardin_br,einav_b,marsal_bg,work_pa";
+  std::string h = ",bonds_broken,fragments,particles_broken,hardin_br,einav_b,marsal_bg,work_pa";
+  for (int c = 1; c <= dem::kBreakageClasses; ++c) h += ",broken_class_" + std::to_string(c);
+  return h;
 }
+
+namespace {
+
+std::string class_values(const dem::CurveRow& c) {
+  std::string v;
+  for (double f : c.broken_by_class) v += "," + format_number(f);
+  return v;
+}
+
+}  // namespace
 
 std::string breakage_values(const dem::CurveRow& c, double work) {
   return "," + format_number(c.bonds_broken) + "," + format_number(c.fragments) + "," +
          format_number(c.particles_broken) + "," + format_number(c.hardin_br) + "," +
-         format_number(c.einav_b) + "," + format_number(c.marsal_bg) + "," + format_number(work);
+         format_number(c.einav_b) + "," + format_number(c.marsal_bg) + "," + format_number(work) +
+         class_values(c);
 }
 
 void write_breakage_outputs(const std::filesystem::path& out, const dem::World& world,
@@ -96,6 +120,8 @@ void write_breakage_outputs(const std::filesystem::path& out, const dem::World& 
                         {"einav_b", end.einav_b},
                         {"marsal_bg", end.marsal_bg},
                         {"work_pa", work.back()},
+                        {"class_bounds", s.class_bounds},
+                        {"broken_by_class", end.broken_by_class},
                         {"solid_volume_initial", solid0},
                         {"solid_volume_final", solid1},
                         {"sieve_rule",

@@ -1,6 +1,7 @@
 #include "io/pipeline/element_job.h"
 
 #include "dem/core/timestep.h"
+#include "dem/measure/compressibility.h"
 #include "dem/measure/stress.h"
 #include "geom/errors.h"
 #include "geom/format.h"
@@ -171,6 +172,14 @@ LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specime
         measured(dem::tangent_modulus(r.curve, axial, interior_strain, range.first, range.second));
     rep["modulus_range"] = {range.first, range.second};
     rep["k0"] = last.lateral_stress / last.axial_stress;
+    // e–log σv: the compression index over the last decade of stress and the yield stress at
+    // the knee (dem/measure/compressibility.h).
+    std::vector<double> e, sv;
+    for (const auto& c : r.curve)
+      e.push_back(c.porosity / (1 - c.porosity)), sv.push_back(c.axial_stress);
+    const double top = *std::max_element(sv.begin(), sv.end());
+    rep["compression_index"] = measured(dem::compression_index(e, sv, 0.1 * top, top));
+    rep["yield_stress"] = measured(dem::yield_stress(e, sv));
     for (const auto& c : r.curve)
       plot.x.push_back(c.axial_strain), plot.y.push_back(c.axial_stress / 1e3);
     x_label = "axial strain (-)";

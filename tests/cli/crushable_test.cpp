@@ -85,11 +85,17 @@ TEST(CliCrushable, OedometerBreaksTheCellsConservingVolumeSameBytesForAnyThreads
   EXPECT_NEAR(b["solid_volume_final"].get<double>() / b["solid_volume_initial"].get<double>(), 1,
               1e-12);
   std::string header;
-  const std::vector<std::vector<double>> rows = csv_rows(d / "one" / "curve.csv", 18, &header);
+  const std::vector<std::vector<double>> rows = csv_rows(d / "one" / "curve.csv", 22, &header);
   ASSERT_GT(rows.size(), 3u);
-  EXPECT_EQ(header.substr(header.rfind(',') + 1), "work_pa");
+  EXPECT_NE(header.find(",work_pa,broken_class_1,"), std::string::npos) << header;
   EXPECT_EQ(rows[0][13], 0);  // no particle broken at the consolidated state
   EXPECT_EQ(rows[0][17], 0);  // nor any work done
+  // The broken fraction of each size class: a fraction, and together the particles broken.
+  for (const auto& row : rows)
+    for (int c = 18; c < 22; ++c) {
+      EXPECT_GE(row[c], 0.0);
+      EXPECT_LE(row[c], 1.0);
+    }
   for (const char* f : {"grading.png", "breakage.png", "breakage_work.png"})
     EXPECT_TRUE(fs::exists(d / "one" / f)) << f;
 }
