@@ -1,0 +1,112 @@
+// An oedometer on a small crushable specimen (bonded cells from a crushable compression): the
+// breakage columns count what broke, the fragments keep the particles' volume, and the rows are
+// the same bytes for one and two threads. The short sibling of tests/cli/crushable_test.cpp.
+#include "dem/lab/element_loading.h"
+
+#include "dem/core/timestep.h"
+#include "dem/measure/fragment_sizes.h"
+#include "dem/specimen/compression.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <cstring>
+
+using namespace clumpkit;
+using namespace clumpkit::dem;
+
+namespace {
+
+// About a dozen 14–18 mm particles of 8 mm cells in a 40 mm cylinder at n = 0.45, their bonds
+// weak (the granite law's strengths × 0.15, energies × 0.15²).
+const CompressionResult& weak_specimen() {
+  static const CompressionResult r = [] {
+    CompressionSpec s;
+    s.shape = CompressionSpec::Shape::cylinder;
+    s.size = Vec3(0.04, 0.04, 0.04);
+    s.porosity = 0.45;
+    s.classes = {{0.014, 0.018, 100.0, true}};
+    s.contact.kn = 1e6;
+    s.contact.ks = 1e6;
+    s.contact.friction = 0.5;
+    s.contact.local_damping = 0.7;
+    s.loose_factor = 1.3;
+    s.strain_per_step = 1e-4;
+    s.relax_max_steps = 1000;
+    s.seed = 5;
+    CrushableMaterial m;
+    m.cells.cell_size = 0.008;
+    m.cells.lloyd = 1;
+    m.fill.spheres = 4;
+    m.fill.field.voxels = 12;
+    m.fill.voxels_from_count = false;
+    s.crushable = m;
+    s.cohesive.sigma_n *= 0.15, s.cohesive.sigma_t *= 0.15;
+    s.cohesive.g_n *= 0.0225, s.cohesive.g_t *= 0.0225;
+    return compress_specimen(s);
+  }();
+  return r;
+}
+
+std::vector<CurveRow> crushable_oedometer(int threads, World* end = nullptr) {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+  const CompressionResult& c = weak_specimen();
+  WorldOptions o = element_test_world_options(c.world.bodies(), c.world.options().contact);
+  o.cohesive = c.world.options().cohesive;
+  o.sort_every = 0;  // bodies keep their indices (the reference poses)
+  World w(o);
+  for (Body b : c.world.bodies()) {
+    b.mass *= 1000, b.moments *= 1000;  // λ = 1000, as the crushing recipes
+    w.add_body(std::move(b));
+  }
+  for (const Bond& b : c.world.bonds()) w.add_bond(b);
+  const TestCell cell = add_cylinder_test_cell(w, c.radius, 0.0, c.height);
+  w.options().timestep = 0.2 * critical_timestep(w);
+  ElementTestSettings s;
+  s.kind = TestKind::oedometer;
+  s.confining = 50e3;
+  s.final_stress = 0.6e6;
+  s.strain_rate = 5;  // fast (a test of the bookkeeping, not of the physics)
+  s.record_every = 100;
+  s.max_consolidation_steps = 3000;
+  s.reference = w.bodies();
+  s.initial_grading = fragment_pieces(s.reference, w.bonds());
+  s.sieves = sieve_series(0.001, 0.03, std::sqrt(2.0));
+  s.class_bounds = {0.01, 0.015, 0.016, 0.017, 0.02};
+  const ElementTestResult r = run_element_test(w, cell, s);
+  if (end) *end = w;
+  return r.curve;
+}
+
+}  // namespace
+
+TEST(CrushableOedometer, CountsWhatBrokeKeepsTheVolumeSameBytesForOneAndTwoThreads) {
+  World end;
+  const std::vector<CurveRow> one = crushable_oedometer(1, &end);
+  ASSERT_GT(one.size(), 3u);
+  const CurveRow& first = one.front();
+  const CurveRow& last = one.back();
+  EXPECT_GT(last.bonds_broken, 0);
+  EXPECT_GT(last.fragments, first.fragments);
+  EXPECT_GT(last.particles_broken, 0);
+  EXPECT_GT(last.hardin_br, 0);
+  EXPECT_GE(last.hardin_br, first.hardin_br);
+  for (const CurveRow& c : one)
+    for (double f : c.broken_by_class) {
+      EXPECT_GE(f, 0.0);
+      EXPECT_LE(f, 1.0);
+    }
+  // The fragments hold the particles' solid volume.
+  double before = 0, after = 0;
+  for (const Body& b : weak_specimen().world.bodies()) before += b.volume;
+  for (const SievedPiece& p : fragment_pieces(end.bodies(), end.bonds())) after += p.volume;
+  EXPECT_NEAR(after / before, 1.0, 1e-12);
+  const std::vector<CurveRow> two = crushable_oedometer(2);
+  ASSERT_EQ(two.size(), one.size());
+  for (std::size_t k = 0; k < one.size(); ++k) {
+    EXPECT_EQ(std::memcmp(&one[k].axial_stress, &two[k].axial_stress, sizeof(double)), 0);
+    EXPECT_EQ(one[k].hardin_br, two[k].hardin_br);
+    EXPECT_EQ(one[k].fragments, two[k].fragments);
+  }
+}
