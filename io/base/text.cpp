@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -67,6 +68,17 @@ std::optional<double> to_number(std::string_view token) {
 
 std::optional<long long> to_integer(std::string_view token) {
   return whole<long long>(token);
+}
+
+void LineReader::fail(const std::string& why) const {
+  throw InvalidInput(path + ":" + std::to_string(line) + ": " + why);
+}
+
+double LineReader::number(const std::string& cell, const char* field) const {
+  const std::optional<double> v = to_number(cell);
+  if (!v || !std::isfinite(*v))
+    fail("field " + std::string(field) + ": not a finite number: '" + cell + "'");
+  return *v;
 }
 
 std::string csv_escape(const std::string& s) {

@@ -26,6 +26,16 @@ std::optional<double> to_number(std::string_view token);
 /// The integer that is all of `token` (a leading '+' allowed), or nothing.
 std::optional<long long> to_integer(std::string_view token);
 
+/// Where a line-by-line reader is: its file and line number, for errors that name both, and
+/// the finite number of one field ("PATH:LINE: field F: not a finite number: 'CELL'").
+struct LineReader {
+  std::string path;
+  long line = 0;
+  /// Throws InvalidInput "PATH:LINE: why".
+  [[noreturn]] void fail(const std::string& why) const;
+  double number(const std::string& cell, const char* field) const;
+};
+
 /// CSV cell: quoted (with doubled quotes) when it holds a comma, quote or newline.
 std::string csv_escape(const std::string& s);
 

@@ -48,16 +48,10 @@ SpecimenBonds read_bonds_csv(const std::string& path, std::size_t bodies) {
   if (!in) throw IoError(path + ": cannot open bonds file");
   SpecimenBonds s;
   std::string line;
-  long line_no = 0;
-  auto bad = [&](const std::string& why) {
-    throw InvalidInput(path + ":" + std::to_string(line_no) + ": " + why);
-  };
-  auto number = [&](const std::string& cell, const char* field) {
-    const std::optional<double> v = to_number(cell);
-    if (!v || !std::isfinite(*v))
-      bad("field " + std::string(field) + ": not a finite number: '" + cell + "'");
-    return *v;
-  };
+  LineReader at{path};
+  long& line_no = at.line;
+  auto bad = [&](const std::string& why) { at.fail(why); };
+  auto number = [&](const std::string& cell, const char* field) { return at.number(cell, field); };
   auto id = [&](const std::string& cell, const char* field, std::size_t count) {
     const double v = number(cell, field);
     if (v != std::floor(v) || v < 1 || v > static_cast<double>(count))

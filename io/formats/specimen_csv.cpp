@@ -93,16 +93,10 @@ std::vector<SpecimenBody> read_specimen_csv(const std::string& path) {
   if (!in) throw IoError(path + ": cannot open specimen file");
   std::vector<SpecimenBody> bodies;
   std::string line;
-  long line_no = 0;
-  auto bad = [&](const std::string& why) {
-    throw InvalidInput(path + ":" + std::to_string(line_no) + ": " + why);
-  };
-  auto number = [&](const std::string& cell, const char* field) {
-    const std::optional<double> v = to_number(cell);
-    if (!v || !std::isfinite(*v))
-      bad("field " + std::string(field) + ": not a finite number: '" + cell + "'");
-    return *v;
-  };
+  LineReader at{path};
+  long& line_no = at.line;
+  auto bad = [&](const std::string& why) { at.fail(why); };
+  auto number = [&](const std::string& cell, const char* field) { return at.number(cell, field); };
   auto integer = [&](const std::string& cell, const char* field) {
     const double v = number(cell, field);
     if (v != std::floor(v)) bad("field " + std::string(field) + ": not an integer: '" + cell + "'");

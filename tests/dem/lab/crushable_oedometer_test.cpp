@@ -6,6 +6,7 @@
 #include "dem/core/timestep.h"
 #include "dem/measure/fragment_sizes.h"
 #include "dem/specimen/compression.h"
+#include "tests/dem/crushable_spec.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -18,30 +19,13 @@ using namespace clumpkit::dem;
 
 namespace {
 
-// About a dozen 14–18 mm particles of 8 mm cells in a 40 mm cylinder at n = 0.45, their bonds
-// weak (the granite law's strengths × 0.15, energies × 0.15²).
+// The small crushable specimen (tests/dem/crushable_spec.h) at n = 0.45, its bonds weak (the
+// granite law's strengths × 0.15, energies × 0.15²).
 const CompressionResult& weak_specimen() {
   static const CompressionResult r = [] {
-    CompressionSpec s;
-    s.shape = CompressionSpec::Shape::cylinder;
-    s.size = Vec3(0.04, 0.04, 0.04);
-    s.porosity = 0.45;
-    s.classes = {{0.014, 0.018, 100.0, true}};
-    s.contact.kn = 1e6;
-    s.contact.ks = 1e6;
-    s.contact.friction = 0.5;
+    CompressionSpec s = test::small_crushable_spec(0.45);
     s.contact.local_damping = 0.7;
-    s.loose_factor = 1.3;
-    s.strain_per_step = 1e-4;
     s.relax_max_steps = 1000;
-    s.seed = 5;
-    CrushableMaterial m;
-    m.cells.cell_size = 0.008;
-    m.cells.lloyd = 1;
-    m.fill.spheres = 4;
-    m.fill.field.voxels = 12;
-    m.fill.voxels_from_count = false;
-    s.crushable = m;
     s.cohesive.sigma_n *= 0.15, s.cohesive.sigma_t *= 0.15;
     s.cohesive.g_n *= 0.0225, s.cohesive.g_t *= 0.0225;
     return compress_specimen(s);

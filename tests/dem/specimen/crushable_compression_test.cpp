@@ -4,6 +4,7 @@
 #include "dem/specimen/compression.h"
 
 #include "geom/errors.h"
+#include "tests/dem/crushable_spec.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -15,31 +16,6 @@ using namespace clumpkit::dem;
 
 namespace {
 
-// About a dozen 14–18 mm particles of 8 mm cells (five to eleven each, four spheres per cell)
-// in a 40 mm cylinder at n = 0.5, closed from 1.3 times its size at 1e-4 strain per step.
-CompressionSpec crushable_spec() {
-  CompressionSpec s;
-  s.shape = CompressionSpec::Shape::cylinder;
-  s.size = Vec3(0.04, 0.04, 0.04);
-  s.porosity = 0.5;
-  s.classes = {{0.014, 0.018, 100.0, true}};
-  s.contact.kn = 1e6;
-  s.contact.ks = 1e6;
-  s.contact.friction = 0.5;
-  s.loose_factor = 1.3;
-  s.strain_per_step = 1e-4;
-  s.relax_max_steps = 2000;
-  s.seed = 5;
-  CrushableMaterial m;
-  m.cells.cell_size = 0.008;
-  m.cells.lloyd = 1;
-  m.fill.spheres = 4;
-  m.fill.field.voxels = 12;
-  m.fill.voxels_from_count = false;
-  s.crushable = m;
-  return s;
-}
-
 CompressionResult build_crushable(const CompressionSpec& spec, int threads) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
   return compress_specimen(spec);
@@ -48,7 +24,7 @@ CompressionResult build_crushable(const CompressionSpec& spec, int threads) {
 }  // namespace
 
 TEST(CrushableCompression, ParticlesStayWholeAtTheTargetPorosityForAnyThreadCount) {
-  const CompressionSpec spec = crushable_spec();
+  const CompressionSpec spec = test::small_crushable_spec(0.5);
   const CompressionResult a = build_crushable(spec, 1);
   const World& w = a.world;
   ASSERT_GT(w.bonds().size(), 20u);
@@ -90,10 +66,10 @@ TEST(CrushableCompression, ParticlesStayWholeAtTheTargetPorosityForAnyThreadCoun
 }
 
 TEST(CrushableCompression, RefusesSoilClassesZonesAndCellsAsLargeAsTheParticles) {
-  CompressionSpec s = crushable_spec();
+  CompressionSpec s = test::small_crushable_spec(0.5);
   s.classes = {{0.014, 0.018, 100.0, false}};
   EXPECT_THROW(compress_specimen(s), InvalidInput);
-  s = crushable_spec();
+  s = test::small_crushable_spec(0.5);
   s.crushable->cells.cell_size = 0.02;
   EXPECT_THROW(compress_specimen(s), InvalidInput);
 }
