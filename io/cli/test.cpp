@@ -28,7 +28,8 @@ void register_test(CLI::App& app) {
       "servo-controlled walls, then isotropic (stress ramp to final_stress: bulk_modulus), "
       "oedometer (radial wall fixed, "
       "platen at strain_rate to final_stress: constrained_modulus, and "
-      "constrained_modulus_interior from the strain of the middle half of the height, k0) or "
+      "constrained_modulus_interior from the strain of the middle half of the height, k0, "
+      "compression_index over the last decade, yield_stress at the knee of e-log sv) or "
       "triaxial (radial "
       "stress held, platen at strain_rate to max_axial_strain: young_modulus at 1e-4, "
       "peak_friction_angle, critical_friction_angle) or cpt (the [probe] cone pushed down the "
@@ -36,7 +37,8 @@ void register_test(CLI::App& app) {
       "curve.csv step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa). Writes DIR/curve.csv "
       "(compression positive), curve.png, report.json, manifest.json, in DIR.partial until the end "
       "(a "
-      "checkpoint every --checkpoint-seconds and on Ctrl-C; continue with --resume). Same "
+      "checkpoint every --checkpoint-seconds and on Ctrl-C; continue with --resume). A crushable "
+      "specimen (bonds.csv) adds breakage columns, grading.csv and the breakage plots. Same "
       "bytes for any --threads and after a resume.");
   c->add_option("KIND", o->kind, "isotropic, oedometer, triaxial or cpt")->required();
   c->add_option("--specimen", o->specimen, "Specimen directory")->required();
