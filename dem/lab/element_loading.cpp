@@ -184,10 +184,10 @@ void measure_breakage(const World& world, const ElementTestSettings& s, CurveRow
   const std::vector<Body>& bodies = world.bodies();
   const int n = static_cast<int>(bodies.size());
   const std::vector<Bond>& bonds = world.bonds();
-  std::vector<Bond> joined = bonds;  // the particles: every bond as if intact
-  for (Bond& b : joined)
-    for (BondPoint& p : b.points) p.state = CohesiveState{};
-  const std::vector<int> particle = fragments(n, joined), piece = fragments(n, bonds);
+  if (s.particles.size() != bodies.size())
+    throw InvalidInput("element test: breakage needs the particle of every body");
+  const std::vector<int>& particle = s.particles;
+  const std::vector<int> piece = fragments(n, bonds);
   // A particle is broken when one of its bodies lies in another fragment than its first body.
   std::vector<int> first_piece(n, -1);
   std::vector<char> broken(n, 0);

@@ -60,6 +60,9 @@ struct ElementTestSettings {
   /// grading then (fragment_pieces) and the sieves of Marsal's Bg. Empty: no breakage columns
   /// (rigid bodies). The world's bodies must keep their indices (sort_every 0).
   std::vector<Body> reference;
+  /// The particle of each body: the smallest body index of the bodies its bonds join as built
+  /// (dem::fragments of the intact specimen).
+  std::vector<int> particles;
   std::vector<SievedPiece> initial_grading;
   std::vector<double> sieves;
   /// Bounds of the size classes (volume-equivalent diameters of the particles, m, ascending,
@@ -84,8 +87,9 @@ struct CurveRow {
   double porosity = 0, coordination = 0, unbalanced = 0;
   double interior_axial_strain = 0;
   /// Breakage (ElementTestSettings::initial_grading given; else 0): bonds with every point
-  /// failed, fragments (bodies joined by intact bonds), particles of the specimen (bodies joined
-  /// by any bond) in more than one fragment, and the indices against the initial grading.
+  /// failed, fragments (bodies joined by intact bonds), particles of the specimen
+  /// (ElementTestSettings::particles) in more than one fragment, and the indices against the
+  /// initial grading.
   double bonds_broken = 0, fragments = 0, particles_broken = 0;
   double hardin_br = 0, einav_b = 0, marsal_bg = 0;
   /// Fraction of each size class's particles that are broken (class_bounds; 0 for an empty

@@ -12,11 +12,13 @@ namespace clumpkit {
 
 void track_breakage(const dem::World& world, dem::ElementTestSettings& s) {
   s.reference.clear();
+  s.particles.clear();
   s.initial_grading.clear();
   s.sieves.clear();
   s.class_bounds.clear();
   if (world.bonds().empty()) return;
   s.reference = world.bodies();
+  s.particles = dem::fragments(static_cast<int>(world.bodies().size()), world.bonds());
   s.initial_grading = dem::fragment_pieces(s.reference, world.bonds());
   double largest = 0;
   for (const dem::SievedPiece& p : s.initial_grading) largest = std::max(largest, p.size);

@@ -55,6 +55,7 @@ std::vector<CurveRow> crushable_oedometer(int threads, World* end = nullptr) {
   s.record_every = 100;
   s.max_consolidation_steps = 3000;
   s.reference = w.bodies();
+  s.particles = fragments(static_cast<int>(w.bodies().size()), w.bonds());
   s.initial_grading = fragment_pieces(s.reference, w.bonds());
   s.sieves = sieve_series(0.001, 0.03, std::sqrt(2.0));
   s.class_bounds = {0.01, 0.015, 0.016, 0.017, 0.02};
