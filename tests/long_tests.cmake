@@ -29,12 +29,12 @@ set(clumpkit_long_tests
   # (--save-consolidated)
   CliLammpsCpt.TheSavedConsolidatedChamberStartsAtTheConfiningStressInLammps
   CliLammpsCpt.TheSavedSegmentChamberStartsAtTheConfiningStressInLammps
-  # a crushable specimen and its oedometer through the CLI, and its control (61 and 30 s in
-  # Release) ->
+  # a crushable specimen and its oedometer through the CLI (1 and 2 threads, stopped and
+  # resumed), and its control (59 and 24 s in Release) ->
   # CrushableCompression.* (the preparation, 1 and 2 threads), DemElementTest.* (the drive),
   # BondsCsv.* (the files), Breakage.* and FragmentSizes.* (the measures) and
   # CliCrushable.BadCrushableRecipesAreRefusedWithOneLine (the recipe's checks)
-  CliCrushable.OedometerBreaksTheCellsConservingVolumeSameBytesForAnyThreads
+  CliCrushable.OedometerBreaksTheCellsConservingVolumeSameBytesForAnyThreadsAndResume
   CliCrushable.TheUnbreakableControlKeepsItsGrading
   # the bundled test recipe on the tiny specimen (80 s) ->
   # CliElementTest.ShortTriaxialOfASmallCompressedCylinderSavesItsConsolidatedState (the job,

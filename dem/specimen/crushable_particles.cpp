@@ -14,14 +14,18 @@ namespace clumpkit::dem {
 
 namespace {
 
-// The random streams of particle i: 3i + 1 its shape, 3i + 2 its cells' seeds, 3i + 3 its
-// faces' strength factors.
+// The random streams of particle i: kFirstStream + 3i its shape, + 1 its cells' seeds, + 2 its
+// faces' strength factors — above the specimen's own streams (the draw of the diameters and the
+// placement use small indices), so no particle shares one with them.
+constexpr std::uint64_t kFirstStream = std::uint64_t(1) << 32;
+
 CrushableBodies make_particle(double diameter, const CrushableMaterial& m, std::uint64_t seed,
                               std::uint64_t i) {
   PolyhedronParams shape = m.shape;
   shape.diameter = diameter;
-  Rng shape_rng = Rng::stream(seed, 3 * i + 1), cell_rng = Rng::stream(seed, 3 * i + 2),
-      bond_rng = Rng::stream(seed, 3 * i + 3);
+  const std::uint64_t first = kFirstStream + 3 * i;
+  Rng shape_rng = Rng::stream(seed, first), cell_rng = Rng::stream(seed, first + 1),
+      bond_rng = Rng::stream(seed, first + 2);
   const Mesh parent = make_polyhedron(shape, shape_rng);
   const Tessellation cells = voronoi_cells(parent, m.cells, cell_rng);
   const std::vector<CellBond> bonds = cell_bonds(cells, m.strength, bond_rng, m.face_subdivision);

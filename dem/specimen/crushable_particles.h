@@ -34,10 +34,11 @@ void validate(const CrushableMaterial& material);
 /// `solid_volume` as class_volumes shares it (density `material.density` for every class):
 /// diameters uniform in each class, drawn from `rng` in class order until the class's volume is
 /// reached (the last one kept when that brings the class closer to it). Particle i then takes
-/// its shape, cells and bond strengths from the stream (seed, i), so the particles are built in
-/// parallel with the same result for any thread count. Largest first; each in its parent's
-/// principal frame (crushable_bodies, filled cells). Throws InvalidInput for a soil class, bad
-/// sizes, a cell size that leaves fewer than two cells in a parent, and what the fill throws.
+/// its shape, cells and bond strengths from streams of its own (seed, 2^32 + 3i … 3i + 2), so the
+/// particles are built in parallel with the same result for any thread count. Largest first; each
+/// in its parent's principal frame (crushable_bodies, filled cells). Throws InvalidInput for a soil
+/// class, bad sizes, a cell size that leaves fewer than two cells in a parent, and what the fill
+/// throws.
 std::vector<CrushableBodies> crushable_particles(const std::vector<ParticleClass>& classes,
                                                  double solid_volume,
                                                  const CrushableMaterial& material,

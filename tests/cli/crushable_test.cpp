@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cstdio>
+
 using namespace cli_test;
 
 namespace {
@@ -50,7 +52,7 @@ constexpr const char* kOedometer =
 
 }  // namespace
 
-TEST(CliCrushable, OedometerBreaksTheCellsConservingVolumeSameBytesForAnyThreads) {
+TEST(CliCrushable, OedometerBreaksTheCellsConservingVolumeSameBytesForAnyThreadsAndResume) {
   const fs::path d = scratch();
   write(d / "weak.toml", crushable_recipe("0.15"));
   Result r = run_cli(
@@ -64,12 +66,24 @@ TEST(CliCrushable, OedometerBreaksTheCellsConservingVolumeSameBytesForAnyThreads
   write(d / "oed.toml", kOedometer);
   const std::string base = "test oedometer --quiet --allow-dynamic --specimen " +
                            (d / "spec").string() + " --recipe " + (d / "oed.toml").string();
-  r = run_cli(base + " --threads 1 --out " + (d / "one").string(), d);
+  const double whole =
+      timed([&] { r = run_cli(base + " --threads 1 --out " + (d / "one").string(), d); });
   ASSERT_EQ(r.rc, 0) << r.err;
   r = run_cli(base + " --threads 2 --out " + (d / "two").string(), d);
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_EQ(slurp(d / "one" / "curve.csv"), slurp(d / "two" / "curve.csv"));
   EXPECT_EQ(slurp(d / "one" / "grading.csv"), slurp(d / "two" / "grading.csv"));
+  // Stopped by SIGTERM at a random time (its bonds' damage saved with the checkpoint) and
+  // resumed: the same bytes as the run never stopped.
+  const std::string stopped = base + " --threads 2 --out " + (d / "stopped").string();
+  const double when = random_seconds(0.3 * whole, 0.8 * whole);
+  const int rc = run_cli_stopped_after(stopped, d, when);
+  std::printf("crushable oedometer of %.1f s stopped after %.2f s: exit %d\n", whole, when, rc);
+  EXPECT_TRUE(rc == 130 || rc == 0 || rc == 143) << slurp(d / "stopped.err");
+  r = run_cli(stopped + " --resume", d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_EQ(slurp(d / "one" / "curve.csv"), slurp(d / "stopped" / "curve.csv"));
+  EXPECT_EQ(slurp(d / "one" / "grading.csv"), slurp(d / "stopped" / "grading.csv"));
   const auto rep = nlohmann::json::parse(slurp(d / "one" / "report.json"));
   const auto& b = rep["breakage"];
   // Broken: bonds failed, particles split into more fragments, the grading moved finer.

@@ -50,9 +50,9 @@ std::vector<CurveRow> crushable_oedometer(int threads, World* end = nullptr) {
   ElementTestSettings s;
   s.kind = TestKind::oedometer;
   s.confining = 50e3;
-  s.final_stress = 0.6e6;
-  s.strain_rate = 5;  // fast (a test of the bookkeeping, not of the physics)
-  s.record_every = 100;
+  s.final_stress = 1e6;
+  s.strain_rate = 1;  // fast (a test of the bookkeeping, not of the physics)
+  s.record_every = 200;
   s.max_consolidation_steps = 3000;
   s.reference = w.bodies();
   s.particles = fragments(static_cast<int>(w.bodies().size()), w.bonds());
