@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Hardin's relative breakage Br against the input work per unit volume W for element tests of
-crushable specimens (issue 57, acceptance 5), all on one plot, with one hyperbola fitted to every
+crushable specimens, all on one plot, with one hyperbola fitted to every
 row of every test together, Br = W / (a + b·W) (the form Lade, Yamamuro & Bopp 1996 fitted to
 their tests of all stress paths: Br → 1/b as W grows), by least squares on Br itself (a
 log-spaced search for a, b then refined), and per test its own hyperbola, so that whether one
