@@ -14,6 +14,17 @@ bool Bond::holds() const {
   return false;
 }
 
+BondFailure failure_mode(const Bond& bond) {
+  if (bond.holds()) return BondFailure::intact;
+  double area = 0, mix = 0, plain = 0;
+  for (const BondPoint& p : bond.points) {
+    area += p.area, mix += p.area * p.state.failure_mix, plain += p.state.failure_mix;
+  }
+  // Points of zero area (none are made, but a file may hold them) count alike.
+  const double s2 = area > 0 ? mix / area : plain / static_cast<double>(bond.points.size());
+  return s2 < 0.25 ? BondFailure::mode_i : s2 > 0.75 ? BondFailure::mode_ii : BondFailure::mixed;
+}
+
 Bond make_bond(const Body& a, const Body& b, int ia, int ib, const Vec3& normal,
                const std::vector<Vec3>& points, const std::vector<double>& areas, double factor) {
   if (points.size() != areas.size() || points.empty())

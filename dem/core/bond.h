@@ -56,6 +56,13 @@ BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Vec3& pa,
 /// K_II) over its points (N/m).
 double bond_stiffness(const Bond& bond, const CohesiveParams& law);
 
+/// How a bond failed: intact while a point holds; else by the area-weighted mean s̄² of its
+/// points' mode mix at failure (CohesiveState::failure_mix): mode I (opening) for s̄² < 1/4, the
+/// jump within 30° of the face normal; mode II (slip) for s̄² > 3/4, within 30° of the face;
+/// mixed between.
+enum class BondFailure { intact, mode_i, mode_ii, mixed };
+BondFailure failure_mode(const Bond& bond);
+
 /// Connected components of `bodies` bodies under the bonds that hold: the label of each body is
 /// the smallest body index of its component (a fragment), so labels are the same for any bond
 /// order.

@@ -67,6 +67,7 @@ CohesiveTraction cohesive_traction(const CohesiveParams& p, double factor, doubl
       const double damage =
           d >= m.failure ? 1.0 : m.failure * (d - m.onset) / (d * (m.failure - m.onset));
       state.damage = std::max(state.damage, std::min(damage, 1.0));
+      if (state.damage >= 1.0) state.failure_mix = slip2 / d2;
     }
   }
   const double keep = 1.0 - state.damage;

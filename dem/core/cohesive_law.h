@@ -47,12 +47,15 @@ struct MixedMode {
 /// criterion of eq. 10, G_mI/G_I + G_mII/G_II = 1). Pure modes give δ_e = σ_e/K and δ_u = 2G/σ_e.
 MixedMode mixed_mode(const CohesiveParams& p, double factor, double c2, double s2);
 
-/// State of a bond point: its damage D in [0, 1], which never decreases (1: broken), and the
+/// State of a bond point: its damage D in [0, 1], which never decreases (1: broken), the
 /// slip of its crack: the part of the tangential jump Δt that friction no longer resists (in
-/// the frame Δt is given in).
+/// the frame Δt is given in), and the mode mix it failed in: the slip's share s² = |Δt|²/δ² of
+/// the effective opening when D reached 1 (0: pure opening, 1: pure slip or compression; 0
+/// while the point holds).
 struct CohesiveState {
   double damage = 0.0;
   Vec3 slip = Vec3::Zero();
+  double failure_mix = 0.0;
 };
 
 /// Stresses of a bond point for the displacement jump Δ = Δn·n + Δt of one side relative to
@@ -62,7 +65,8 @@ struct CohesiveState {
 /// compression (compression never damages and is never lost), shear stress (1 − D)·K_II·Δt plus,
 /// on the damaged part, friction: D·τ_f with τ_f = K_II·(Δt − slip) held to |τ_f| ≤ μ·K_I·|Δn|
 /// in compression (the slip follows when it is exceeded; an open crack carries none and slips
-/// freely). The side displaced by Δ feels −(normal·n + shear)·area. Updates `state`.
+/// freely). The side displaced by Δ feels −(normal·n + shear)·area. Updates `state` (the
+/// failure mix on the step D reaches 1).
 struct CohesiveTraction {
   double normal = 0.0;        ///< Pa, positive in tension
   Vec3 shear = Vec3::Zero();  ///< Pa, along Δt

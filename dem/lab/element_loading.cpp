@@ -196,8 +196,20 @@ void measure_breakage(const World& world, const ElementTestSettings& s, CurveRow
     if (f < 0) f = piece[k];
     if (piece[k] != f) broken[particle[k]] = 1;
   }
-  row.bonds_broken = 0;
-  for (const Bond& b : bonds) row.bonds_broken += b.holds() ? 0 : 1;
+  row.bonds_broken = row.bonds_mode_i = row.bonds_mode_ii = row.bonds_mixed = 0;
+  for (const Bond& b : bonds) switch (failure_mode(b)) {
+      case BondFailure::intact:
+        break;
+      case BondFailure::mode_i:
+        row.bonds_broken += 1, row.bonds_mode_i += 1;
+        break;
+      case BondFailure::mode_ii:
+        row.bonds_broken += 1, row.bonds_mode_ii += 1;
+        break;
+      case BondFailure::mixed:
+        row.bonds_broken += 1, row.bonds_mixed += 1;
+        break;
+    }
   row.fragments = row.particles_broken = 0;
   std::vector<double> volume(n, 0.0);
   for (int k = 0; k < n; ++k) volume[particle[k]] += bodies[k].volume;

@@ -89,8 +89,9 @@ struct CurveRow {
   /// Breakage (ElementTestSettings::initial_grading given; else 0): bonds with every point
   /// failed, fragments (bodies joined by intact bonds), particles of the specimen
   /// (ElementTestSettings::particles) in more than one fragment, and the indices against the
-  /// initial grading.
+  /// initial grading; the broken bonds by how they failed (dem::failure_mode).
   double bonds_broken = 0, fragments = 0, particles_broken = 0;
+  double bonds_mode_i = 0, bonds_mode_ii = 0, bonds_mixed = 0;
   double hardin_br = 0, einav_b = 0, marsal_bg = 0;
   /// Fraction of each size class's particles that are broken (class_bounds; 0 for an empty
   /// class).

@@ -19,7 +19,7 @@ namespace clumpkit::dem {
 namespace {
 
 constexpr const char* kStage = "test";
-constexpr int kRowFields = 17 + kBreakageClasses;
+constexpr int kRowFields = 20 + kBreakageClasses;
 
 // The curve row's numbers in file order (the step is the first, written as a double: exact up
 // to 2^53 steps).
@@ -37,6 +37,9 @@ std::array<double*, kRowFields - 1> row_fields(CurveRow& c) {
           &c.bonds_broken,
           &c.fragments,
           &c.particles_broken,
+          &c.bonds_mode_i,
+          &c.bonds_mode_ii,
+          &c.bonds_mixed,
           &c.hardin_br,
           &c.einav_b,
           &c.marsal_bg,

@@ -210,18 +210,16 @@ World loose_packing(const CompressionSpec& spec, std::vector<Body> bodies,
   o.skin = 0.2 * r_min;  // a length of the specimen: similar specimens scale exactly
   World world(o);
   world.reserve(bodies);
+  // From the bisector's frame into the sector (zoned segments' bodies are placed in it already;
+  // crushable specimens have no zones).
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(segment ? 0.5 * spec.angle : 0.0, Vec3::UnitZ()));
   for (std::size_t k = 0; k < bodies.size(); ++k) {
     Body b = std::move(bodies[k]);
     b.position = placed[k].position;
     b.orientation = placed[k].orientation;
-    if (segment && !in_zones) {  // from the bisector's frame into the sector
-      const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.5 * spec.angle, Vec3::UnitZ()));
-      b.position = turn * b.position;
-      b.orientation = turn * b.orientation;
-    }
+    if (segment && !in_zones) b.position = turn * b.position, b.orientation = turn * b.orientation;
     world.add_body(std::move(b));
   }
-  const Eigen::Quaterniond turn(Eigen::AngleAxisd(segment ? 0.5 * spec.angle : 0.0, Vec3::UnitZ()));
   for (std::size_t k = 0; k < crushable.size(); ++k) {
     const Placement& p = placed[bodies.size() + k];
     add_crushable(world, crushable[k], turn * p.orientation, turn * p.position);

@@ -38,7 +38,8 @@ void register_test(CLI::App& app) {
       "(compression positive), curve.png, report.json, manifest.json, in DIR.partial until the end "
       "(a "
       "checkpoint every --checkpoint-seconds and on Ctrl-C; continue with --resume). A crushable "
-      "specimen (bonds.csv) adds breakage columns, grading.csv and the breakage plots. Same "
+      "specimen (bonds.csv) adds breakage columns (bonds broken in mode I, II or mixed), "
+      "grading.csv, the breakage plots and fragments.vtp (colour by particle or fragment). Same "
       "bytes for any --threads and after a resume.");
   c->add_option("KIND", o->kind, "isotropic, oedometer, triaxial or cpt")->required();
   c->add_option("--specimen", o->specimen, "Specimen directory")->required();

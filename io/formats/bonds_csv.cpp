@@ -35,11 +35,12 @@ void write_bonds_csv(const std::string& path, const SpecimenBonds& s) {
       o << k + 1 << "," << b.a + 1 << "," << b.b + 1 << "," << vec(b.normal_in_a) << ","
         << format_number(b.factor) << "\n";
     }
-    o << "# points\nbond,ax,ay,az,bx,by,bz,area,damage,sx,sy,sz\n";
+    o << "# points\nbond,ax,ay,az,bx,by,bz,area,damage,sx,sy,sz,mix\n";
     for (std::size_t k = 0; k < s.bonds.size(); ++k)
       for (const dem::BondPoint& p : s.bonds[k].points)
         o << k + 1 << "," << vec(p.in_a) << "," << vec(p.in_b) << "," << format_number(p.area)
-          << "," << format_number(p.state.damage) << "," << vec(p.state.slip) << "\n";
+          << "," << format_number(p.state.damage) << "," << vec(p.state.slip) << ","
+          << format_number(p.state.failure_mix) << "\n";
   });
 }
 
@@ -105,7 +106,7 @@ SpecimenBonds read_bonds_csv(const std::string& path, std::size_t bodies) {
       if (!(b.factor > 0)) bad("field factor: must be positive, found " + c[6]);
       s.bonds.push_back(std::move(b));
     } else if (section == Section::points) {
-      if (c.size() != 12) bad("a point row has 12 fields, found " + std::to_string(c.size()));
+      if (c.size() != 13) bad("a point row has 13 fields, found " + std::to_string(c.size()));
       dem::BondPoint p;
       const int bond = id(c[0], "bond", s.bonds.size());
       p.in_a = vec3(c, 1, "ax..az");
@@ -116,6 +117,9 @@ SpecimenBonds read_bonds_csv(const std::string& path, std::size_t bodies) {
       if (!(p.state.damage >= 0 && p.state.damage <= 1))
         bad("field damage: must be in [0, 1], found " + c[8]);
       p.state.slip = vec3(c, 9, "sx..sz");
+      p.state.failure_mix = number(c[12], "mix");
+      if (!(p.state.failure_mix >= 0 && p.state.failure_mix <= 1))
+        bad("field mix: must be in [0, 1], found " + c[12]);
       s.bonds[static_cast<std::size_t>(bond)].points.push_back(p);
     } else {
       bad("a data row before the '# law' section");

@@ -11,7 +11,7 @@
 namespace clumpkit {
 
 /// Format version of bonds.csv, in its first line ("# clumpkit bonds format N").
-inline constexpr int kBondsCsvFormat = 1;
+inline constexpr int kBondsCsvFormat = 2;
 
 /// The bonds of a specimen and the law they follow.
 struct SpecimenBonds {

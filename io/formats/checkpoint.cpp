@@ -184,7 +184,8 @@ struct WorldCodec {
       w.i32(bond.a), w.i32(bond.b), w.vec(bond.normal_in_a), w.f64(bond.factor);
       w.u64(bond.points.size());
       for (const BondPoint& p : bond.points)
-        w.vec(p.in_a), w.vec(p.in_b), w.f64(p.area), w.f64(p.state.damage), w.vec(p.state.slip);
+        w.vec(p.in_a), w.vec(p.in_b), w.f64(p.area), w.f64(p.state.damage), w.vec(p.state.slip),
+            w.f64(p.state.failure_mix);
     }
     w.u64(world.contacts().size());
     for (const PairContact& c : world.contacts()) w.i32(c.i), w.i32(c.j), w.state(c.state);
@@ -307,12 +308,15 @@ struct WorldCodec {
         bond.a = r.i32(), bond.b = r.i32();
         bond.normal_in_a = r.vec();
         bond.factor = r.f64();
-        bond.points.resize(r.count(11 * 8, "bond point"));
+        bond.points.resize(r.count(12 * 8, "bond point"));
         for (BondPoint& p : bond.points) {
           p.in_a = r.vec(), p.in_b = r.vec(), p.area = r.f64(), p.state.damage = r.f64();
           p.state.slip = r.vec();
+          p.state.failure_mix = r.f64();
           if (!(p.state.damage >= 0.0 && p.state.damage <= 1.0))
             r.fail("bond " + std::to_string(k) + " has a damage outside [0, 1]");
+          if (!(p.state.failure_mix >= 0.0 && p.state.failure_mix <= 1.0))
+            r.fail("bond " + std::to_string(k) + " has a failure mix outside [0, 1]");
         }
         try {
           world.add_bond(std::move(bond));

@@ -19,7 +19,7 @@ namespace clumpkit {
 /// sums each body's pair contacts in the contact pass, chunk by chunk: a run resumed from an
 /// older file would not continue the bits of the run that wrote it, so none is read). Only the
 /// current version is read; any other is refused naming both versions.
-inline constexpr std::uint32_t kCheckpointVersion = 11;
+inline constexpr std::uint32_t kCheckpointVersion = 12;
 
 /// Writes `world` and `info` to `path`: magic "CLUMPKITCKPT", version, the stage and its state
 /// (length-prefixed strings: the stage, the number of entries, each key and value), then

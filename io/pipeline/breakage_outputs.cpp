@@ -3,6 +3,7 @@
 #include "dem/measure/fragment_sizes.h"
 #include "geom/format.h"
 #include "io/base/atomic_file.h"
+#include "io/formats/specimen_vtp.h"
 #include "io/reports/plot.h"
 
 #include <algorithm>
@@ -48,12 +49,26 @@ std::vector<double> input_work(const std::vector<dem::CurveRow>& curve) {
 }
 
 std::string breakage_header() {
-  std::string h = ",bonds_broken,fragments,particles_broken,hardin_br,einav_b,marsal_bg,work_pa";
+  std::string h =
+      ",bonds_broken,bonds_mode_i,bonds_mode_ii,bonds_mixed,fragments,particles_broken,hardin_br,"
+      "einav_b,marsal_bg,work_pa";
   for (int c = 1; c <= dem::kBreakageClasses; ++c) h += ",broken_class_" + std::to_string(c);
   return h;
 }
 
 namespace {
+
+// Labels numbered 1, 2, … in the order of their smallest body (each label is its smallest body
+// index), as ParaView colours integers.
+std::vector<int> ordinals(const std::vector<int>& labels) {
+  std::vector<int> rank(labels.size(), 0), out(labels.size());
+  int next = 0;
+  for (std::size_t k = 0; k < labels.size(); ++k)
+    if (labels[k] == static_cast<int>(k)) rank[k] = ++next;
+  for (std::size_t k = 0; k < labels.size(); ++k)
+    out[k] = rank[static_cast<std::size_t>(labels[k])];
+  return out;
+}
 
 std::string class_values(const dem::CurveRow& c) {
   std::string v;
@@ -64,15 +79,17 @@ std::string class_values(const dem::CurveRow& c) {
 }  // namespace
 
 std::string breakage_values(const dem::CurveRow& c, double work) {
-  return "," + format_number(c.bonds_broken) + "," + format_number(c.fragments) + "," +
-         format_number(c.particles_broken) + "," + format_number(c.hardin_br) + "," +
-         format_number(c.einav_b) + "," + format_number(c.marsal_bg) + "," + format_number(work) +
-         class_values(c);
+  return "," + format_number(c.bonds_broken) + "," + format_number(c.bonds_mode_i) + "," +
+         format_number(c.bonds_mode_ii) + "," + format_number(c.bonds_mixed) + "," +
+         format_number(c.fragments) + "," + format_number(c.particles_broken) + "," +
+         format_number(c.hardin_br) + "," + format_number(c.einav_b) + "," +
+         format_number(c.marsal_bg) + "," + format_number(work) + class_values(c);
 }
 
 void write_breakage_outputs(const std::filesystem::path& out, const dem::World& world,
                             const dem::ElementTestSettings& s,
-                            const std::vector<dem::CurveRow>& curve, nlohmann::ordered_json& report,
+                            const std::vector<dem::CurveRow>& curve,
+                            const std::vector<double>& work, nlohmann::ordered_json& report,
                             std::vector<std::string>& files) {
   const std::vector<dem::SievedPiece> final_pieces =
       dem::fragment_pieces(s.reference, world.bonds());
@@ -95,7 +112,6 @@ void write_breakage_outputs(const std::filesystem::path& out, const dem::World& 
   last.rgb = {200, 40, 30};
   write_plot((out / "grading.png").string(), {initial, last}, "log10 sieve size (mm)",
              "percent passing (by volume)", "grading by intermediate dimension");
-  const std::vector<double> work = input_work(curve);
   PlotSeries by_stress, by_work;
   for (std::size_t k = 0; k < curve.size(); ++k) {
     by_stress.points.x.push_back(curve[k].axial_stress / 1e6);
@@ -113,23 +129,31 @@ void write_breakage_outputs(const std::filesystem::path& out, const dem::World& 
   double solid0 = 0, solid1 = 0;
   for (const dem::SievedPiece& p : s.initial_grading) solid0 += p.volume;
   for (const dem::SievedPiece& p : final_pieces) solid1 += p.volume;
-  report["breakage"] = {{"bonds", world.bonds().size()},
-                        {"bonds_broken", end.bonds_broken},
-                        {"particles", s.initial_grading.size()},
-                        {"particles_broken", end.particles_broken},
-                        {"fragments", end.fragments},
-                        {"hardin_br", end.hardin_br},
-                        {"einav_b", end.einav_b},
-                        {"marsal_bg", end.marsal_bg},
-                        {"work_pa", work.back()},
-                        {"class_bounds", s.class_bounds},
-                        {"broken_by_class", end.broken_by_class},
-                        {"solid_volume_initial", solid0},
-                        {"solid_volume_final", solid1},
-                        {"sieve_rule",
-                         "a fragment passes a square sieve of opening s when its intermediate "
-                         "dimension I (extent along its middle principal axis of inertia) < s"}};
-  for (const char* f : {"grading.csv", "grading.png", "breakage.png", "breakage_work.png"})
+  report["breakage"] = {
+      {"bonds", world.bonds().size()},
+      {"bonds_broken", end.bonds_broken},
+      {"bonds_broken_by_mode",
+       {{"mode_i", end.bonds_mode_i}, {"mode_ii", end.bonds_mode_ii}, {"mixed", end.bonds_mixed}}},
+      {"particles", s.initial_grading.size()},
+      {"particles_broken", end.particles_broken},
+      {"fragments", end.fragments},
+      {"hardin_br", end.hardin_br},
+      {"einav_b", end.einav_b},
+      {"marsal_bg", end.marsal_bg},
+      {"work_pa", work.back()},
+      {"class_bounds", s.class_bounds},
+      {"broken_by_class", end.broken_by_class},
+      {"solid_volume_initial", solid0},
+      {"solid_volume_final", solid1},
+      {"sieve_rule",
+       "a fragment passes a square sieve of opening s when its intermediate "
+       "dimension I (extent along its middle principal axis of inertia) < s"}};
+  const int n = static_cast<int>(world.bodies().size());
+  write_specimen_vtp((out / "fragments.vtp").string(), specimen_bodies(world),
+                     {{"particle", ordinals(s.particles)},
+                      {"fragment", ordinals(dem::fragments(n, world.bonds()))}});
+  for (const char* f :
+       {"grading.csv", "grading.png", "breakage.png", "breakage_work.png", "fragments.vtp"})
     files.push_back(f);
 }
 

@@ -26,11 +26,14 @@ std::string breakage_header();
 std::string breakage_values(const dem::CurveRow& row, double work);
 
 /// grading.csv (sieve_m, passing_initial, passing_final), grading.png (both curves against
-/// log10 of the sieve in mm) and breakage.png (Br against the axial stress and against the
-/// work), and the report's "breakage" entry; their names are added to `files`.
+/// log10 of the sieve in mm), breakage.png and breakage_work.png (Br against the axial stress
+/// and against the work `work` of each row, input_work), fragments.vtp (the spheres at the end
+/// with point data particle and fragment, each numbered from 1, besides body) and the report's
+/// "breakage" entry; their names are added to `files`.
 void write_breakage_outputs(const std::filesystem::path& out, const dem::World& world,
                             const dem::ElementTestSettings& settings,
-                            const std::vector<dem::CurveRow>& curve, nlohmann::ordered_json& report,
+                            const std::vector<dem::CurveRow>& curve,
+                            const std::vector<double>& work, nlohmann::ordered_json& report,
                             std::vector<std::string>& files);
 
 }  // namespace clumpkit

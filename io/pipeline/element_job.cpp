@@ -112,11 +112,11 @@ LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specime
   const dem::World& world = specimen.world;
   fs::remove_all(out / "checkpoints");
 
+  const std::vector<double> work = crushable ? input_work(r.curve) : std::vector<double>{};
   write_file_atomically((out / "curve.csv").string(), [&](std::ostream& f) {
     f << "step,axial_strain,volumetric_strain,axial_stress_pa,radial_stress_pa,p_pa,q_pa,"
          "porosity,coordination_number,unbalanced_force,interior_axial_strain"
       << (crushable ? breakage_header() : "") << "\n";
-    const std::vector<double> work = input_work(r.curve);
     for (std::size_t k = 0; k < r.curve.size(); ++k) {
       const dem::CurveRow& c = r.curve[k];
       f << c.step << "," << format_number(c.axial_strain) << ","
@@ -224,7 +224,7 @@ LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specime
       (out / "curve.png").string(), plot, x_label, y_label,
       std::string(kind_name(kind)) + " test, " + format_number(s.confining / 1e3, 4) + " kPa");
   std::vector<std::string> files = {"curve.csv", "curve.png", "report.json"};
-  if (crushable) write_breakage_outputs(out, world, s, r.curve, rep, files);
+  if (crushable) write_breakage_outputs(out, world, s, r.curve, work, rep, files);
   if (options.save_consolidated) files.push_back("consolidated/");
   return finish_test_job(setup, out_dir, recipe, kind_name(kind), specimen_dir, rep, files,
                          options.resume, r.resumed);

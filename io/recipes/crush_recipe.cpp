@@ -13,11 +13,6 @@ namespace clumpkit {
 
 namespace {
 
-int bounded(const TomlFields& f, const toml::node& n, const std::string& field, long long lo,
-            long long hi) {
-  return f.integer_in(n, field, lo, hi);
-}
-
 // A number in (0, 1): "must be in (0, 1), got VALUE" otherwise.
 void open_fraction(const TomlFields& f, const std::string& field, const toml::node& v, double x) {
   if (!(x > 0 && x < 1)) f.fail(field, "must be in (0, 1), got " + toml_show(v));
@@ -92,7 +87,7 @@ const RecipeSection<CrushRecipe>& crush_section() {
        custom_key<R>("bootstrap", "", "[100, 100000]",
                      "bootstrap resamples of the Weibull fits' 90 % intervals", "1000",
                      [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
-                       r.bootstrap = bounded(f, v, field, 100, 100000);
+                       r.bootstrap = f.integer_in(v, field, 100, 100000);
                      })}};
   return s;
 }
@@ -113,9 +108,9 @@ void read_cells_table(const TomlFields& f, const toml::table& t, CrushRecipe& r)
     if (k == "cell_size") {
       r.cells.cell_size = f.positive(v, field);
     } else if (k == "lloyd") {
-      r.cells.lloyd = bounded(f, v, field, 0, 100);
+      r.cells.lloyd = f.integer_in(v, field, 0, 100);
     } else if (k == "face_subdivision") {
-      r.face_subdivision = bounded(f, v, field, 0, 3);
+      r.face_subdivision = f.integer_in(v, field, 0, 3);
     } else if (k == "strength_factor") {
       r.strength = f.distribution(v, field);
       try {
@@ -184,6 +179,25 @@ void apply_bond_scale(const TomlFields& f, CrushRecipe& r) {
   }
 }
 
+namespace {}  // namespace
+
+bool read_polyhedron_key(const TomlFields& f, const std::string& key, const toml::node& v,
+                         const std::string& field, PolyhedronParams& p) {
+  if (key == "planes")
+    p.planes = f.integer_in(v, field, 4, 10000);
+  else if (key == "E")
+    p.E = f.number(v, field);
+  else if (key == "F")
+    p.F = f.number(v, field);
+  else if (key == "offset_min")
+    p.offset_min = f.number(v, field);
+  else if (key == "offset_max")
+    p.offset_max = f.number(v, field);
+  else
+    return false;
+  return true;
+}
+
 namespace {
 
 CrushSet read_set(const TomlFields& f, const toml::table& t, const std::string& prefix) {
@@ -202,7 +216,7 @@ CrushSet read_set(const TomlFields& f, const toml::table& t, const std::string& 
       s.polyhedron.diameter = f.positive(v, field);
       have_diameter = true;
     } else if (k == "samples") {
-      s.samples = bounded(f, v, field, 3, 100000);
+      s.samples = f.integer_in(v, field, 3, 100000);
     } else if (k == "axis") {
       const std::string a = f.string(v, field);
       if (a == "long" || a == "x")
@@ -222,20 +236,11 @@ CrushSet read_set(const TomlFields& f, const toml::table& t, const std::string& 
       const auto* b = v.as_boolean();
       if (!b) f.fail(field, "expected true or false, got " + toml_show(v));
       s.size_law = b->get();
-    } else if (k == "planes") {
-      s.polyhedron.planes = bounded(f, v, field, 4, 10000);
-    } else if (k == "E") {
-      s.polyhedron.E = f.number(v, field);
-    } else if (k == "F") {
-      s.polyhedron.F = f.number(v, field);
-    } else if (k == "offset_min") {
-      s.polyhedron.offset_min = f.number(v, field);
-    } else if (k == "offset_max") {
-      s.polyhedron.offset_max = f.number(v, field);
+    } else if (read_polyhedron_key(f, k, v, field, s.polyhedron)) {
     } else if (k == "height") {
       s.height = f.positive(v, field);
     } else if (k == "sides") {
-      s.sides = bounded(f, v, field, 3, 4096);
+      s.sides = f.integer_in(v, field, 3, 4096);
     } else {
       f.fail(field,
              "unknown key (known: name, shape, diameter, samples, axis, rest, size_law, planes, "

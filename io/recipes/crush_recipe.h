@@ -68,6 +68,11 @@ CrushRecipe read_crush_recipe(const std::string& path);
 /// and the energies by its square and checks the law against the strength factors' upper
 /// bound. Each throws InvalidInput naming the file, field and value.
 void read_cells_table(const TomlFields& f, const toml::table& t, CrushRecipe& r);
+/// One key of a parent polyhedron (planes, E, F, offset_min, offset_max; Hu et al. 2023's cut
+/// sphere) read into `p`, as a crushing set and a crushable specimen's [rock] give them; false
+/// for any other key. The values are checked together by validate(PolyhedronParams).
+bool read_polyhedron_key(const TomlFields& f, const std::string& key, const toml::node& v,
+                         const std::string& field, PolyhedronParams& p);
 void read_bond_table(const TomlFields& f, const toml::node& t, CrushRecipe& r);
 void apply_bond_scale(const TomlFields& f, CrushRecipe& r);
 

@@ -235,16 +235,7 @@ void read_rock(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
       const auto* b = rv.as_boolean();
       if (!b) f.fail(field, "expected true or false, got " + toml_show(rv));
       r.unbreakable = b->get();
-    } else if (g == "planes") {
-      m.shape.planes = f.integer_in(rv, field, 4, 10000);
-    } else if (g == "E") {
-      m.shape.E = f.positive(rv, field);
-    } else if (g == "F") {
-      m.shape.F = f.positive(rv, field);
-    } else if (g == "offset_min") {
-      m.shape.offset_min = f.positive(rv, field);
-    } else if (g == "offset_max") {
-      m.shape.offset_max = f.positive(rv, field);
+    } else if (read_polyhedron_key(f, g, rv, field, m.shape)) {
     } else if (g == "spheres_per_cell") {
       m.fill.spheres = f.integer_in(rv, field, 1, 100);
     } else if (g == "cell_voxels") {

@@ -6,11 +6,27 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
 
 using namespace cli_test;
 
 namespace {
+
+// The Int32 point array `name` of a VTK XML PolyData file written in ascii.
+std::vector<int> vtp_int_array(const fs::path& path, const std::string& name) {
+  const std::string text = slurp(path);
+  const std::size_t at = text.find("Name=\"" + name + "\"");
+  if (at == std::string::npos) return {};
+  const std::size_t from = text.find('>', at) + 1, to = text.find("</DataArray>", from);
+  std::istringstream in(text.substr(from, to - from));
+  std::vector<int> v;
+  for (int x; in >> x;) v.push_back(x);
+  return v;
+}
 
 // About 30 particles of 14–18 mm, 8 mm cells of four spheres, in a 55 mm cylinder at n = 0.45;
 // `scale` sets the bonds' strength (0.15: weak enough that a 2 MPa oedometer breaks them).
@@ -98,20 +114,39 @@ TEST(CliCrushable, OedometerBreaksTheCellsConservingVolumeSameBytesForAnyThreads
   // Conservation: the fragments hold the particles' solid volume.
   EXPECT_NEAR(b["solid_volume_final"].get<double>() / b["solid_volume_initial"].get<double>(), 1,
               1e-12);
+  const auto& modes = b["bonds_broken_by_mode"];
+  EXPECT_EQ(
+      modes["mode_i"].get<double>() + modes["mode_ii"].get<double>() + modes["mixed"].get<double>(),
+      b["bonds_broken"].get<double>());
   std::string header;
-  const std::vector<std::vector<double>> rows = csv_rows(d / "one" / "curve.csv", 22, &header);
+  const std::vector<std::vector<double>> rows = csv_rows(d / "one" / "curve.csv", 25, &header);
   ASSERT_GT(rows.size(), 3u);
+  EXPECT_NE(header.find(",bonds_broken,bonds_mode_i,bonds_mode_ii,bonds_mixed,fragments,"),
+            std::string::npos)
+      << header;
   EXPECT_NE(header.find(",work_pa,broken_class_1,"), std::string::npos) << header;
-  EXPECT_EQ(rows[0][13], 0);  // no particle broken at the consolidated state
-  EXPECT_EQ(rows[0][17], 0);  // nor any work done
-  // The broken fraction of each size class: a fraction, and together the particles broken.
-  for (const auto& row : rows)
-    for (int c = 18; c < 22; ++c) {
+  EXPECT_EQ(rows[0][16], 0);  // no particle broken at the consolidated state
+  EXPECT_EQ(rows[0][20], 0);  // nor any work done
+  for (const auto& row : rows) {
+    EXPECT_EQ(row[12] + row[13] + row[14], row[11]);  // every broken bond in one mode
+    // The broken fraction of each size class: a fraction.
+    for (int c = 21; c < 25; ++c) {
       EXPECT_GE(row[c], 0.0);
       EXPECT_LE(row[c], 1.0);
     }
-  for (const char* f : {"grading.png", "breakage.png", "breakage_work.png"})
+  }
+  for (const char* f : {"grading.png", "breakage.png", "breakage_work.png", "fragments.vtp"})
     EXPECT_TRUE(fs::exists(d / "one" / f)) << f;
+  // fragments.vtp: every sphere labelled by its particle and its fragment, numbered from 1 up to
+  // the report's counts.
+  const std::vector<int> particle = vtp_int_array(d / "one" / "fragments.vtp", "particle"),
+                         fragment = vtp_int_array(d / "one" / "fragments.vtp", "fragment");
+  ASSERT_EQ(particle.size(), fragment.size());
+  ASSERT_FALSE(particle.empty());
+  EXPECT_EQ(*std::min_element(fragment.begin(), fragment.end()), 1);
+  EXPECT_EQ(*std::max_element(fragment.begin(), fragment.end()), b["fragments"].get<double>());
+  EXPECT_EQ(*std::max_element(particle.begin(), particle.end()), b["particles"].get<double>());
+  EXPECT_EQ(slurp(d / "one" / "fragments.vtp"), slurp(d / "stopped" / "fragments.vtp"));
 }
 
 TEST(CliCrushable, TheUnbreakableControlKeepsItsGrading) {

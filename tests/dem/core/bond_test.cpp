@@ -112,6 +112,36 @@ TEST(Bond, RigidMotionCarriesNoForceAndTurnsTheForces) {
   }
 }
 
+TEST(Bond, FailureModeIsTheJumpsDirectionWhenTheFaceBroke) {
+  const CohesiveParams law;
+  // b pulled away along a direction at angle θ to the face normal, in small steps until the bond
+  // breaks: the mix s² = sin²θ at failure, mode I below 30°, mode II above 60°, mixed between.
+  // Compression with slip breaks in mode II (s² = 1).
+  struct Case {
+    double angle_deg;
+    double dn_sign;
+    BondFailure mode;
+  };
+  for (const Case c : {Case{0, 1, BondFailure::mode_i}, Case{20, 1, BondFailure::mode_i},
+                       Case{45, 1, BondFailure::mixed}, Case{70, 1, BondFailure::mode_ii},
+                       Case{90, 1, BondFailure::mode_ii}, Case{80, -1, BondFailure::mode_ii}}) {
+    Pair p = cubes();
+    EXPECT_EQ(failure_mode(p.bond), BondFailure::intact);
+    const double t = c.angle_deg * M_PI / 180;
+    const Vec3 dir(c.dn_sign * std::cos(t), std::sin(t), 0.0);
+    const double step = 2.0 * law.g_t / law.sigma_t / 2000;  // beyond δ_u of either mode in 4000
+    for (int k = 1; k <= 4000 && p.bond.holds(); ++k) {
+      p.b.position = Vec3(kA, 0, 0) + k * step * dir;
+      bond_wrench(p.bond, law, p.a, p.b);
+    }
+    ASSERT_FALSE(p.bond.holds()) << c.angle_deg;
+    const double s2 = c.dn_sign > 0 ? std::pow(std::sin(t), 2) : 1.0;
+    for (const BondPoint& q : p.bond.points)
+      EXPECT_NEAR(q.state.failure_mix, s2, 1e-9) << c.angle_deg;
+    EXPECT_EQ(failure_mode(p.bond), c.mode) << c.angle_deg;
+  }
+}
+
 TEST(Bond, FragmentsAreTheComponentsOfHoldingBonds) {
   Pair p = cubes();
   Bond held = p.bond, broken = p.bond, other = p.bond;

@@ -77,6 +77,11 @@ TEST(CrushableOedometer, CountsWhatBrokeKeepsTheVolumeSameBytesForOneAndTwoThrea
   EXPECT_GT(last.particles_broken, 0);
   EXPECT_GT(last.hardin_br, 0);
   EXPECT_GE(last.hardin_br, first.hardin_br);
+  // Each broken bond failed in one mode; under platens most faces slide or fail mixed.
+  EXPECT_GT(last.bonds_mode_ii + last.bonds_mixed, 0);
+  for (const CurveRow& c : one) {
+    EXPECT_EQ(c.bonds_mode_i + c.bonds_mode_ii + c.bonds_mixed, c.bonds_broken);
+  }
   for (const CurveRow& c : one)
     for (double f : c.broken_by_class) {
       EXPECT_GE(f, 0.0);

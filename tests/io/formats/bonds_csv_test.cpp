@@ -1,5 +1,5 @@
-// bonds.csv round trips every bond and point to the bit (damage and slip included), and refuses
-// a bond to a body the specimen does not have, naming the file, line and field.
+// bonds.csv round trips every bond and point to the bit (damage, slip and failure mix included),
+// and refuses a bond to a body the specimen does not have, naming the file, line and field.
 #include "io/formats/bonds_csv.h"
 
 #include "dem/core/body.h"
@@ -29,6 +29,8 @@ SpecimenBonds one_bond() {
                                    {1e-5, 2e-5}, 1.1));
   s.bonds[0].points[1].state.damage = 0.25;
   s.bonds[0].points[1].state.slip = Vec3(1e-6, -2e-6, 3e-7);
+  s.bonds[0].points[0].state.damage = 1.0;
+  s.bonds[0].points[0].state.failure_mix = 0.3;
   return s;
 }
 
@@ -52,6 +54,7 @@ TEST(BondsCsv, RoundTripKeepsEveryBit) {
     EXPECT_EQ(x.points[k].area, y.points[k].area);
     EXPECT_EQ(x.points[k].state.damage, y.points[k].state.damage);
     EXPECT_EQ(x.points[k].state.slip, y.points[k].state.slip);
+    EXPECT_EQ(x.points[k].state.failure_mix, y.points[k].state.failure_mix);
   }
   std::filesystem::remove(path);
 }
