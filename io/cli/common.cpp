@@ -1,8 +1,9 @@
 #include "io/cli/common.h"
 
-#include <algorithm>
-
 #include "geom/errors.h"
+#include "io/pipeline/page.h"
+
+#include <algorithm>
 
 #include <tbb/global_control.h>
 
@@ -57,7 +58,18 @@ void add_recipe_job_options(CLI::App* command, RecipeJobOptions& options,
                    "Output directory (written as DIR.partial and renamed at the end; an earlier "
                    "clumpkit output there is replaced)")
       ->required();
+  command->add_flag("--page", options.page,
+                    "Also write DIR/index.html, a page to browse the results offline (clumpkit "
+                    "page DIR)");
   add_job_options(command, options.job, kind, json_help);
+}
+
+void finish_page(const RecipeJobOptions& options) {
+  if (!options.page) return;
+  PageOptions p;
+  p.dirs = {options.out};
+  const PageResult r = write_page(p);
+  if (!options.job.json) std::printf("page: %s\n", r.index.string().c_str());
 }
 
 void add_job_options(CLI::App* command, JobOptions& options, JobKind kind,

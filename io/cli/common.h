@@ -29,6 +29,7 @@ void register_compare_curves(CLI::App& app);
 void register_cells(CLI::App& app);
 void register_crush(CLI::App& app);
 void register_specimen_scale(CLI::App& app);
+void register_page(CLI::App& app);
 
 void register_repair(CLI::App& app);
 
@@ -59,13 +60,18 @@ struct RecipeJobOptions {
   std::string recipe;  ///< --recipe
   std::string out;     ///< --out
   JobOptions job;
+  bool page = false;  ///< --page: DIR/index.html when the job is done (clumpkit page)
 };
 
-/// Adds --recipe (`recipe_help` says which kind) and --out, both required, then the job options
-/// of `kind` (add_job_options).
+/// Adds --recipe (`recipe_help` says which kind) and --out, both required, --page, then the job
+/// options of `kind` (add_job_options).
 void add_recipe_job_options(CLI::App* command, RecipeJobOptions& options,
                             const std::string& recipe_help, JobKind kind,
                             const std::string& json_help);
+
+/// After a recipe job: its page in the output folder when --page was given (clumpkit page), its
+/// path printed unless --json.
+void finish_page(const RecipeJobOptions& options);
 
 /// Limits the worker threads for the rest of the command (limit_threads's rule and check).
 void set_threads(int threads);

@@ -45,6 +45,7 @@ void register_crush(CLI::App& app) {
       j["resumed"] = r.resumed;
       j["seconds"] = seconds;
       std::cout << j.dump(2) << "\n";
+      finish_page(o->run);
       return;
     }
     std::printf("wrote %zu crushed particles to %s (%zu kept from an earlier run) in %.1f s\n",
@@ -71,6 +72,7 @@ void register_crush(CLI::App& app) {
           r.report["size_exponent"].get<double>(), r.report["size_exponent_ci90"][0].get<double>(),
           r.report["size_exponent_ci90"][1].get<double>(),
           r.report["size_coefficient"].get<double>(), r.report["spearman"].get<double>());
+    finish_page(o->run);
   });
 }
 

@@ -66,6 +66,7 @@ void register_library(CLI::App& app) {
           "library.csv, manifest.json\n",
           r.particles, r.out_dir.c_str(), r.resumed, seconds);
     }
+    finish_page(o->run);
   });
 }
 

@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   clumpkit::cli::register_compare_curves(app);
   clumpkit::cli::register_cells(app);
   clumpkit::cli::register_crush(app);
+  clumpkit::cli::register_page(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -35,6 +35,7 @@ void register_shapes(CLI::App& app) {
       std::printf("wrote %zu particles to %s (meshes/, shapes.csv, manifest.json)\n", r.particles,
                   r.out_dir.c_str());
     }
+    finish_page(o->run);
   });
 }
 

@@ -72,6 +72,7 @@ void register_specimen(CLI::App& app) {
           result.relative_density, recipe.target_relative_density, result.height,
           result.friction_compaction, report["seconds"]["total"].get<double>());
     }
+    finish_page(o->run);
   });
 }
 

@@ -89,6 +89,7 @@ void register_test(CLI::App& app) {
       std::printf("wrote %s: %s test, %lld steps in %.1f s: curve.csv, curve.png, report.json\n",
                   o->run.out.c_str(), o->kind.c_str(), rep["steps"].get<long long>(), seconds);
     }
+    finish_page(o->run);
   });
 }
 
