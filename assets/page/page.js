@@ -25,7 +25,8 @@
     if (!isFinite(v)) return String(v);
     if (Number.isInteger(v) && Math.abs(v) < 1e9) return String(v);
     const a = Math.abs(v);
-    return a !== 0 && (a < 1e-3 || a >= 1e6) ? v.toExponential(4) : String(Number(v.toPrecision(5)));
+    if (a !== 0 && (a < 1e-3 || a >= 1e6)) return v.toExponential(4).replace(/\.?0+e/, 'e');
+    return String(Number(v.toPrecision(5)));
   }
   function section(title) {
     const s = el('section', {}, [el('h2', { text: title })]);
