@@ -242,7 +242,8 @@
     }
     function fit(lo, hi) {
       orbit.target.set((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
-      const r = 0.5 * Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) || 1;
+      // The largest extent, not the diagonal: a tall specimen fills the view.
+      const r = 0.6 * Math.max(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) || 1;
       orbit.dist = 1.6 * r / Math.tan(camera.fov * Math.PI / 360);
       camera.near = r * 0.01; camera.far = r * 100;
     }
@@ -257,6 +258,7 @@
     }
     return {
       render, clear, fit, spheres, legend,
+      add(object) { group.add(object); },
       mesh(v, f) {
         const geo = new THREE.BufferGeometry();
         geo.setAttribute('position', new THREE.Float32BufferAttribute(v, 3));
@@ -307,7 +309,14 @@
     const s = section('Specimen: ' + S.total + ' spheres' + (S.shown < S.total ? ' (every ' + S.stride + 'th shown: ' + S.shown + ')' : ''));
     const viewer = Viewer(s);
     const select = el('select', { id: 'colour-by' });
-    for (const k of ['body', 'size', 'kind', 'zone']) select.appendChild(el('option', { value: k, text: 'colour by ' + k }));
+    for (const k of ['body', 'size', 'kind', 'zone'].concat(S.bands ? ['porosity band'] : [])) select.appendChild(el('option', { value: k, text: 'colour by ' + k }));
+    // A sphere's porosity band (equal heights of the report's measurement region), -1 outside.
+    function band(i) {
+      const B = S.bands, n = B.porosity.length, t = (S.z[i] - B.z_lo) / (B.z_hi - B.z_lo);
+      return t < 0 || t >= 1 ? -1 : Math.floor(t * n);
+    }
+    let plo = Infinity, phi = -Infinity;
+    if (S.bands) for (const p of S.bands.porosity) { plo = Math.min(plo, p); phi = Math.max(phi, p); }
     let zmin = Infinity, zmax = -Infinity, rmin = Infinity, rmax = 0;
     for (let i = 0; i < S.shown; ++i) {
       zmin = Math.min(zmin, S.z[i] - S.r[i]); zmax = Math.max(zmax, S.z[i] + S.r[i]);
@@ -322,6 +331,12 @@
       if (by === 'body') return palette[S.body[i] % palette.length];
       if (by === 'kind') return S.kind[i] ? 0xc0392b : 0x2e6fbf;
       if (by === 'zone') return palette[(S.zone[i] + palette.length) % palette.length];
+      if (by === 'porosity band') {
+        const b = band(i);
+        if (b < 0) return 0xcccccc;
+        const t = phi > plo ? (S.bands.porosity[b] - plo) / (phi - plo) : 0;
+        return ramp[Math.min(ramp.length - 1, Math.floor(t * ramp.length))];
+      }
       const t = rmax > rmin ? (S.r[i] - rmin) / (rmax - rmin) : 0;
       return ramp[Math.min(ramp.length - 1, Math.floor(t * ramp.length))];
     }
@@ -340,7 +355,8 @@
       viewer.clear();
       const detail = S.shown > 50000 ? 0 : 1;
       for (const [c, list] of groups) viewer.spheres(list, c, detail);
-      viewer.legend.textContent = n + ' spheres drawn, coloured by ' + select.value;
+      viewer.legend.textContent = n + ' spheres drawn, coloured by ' + select.value +
+        (select.value === 'porosity band' ? ' (dark ' + fmt(plo) + ' to light ' + fmt(phi) + ', grey outside the measured region; bands from the bottom: ' + S.bands.porosity.map(fmt).join(', ') + ')' : '');
       viewer.render();
     }
     select.addEventListener('change', draw);
@@ -365,10 +381,61 @@
     const left = el('div'), right = el('div');
     row.appendChild(left); row.appendChild(right);
     const idCol = D.table.columns.indexOf('id');
+    const curveBox = el('div'), cellsBox = el('div');
+    left.appendChild(curveBox); left.appendChild(cellsBox);
+    const viewer = D.cells_ids.length ? Viewer(cellsBox) : null;
+    const when = el('select', { id: 'cells-when' });
+    for (const k of ['after', 'before']) when.appendChild(el('option', { value: k, text: 'cells ' + k + ' the test' }));
+    if (viewer) cellsBox.appendChild(el('div', { class: 'controls' }, [when, el('span', { class: 'note', text: 'coloured by fragment at the end' })]));
+    let shown = null;
+    // The cells of a particle, each polygon fanned into triangles, one mesh per fragment's colour;
+    // after the test a vertex v is at q·(v − p0) + p1.
+    function drawCells() {
+      if (!shown) return;
+      viewer.clear();
+      const palette = [0x1f77b4, 0xd62728, 0x2ca02c, 0xff7f0e, 0x9467bd, 0x8c564b, 0xe377c2, 0x17becf, 0xbcbd22, 0x7f7f7f];
+      const groups = new Map(), lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
+      const after = when.value === 'after';
+      let fragments = 0;
+      for (const c of shown.cells) {
+        fragments = Math.max(fragments, c.fragment);
+        const q = new THREE.Quaternion(c.q[1], c.q[2], c.q[3], c.q[0]);
+        const pts = [];
+        for (let i = 0; i < c.v.length; i += 3) {
+          const p = new THREE.Vector3(c.v[i], c.v[i + 1], c.v[i + 2]);
+          if (after) p.sub(new THREE.Vector3(...c.p0)).applyQuaternion(q).add(new THREE.Vector3(...c.p1));
+          pts.push(p);
+          lo[0] = Math.min(lo[0], p.x); lo[1] = Math.min(lo[1], p.y); lo[2] = Math.min(lo[2], p.z);
+          hi[0] = Math.max(hi[0], p.x); hi[1] = Math.max(hi[1], p.y); hi[2] = Math.max(hi[2], p.z);
+        }
+        const colour = palette[(c.fragment - 1) % palette.length];
+        if (!groups.has(colour)) groups.set(colour, []);
+        const list = groups.get(colour);
+        for (const f of c.f)
+          for (let i = 1; i + 1 < f.length; ++i)
+            for (const j of [f[0], f[i], f[i + 1]]) list.push(pts[j].x, pts[j].y, pts[j].z);
+      }
+      for (const [colour, list] of groups) {
+        const geo = new THREE.BufferGeometry();
+        geo.setAttribute('position', new THREE.Float32BufferAttribute(list, 3));
+        geo.computeVertexNormals();
+        viewer.add(new THREE.Mesh(geo, new THREE.MeshPhongMaterial({ color: colour, flatShading: true })));
+        viewer.add(new THREE.LineSegments(new THREE.EdgesGeometry(geo, 20), new THREE.LineBasicMaterial({ color: 0x333333 })));
+      }
+      viewer.fit(lo, hi);
+      viewer.legend.textContent = shown.cells.length + ' cells, ' + fragments + ' fragments at the end; ' + when.value + ' the test';
+      viewer.render();
+    }
+    when.addEventListener('change', drawCells);
     function show(r) {
-      const c = D.curves[String(r[idCol])];
-      left.textContent = '';
-      if (c) left.appendChild(plot({ title: 'particle ' + r[idCol], x: 'platen travel (mm)', y: 'force (N)', series: [{ label: 'particle ' + r[idCol], x: c.x, y: c.y }] }));
+      const id = r[idCol], c = D.curves[String(id)];
+      curveBox.textContent = '';
+      if (c) curveBox.appendChild(plot({ title: 'particle ' + id, x: 'platen travel (mm)', y: 'force (N)', series: [{ label: 'particle ' + id, x: c.x, y: c.y }] }));
+      if (!viewer || !D.cells_ids.includes(id)) return;
+      window.clumpkit_cells = (p) => { shown = p; drawCells(); };
+      const old = document.getElementById('cells-script');
+      if (old) old.remove();
+      document.body.appendChild(el('script', { id: 'cells-script', src: D.cells + String(id).padStart(5, '0') + '.js' }));
     }
     right.appendChild(dataTable(D.table, show));
     show(D.table.rows[0]);

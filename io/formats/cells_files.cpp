@@ -3,6 +3,11 @@
 #include "geom/format.h"
 #include "io/base/atomic_file.h"
 
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <ostream>
 
@@ -101,6 +106,43 @@ void write_bonds_csv(const std::string& bonds_path, const std::string& points_pa
       for (const FacePoint& p : bonds[k].points)
         o << k << "," << num(p.position.x()) << "," << num(p.position.y()) << ","
           << num(p.position.z()) << "," << num(p.area) << "\n";
+  });
+}
+
+namespace {
+
+double six_digits(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return std::strtod(text, nullptr);
+}
+
+nlohmann::json vec_json(const Vec3& v) {
+  return {six_digits(v.x()), six_digits(v.y()), six_digits(v.z())};
+}
+
+}  // namespace
+
+void write_cell_motion(const std::string& path, const Tessellation& t,
+                       const std::vector<CellPose>& before, const std::vector<CellPose>& after,
+                       const std::vector<int>& fragment) {
+  nlohmann::json cells = nlohmann::json::array();
+  for (std::size_t k = 0; k < t.cells.size(); ++k) {
+    const Cell& c = t.cells[k];
+    nlohmann::json v = nlohmann::json::array(), f = nlohmann::json::array();
+    for (const Vec3& x : c.vertices)
+      for (int i = 0; i < 3; ++i) v.push_back(six_digits(x[i]));
+    for (const CellFace& face : c.faces) f.push_back(face.vertices);
+    const Eigen::Quaterniond q = after[k].orientation * before[k].orientation.conjugate();
+    cells.push_back({{"v", v},
+                     {"f", f},
+                     {"p0", vec_json(before[k].position)},
+                     {"p1", vec_json(after[k].position)},
+                     {"q", {q.w(), q.x(), q.y(), q.z()}},
+                     {"fragment", fragment[k]}});
+  }
+  write_file_atomically(path, [&](std::ostream& o) {
+    o << nlohmann::json{{"cells", cells}}.dump();
   });
 }
 

@@ -4,6 +4,9 @@
 
 #include "geom/cells/cell_bonds.h"
 #include "geom/cells/voronoi_cells.h"
+#include "geom/mesh/mesh.h"
+
+#include <Eigen/Geometry>
 
 #include <string>
 #include <vector>
@@ -28,5 +31,21 @@ void write_cells_csv(const std::string& path, const Tessellation& cells,
 /// from a to b, integration point count); bond_points.csv: `bond,x,y,z,area`. Atomic writes.
 void write_bonds_csv(const std::string& bonds_path, const std::string& points_path,
                      const std::vector<CellBond>& bonds);
+
+/// Where a cell went: its body's pose as the test began and as it ended.
+struct CellPose {
+  Vec3 position = Vec3::Zero();
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+};
+
+/// NNNNN.cells.json of a crushing run: the cells before and after, as a page draws them.
+/// {"cells": [{"v": [x, y, z, …] (vertices where the cells were made), "f": [[i, j, k, …], …]
+/// (faces, counter-clockwise from outside), "p0": body position before, "p1": after, "q": the
+/// rotation from before to after (w, x, y, z), "fragment": the cell's fragment at the end, from
+/// 1}, …]}: a vertex went to q·(v − p0) + p1. Six significant digits (a picture, not a state).
+/// Atomic write.
+void write_cell_motion(const std::string& path, const Tessellation& cells,
+                       const std::vector<CellPose>& before, const std::vector<CellPose>& after,
+                       const std::vector<int>& fragment);
 
 }  // namespace clumpkit

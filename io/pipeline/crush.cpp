@@ -1,5 +1,6 @@
 #include "io/pipeline/crush.h"
 
+#include "dem/core/bond.h"
 #include "dem/lab/crushable.h"
 #include "dem/lab/weibull.h"
 #include "geom/cells/cell_bonds.h"
@@ -8,6 +9,7 @@
 #include "io/base/atomic_file.h"
 #include "io/base/json_file.h"
 #include "io/base/text.h"
+#include "io/formats/cells_files.h"
 #include "io/pipeline/manifest.h"
 #include "io/pipeline/output_dir.h"
 #include "io/reports/plot.h"
@@ -92,7 +94,10 @@ nlohmann::ordered_json crush_one(const CrushRecipe& recipe, const Job& job, std:
   const double diameter = std::cbrt(6.0 * cells.parent_volume / M_PI);
   dem::CrushOptions rig = recipe.rig;
   rig.axis = s.axis;
+  std::vector<CellPose> before, after;
+  for (const dem::Body& b : world.bodies()) before.push_back({b.position, b.orientation});
   const dem::CrushResult r = dem::crush_particle(world, diameter, rig);
+  for (const dem::Body& b : world.bodies()) after.push_back({b.position, b.orientation});
 
   const std::string stem = id_name(id);
   write_file_atomically((parts / (stem + ".csv")).string(), [&](std::ostream& o) {
@@ -100,6 +105,17 @@ nlohmann::ordered_json crush_one(const CrushRecipe& recipe, const Job& job, std:
     for (const dem::CrushSample& x : r.samples)
       o << x.travel << "," << x.force << "," << (x.split ? 1 : 0) << "\n";
   });
+  // The cells before and after for the page (fragments numbered from 1 in cell order).
+  const std::vector<int> label =
+      dem::fragments(static_cast<int>(world.bodies().size()), world.bonds());
+  std::vector<int> fragment(label.size()), rank(label.size(), 0);
+  int next = 0;
+  for (std::size_t k = 0; k < label.size(); ++k) {
+    int& r_k = rank[static_cast<std::size_t>(label[k])];
+    if (r_k == 0) r_k = ++next;
+    fragment[k] = r_k;
+  }
+  write_cell_motion((parts / (stem + ".cells.json")).string(), cells, before, after, fragment);
   std::size_t points = 0;
   for (const CellBond& b : bonds) points += b.points.size();
   nlohmann::ordered_json rec;

@@ -309,6 +309,13 @@ std::size_t specimen_data(const Folder& f, const fs::path& out, std::size_t max_
                      {"body", body},
                      {"kind", kind},
                      {"zone", zone}};
+  // The porosity bands of the report (equal heights of the measurement region), for colouring.
+  const nlohmann::json& rep = f.report;
+  if (rep.is_object() && rep.contains("band_porosity") && rep["band_porosity"].is_array() &&
+      !rep["band_porosity"].empty() && rep.contains("measurement_region"))
+    data["spheres"]["bands"] = {{"z_lo", rep["measurement_region"].value("z_lo", 0.0)},
+                                {"z_hi", rep["measurement_region"].value("z_hi", 0.0)},
+                                {"porosity", rep["band_porosity"]}};
   Images images{out, &scripts};
   std::vector<fs::path> slices;
   if (fs::is_directory(f.dir / "slices"))
@@ -410,7 +417,7 @@ std::size_t crush_data(const Folder& f, const fs::path& out, ordered_json& data,
   const CsvTable t = read_table(f.dir / "results.csv");
   const int id = t.column("id");
   if (id < 0) throw InvalidInput((f.dir / "results.csv").string() + ": column id is required");
-  ordered_json curves = ordered_json::object();
+  ordered_json curves = ordered_json::object(), with_cells = ordered_json::array();
   for (std::size_t k = 0; k < t.rows.size(); ++k) {
     const std::string name = part_name(t.rows[k][static_cast<std::size_t>(id)]);
     const fs::path p = f.dir / "particles" / (name + ".csv");
@@ -421,9 +428,18 @@ std::size_t crush_data(const Folder& f, const fs::path& out, ordered_json& data,
     ordered_json x = ordered_json::array(), y = ordered_json::array();
     for (std::size_t i = 0; i < n; i += stride) x.push_back(s["x"][i]), y.push_back(s["y"][i]);
     curves[std::to_string(static_cast<long long>(t.number(k, id)))] = {{"x", x}, {"y", y}};
+    // The cells before and after (crushing runs write them beside the curve).
+    const fs::path cells = f.dir / "particles" / (name + ".cells.json");
+    if (fs::exists(cells)) {
+      scripts.push_back({"cells/" + name + ".js",
+                         "clumpkit_cells(" + read_json_file(cells.string()).dump() + ");\n"});
+      with_cells.push_back(static_cast<long long>(t.number(k, id)));
+    }
   }
   data["table"] = table_json(t, {});
   data["curves"] = curves;
+  data["cells"] = "page/cells/";
+  data["cells_ids"] = with_cells;
   Images images{out, &scripts};
   images.add(f.dir / "weibull.png", "Weibull plot");
   images.add(f.dir / "size.png", "size effect");

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -29,8 +30,8 @@ std::string run_dir(const fs::path& d, const std::string& name, int threads) {
 TEST(CliQuickCrush, SameBytesForAnyThreadCountAndAfterAResume) {
   const fs::path d = scratch();
   const fs::path one = run_dir(d, "one", 1), two = run_dir(d, "two", 2);
-  for (const char* f :
-       {"results.csv", "report.json", "particles/00000.csv", "particles/00005.json"})
+  for (const char* f : {"results.csv", "report.json", "particles/00000.csv", "particles/00005.json",
+                        "particles/00003.cells.json"})
     EXPECT_EQ(slurp(one / f), slurp(two / f)) << f;
 
   // A run killed after four particles: its DIR.partial holds their records and no report. The
@@ -108,4 +109,24 @@ TEST(CliQuickCrush, ReportHoldsEachSetsWeibullFitAndTheSizeLaw) {
   for (const char* f : {"weibull.png", "size.png", "curves_d16.png", "curves_d20.png",
                         "manifest.json", "recipe.toml", "particles/00000.json"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
+  // The cells before and after (the page draws them): one entry per cell, each moved rigidly
+  // (a unit rotation), labelled by its fragment at the end as the record counts them.
+  for (int k = 0; k < 6; ++k) {
+    const std::string stem = "particles/0000" + std::to_string(k);
+    const nlohmann::json rec = nlohmann::json::parse(slurp(out / (stem + ".json")));
+    const nlohmann::json cells =
+        nlohmann::json::parse(slurp(out / (stem + ".cells.json")))["cells"];
+    ASSERT_EQ(cells.size(), rec["cells"].get<std::size_t>()) << stem;
+    int fragments = 0;
+    for (const auto& c : cells) {
+      fragments = std::max(fragments, c["fragment"].get<int>());
+      const auto& q = c["q"];
+      EXPECT_NEAR(std::hypot(std::hypot(q[0].get<double>(), q[1].get<double>()),
+                             std::hypot(q[2].get<double>(), q[3].get<double>())),
+                  1.0, 1e-12);
+      EXPECT_EQ(c["v"].size() % 3, 0u);
+      EXPECT_GE(c["f"].size(), 4u);  // a convex cell has four faces at least
+    }
+    EXPECT_EQ(fragments, rec["fragments"].get<int>()) << stem;
+  }
 }

@@ -72,8 +72,9 @@ TEST(OvershootLedger, CapsOfOneAndTwoSpheresOnABoxFace) {
   EXPECT_EQ(ledger.added(Sphere{Vec3(0.2, 0.1, -0.3), 0.5}), 0.0);
 }
 
-// Sixteen fills up to 500 spheres: ~25 s in Release, ten times that under the sanitizers, whose
-// pass runs the ends of the range only (10 and 500 spheres on the block).
+// Sixteen fills up to 500 spheres: ~55 s in Release, three times that for the 500-sphere fill
+// alone under the sanitizers, whose pass runs the block's 10- and 47-sphere fills (the same code;
+// the Release pass runs every count).
 #if defined(__SANITIZE_ADDRESS__)
 constexpr bool kSanitized = true;
 #else
@@ -92,7 +93,7 @@ TEST(FillOvershoot, EveryFillMeetsItsBoundFromTenToFiveHundredSpheres) {
     for (double bound : {0.01, 0.002}) {
       if (kSanitized && bound == 0.002) continue;
       for (int n : {10, 47, 200, 500}) {  // 500: the ellipsoid's candidates run out first
-        if (kSanitized && (n == 47 || n == 200)) continue;
+        if (kSanitized && (n == 200 || n == 500)) continue;
         FillOptions o;
         o.spheres = n;
         o.max_overshoot = bound;
