@@ -1,5 +1,6 @@
 #include "geom/format.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -18,6 +19,13 @@ std::string format_number(double v, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*g", digits, v);
   return buf;
+}
+
+double round_significant(double v, int digits) {
+  if (!std::isfinite(v) || v == 0) return v;
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return std::strtod(buf, nullptr);
 }
 
 std::string format_fixed(double v, int decimals) {

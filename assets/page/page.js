@@ -272,19 +272,34 @@
   }
 
   // ---- page kinds ----
-  function libraryPage() {
-    const s = section('Particles (' + D.table.rows.length + ')');
+  // A section of two columns: the views on the left, the table on the right.
+  function twoColumns(title) {
+    const s = section(title);
     const row = el('div', { class: 'row' });
     s.appendChild(row);
     const left = el('div'), right = el('div');
     row.appendChild(left); row.appendChild(right);
+    return { left, right };
+  }
+
+  // Loads one particle's data script (browsers refuse fetch() from file://): the script calls
+  // window[callback], which is set to `onData` first; the previous script of that id goes.
+  function loadPart(id, src, callback, onData) {
+    window[callback] = onData;
+    const old = document.getElementById(id);
+    if (old) old.remove();
+    document.body.appendChild(el('script', { id, src }));
+  }
+
+  function libraryPage() {
+    const { left, right } = twoColumns('Particles (' + D.table.rows.length + ')');
     const viewer = Viewer(left);
     const info = el('div', { class: 'note', id: 'part-info' });
     left.appendChild(info);
     const idCol = D.table.columns.indexOf('id');
     function show(r) {
       const id = r[idCol], name = String(id).padStart(5, '0');
-      window.clumpkit_part = (p) => {
+      loadPart('part-script', D.parts + name + '.js', 'clumpkit_part', (p) => {
         viewer.clear();
         viewer.mesh(p.v, p.f);
         viewer.spheres(p.s.filter((q) => !q[4]), 0x3b6fb6, 2);
@@ -293,10 +308,7 @@
         viewer.fit(p.lo, p.hi);
         viewer.legend.textContent = 'particle ' + id + ': ' + p.s.length + ' spheres, ' + out.length + ' reaching outside the mesh (red)';
         viewer.render();
-      };
-      const old = document.getElementById('part-script');
-      if (old) old.remove();
-      document.body.appendChild(el('script', { id: 'part-script', src: D.parts + name + '.js' }));
+      });
       info.textContent = 'drag to turn, wheel to zoom';
     }
     right.appendChild(dataTable(D.table, show));
@@ -375,11 +387,7 @@
   }
 
   function crushPage() {
-    const s = section('Particles crushed (' + D.table.rows.length + '): click one for its force against travel');
-    const row = el('div', { class: 'row' });
-    s.appendChild(row);
-    const left = el('div'), right = el('div');
-    row.appendChild(left); row.appendChild(right);
+    const { left, right } = twoColumns('Particles crushed (' + D.table.rows.length + '): click one for its force against travel');
     const idCol = D.table.columns.indexOf('id');
     const curveBox = el('div'), cellsBox = el('div');
     left.appendChild(curveBox); left.appendChild(cellsBox);
@@ -432,14 +440,10 @@
       curveBox.textContent = '';
       if (c) curveBox.appendChild(plot({ title: 'particle ' + id, x: 'platen travel (mm)', y: 'force (N)', series: [{ label: 'particle ' + id, x: c.x, y: c.y }] }));
       if (!viewer || !D.cells_ids.includes(id)) return;
-      window.clumpkit_cells = (p) => { shown = p; drawCells(); };
-      const old = document.getElementById('cells-script');
-      if (old) old.remove();
-      document.body.appendChild(el('script', { id: 'cells-script', src: D.cells + String(id).padStart(5, '0') + '.js' }));
+      loadPart('cells-script', D.cells + String(id).padStart(5, '0') + '.js', 'clumpkit_cells', (p) => { shown = p; drawCells(); });
     }
     right.appendChild(dataTable(D.table, show));
     show(D.table.rows[0]);
-    if (D.plots) plotsPage();
     state.viewDrawn = true;
     state.firstViewMs = performance.now();
   }

@@ -97,4 +97,15 @@ std::vector<int> fragments(int bodies, const std::vector<Bond>& bonds) {
   return label;
 }
 
+std::vector<int> fragment_ordinals(const std::vector<int>& labels) {
+  std::vector<int> rank(labels.size(), 0), out(labels.size());
+  int next = 0;
+  for (std::size_t k = 0; k < labels.size(); ++k) {
+    int& r = rank[static_cast<std::size_t>(labels[k])];
+    if (r == 0) r = ++next;
+    out[k] = r;
+  }
+  return out;
+}
+
 }  // namespace clumpkit::dem

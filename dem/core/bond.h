@@ -68,4 +68,8 @@ BondFailure failure_mode(const Bond& bond);
 /// order.
 std::vector<int> fragments(int bodies, const std::vector<Bond>& bonds);
 
+/// Labels of `fragments` (or any labelling whose label is its smallest member) numbered 1, 2, …
+/// in the order of their smallest body, as ParaView and the pages colour integers.
+std::vector<int> fragment_ordinals(const std::vector<int>& labels);
+
 }  // namespace clumpkit::dem

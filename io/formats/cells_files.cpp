@@ -6,8 +6,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <ostream>
 
@@ -111,14 +109,8 @@ void write_bonds_csv(const std::string& bonds_path, const std::string& points_pa
 
 namespace {
 
-double six_digits(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", x);
-  return std::strtod(text, nullptr);
-}
-
 nlohmann::json vec_json(const Vec3& v) {
-  return {six_digits(v.x()), six_digits(v.y()), six_digits(v.z())};
+  return {round_significant(v.x(), 6), round_significant(v.y(), 6), round_significant(v.z(), 6)};
 }
 
 }  // namespace
@@ -131,7 +123,7 @@ void write_cell_motion(const std::string& path, const Tessellation& t,
     const Cell& c = t.cells[k];
     nlohmann::json v = nlohmann::json::array(), f = nlohmann::json::array();
     for (const Vec3& x : c.vertices)
-      for (int i = 0; i < 3; ++i) v.push_back(six_digits(x[i]));
+      for (int i = 0; i < 3; ++i) v.push_back(round_significant(x[i], 6));
     for (const CellFace& face : c.faces) f.push_back(face.vertices);
     const Eigen::Quaterniond q = after[k].orientation * before[k].orientation.conjugate();
     cells.push_back({{"v", v},

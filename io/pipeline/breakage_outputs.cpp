@@ -58,18 +58,6 @@ std::string breakage_header() {
 
 namespace {
 
-// Labels numbered 1, 2, … in the order of their smallest body (each label is its smallest body
-// index), as ParaView colours integers.
-std::vector<int> ordinals(const std::vector<int>& labels) {
-  std::vector<int> rank(labels.size(), 0), out(labels.size());
-  int next = 0;
-  for (std::size_t k = 0; k < labels.size(); ++k)
-    if (labels[k] == static_cast<int>(k)) rank[k] = ++next;
-  for (std::size_t k = 0; k < labels.size(); ++k)
-    out[k] = rank[static_cast<std::size_t>(labels[k])];
-  return out;
-}
-
 std::string class_values(const dem::CurveRow& c) {
   std::string v;
   for (double f : c.broken_by_class) v += "," + format_number(f);
@@ -150,8 +138,8 @@ void write_breakage_outputs(const std::filesystem::path& out, const dem::World& 
        "dimension I (extent along its middle principal axis of inertia) < s"}};
   const int n = static_cast<int>(world.bodies().size());
   write_specimen_vtp((out / "fragments.vtp").string(), specimen_bodies(world),
-                     {{"particle", ordinals(s.particles)},
-                      {"fragment", ordinals(dem::fragments(n, world.bonds()))}});
+                     {{"particle", dem::fragment_ordinals(s.particles)},
+                      {"fragment", dem::fragment_ordinals(dem::fragments(n, world.bonds()))}});
   for (const char* f :
        {"grading.csv", "grading.png", "breakage.png", "breakage_work.png", "fragments.vtp"})
     files.push_back(f);

@@ -106,15 +106,8 @@ nlohmann::ordered_json crush_one(const CrushRecipe& recipe, const Job& job, std:
       o << x.travel << "," << x.force << "," << (x.split ? 1 : 0) << "\n";
   });
   // The cells before and after for the page (fragments numbered from 1 in cell order).
-  const std::vector<int> label =
-      dem::fragments(static_cast<int>(world.bodies().size()), world.bonds());
-  std::vector<int> fragment(label.size()), rank(label.size(), 0);
-  int next = 0;
-  for (std::size_t k = 0; k < label.size(); ++k) {
-    int& r_k = rank[static_cast<std::size_t>(label[k])];
-    if (r_k == 0) r_k = ++next;
-    fragment[k] = r_k;
-  }
+  const std::vector<int> fragment = dem::fragment_ordinals(
+      dem::fragments(static_cast<int>(world.bodies().size()), world.bonds()));
   write_cell_motion((parts / (stem + ".cells.json")).string(), cells, before, after, fragment);
   std::size_t points = 0;
   for (const CellBond& b : bonds) points += b.points.size();

@@ -1,6 +1,7 @@
 #include "io/pipeline/page.h"
 
 #include "geom/errors.h"
+#include "geom/format.h"
 #include "geom/mesh/mesh_index.h"
 #include "geom/mesh/ray_inside.h"
 #include "io/base/json_file.h"
@@ -28,10 +29,7 @@ namespace {
 
 // Six significant digits: a view needs no more, and the page's data shrink threefold.
 double sig(double x) {
-  if (!std::isfinite(x) || x == 0) return x;
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", x);
-  return std::strtod(text, nullptr);
+  return round_significant(x, 6);
 }
 
 // A CSV file of an output folder: its header and its rows, numbers where a cell parses whole.
@@ -97,14 +95,10 @@ void flatten(const nlohmann::json& j, const std::string& prefix, ordered_json& o
     } else if (v.is_string()) {
       const std::string s = v.get<std::string>();
       if (s.size() <= 200 && s.find('\n') == std::string::npos) out[key] = s;
-    } else if (v.is_array() && !v.empty() && v.size() <= 8 && v[0].is_number()) {
+    } else if (v.is_array() && !v.empty() && v.size() <= 8 &&
+               std::all_of(v.begin(), v.end(), [](const auto& x) { return x.is_number(); })) {
       std::string s;
-      for (const auto& x : v) {
-        if (!x.is_number()) return;
-        char text[32];
-        std::snprintf(text, sizeof text, "%.6g", x.get<double>());
-        s += (s.empty() ? "" : ", ") + std::string(text);
-      }
+      for (const auto& x : v) s += (s.empty() ? "" : ", ") + format_number(x.get<double>(), 6);
       out[key] = s;
     } else if (v.is_array()) {
       out[key] = std::to_string(v.size()) + " entries";

@@ -155,4 +155,11 @@ TEST(Bond, FragmentsAreTheComponentsOfHoldingBonds) {
   broken.points[2].state.damage = 0.9;  // one point still holds: the bond holds
   EXPECT_EQ(fragments(5, {held, broken, other}), (std::vector<int>{0, 0, 0, 3, 3}));
   EXPECT_EQ(fragments(3, {}), (std::vector<int>{0, 1, 2}));
+  // Numbered from 1 in the order of their smallest body, as the VTP and the pages colour them.
+  EXPECT_EQ(fragment_ordinals(fragments(5, {held, broken, other})),
+            (std::vector<int>{1, 1, 1, 2, 2}));
+  broken.points[2].state.damage = 1.0;
+  EXPECT_EQ(fragment_ordinals(fragments(5, {other, broken, held})),
+            (std::vector<int>{1, 1, 2, 3, 3}));
+  EXPECT_EQ(fragment_ordinals({}), std::vector<int>{});
 }
