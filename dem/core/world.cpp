@@ -194,6 +194,7 @@ int World::add_bond(Bond bond) {
     const auto at = std::lower_bound(bonded_.begin(), bonded_.end(), pair);
     if (at == bonded_.end() || *at != pair) bonded_.insert(at, pair);
   }
+  bond_moments_.push_back(bond_moments(bond));
   bonds_.push_back(std::move(bond));
   dirty_ = true;
   sc.pairs_valid_ = false;

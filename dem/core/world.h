@@ -4,6 +4,7 @@
 
 #include "dem/core/body.h"
 #include "dem/core/bond.h"
+#include "dem/core/bond_moments.h"
 #include "dem/core/contact.h"
 #include "dem/core/neighbour_search.h"
 #include "dem/core/wall.h"
@@ -241,6 +242,7 @@ class World {
   std::int64_t filters_ = 0;
   bool dirty_ = true;
   std::vector<Bond> bonds_;
+  std::vector<BondMoments> bond_moments_;    // one per bond: its closed form while undamaged
   std::vector<std::pair<int, int>> bonded_;  // sorted (a, b), a < b, of the bonds that hold
   void update_bonded();
   mutable std::vector<PairContact> contacts_;   // sorted (i, j); see contacts()

@@ -14,13 +14,13 @@ namespace clumpkit::dem {
 namespace {
 
 constexpr double kDiameter = 0.018;  // m: the 18 mm cone of the CPT chamber
-constexpr double kRadius = 0.5 * kDiameter;
+constexpr double kProbeRadius = 0.5 * kDiameter;
 constexpr double kKn = 1e5;  // N/m
 constexpr double kMu = 0.5;
 
 // Cone of 60°: its side makes 30° with the axis; its outward meridian normal is (cos 30°, −sin
 // 30°).
-const double kShoulder = kRadius / std::tan(M_PI / 6.0);  // height of the cone–shaft junction
+const double kShoulder = kProbeRadius / std::tan(M_PI / 6.0);  // height of the cone–shaft junction
 
 WorldOptions probe_options() {
   WorldOptions o;
@@ -45,8 +45,8 @@ TEST(ProbeWall, ProfileIsTheConeAndItsShaft) {
   ASSERT_EQ(w.kind, Wall::Kind::probe);
   ASSERT_EQ(w.profile.size(), 2u);
   EXPECT_EQ(w.profile[0], Eigen::Vector2d(0.0, 0.0));
-  EXPECT_NEAR(w.profile[1].x(), kRadius, 1e-15);
-  EXPECT_NEAR(w.profile[1].y(), kRadius * std::sqrt(3.0), 1e-15);
+  EXPECT_NEAR(w.profile[1].x(), kProbeRadius, 1e-15);
+  EXPECT_NEAR(w.profile[1].y(), kProbeRadius * std::sqrt(3.0), 1e-15);
   EXPECT_EQ(w.sleeve_from, 1);
   EXPECT_THROW(Wall::probe(Vec3::Zero(), 0.0, 60.0), InvalidInput);
   EXPECT_THROW(Wall::probe(Vec3::Zero(), kDiameter, 180.0), InvalidInput);
@@ -98,7 +98,7 @@ TEST(ProbeWall, SphereOnTheShaftGivesMuTimesTheNormalForceOnTheSleeve) {
   World world(probe_options());
   const int probe =
       world.add_wall(Wall::probe(Vec3::Zero(), kDiameter, 60.0, Vec3(0.0, 0.0, -0.02)));
-  world.add_body(heavy_sphere((kRadius + r - delta) * e_rho + 0.05 * Vec3::UnitZ(), r));
+  world.add_body(heavy_sphere((kProbeRadius + r - delta) * e_rho + 0.05 * Vec3::UnitZ(), r));
   world.step(2000);  // ks·v·dt = 2e-3 N per step: sliding (μ·kn·δ = 2.5 N) after 1,250 steps
   ASSERT_EQ(world.wall_contacts().size(), 1u);
   const ContactState& s = world.wall_contacts()[0].state;
@@ -115,7 +115,7 @@ TEST(ProbeWall, SphereOnTheShaftGivesMuTimesTheNormalForceOnTheSleeve) {
 TEST(ProbeWall, JunctionKeepsAContinuousForceOnOnePartAtATime) {
   const double r = 0.003, delta = 1e-4, gap = r - delta;
   const Wall wall = Wall::probe(Vec3::Zero(), kDiameter, 60.0);
-  const Eigen::Vector2d corner(kRadius, kShoulder);
+  const Eigen::Vector2d corner(kProbeRadius, kShoulder);
   const Eigen::Vector2d cone_n(std::cos(M_PI / 6.0), -std::sin(M_PI / 6.0));
   const Eigen::Vector2d cone_t(std::sin(M_PI / 6.0), std::cos(M_PI / 6.0));  // up the cone
   // The path: along the cone's side, round the corner's fan, up the shaft (meridian x–z).
@@ -164,7 +164,7 @@ TEST(ProbeWall, JunctionKeepsAContinuousForceOnOnePartAtATime) {
 // points out of the solid.
 TEST(ProbeWall, CentreInsideTheProbeIsPushedOut) {
   const Wall wall = Wall::probe(Vec3::Zero(), kDiameter, 60.0);
-  const WallHit hit = wall_hit(wall, Vec3(kRadius - 0.001, 0.0, 0.05), 0.002);
+  const WallHit hit = wall_hit(wall, Vec3(kProbeRadius - 0.001, 0.0, 0.05), 0.002);
   EXPECT_NEAR(hit.overlap, 0.003, 1e-15);
   EXPECT_NEAR((hit.normal - Vec3::UnitX()).norm(), 0.0, 1e-15);
   EXPECT_EQ(hit.part, ProbePart::sleeve);

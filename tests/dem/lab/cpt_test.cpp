@@ -18,17 +18,13 @@ using namespace clumpkit::dem;
 
 namespace {
 
-const CompressionResult& cube() {
-  return test::compressed_cube();
-}
-
 CellSpecimen setup() {
   return test::cube_in_cell();
 }
 
 CptSettings settings() {
   CptSettings t;
-  t.cell.confining = cube().mean_stress;  // consolidated where it was built
+  t.cell.confining = test::compressed_cube().mean_stress;  // consolidated where it was built
   t.cell.record_every = 1000;
   t.cell.consolidation_tolerance = 0.05;
   t.cell.consolidation_unbalanced = 2e-2;

@@ -21,10 +21,6 @@ using namespace clumpkit::dem;
 
 namespace {
 
-const CompressionResult& cube() {
-  return test::compressed_cube();
-}
-
 std::vector<CurveRow> run(const ElementTestSettings& settings, int threads) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
   CellSpecimen s = test::cube_in_cell();
@@ -50,7 +46,7 @@ void expect_same_bytes(const std::vector<CurveRow>& a, const std::vector<CurveRo
 TEST(DemElementTest, TriaxialLoadsAboveTheConfiningStressSameBytesForOneAndTwoThreads) {
   ElementTestSettings t;
   t.kind = TestKind::triaxial;
-  t.confining = cube().mean_stress;  // consolidated where it was built
+  t.confining = test::compressed_cube().mean_stress;  // consolidated where it was built
   t.strain_rate = 2.0;
   t.max_axial_strain = 0.004;
   t.record_every = 500;
@@ -79,7 +75,7 @@ TEST(DemElementTest, TriaxialLoadsAboveTheConfiningStressSameBytesForOneAndTwoTh
 TEST(DemElementTest, IsotropicReachesItsFinalStressSameBytesForOneAndTwoThreads) {
   ElementTestSettings t;
   t.kind = TestKind::isotropic;
-  t.confining = cube().mean_stress;  // consolidated where it was built
+  t.confining = test::compressed_cube().mean_stress;  // consolidated where it was built
   t.final_stress = 2 * t.confining;
   t.stress_rate = 1e11;
   t.record_every = 500;
@@ -95,7 +91,7 @@ TEST(DemElementTest, IsotropicReachesItsFinalStressSameBytesForOneAndTwoThreads)
 }
 
 TEST(DemElementTest, WorldOptionsAndInertialNumberOfASpecimen) {
-  const CompressionResult& c = cube();
+  const CompressionResult& c = test::compressed_cube();
   const std::vector<Body>& bodies = c.world.bodies();
   const WorldOptions o = element_test_world_options(bodies, c.world.options().contact);
   EXPECT_EQ(o.gravity, Vec3::Zero());
