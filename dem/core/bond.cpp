@@ -14,6 +14,12 @@ bool Bond::holds() const {
   return false;
 }
 
+bool Bond::undamaged() const {
+  for (const BondPoint& p : points)
+    if (p.state.damage > 0.0) return false;
+  return true;
+}
+
 BondFailure failure_mode(const Bond& bond) {
   if (bond.holds()) return BondFailure::intact;
   double area = 0, mix = 0, plain = 0;
@@ -52,9 +58,13 @@ BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Body& a, con
 
 BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Vec3& pa,
                        const Eigen::Quaterniond& qa, const Vec3& pb, const Eigen::Quaterniond& qb) {
-  BondWrench w;
   // Rotation matrices once per bond: cheaper than a quaternion rotation per point and vector.
-  const Mat3 ra = qa.toRotationMatrix(), rb = qb.toRotationMatrix();
+  return bond_wrench(bond, law, pa, qa.toRotationMatrix(), pb, qb.toRotationMatrix());
+}
+
+BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Vec3& pa, const Mat3& ra,
+                       const Vec3& pb, const Mat3& rb) {
+  BondWrench w;
   const Vec3 n = ra * bond.normal_in_a;
   for (BondPoint& p : bond.points) {
     const Vec3 xa = pa + ra * p.in_a;

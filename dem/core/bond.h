@@ -27,6 +27,8 @@ struct Bond {
   std::vector<BondPoint> points;
   /// Whether any point still holds (damage below 1).
   bool holds() const;
+  /// Whether no point has any damage (damage never heals).
+  bool undamaged() const;
 };
 
 /// A bond between two bodies at their present poses from the face's integration points given in
@@ -51,6 +53,9 @@ BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Body& a, con
 /// The same for the poses (centroid, orientation) of a and b.
 BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Vec3& pa,
                        const Eigen::Quaterniond& qa, const Vec3& pb, const Eigen::Quaterniond& qb);
+/// The same with the orientations as rotation matrices (made once per bond and step).
+BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Vec3& pa, const Mat3& ra,
+                       const Vec3& pb, const Mat3& rb);
 
 /// The stiffness the bond adds to a body it joins, for the critical time step: Σ area·max(K_I,
 /// K_II) over its points (N/m).

@@ -12,8 +12,8 @@ BondMoments bond_moments(const Bond& bond) {
     m.area += p.area;
     m.centroid_a += p.area * p.in_a;
     m.centroid_b += p.area * p.in_b;
-    if (p.state.damage > 0.0) m.pristine = false;
   }
+  m.pristine = bond.undamaged();
   if (m.area > 0.0) {
     m.centroid_a /= m.area;
     m.centroid_b /= m.area;
@@ -49,8 +49,7 @@ bool elastic_bond_wrench(const BondMoments& m, const Bond& bond, const CohesiveP
   if (!m.pristine) return false;
   // Below the smaller pure-mode onset no point's state changes (cohesive_traction's floor); half
   // of it leaves room for rounding in the bound.
-  const double floor =
-      std::min(bond.factor * law.sigma_n / law.kn, bond.factor * law.sigma_t / law.kt);
+  const double floor = onset_floor(law, bond.factor);
   const Vec3 xa = pa + ra * m.centroid_a, xb = pb + rb * m.centroid_b;
   const Vec3 jump = xb - xa;  // Δ̄
   const Mat3 rel = ra.transpose() * rb;

@@ -51,15 +51,18 @@ MixedMode mixed_mode(const CohesiveParams& p, double factor, double c2, double s
   return m;
 }
 
+double onset_floor(const CohesiveParams& p, double factor) {
+  return std::min(factor * p.sigma_n / p.kn, factor * p.sigma_t / p.kt);
+}
+
 CohesiveTraction cohesive_traction(const CohesiveParams& p, double factor, double dn,
                                    const Vec3& dt, CohesiveState& state) {
   const double open = std::max(dn, 0.0);
   const double slip2 = dt.squaredNorm();
   const double d2 = open * open + slip2;
-  // The onset opening of any mode mix is at least the smaller pure-mode one (eq. 7), so below it
-  // nothing is damaged and the mix need not be worked out (most points, most steps).
-  const double floor_n = factor * p.sigma_n / p.kn, floor_t = factor * p.sigma_t / p.kt;
-  const double floor = std::min(floor_n, floor_t);
+  // Below the onset floor nothing is damaged and the mix need not be worked out (most points,
+  // most steps).
+  const double floor = onset_floor(p, factor);
   if (d2 > floor * floor && state.damage < 1.0) {
     const double d = std::sqrt(d2);
     const MixedMode m = mixed_mode(p, factor, open * open / d2, slip2 / d2);

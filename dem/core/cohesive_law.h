@@ -47,6 +47,10 @@ struct MixedMode {
 /// criterion of eq. 10, G_mI/G_I + G_mII/G_II = 1). Pure modes give δ_e = σ_e/K and δ_u = 2G/σ_e.
 MixedMode mixed_mode(const CohesiveParams& p, double factor, double c2, double s2);
 
+/// The smaller pure-mode onset opening, min(factor·σ_eI/K_I, factor·σ_eII/K_II) (m): the onset of
+/// any mode mix is at least this (eq. 7), so a jump below it damages nothing.
+double onset_floor(const CohesiveParams& p, double factor);
+
 /// State of a bond point: its damage D in [0, 1], which never decreases (1: broken), the
 /// slip of its crack: the part of the tangential jump Δt that friction no longer resists (in
 /// the frame Δt is given in), and the mode mix it failed in: the slip's share s² = |Δt|²/δ² of

@@ -389,18 +389,16 @@ void World::compute_forces() {
     parallel_items(bonds_.size(), [&](std::size_t k) {
       Bond& bond = bonds_[k];
       BondMoments& moments = bond_moments_[k];
-      const Eigen::Quaterniond &qa = orientation_in_step(bond.a), &qb = orientation_in_step(bond.b);
+      const Mat3 ra = orientation_in_step(bond.a).toRotationMatrix(),
+                 rb = orientation_in_step(bond.b).toRotationMatrix();
       const Vec3 &pa = sc.kinematics_[bond.a].position, &pb = sc.kinematics_[bond.b].position;
       // Most bonds, most steps: undamaged and far below the onset, the closed form.
-      if (elastic_bond_wrench(moments, bond, options_.cohesive, pa, qa.toRotationMatrix(), pb,
-                              qb.toRotationMatrix(), sc.bond_wrench_[k]))
+      if (elastic_bond_wrench(moments, bond, options_.cohesive, pa, ra, pb, rb, sc.bond_wrench_[k]))
         return;
       const bool held = bond.holds();
-      sc.bond_wrench_[k] = bond_wrench(bond, options_.cohesive, pa, qa, pb, qb);
+      sc.bond_wrench_[k] = bond_wrench(bond, options_.cohesive, pa, ra, pb, rb);
       if (held && !bond.holds()) broke.store(true, std::memory_order_relaxed);
-      if (moments.pristine)
-        moments.pristine = std::all_of(bond.points.begin(), bond.points.end(),
-                                       [](const BondPoint& p) { return p.state.damage == 0.0; });
+      if (moments.pristine) moments.pristine = bond.undamaged();
     });
     if (broke.load()) {
       update_bonded();
