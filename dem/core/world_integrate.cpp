@@ -66,6 +66,10 @@ void World::load_bodies() {
     if (t.spin != Spin::plain_sphere)
       sc.rotation_[t.rotation] = Rotation{bodies_[k].orientation, bodies_[k].moments};
   });
+  sc.bond_matrix_.resize(bonds_.empty() ? 0 : nb);
+  if (!bonds_.empty())
+    parallel_items(
+        nb, [&](std::size_t k) { sc.bond_matrix_[k] = bodies_[k].orientation.toRotationMatrix(); });
   sc.sphere_body64_.assign(sphere_body_.begin(), sphere_body_.end());
   sc.damping_valid_ = false;  // masses may have changed
 }
@@ -179,6 +183,7 @@ void World::integrate() {
     } else {
       Rotation& r = sc.rotation_[t.rotation];
       advance(b, wrench, t.spin, r);
+      if (!sc.bond_matrix_.empty()) sc.bond_matrix_[k] = r.orientation.toRotationMatrix();
       for (int i = first; i < last && !last_step; ++i) {
         const Vec3& local = sphere_local_[i];
         // q·0 is exactly +0 (Eigen's formula), so a centred sphere skips it.

@@ -112,6 +112,10 @@ struct StepCache {
   // Bonds: per bond its wrench of this step; per body its bonds in index order (range in
   // body_bond_items_, each 2·bond + 1 when the body is the bond's b), built by load_bodies.
   std::vector<BondWrench> bond_wrench_;
+  // Per body with bonds: its rotation matrix at this step's contact pass (made by load_bodies and
+  // after each body's advance), so the bond pass reads two matrices per bond instead of making
+  // them from the quaternions: a body has about ten bonds. Empty in a world without bonds.
+  std::vector<Mat3> bond_matrix_;
   // Polyhedral bodies: which bodies have corners (by load_bodies), and per body the wrench of
   // its corner contacts of this step, summed in (vertex, wall) order.
   std::vector<std::uint8_t> body_has_vertices_;

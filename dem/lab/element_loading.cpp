@@ -33,14 +33,33 @@ WorldOptions element_test_world_options(const std::vector<Body>& bodies,
 }
 
 double inertial_number(const std::vector<Body>& bodies, double strain_rate, double confining) {
-  double d_sum = 0, mass = 0, volume = 0;
-  for (const Body& b : bodies) {
-    d_sum += std::cbrt(6.0 * b.volume / kPi);
-    mass += b.mass;
-    volume += b.volume;
+  const GrainScale g = grain_scale(bodies);
+  return strain_rate * g.diameter * std::sqrt(g.density / confining);
+}
+
+GrainScale grain_scale(const std::vector<Body>& bodies, const std::vector<int>& particles) {
+  if (bodies.empty()) throw InvalidInput("grain scale: no bodies");
+  if (!particles.empty() && particles.size() != bodies.size())
+    throw InvalidInput("grain scale: one particle per body needed");
+  double mass = 0, volume = 0;
+  // The volume of each grain: a body's own, or its particle's sum.
+  std::vector<double> grain(particles.empty() ? bodies.size() : 0, 0.0);
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    mass += bodies[k].mass;
+    volume += bodies[k].volume;
+    const std::size_t g = particles.empty() ? k : std::size_t(particles[k]);
+    if (g >= grain.size()) grain.resize(g + 1, 0.0);
+    grain[g] += bodies[k].volume;
   }
-  const double d_mean = d_sum / double(bodies.size()), density = mass / volume;
-  return strain_rate * d_mean * std::sqrt(density / confining);
+  double d_sum = 0;
+  int count = 0;
+  for (double v : grain)
+    if (v > 0) d_sum += std::cbrt(6.0 * v / kPi), ++count;
+  return GrainScale{d_sum / count, mass / volume};
+}
+
+double inertial_strain_rate(const GrainScale& grains, double inertial, double stress) {
+  return inertial * std::sqrt(stress / grains.density) / grains.diameter;
 }
 
 ElementTestResult run_element_test(World& world, const TestCell& cell, const ElementTestSettings& s,
@@ -60,6 +79,9 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
   };
   positive(s.confining, "confining stress");
   positive(s.strain_rate, "strain rate");
+  if (!(s.inertial_number >= 0.0) || !std::isfinite(s.inertial_number))
+    throw InvalidInput("element test: inertial number must be 0 or positive, got " +
+                       std::to_string(s.inertial_number));
   if (s.kind != TestKind::triaxial && !(s.final_stress > s.confining))
     throw InvalidInput("element test: final stress must exceed the confining stress");
   if (s.kind == TestKind::triaxial) positive(s.max_axial_strain, "maximum axial strain");
@@ -130,7 +152,10 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
     }
     const double rate =
         s.stress_rate > 0.0 ? s.stress_rate : 20.0 * s.confining * s.strain_rate;  // Pa/s
-    const double platen_speed = s.strain_rate * h0;
+    const double base_speed = s.strain_rate * h0;
+    const bool held_inertial = s.inertial_number > 0.0 && s.kind != TestKind::isotropic;
+    const GrainScale grains =
+        held_inertial ? grain_scale(world.bodies(), s.particles) : GrainScale{};
     // A bound on the loading steps: the planned duration four times over.
     double duration = 0;
     if (s.kind == TestKind::isotropic) duration = (s.final_stress - s.confining) / rate;
@@ -139,6 +164,14 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
     const long long max_steps = static_cast<long long>(std::ceil(4.0 * duration / dt)) + 1000;
     long long& step = st.loading_steps;
     while (step < max_steps) {
+      // The rate of the next record's steps, from the last row's stress (so a resumed test
+      // continues at the same speed).
+      const double platen_speed =
+          held_inertial
+              ? std::max(base_speed, h0 * inertial_strain_rate(
+                                              grains, s.inertial_number,
+                                              std::max(st.curve.back().axial_stress, s.confining)))
+              : base_speed;
       for (int k = 0; k < s.record_every; ++k, ++step) {
         Control axial, lateral;
         switch (s.kind) {

@@ -27,6 +27,18 @@ WorldOptions element_test_world_options(const std::vector<Body>& bodies,
 /// volume: quasi-static below 1e-3, dense flow above 1e-2 (GDR MiDi 2004).
 double inertial_number(const std::vector<Body>& bodies, double strain_rate, double confining);
 
+/// The grains of an inertial number: their mean volume-equivalent diameter d (m) and their total
+/// mass over their total volume ρ (kg/m³, with any density scaling the masses carry). A grain is
+/// a body, or with `particles` (one entry per body, ElementTestSettings::particles) the bodies
+/// of one particle together: a crushable specimen's particle, not its cells.
+struct GrainScale {
+  double diameter = 0, density = 0;
+};
+GrainScale grain_scale(const std::vector<Body>& bodies, const std::vector<int>& particles = {});
+
+/// The strain rate ε̇ = I·sqrt(σ/ρ)/d (1/s) that gives inertial number I under stress σ (Pa).
+double inertial_strain_rate(const GrainScale& grains, double inertial, double stress);
+
 /// Which element test.
 enum class TestKind { isotropic, oedometer, triaxial };
 
@@ -36,8 +48,14 @@ struct ElementTestSettings {
   double confining = 100e3;  ///< consolidation stress, and the lateral stress of a triaxial
   /// isotropic: stress at the end of loading; oedometer: axial stress at the end (Pa).
   double final_stress = 400e3;
-  double strain_rate = 0.05;      ///< axial strain rate of oedometer and triaxial (1/s)
-  double stress_rate = 0.0;       ///< isotropic loading rate (Pa/s); 0: confining·strain_rate·20
+  double strain_rate = 0.05;  ///< axial strain rate of oedometer and triaxial (1/s)
+  double stress_rate = 0.0;   ///< isotropic loading rate (Pa/s); 0: confining·strain_rate·20
+  /// Oedometer and triaxial, > 0: the platen speeds up with the stress so that the inertial
+  /// number of the particles (grain_scale) at the last curve row's axial stress stays at this
+  /// value, never slower than strain_rate. A test to stresses a decade and more above the
+  /// confining one then spends its steps where the strain is, instead of loading at the rate the
+  /// lowest stress allows. 0: strain_rate throughout.
+  double inertial_number = 0.0;
   double max_axial_strain = 0.2;  ///< triaxial end
   double friction = -1;           ///< μ of the test (negative: the world's)
   /// μ during the consolidation (negative: the test's). 0 consolidates a frictionless packing

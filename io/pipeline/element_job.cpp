@@ -151,6 +151,7 @@ LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specime
   rep["porosity"] = first.porosity;
   rep["coordination_number"] = first.coordination;
   rep["inertial_number"] = inertial;
+  if (s.inertial_number > 0) rep["inertial_number_held"] = s.inertial_number;
   PlotCurve plot;
   std::string x_label, y_label;
   if (kind == dem::TestKind::isotropic) {

@@ -53,6 +53,14 @@ const RecipeSection<TestRecipe>& test_section() {
            "strain_rate", "1/s", "> 0", "axial strain rate of oedometer and triaxial",
            [](R& r) -> double& { return r.settings.strain_rate; }, &TomlFields::positive),
        shown_as(number_key<R>(
+                    "inertial_number", "", "(0, 1e-2]",
+                    "oedometer and triaxial: the platen speeds up with the axial stress σa to "
+                    "hold the particles' inertial number I = ε̇·d·√(ρ/σa) here, never slower "
+                    "than strain_rate",
+                    [](R& r) -> double& { return r.settings.inertial_number; },
+                    &TomlFields::positive, at_most(1e-2, "must be at most 1e-2 (quasi-static)")),
+                "off: strain_rate throughout"),
+       shown_as(number_key<R>(
                     "stress_rate", "Pa/s", "> 0", "isotropic loading rate",
                     [](R& r) -> double& { return r.settings.stress_rate; }, &TomlFields::positive),
                 "confining × strain_rate × 20"),

@@ -104,3 +104,51 @@ TEST(DemElementTest, WorldOptionsAndInertialNumberOfASpecimen) {
   EXPECT_NEAR(inertial_number(bodies, 0.5, 1e5), 0.5 * 0.01 * std::sqrt(2650 / 1e5), 1e-6);
   EXPECT_THROW(element_test_world_options({}, c.world.options().contact), InvalidInput);
 }
+
+TEST(DemElementTest, OedometerHoldsTheInertialNumberAtTheStressReached) {
+  ElementTestSettings t;
+  t.kind = TestKind::oedometer;
+  t.confining = test::compressed_cube().mean_stress;
+  t.final_stress = 3 * t.confining;
+  t.strain_rate = 1.0;  // the floor
+  t.record_every = 200;
+  t.consolidation_tolerance = 0.05;
+  t.consolidation_unbalanced = 2e-2;
+  t.max_consolidation_steps = 60000;
+  const std::vector<Body>& bodies = test::compressed_cube().world.bodies();
+  const GrainScale grains = grain_scale(bodies);
+  // Twice the floor's rate at the confining stress: the held rate governs from the start.
+  t.inertial_number = inertial_number(bodies, 2.0, t.confining);
+  CellSpecimen s = test::cube_in_cell();
+  const double dt = s.world.options().timestep;
+  const std::vector<CurveRow> c = run_element_test(s.world, s.cell, t).curve;
+  ASSERT_GE(c.size(), 4u);
+  EXPECT_GE(c.back().axial_stress, t.final_stress);
+  // Each record's strain is the rate the last row's stress gave, times its steps; ε is
+  // (h0 − h)/h0 and the platen moves at ε̇·h0.
+  double first = 0, last = 0;
+  for (std::size_t k = 1; k < c.size(); ++k) {
+    const double rate =
+        std::max(t.strain_rate, inertial_strain_rate(grains, t.inertial_number,
+                                                     std::max(c[k - 1].axial_stress, t.confining)));
+    const double expected = rate * dt * double(c[k].step - c[k - 1].step);
+    EXPECT_NEAR(c[k].axial_strain - c[k - 1].axial_strain, expected, 1e-9 * expected) << k;
+    if (k == 1) first = rate;
+    last = rate;
+  }
+  EXPECT_NEAR(first, 2.0, 1e-9);                 // I held at the confining stress
+  EXPECT_GT(last, 2.0 * std::sqrt(2.0) * 0.99);  // and still at twice the stress and more
+}
+
+TEST(DemElementTest, GrainScaleOfParticlesMadeOfSeveralBodies) {
+  Body a, b, c;
+  a.volume = b.volume = 1e-6, c.volume = 2e-6;
+  a.mass = b.mass = 2.65e-3, c.mass = 5.3e-3;
+  const double d2 = std::cbrt(6.0 * 2e-6 / M_PI), d1 = std::cbrt(6.0 * 1e-6 / M_PI);
+  // Bodies alone: three grains; a and b one particle: two grains of 2e-6 m³.
+  EXPECT_NEAR(grain_scale({a, b, c}).diameter, (2 * d1 + d2) / 3, 1e-15);
+  EXPECT_NEAR(grain_scale({a, b, c}, {0, 0, 2}).diameter, d2, 1e-15);
+  EXPECT_NEAR(grain_scale({a, b, c}, {0, 0, 2}).density, 2650, 1e-9);
+  EXPECT_NEAR(inertial_strain_rate(GrainScale{0.01, 2650}, 1e-3, 2650e4), 1e-3 * 100 / 0.01, 1e-12);
+  EXPECT_THROW(grain_scale({a, b}, {0}), InvalidInput);
+}
