@@ -159,16 +159,8 @@ void World::build_neighbours() {
   find_skin_pairs(sphere_world_, sphere_radius_, sphere_body_, options_.skin, sc.grid_,
                   neighbours_);
   sc.grid_ = NeighbourGrid{};  // scratch of a search every few hundred steps: not kept between
-  // The spheres of two bodies whose bond holds never touch.
-  if (!bonded_.empty())
-    neighbours_.erase(
-        std::remove_if(neighbours_.begin(), neighbours_.end(),
-                       [&](const std::pair<int, int>& p) {
-                         const int a = sphere_body_[p.first], b = sphere_body_[p.second];
-                         return std::binary_search(bonded_.begin(), bonded_.end(),
-                                                   std::make_pair(std::min(a, b), std::max(a, b)));
-                       }),
-        neighbours_.end());
+  // The skin list keeps the pairs of bonded bodies (filter_candidates leaves them out): when a
+  // bond breaks, its bodies' spheres may touch from the next filter, with no grid search.
 }
 
 int World::add_bond(Bond bond) {
@@ -266,6 +258,16 @@ void World::filter_candidates() {
   ++filters_;
   filter_pairs(neighbours_, sphere_at_filter_, sphere_radius_,
                options_.near_skin_fraction * options_.skin, sc.filter_keep_, candidates_);
+  // The spheres of two bodies whose bond holds never touch.
+  if (!bonded_.empty())
+    candidates_.erase(
+        std::remove_if(candidates_.begin(), candidates_.end(),
+                       [&](const std::pair<int, int>& p) {
+                         const int a = sphere_body_[p.first], b = sphere_body_[p.second];
+                         return std::binary_search(bonded_.begin(), bonded_.end(),
+                                                   std::make_pair(std::min(a, b), std::max(a, b)));
+                       }),
+        candidates_.end());
   near_valid_ = true;
 }
 

@@ -123,10 +123,10 @@ class World {
   int add_wall(const Wall& wall);
   /// Adds a bond between bodies bond.a and bond.b and returns its index. Each step adds its
   /// wrench to the two bodies (after their contacts, bonds in index order); while it holds, the
-  /// spheres of the two bodies never touch (the pair is kept out of the neighbour lists, which
-  /// are rebuilt once it breaks). A bonded body's orientation is always integrated (its bond
-  /// points turn with it). Throws InvalidInput for bodies the world does not have, a = b, or a
-  /// bond without points.
+  /// spheres of the two bodies never touch (the pair is kept out of the near list, which is
+  /// filtered again from the skin list once it breaks). A bonded body's orientation is always
+  /// integrated (its bond points turn with it). Throws InvalidInput for bodies the world does not
+  /// have, a = b, or a bond without points.
   int add_bond(Bond bond);
   const std::vector<Bond>& bonds() const { return bonds_; }
 
@@ -230,9 +230,11 @@ class World {
   std::vector<Vec3> sphere_world_;
   // Two-level Verlet list. The skin list neighbours_ holds the pairs closer than
   // r_i + r_j + skin at sphere_at_build_ (grid search); the near list candidates_ those of
-  // neighbours_ closer than r_i + r_j + near_skin_fraction·skin at sphere_at_filter_. The contact
-  // slots follow candidates_. Both lists hold every touching pair while no sphere has moved more
-  // than sqrt(near_limit_) from sphere_at_filter_ (refresh_neighbours sets it).
+  // neighbours_ closer than r_i + r_j + near_skin_fraction·skin at sphere_at_filter_, less the
+  // pairs of bodies whose bond holds (the skin list keeps them, so a bond that breaks needs a
+  // filter, not a grid search). The contact slots follow candidates_. Both lists hold every
+  // touching pair while no sphere has moved more than sqrt(near_limit_) from sphere_at_filter_
+  // (refresh_neighbours sets it).
   std::vector<Vec3> sphere_at_build_;
   std::vector<std::pair<int, int>> neighbours_;  // sorted (i, j)
   std::vector<Vec3> sphere_at_filter_;

@@ -382,7 +382,7 @@ void World::compute_forces() {
   vertex_wall_contacts();
 
   // Bonds, one wrench slot per bond. One that stops holding lets its bodies' spheres touch from
-  // the next step: the neighbour lists are built again (dirty_ makes integrate() report a move).
+  // the next step: the near list is filtered again from the skin list, which holds them.
   if (!bonds_.empty()) {
     sc.bond_wrench_.resize(bonds_.size());
     std::atomic<bool> broke{false};
@@ -401,7 +401,7 @@ void World::compute_forces() {
     });
     if (broke.load()) {
       update_bonded();
-      dirty_ = true;
+      near_valid_ = false;
     }
   }
 

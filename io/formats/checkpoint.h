@@ -17,9 +17,11 @@ namespace clumpkit {
 /// contacts after the wall contacts; 10 = the cohesive law's friction after its fracture energies,
 /// each bond point's crack slip after its damage; 11 = the same layout, written by an engine that
 /// sums each body's pair contacts in the contact pass, chunk by chunk: a run resumed from an
-/// older file would not continue the bits of the run that wrote it, so none is read). Only the
-/// current version is read; any other is refused naming both versions.
-inline constexpr std::uint32_t kCheckpointVersion = 12;
+/// older file would not continue the bits of the run that wrote it, so none is read; 13 = the skin
+/// list holds the pairs of bonded bodies, which the near filter leaves out: an older list lacks
+/// the pairs a breaking bond frees). Only the current version is read; any other is refused
+/// naming both versions.
+inline constexpr std::uint32_t kCheckpointVersion = 13;
 
 /// Writes `world` and `info` to `path`: magic "CLUMPKITCKPT", version, the stage and its state
 /// (length-prefixed strings: the stage, the number of entries, each key and value), then

@@ -79,3 +79,20 @@ TEST(TestRecipe, BadValuesNameFileFieldAndValue) {
     EXPECT_NE(e.find(bad), std::string::npos) << e;
   }
 }
+
+TEST(TestRecipe, InertialNumberIsHeldOnlyWhenAskedAndQuasiStatic) {
+  EXPECT_EQ(parse_test_recipe("[test]\nconfining = 1e5\n", "t.toml").settings.inertial_number, 0.0);
+  EXPECT_EQ(
+      parse_test_recipe("[test]\ninertial_number = 5e-3\n", "t.toml").settings.inertial_number,
+      5e-3);
+  for (const char* name : {"test-oedometer-rockfill", "test-triaxial-rockfill"}) {
+    const TestRecipe r =
+        read_test_recipe(std::string(CLUMPKIT_SOURCE_DIR) + "/assets/recipes/" + name + ".toml");
+    EXPECT_EQ(r.settings.inertial_number, 1e-2) << name;
+    EXPECT_EQ(r.density_scaling, 1000.0) << name;
+  }
+  for (const char* bad : {"0.02", "0", "-1e-3"}) {
+    const std::string e = test_error_of(std::string("[test]\ninertial_number = ") + bad + "\n");
+    EXPECT_NE(e.find("t.toml: test.inertial_number: "), std::string::npos) << e;
+  }
+}
