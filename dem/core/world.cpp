@@ -258,16 +258,21 @@ void World::filter_candidates() {
   ++filters_;
   filter_pairs(neighbours_, sphere_at_filter_, sphere_radius_,
                options_.near_skin_fraction * options_.skin, sc.filter_keep_, candidates_);
-  // The spheres of two bodies whose bond holds never touch.
-  if (!bonded_.empty())
-    candidates_.erase(
-        std::remove_if(candidates_.begin(), candidates_.end(),
-                       [&](const std::pair<int, int>& p) {
-                         const int a = sphere_body_[p.first], b = sphere_body_[p.second];
-                         return std::binary_search(bonded_.begin(), bonded_.end(),
-                                                   std::make_pair(std::min(a, b), std::max(a, b)));
-                       }),
-        candidates_.end());
+  // The spheres of two bodies whose bond holds never touch: marked in parallel (this runs at
+  // every filter), then the list closed up in order.
+  if (!bonded_.empty()) {
+    std::vector<std::uint8_t>& bonded = sc.filter_keep_;  // filter_pairs is done with it
+    bonded.resize(candidates_.size());
+    parallel_items(candidates_.size(), [&](std::size_t k) {
+      const int a = sphere_body_[candidates_[k].first], b = sphere_body_[candidates_[k].second];
+      bonded[k] = std::binary_search(bonded_.begin(), bonded_.end(),
+                                     std::make_pair(std::min(a, b), std::max(a, b)));
+    });
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < candidates_.size(); ++k)
+      if (!bonded[k]) candidates_[at++] = candidates_[k];
+    candidates_.resize(at);
+  }
   near_valid_ = true;
 }
 

@@ -61,15 +61,14 @@ void World::load_bodies() {
   for (Turning& t : sc.turning_)
     if (t.spin != Spin::plain_sphere) t.rotation = rotating++;
   sc.rotation_.resize(rotating);
+  sc.bond_matrix_.resize(bonds_.empty() ? 0 : nb);
   parallel_items(nb, [&](std::size_t k) {
     const Turning& t = sc.turning_[k];
-    if (t.spin != Spin::plain_sphere)
-      sc.rotation_[t.rotation] = Rotation{bodies_[k].orientation, bodies_[k].moments};
+    // A plain sphere has no bonds (Spin::plain_sphere), so its matrix is never read.
+    if (t.spin == Spin::plain_sphere) return;
+    sc.rotation_[t.rotation] = Rotation{bodies_[k].orientation, bodies_[k].moments};
+    if (!sc.bond_matrix_.empty()) sc.bond_matrix_[k] = bodies_[k].orientation.toRotationMatrix();
   });
-  sc.bond_matrix_.resize(bonds_.empty() ? 0 : nb);
-  if (!bonds_.empty())
-    parallel_items(
-        nb, [&](std::size_t k) { sc.bond_matrix_[k] = bodies_[k].orientation.toRotationMatrix(); });
   sc.sphere_body64_.assign(sphere_body_.begin(), sphere_body_.end());
   sc.damping_valid_ = false;  // masses may have changed
 }
