@@ -156,6 +156,7 @@ void World::build_neighbours() {
   ++builds_;
   dirty_ = false;
   sphere_at_build_ = sphere_world_;
+  frame_at_build_ = frame_;
   find_skin_pairs(sphere_world_, sphere_radius_, sphere_body_, options_.skin, sc.grid_,
                   neighbours_);
   sc.grid_ = NeighbourGrid{};  // scratch of a search every few hundred steps: not kept between
@@ -222,23 +223,53 @@ void World::update_bonded() {
 // leaves room for a fair step the near list is filtered again from it (a linear pass), else the
 // grid search runs. Filtering at near skin s and allowing moves of min(s/2, skin/2 − D) keeps
 // both lists complete, with as many builds as the one-list scheme when spheres move steadily.
-// Returns true after a grid build (the wall candidates follow the build positions).
+// In a cell frame D is measured from the build positions carried by the cell's stretch F since
+// the build: a pair left out was at least R + skin apart (R = r_i + r_j ≤ 2·r_max), so it is now
+// at least σ·(R + skin) − 2·D apart, σ = min(1, smallest stretch), which leaves a gap of
+// σ·skin − (1 − σ)·2·r_max − 2·D. Returns true when the wall candidates must be made again
+// (after a grid build, or spheres about to leave the half skin around their own positions).
 bool World::refresh_neighbours() {
+  StepCache& sc = cache_.get();
   const std::size_t n = sphere_world_.size();
   const double skin = options_.skin;
   const double near = options_.near_skin_fraction * skin;
+  // x ↦ c + F∘(x − c_b), the cell at the build onto the cell now; the identity without frames.
+  const bool affine = frame_.size.x() > 0.0 && frame_at_build_.size.x() > 0.0;
+  const Vec3 stretch =
+      affine ? Vec3(frame_.size.cwiseQuotient(frame_at_build_.size)) : Vec3(Vec3::Ones());
+  const Vec3 c_b = frame_at_build_.centre, c = frame_.centre;
+  const bool walls_own = sc.walls_valid_ && sc.sphere_at_walls_.size() == n;
   double left = -1.0;  // how far every sphere may still move before neighbours_ expires
+  double wall_moved2 = 0.0;
   if (!dirty_ && sphere_at_build_.size() == n) {
-    const double moved2 = tbb::parallel_reduce(
-        tbb::blocked_range<std::size_t>(0, n, 1024), 0.0,
-        [&](const tbb::blocked_range<std::size_t>& r, double m) {
-          for (std::size_t k = r.begin(); k != r.end(); ++k)
-            m = std::max(m, (sphere_world_[k] - sphere_at_build_[k]).squaredNorm());
+    using Moves = std::pair<double, double>;  // squared: from the build, from the wall build
+    const Moves moved2 = tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, n, 1024), Moves(0.0, 0.0),
+        [&](const tbb::blocked_range<std::size_t>& r, Moves m) {
+          for (std::size_t k = r.begin(); k != r.end(); ++k) {
+            const Vec3& x = sphere_world_[k];
+            const Vec3 from = affine ? Vec3(c + stretch.cwiseProduct(sphere_at_build_[k] - c_b))
+                                     : sphere_at_build_[k];
+            m.first = std::max(m.first, (x - from).squaredNorm());
+            if (walls_own)
+              m.second = std::max(m.second, (x - sc.sphere_at_walls_[k]).squaredNorm());
+          }
           return m;
         },
-        [](double a, double b) { return std::max(a, b); });
+        [](const Moves& a, const Moves& b) {
+          return Moves(std::max(a.first, b.first), std::max(a.second, b.second));
+        });
+    wall_moved2 = moved2.second;
+    double gap = skin;  // half of it is left to share between the two spheres of a pair
+    double moved = std::sqrt(moved2.first);
+    if (affine) {
+      const double sigma = std::min(1.0, stretch.minCoeff());
+      const double r_max = *std::max_element(sphere_radius_.begin(), sphere_radius_.end());
+      gap = sigma * skin - (1.0 - sigma) * 2.0 * r_max;
+      moved += 1e-15 * (c.norm() + c_b.norm() + frame_at_build_.size.norm());  // rounding
+    }
     // A relative margin keeps the rounding of this bound on the safe side.
-    left = (0.5 * skin - std::sqrt(moved2)) * (1.0 - 1e-9);
+    left = (0.5 * gap - moved) * (1.0 - 1e-9);
   }
   const bool build = !(left >= 0.25 * near);
   if (build) {
@@ -249,7 +280,10 @@ bool World::refresh_neighbours() {
   const double allowed = std::min(0.5 * near, left);
   near_limit_ = allowed * allowed;
   near_valid_ = false;
-  return build;
+  // Wall candidates made at their own positions hold while no sphere is skin/2 from them.
+  const bool walls_expire =
+      walls_own && !((std::sqrt(wall_moved2) + allowed) <= 0.5 * skin * (1.0 - 1e-9));
+  return build || walls_expire;
 }
 
 // The near list: pairs of neighbours_ closer than r_i + r_j + near skin at sphere_at_filter_.
@@ -364,6 +398,12 @@ World::ListState World::list_state() const {
   return s;
 }
 
+void World::set_cell_frame(const Vec3& centre, const Vec3& size) {
+  if (!centre.allFinite() || !size.allFinite() || !(size.minCoeff() > 0.0))
+    throw InvalidInput("DEM world: a cell frame needs a finite centre and positive extents");
+  frame_ = CellFrame{centre, size};
+}
+
 void World::restore(ListState lists, std::vector<PairContact> contacts,
                     std::vector<WallContact> wall_contacts) {
   const int n = sphere_count();
@@ -390,6 +430,7 @@ void World::restore(ListState lists, std::vector<PairContact> contacts,
   filters_ = lists.filters;
   dirty_ = lists.stale;
   sphere_at_build_ = std::move(lists.build_positions);
+  frame_at_build_ = CellFrame{};  // unknown: plain motion until the next build
   neighbours_ = std::move(lists.skin_pairs);
   sphere_at_filter_ = std::move(lists.filter_positions);
   near_limit_ = lists.near_limit;

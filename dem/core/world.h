@@ -141,6 +141,15 @@ class World {
   /// Advances `count` steps of options().timestep.
   void step(int count = 1);
 
+  /// Declares that the bodies sit in a cell deformed homogeneously: `size` its present extents
+  /// along x, y and z (m, positive) about `centre`. A sphere's motion is then measured for the
+  /// Verlet lists from the image of its position at the last grid search under the cell's
+  /// stretch since then, so a steadily strained specimen searches again when its spheres move
+  /// relative to the cell, not with it. The lists stay complete for any cell (the bound is one
+  /// of any affine map), so no result depends on it; only the count of grid searches does.
+  /// Throws InvalidInput for a size not finite and positive.
+  void set_cell_frame(const Vec3& centre, const Vec3& size);
+
   /// Reorders the bodies by the bin of their centroid — cubic bins of the largest sphere
   /// diameter counted from the lowest centroid, x fastest, then y, then z (LAMMPS's order), ties
   /// in the current order — renumbering spheres, contacts and wall contacts with them (the
@@ -184,7 +193,9 @@ class World {
     std::int64_t steps = 0;
     double time = 0.0;
     std::int64_t builds = 0, filters = 0;
-    bool stale = true;                            ///< no skin list yet: the next step builds one
+    bool stale = true;  ///< no skin list yet: the next step builds one
+    // The cell frame at the last build is not saved: a restored world measures plain motion
+    // until its next build, which may then come earlier than in a run never stopped.
     std::vector<Vec3> build_positions;            ///< sphere positions at the last grid search
     std::vector<std::pair<int, int>> skin_pairs;  ///< the skin list, sorted (i, j)
     std::vector<Vec3> filter_positions;           ///< sphere positions at the last near filter
@@ -235,7 +246,13 @@ class World {
   // filter, not a grid search). The contact slots follow candidates_. Both lists hold every
   // touching pair while no sphere has moved more than sqrt(near_limit_) from sphere_at_filter_
   // (refresh_neighbours sets it).
+  // With a cell frame (set_cell_frame) the motion since the build is measured from the build
+  // positions carried by the cell's stretch since then (frame_at_build_; size zero: none).
   std::vector<Vec3> sphere_at_build_;
+  struct CellFrame {
+    Vec3 centre = Vec3::Zero(), size = Vec3::Zero();
+  };
+  CellFrame frame_, frame_at_build_;
   std::vector<std::pair<int, int>> neighbours_;  // sorted (i, j)
   std::vector<Vec3> sphere_at_filter_;
   double near_limit_ = 0.0;                      // squared displacement

@@ -183,9 +183,10 @@ void World::export_pairs() const {
   sc.contacts_fresh_ = true;
 }
 
-// Wall candidates: (sphere, wall) pairs with a gap below the skin at the spheres' build positions.
-// A sphere moves at most skin/2 before the next build and a wall at most skin/2 before
-// walls_moved() asks for new candidates, so every touching pair is a candidate.
+// Wall candidates: (sphere, wall) pairs with a gap below the skin at the spheres' build positions
+// (in a cell frame: their present ones, kept). A sphere moves at most skin/2 from those before
+// the next build (in a cell frame: before refresh_neighbours asks for new candidates) and a wall
+// at most skin/2 before walls_moved() does, so every touching pair is a candidate.
 bool World::walls_moved() const {
   StepCache& sc = cache_.get();
   if (walls_.size() != sc.walls_at_build_.size()) return true;
@@ -212,12 +213,18 @@ void World::build_wall_candidates() {
   const std::size_t n = sphere_body_.size();
   const std::size_t nw = walls_.size();
   sc.walls_at_build_ = walls_;
+  if (frame_.size.x() > 0.0)
+    sc.sphere_at_walls_ = sphere_world_;
+  else
+    sc.sphere_at_walls_.clear();
+  const std::vector<Vec3>& at =
+      sc.sphere_at_walls_.empty() ? sphere_at_build_ : sc.sphere_at_walls_;
   const double skin = options_.skin;
   auto candidate = [&](std::size_t s, std::size_t w) {
     const Wall& wall = walls_[w];
     // A polyhedral body meets plane walls with its corners (vertex_wall_contacts).
     if (wall.kind == Wall::Kind::plane && !bodies_[sphere_body_[s]].vertices.empty()) return false;
-    const Vec3& x = sphere_at_build_[s];
+    const Vec3& x = at[s];
     const double r = sphere_radius_[s];
     const double slack = 1e-9 * (skin + r) + 1e-12 * (x.norm() + wall.point.norm() + wall.radius);
     const WallHit hit = wall_hit(wall, x, r);

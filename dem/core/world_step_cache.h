@@ -123,7 +123,10 @@ struct StepCache {
   std::vector<Wrench> vertex_wrench_;
   std::vector<std::size_t> body_bond_begin_;
   std::vector<std::uint64_t> body_bond_items_;
-  std::vector<Wall> walls_at_build_;       // walls when wall_cand_ was built
+  std::vector<Wall> walls_at_build_;  // walls when wall_cand_ was built
+  // Sphere positions when wall_cand_ was built, in a cell frame (spheres may then move more
+  // than skin/2 between grid builds); empty without one: the build positions serve.
+  std::vector<Vec3> sphere_at_walls_;
   std::vector<std::size_t> scratch_;       // counts / offsets
   std::vector<std::uint8_t> filter_keep_;  // scratch of filter_candidates
   bool positions_fresh_ = false;           // sphere_world_ and moved_ set by integrate this call

@@ -55,6 +55,21 @@ void servo(World& world, int wall, double area, double target, const ServoGain& 
                              wall_contact_stiffness(world, wall), world.options().timestep, gain));
 }
 
+// The cell's extents about its centre: its walls strain the specimen homogeneously, so the
+// world's lists measure the spheres' motion relative to that strain (World::set_cell_frame).
+void frame_cell(World& world, const TestCell& cell) {
+  const auto e = lateral_extents(world, cell);
+  const std::vector<Wall>& w = world.walls();
+  const double z0 = w[cell.bottom].point.z(), z1 = w[cell.top].point.z();
+  const Vec3 centre =
+      cell.shape == TestCell::Shape::cuboid
+          ? Vec3(0.5 * (w[cell.lateral[0]].point.x() + w[cell.lateral[1]].point.x()),
+                 0.5 * (w[cell.lateral[2]].point.y() + w[cell.lateral[3]].point.y()),
+                 0.5 * (z0 + z1))
+          : Vec3(w[cell.lateral[0]].point.x(), w[cell.lateral[0]].point.y(), 0.5 * (z0 + z1));
+  world.set_cell_frame(centre, Vec3(e[0], e[1], z1 - z0));
+}
+
 }  // namespace
 
 TestCell add_cuboid_test_cell(World& world, const Vec3& lo, const Vec3& hi) {
@@ -156,6 +171,7 @@ void drive_cell(World& world, const TestCell& cell, const Control& axial, const 
     else
       throw InvalidInput("test cell: lateral walls are stress-controlled or fixed");
   }
+  frame_cell(world, cell);
   world.step(steps);
 }
 

@@ -44,7 +44,9 @@ def fit(points):
         improved = False
         for da, db in ((step, 0), (-step, 0), (0, step), (0, -step)):
             a2, b2 = a * 10 ** da, b * 10 ** db
-            if rms(points, a2, b2) < rms(points, a, b):
+            # Br cannot pass 1, so neither can its limit 1/b: a convex set of points would
+            # otherwise drive b to zero (the straight line Br = W/a).
+            if b2 >= 1 and rms(points, a2, b2) < rms(points, a, b):
                 a, b, improved = a2, b2, True
         if not improved:
             step /= 2

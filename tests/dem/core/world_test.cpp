@@ -160,6 +160,60 @@ TEST(DemWorld, ResultsDoNotDependOnTheNearList) {
   EXPECT_EQ(state_hash(one), state_hash(two));
 }
 
+// A lattice strained at a constant rate, every sphere moving with the strain (no contacts, no
+// gravity): measured from the cell's stretch, nobody moves, so the first search is the only one.
+TEST(DemWorld, AnAffinelyStrainedCellIsNotSearchedAgain) {
+  auto lattice = [](bool framed) {
+    WorldOptions o = cloud_options(1e-4, 1e5, 0.0002);
+    o.gravity = Vec3::Zero();
+    World world(o);
+    const double rate = 0.5, spacing = 0.0025;  // 1/s; 0.5 mm between surfaces
+    const Vec3 centre = Vec3::Constant(4.5 * spacing);
+    for (int i = 0; i < 10; ++i)
+      for (int j = 0; j < 10; ++j)
+        for (int k = 0; k < 10; ++k) {
+          Body b = make_sphere_body(Vec3(i, j, k) * spacing, 0.001, 2650.0);
+          b.velocity = -rate * Vec3(0.0, 0.0, b.position.z() - centre.z());
+          world.add_body(b);
+        }
+    const double h0 = 10 * spacing;
+    for (int s = 0; s < 1000; ++s) {  // 5 % axial strain
+      if (framed) world.set_cell_frame(centre, Vec3(h0, h0, h0 * (1.0 - rate * world.time())));
+      world.step(1);
+    }
+    EXPECT_TRUE(world.contacts().empty());
+    return world;
+  };
+  const World plain = lattice(false), framed = lattice(true);
+  EXPECT_GE(plain.neighbour_builds(), 5);
+  EXPECT_EQ(framed.neighbour_builds(), 1);
+  EXPECT_EQ(state_hash(plain), state_hash(framed));
+}
+
+// The cell frame only says when to search again: a top platen closing on a settling cloud gives
+// the same run to the bit with no frame, the platens' frame, or a frame that strains the wrong
+// way about the wrong centre (the lists' bound holds for any affine map).
+TEST(DemWorld, ResultsDoNotDependOnTheCellFrame) {
+  auto run = [](int frame) {
+    World world = gentle_cloud(0.0005, 5);
+    const int top = world.add_wall(Wall::plane(Vec3(0, 0, 0.09), -Vec3::UnitZ()));
+    world.walls()[top].velocity = Vec3(0, 0, -0.3);
+    for (int s = 0; s < 6000; ++s) {
+      const double h = world.walls()[top].point.z();
+      if (frame == 1) world.set_cell_frame(Vec3(0.075, 0.075, 0.5 * h), Vec3(0.15, 0.15, h));
+      if (frame == 2) world.set_cell_frame(Vec3(0.3, -0.1, h), Vec3(0.15 / h, 0.15, 0.05 + h));
+      world.step(1);
+    }
+    return world;
+  };
+  const World none = run(0), platens = run(1), wrong = run(2);
+  EXPECT_GT(none.wall_contacts().size(), 20u);
+  EXPECT_GT(none.contacts().size(), 20u);
+  EXPECT_EQ(state_hash(none), state_hash(platens));
+  EXPECT_EQ(state_hash(none), state_hash(wrong));
+  EXPECT_NE(none.neighbour_builds(), wrong.neighbour_builds());
+}
+
 TEST(DemWorld, ContactListsAskedForOrNotChangeNothing) {
   // contacts() writes the lists from the engine's slots when first asked for after a step: asking
   // after every call, or never, gives the same run to the bit.
