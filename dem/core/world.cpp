@@ -157,6 +157,8 @@ void World::build_neighbours() {
   dirty_ = false;
   sphere_at_build_ = sphere_world_;
   frame_at_build_ = frame_;
+  radius_at_build_ = 0.0;
+  for (double r : sphere_radius_) radius_at_build_ = std::max(radius_at_build_, r);
   find_skin_pairs(sphere_world_, sphere_radius_, sphere_body_, options_.skin, sc.grid_,
                   neighbours_);
   sc.grid_ = NeighbourGrid{};  // scratch of a search every few hundred steps: not kept between
@@ -264,8 +266,7 @@ bool World::refresh_neighbours() {
     double moved = std::sqrt(moved2.first);
     if (affine) {
       const double sigma = std::min(1.0, stretch.minCoeff());
-      const double r_max = *std::max_element(sphere_radius_.begin(), sphere_radius_.end());
-      gap = sigma * skin - (1.0 - sigma) * 2.0 * r_max;
+      gap = sigma * skin - (1.0 - sigma) * 2.0 * radius_at_build_;
       moved += 1e-15 * (c.norm() + c_b.norm() + frame_at_build_.size.norm());  // rounding
     }
     // A relative margin keeps the rounding of this bound on the safe side.

@@ -253,6 +253,7 @@ class World {
     Vec3 centre = Vec3::Zero(), size = Vec3::Zero();
   };
   CellFrame frame_, frame_at_build_;
+  double radius_at_build_ = 0.0;  // the largest sphere radius when neighbours_ was built
   std::vector<std::pair<int, int>> neighbours_;  // sorted (i, j)
   std::vector<Vec3> sphere_at_filter_;
   double near_limit_ = 0.0;                      // squared displacement

@@ -32,6 +32,16 @@ WorldOptions element_test_world_options(const std::vector<Body>& bodies,
   return o;
 }
 
+double crushable_skin(const std::vector<Body>& bodies) {
+  std::vector<double> radius;
+  for (const Body& b : bodies)
+    for (const Sphere& s : b.spheres) radius.push_back(s.radius);
+  if (radius.empty()) throw InvalidInput("element test: the specimen has no spheres");
+  const auto middle = radius.begin() + static_cast<std::ptrdiff_t>(radius.size() / 2);
+  std::nth_element(radius.begin(), middle, radius.end());
+  return 0.75 * *middle;
+}
+
 double inertial_number(const std::vector<Body>& bodies, double strain_rate, double confining) {
   const GrainScale g = grain_scale(bodies);
   return strain_rate * g.diameter * std::sqrt(g.density / confining);

@@ -105,6 +105,17 @@ TEST(DemElementTest, WorldOptionsAndInertialNumberOfASpecimen) {
   EXPECT_THROW(element_test_world_options({}, c.world.options().contact), InvalidInput);
 }
 
+TEST(DemElementTest, CrushableSkinIsAFractionOfTheMedianSphere) {
+  // Radii 1..5 mm in one body and 9 mm in another: the median of six is the fourth, 4 mm.
+  Body a, b;
+  for (int k = 1; k <= 5; ++k) a.spheres.push_back(Sphere{Vec3(k, 0, 0), 1e-3 * k});
+  b.spheres.push_back(Sphere{Vec3::Zero(), 9e-3});
+  EXPECT_DOUBLE_EQ(crushable_skin({a, b}), 0.75 * 4e-3);
+  EXPECT_DOUBLE_EQ(crushable_skin({b, a}), 0.75 * 4e-3);  // any body order
+  EXPECT_THROW(crushable_skin({}), InvalidInput);
+  EXPECT_THROW(crushable_skin({Body{}}), InvalidInput);
+}
+
 TEST(DemElementTest, OedometerHoldsTheInertialNumberAtTheStressReached) {
   ElementTestSettings t;
   t.kind = TestKind::oedometer;
