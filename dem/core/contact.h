@@ -73,8 +73,15 @@ struct ContactState {
   Vec3 normal = Vec3::UnitZ();  ///< unit contact normal (world)
   Vec3 point = Vec3::Zero();    ///< contact point (world, m)
   double overlap = 0.0;         ///< m
-  double normal_force = 0.0;    ///< kn·δ − c·vn (N); may be slightly tensile from the dashpot
-  Vec3 shear = Vec3::Zero();    ///< incremental shear force (N), kept between steps (history)
+  double normal_force = 0.0;    ///< kn·(δ − excused) − c·vn (N); may be slightly tensile
+  /// Overlap the normal spring ignores (m): zero but for a pair of spheres of two bodies whose
+  /// bond broke while the spheres overlapped (the fill lets each cell's spheres cross its faces;
+  /// pushing them apart at full overlap would release energy the bond never held). It starts at
+  /// the overlap at the break and follows the overlap down, never up (excused = min(excused, δ)),
+  /// so the pair resists being pressed further in at once and is an ordinary contact once it
+  /// has parted. Pair contacts only.
+  double excused = 0.0;
+  Vec3 shear = Vec3::Zero();  ///< incremental shear force (N), kept between steps (history)
   /// Total force on the receiving side (N).
   Vec3 force() const { return normal_force * normal + shear; }
 };

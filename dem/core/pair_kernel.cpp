@@ -67,19 +67,20 @@ HWY_INLINE PairGeometry<L> pair_geometry(const typename L::V xi[3], const typena
 }
 
 // What the law reads besides the geometry: the bodies' kinematics (position, velocity, angular
-// velocity of the body of i, a, and of j, b), the shear carried from the last step (zero for a
-// new contact), and the slot's dashpot c, kn and ks·dt (size-scaled where asked).
+// velocity of the body of i, a, and of j, b), the shear and excused overlap carried from the
+// last step (zero for a new contact), and the slot's dashpot c, kn and ks·dt (size-scaled where
+// asked).
 template <class L>
 struct PairState {
   typename L::V xi[3], ri;
   typename L::V ax[3], av[3], aw[3], bx[3], bv[3], bw[3];
-  typename L::V shear[3];
+  typename L::V shear[3], excused;
   typename L::V c, kn, ks_dt, friction;
 };
 
 template <class L>
 struct PairOutput {
-  typename L::V n[3], point[3], shear[3], normal_force, f[3];
+  typename L::V n[3], point[3], shear[3], normal_force, f[3], excused;
 };
 
 // v + ω × (p − x), written per component as dem/core/world_contacts.cpp did.
@@ -136,9 +137,12 @@ HWY_INLINE PairOutput<L> pair_law(const PairGeometry<L>& g, const PairState<L>& 
   for (int c = 0; c < 3; ++c)
     sh[c] = L::select(had_shear, L::select(can_rotate, projected[c] * scale, zero), sh[c]);
 
-  // 2. Normal spring and dashpot.
+  // 2. Normal spring and dashpot, on the overlap less the excused part, which follows the
+  // overlap down (ContactState::excused; zero for all but pairs freed by a broken bond, where
+  // δ − 0 is δ to the bit).
+  o.excused = L::select(L::lt(s.excused, g.delta), s.excused, g.delta);
   const V vn = (v[0] * o.n[0] + v[1] * o.n[1]) + v[2] * o.n[2];
-  o.normal_force = s.kn * g.delta - s.c * vn;
+  o.normal_force = s.kn * (g.delta - o.excused) - s.c * vn;
 
   // 3. Incremental shear spring.
   for (int c = 0; c < 3; ++c) sh[c] = sh[c] - s.ks_dt * (v[c] - vn * o.n[c]);
@@ -185,13 +189,14 @@ HWY_INLINE std::ptrdiff_t deferred_slot(const PairKernelArgs& a, std::size_t& cu
 // wrench on the two bodies (that of j perhaps deferred).
 struct Touch {
   Vec3 shear, f, torque_a, torque_b;
-  double normal_force;
+  double normal_force, excused;
 };
 
 HWY_INLINE void store_contact(const PairKernelArgs& a, std::size_t& cursor, std::size_t k,
                               const Touch& t) {
   a.active[k] = 1;
   a.force[k] = SlotForce{t.shear, t.normal_force};
+  if (a.excused) a.excused[k] = t.excused;
   const auto [i, j] = a.candidates[k];
   Wrench& wa = a.wrench[a.sphere_body[i]];
   wa.force -= t.f;
@@ -225,6 +230,7 @@ HWY_INLINE void scalar_candidate(const PairKernelArgs& a, std::size_t& cursor, s
     s.bx[c] = kb.position[c], s.bv[c] = kb.velocity[c], s.bw[c] = kb.angular_velocity[c];
     s.shear[c] = a.active[k] ? a.force[k].shear[c] : 0.0;
   }
+  s.excused = a.excused && a.active[k] ? a.excused[k] : 0.0;
   const double f = a.stiffness ? a.stiffness[k] : 1.0;
   s.c = a.damping[k];
   s.kn = a.stiffness ? a.kn * f : a.kn;
@@ -235,7 +241,8 @@ HWY_INLINE void scalar_candidate(const PairKernelArgs& a, std::size_t& cursor, s
   moment<L>(o.point, s.ax, o.f, ta);
   moment<L>(o.point, s.bx, o.f, tb);
   auto vec = [](const double v[3]) { return Vec3(v[0], v[1], v[2]); };
-  store_contact(a, cursor, k, Touch{vec(o.shear), vec(o.f), vec(ta), vec(tb), o.normal_force});
+  store_contact(a, cursor, k,
+                Touch{vec(o.shear), vec(o.f), vec(ta), vec(tb), o.normal_force, o.excused});
 }
 
 // The first deferred candidate at or after `begin`.
@@ -332,6 +339,7 @@ void PairRange(const PairKernelArgs& a, std::size_t begin, std::size_t end) {
     const L::M carried = hn::LoadMaskBits(d, &active_bits);
     for (int c = 0; c < 3; ++c)
       s.shear[c] = hn::IfThenElseZero(carried, hn::GatherIndex(d, force + c, slot4));
+    s.excused = a.excused ? hn::IfThenElseZero(carried, hn::LoadU(d, a.excused + k)) : hn::Zero(d);
     s.c = hn::LoadU(d, a.damping + k);
     if (a.stiffness) {
       const V f = hn::LoadU(d, a.stiffness + k);
@@ -354,6 +362,7 @@ void PairRange(const PairKernelArgs& a, std::size_t begin, std::size_t end) {
     }
     hn::Store(o.normal_force, d, lane_out[12]);
     hn::Store(g.delta, d, lane_out[13]);
+    hn::Store(o.excused, d, lane_out[14]);
     for (std::size_t l = 0; l < lanes; ++l) {
       const std::size_t kk = k + l;
       if (!(lane_out[13][l] > 0.0)) {
@@ -363,7 +372,8 @@ void PairRange(const PairKernelArgs& a, std::size_t begin, std::size_t end) {
       auto vec = [&](int first) {
         return Vec3(lane_out[first][l], lane_out[first + 1][l], lane_out[first + 2][l]);
       };
-      store_contact(a, cursor, kk, Touch{vec(0), vec(3), vec(6), vec(9), lane_out[12][l]});
+      store_contact(a, cursor, kk,
+                    Touch{vec(0), vec(3), vec(6), vec(9), lane_out[12][l], lane_out[14][l]});
     }
   }
   for (; k < end; ++k) scalar_candidate(a, cursor, k);

@@ -48,6 +48,9 @@ struct PairKernelArgs {
   const double* stiffness;  // per candidate: factor on kn and ks; null without size scaling
   double kn, ks, friction, dt;
   SlotForce* force;
+  /// Per candidate: the overlap its law ignores (ContactState::excused), read while the slot is
+  /// active and written while the pair touches; null: none (a world without bonds).
+  double* excused;
   std::uint8_t* active;
   /// Per body: each touching pair adds −F and −(p − x_a) × F to the body of i and, unless the
   /// pair is deferred, +F and (p − x_b) × F to the body of j, in candidate order.

@@ -54,6 +54,7 @@ World scaled_world(const World& world, double lambda) {
   auto scale_state = [&](ContactState& s) {
     s.point *= lambda;
     s.overlap *= lambda;
+    s.excused *= lambda;
     s.normal_force *= l2;
     s.shear *= l2;
   };

@@ -419,8 +419,12 @@ void World::restore(ListState lists, std::vector<PairContact> contacts,
   auto pair_ok = [&](int i, int j) { return i >= 0 && j > i && j < n; };
   for (const auto& [i, j] : lists.skin_pairs)
     if (!pair_ok(i, j)) throw InvalidInput("DEM world: neighbour pair outside the world");
-  for (const PairContact& c : contacts)
+  for (const PairContact& c : contacts) {
     if (!pair_ok(c.i, c.j)) throw InvalidInput("DEM world: contact between unknown spheres");
+    if (!(c.state.excused >= 0.0) || !std::isfinite(c.state.excused))
+      throw InvalidInput("DEM world: contact " + std::to_string(c.i) + "-" + std::to_string(c.j) +
+                         " has an excused overlap that is not finite and >= 0");
+  }
   for (const WallContact& c : wall_contacts)
     if (c.sphere < 0 || c.sphere >= n || c.wall < 0 || c.wall >= nw)
       throw InvalidInput("DEM world: wall contact of an unknown sphere or wall");
@@ -437,6 +441,7 @@ void World::restore(ListState lists, std::vector<PairContact> contacts,
   near_limit_ = lists.near_limit;
   near_valid_ = false;  // filtered from the restored lists at the next step
   contacts_ = std::move(contacts);
+  parted_.clear();  // the lists given here are the whole history
   wall_contacts_ = std::move(wall_contacts);
   StepCache& sc = cache_.get();
   sc.pairs_valid_ = sc.walls_valid_ = false;

@@ -265,6 +265,11 @@ class World {
   std::vector<BondMoments> bond_moments_;    // one per bond: its closed form while undamaged
   std::vector<std::pair<int, int>> bonded_;  // sorted (a, b), a < b, of the bonds that hold
   void update_bonded();
+  // Contacts of the spheres of bodies whose bond broke at the last step that overlapped then
+  // (sorted (i, j), no force yet, excused = the overlap): not candidates until the next filter,
+  // they wait here for their slots (carry_pairs, import_pairs), and contacts() lists them.
+  std::vector<PairContact> parted_;
+  void part_bodies(const std::vector<std::pair<int, int>>& held_before);
   mutable std::vector<PairContact> contacts_;   // sorted (i, j); see contacts()
   std::vector<WallContact> wall_contacts_;      // sorted (sphere, wall)
   std::vector<VertexContact> vertex_contacts_;  // sorted (body, vertex, wall)

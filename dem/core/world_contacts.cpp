@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <iterator>
 #include <tuple>
 
 namespace clumpkit::dem {
@@ -110,7 +111,8 @@ void World::pack_contacts() {
   sc.pending_.resize(contacts_.size());
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     const PairContact& pc = contacts_[c];
-    sc.pending_[c] = PairHistory{{pc.i, pc.j}, SlotForce{pc.state.shear, pc.state.normal_force}};
+    sc.pending_[c] = PairHistory{
+        {pc.i, pc.j}, SlotForce{pc.state.shear, pc.state.normal_force}, pc.state.excused};
   }
   release_contacts();
 }
@@ -121,6 +123,7 @@ void World::import_pairs() {
   sc.contacts_fresh_ = false;  // candidates no longer in reach drop their history
   sc.slot_force_.resize(candidates_.size());
   sc.slot_active_.assign(candidates_.size(), 0);
+  sc.slot_excused_.assign(bonds_.empty() ? 0 : candidates_.size(), 0.0);
   const int n = sphere_count();
   parallel_items(sc.pending_.size(), [&](std::size_t c) {
     const auto [i, j] = sc.pending_[c].pair;
@@ -132,9 +135,11 @@ void World::import_pairs() {
     const auto k = static_cast<std::size_t>(it - candidates_.begin());
     sc.slot_force_[k] = sc.pending_[c].force;
     sc.slot_active_[k] = 1;
+    if (!sc.slot_excused_.empty()) sc.slot_excused_[k] = sc.pending_[c].excused;
     // The wrenches are written by the next contact pass (every active slot is refreshed there).
   });
   std::vector<PairHistory>().swap(sc.pending_);
+  parted_.clear();  // the lists held them (export_pairs), so the pending history did
 }
 
 // The slots of the previous candidates (old_candidates_, both lists sorted) carried over to the
@@ -146,16 +151,31 @@ void World::carry_pairs() {
   const std::size_t m = candidates_.size();
   std::vector<SlotForce> force(m);
   std::vector<std::uint8_t> active(m, 0);
-  std::size_t o = 0;
+  const bool excuses = !bonds_.empty();
+  std::vector<double> excused(excuses ? m : 0, 0.0);
+  sc.slot_excused_.resize(excuses ? old.size() : 0, 0.0);
+  std::size_t o = 0, p = 0;
   for (std::size_t k = 0; k < m; ++k) {
     while (o < old.size() && old[o] < candidates_[k]) ++o;
     if (o < old.size() && old[o] == candidates_[k] && sc.slot_active_[o]) {
       force[k] = sc.slot_force_[o];
       active[k] = 1;
+      if (excuses) excused[k] = sc.slot_excused_[o];
+      continue;
+    }
+    // A pair freed by a bond that broke at the last step starts touching with its overlap
+    // excused (part_bodies).
+    while (p < parted_.size() && std::make_pair(parted_[p].i, parted_[p].j) < candidates_[k]) ++p;
+    if (p < parted_.size() && std::make_pair(parted_[p].i, parted_[p].j) == candidates_[k]) {
+      force[k] = SlotForce{Vec3::Zero(), 0.0};
+      active[k] = 1;
+      excused[k] = parted_[p].state.excused;
     }
   }
   sc.slot_force_.swap(force);
   sc.slot_active_.swap(active);
+  sc.slot_excused_.swap(excused);
+  parted_.clear();
   sc.contacts_fresh_ = false;
 }
 
@@ -167,7 +187,7 @@ void World::export_pairs() const {
   if (sc.contacts_fresh_) return;
   contacts_.clear();
   // Exactly as many as touch (a growing vector would hold up to twice that at its peak).
-  std::size_t touching = 0;
+  std::size_t touching = parted_.size();
   for (const std::uint8_t a : sc.slot_active_) touching += a;
   contacts_.reserve(touching);
   for (std::size_t k = 0; k < candidates_.size(); ++k) {
@@ -179,6 +199,15 @@ void World::export_pairs() const {
                        sphere_radius_[c.j], c.state.normal, c.state.point, c.state.overlap);
     c.state.normal_force = sc.slot_force_[k].normal_force;
     c.state.shear = sc.slot_force_[k].shear;
+    if (!sc.slot_excused_.empty()) c.state.excused = sc.slot_excused_[k];
+  }
+  // Pairs still waiting for their slots (parted_, never candidates yet) in their places.
+  if (!parted_.empty()) {
+    const auto middle = contacts_.insert(contacts_.end(), parted_.begin(), parted_.end());
+    std::inplace_merge(contacts_.begin(), middle, contacts_.end(),
+                       [](const PairContact& a, const PairContact& b) {
+                         return std::make_pair(a.i, a.j) < std::make_pair(b.i, b.j);
+                       });
   }
   sc.contacts_fresh_ = true;
 }
@@ -322,6 +351,36 @@ void World::vertex_wall_contacts() {
   vertex_contacts_ = std::move(next);
 }
 
+// The bodies whose last bond broke at this step (in held_before, no longer in bonded_): each
+// pair of their spheres that overlaps at this step's positions waits in parted_ for its slot,
+// with that overlap excused (ContactState::excused). Serial: a few pairs per broken bond, at the
+// steps where one breaks.
+void World::part_bodies(const std::vector<std::pair<int, int>>& held_before) {
+  std::vector<std::pair<int, int>> freed;  // both lists sorted
+  std::set_difference(held_before.begin(), held_before.end(), bonded_.begin(), bonded_.end(),
+                      std::back_inserter(freed));
+  std::vector<PairContact> parted;
+  for (const auto& [a, b] : freed) {
+    for (int s = body_first_sphere_[a]; s < body_first_sphere_[a + 1]; ++s)
+      for (int t = body_first_sphere_[b]; t < body_first_sphere_[b + 1]; ++t) {
+        PairContact c;
+        c.i = std::min(s, t), c.j = std::max(s, t);
+        pair_contact_frame(sphere_world_[c.i], sphere_world_[c.j], sphere_radius_[c.i],
+                           sphere_radius_[c.j], c.state.normal, c.state.point, c.state.overlap);
+        if (!(c.state.overlap > 0.0)) continue;
+        c.state.excused = c.state.overlap;
+        parted.push_back(c);
+      }
+  }
+  if (parted.empty()) return;
+  const auto key = [](const PairContact& c) { return std::make_pair(c.i, c.j); };
+  std::sort(parted.begin(), parted.end(),
+            [&](const PairContact& x, const PairContact& y) { return key(x) < key(y); });
+  const auto middle = parted_.insert(parted_.end(), parted.begin(), parted.end());
+  std::inplace_merge(parted_.begin(), middle, parted_.end(),
+                     [&](const PairContact& x, const PairContact& y) { return key(x) < key(y); });
+}
+
 void World::compute_forces() {
   StepCache& sc = cache_.get();
   sc.contacts_fresh_ = false;
@@ -345,6 +404,7 @@ void World::compute_forces() {
                             p.friction,
                             dt,
                             sc.slot_force_.data(),
+                            sc.slot_excused_.empty() ? nullptr : sc.slot_excused_.data(),
                             sc.slot_active_.data(),
                             sc.pair_wrench_.data(),
                             sc.deferred_cand_.data(),
@@ -407,7 +467,9 @@ void World::compute_forces() {
       if (moments.pristine) moments.pristine = bond.undamaged();
     });
     if (broke.load()) {
+      const std::vector<std::pair<int, int>> held_before = bonded_;
       update_bonded();
+      part_bodies(held_before);
       near_valid_ = false;
     }
   }

@@ -29,6 +29,7 @@ bool World::sort_bodies() {
   const std::size_t nb = bodies_.size();
   if (nb < 2) return false;
   hold_contacts_in_lists();  // renumbered below with the spheres
+  parted_.clear();           // the lists hold them now
   // Bins of the largest sphere diameter from the lowest centroid: only lengths of the specimen,
   // so a copy scaled by λ = 2^k computes the same bins and sorts the same.
   Vec3 lo = Vec3::Constant(INFINITY);

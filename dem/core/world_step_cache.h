@@ -52,6 +52,7 @@ struct SlotForce {
 struct PairHistory {  // what a slot takes from a contact list's entry
   std::pair<int, int> pair;
   SlotForce force;
+  double excused;
 };
 
 }  // namespace detail
@@ -99,6 +100,9 @@ struct StepCache {
   // positions of the contact pass (pair_contact_frame), on the call's last step before the
   // bodies move.
   std::vector<SlotForce> slot_force_;
+  // Per candidate in a world with bonds (empty without): the overlap its law ignores
+  // (ContactState::excused), read and written with slot_force_ while the slot is active.
+  std::vector<double> slot_excused_;
   // The contact lists' history (40 bytes a contact, no geometry) while new slots are made for it:
   // the lists themselves are released before the grid search (World::pack_contacts).
   std::vector<PairHistory> pending_;

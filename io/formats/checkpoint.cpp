@@ -42,7 +42,7 @@ class Writer {
     bytes += s;
   }
   void state(const ContactState& s) {
-    vec(s.normal), vec(s.point), f64(s.overlap), f64(s.normal_force), vec(s.shear);
+    vec(s.normal), vec(s.point), f64(s.overlap), f64(s.normal_force), vec(s.shear), f64(s.excused);
   }
 };
 
@@ -96,6 +96,7 @@ class Reader {
     s.overlap = f64();
     s.normal_force = f64();
     s.shear = vec();
+    s.excused = f64();
     return s;
   }
 
@@ -119,7 +120,7 @@ class Reader {
   std::string path_;
 };
 
-constexpr std::size_t kStateBytes = 11 * 8;
+constexpr std::size_t kStateBytes = 12 * 8;
 constexpr std::size_t kHeaderBytes = sizeof kMagic + 4;
 constexpr std::size_t kChecksumBytes = 8;
 

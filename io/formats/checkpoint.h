@@ -19,9 +19,9 @@ namespace clumpkit {
 /// sums each body's pair contacts in the contact pass, chunk by chunk: a run resumed from an
 /// older file would not continue the bits of the run that wrote it, so none is read; 13 = the skin
 /// list holds the pairs of bonded bodies, which the near filter leaves out: an older list lacks
-/// the pairs a breaking bond frees). Only the current version is read; any other is refused
-/// naming both versions.
-inline constexpr std::uint32_t kCheckpointVersion = 13;
+/// the pairs a breaking bond frees; 14 = each contact's excused overlap after its shear). Only the
+/// current version is read; any other is refused naming both versions.
+inline constexpr std::uint32_t kCheckpointVersion = 14;
 
 /// Writes `world` and `info` to `path`: magic "CLUMPKITCKPT", version, the stage and its state
 /// (length-prefixed strings: the stage, the number of entries, each key and value), then

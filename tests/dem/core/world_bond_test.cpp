@@ -1,7 +1,9 @@
 // Bonded cells in the World: a column of cubic cells (from geom/cells) under uniaxial tension and
 // compression has the modulus K_I·a and the strength σ_eI; bonded spheres never touch, broken
-// ones do; thread counts and body sorting change nothing.
+// ones do, without the overlap they had across the face when the bond broke; thread counts and
+// body sorting change nothing.
 #include "geom/errors.h"
+#include "geom/random.h"
 #include "tests/dem/bonded_column.h"
 
 #include <tbb/global_control.h>
@@ -104,4 +106,87 @@ TEST(WorldBonds, SortingKeepsEachBondOnItsBodies) {
   Bond self = w.bonds()[0];
   self.b = self.a;
   EXPECT_THROW(w.add_bond(self), InvalidInput);
+}
+
+namespace {
+
+// Two cubic cells of edge a bonded on their face, each body one sphere of radius 0.55·a, so the
+// spheres overlap by 0.1·a across the face, as the fill's spheres of two cells do. A weak law
+// (σ_eI = 1 MPa, G_I = 10 J/m²: the face fails at an opening of 2·G_I/σ_eI = 20 µm, far below
+// the 650 µm overlap) and no gravity; the cells fly apart at ±speed along z.
+World parted_pair(double speed) {
+  const double a = kA, rho = 2650;
+  const Tessellation cells =
+      voronoi_cells(make_box(Vec3(a, a, 2 * a)), {Vec3(0, 0, -0.5 * a), Vec3(0, 0, 0.5 * a)});
+  Rng rng(1);
+  WorldOptions o;
+  o.gravity = Vec3::Zero();
+  o.cohesive.sigma_n = 1e6;
+  o.cohesive.sigma_t = 1.2e6;
+  o.cohesive.g_n = 10;
+  o.cohesive.g_t = 12;
+  World w(o);
+  for (std::size_t c = 0; c < 2; ++c) {
+    Body b;
+    b.spheres = {Sphere{Vec3::Zero(), 0.55 * a}};
+    b.volume = a * a * a;
+    b.mass = rho * b.volume;
+    b.moments = Vec3::Constant(b.mass * a * a / 6.0);
+    b.position = cells.cells[c].mass.centroid;
+    b.velocity = Vec3(0, 0, c == 0 ? -speed : speed);
+    w.add_body(b);
+  }
+  add_cell_bonds(w, cell_bonds(cells, constant(1.0), rng));
+  w.options().timestep = 0.2 * critical_timestep(w);
+  return w;
+}
+
+double cells_kinetic_energy(const World& w) {
+  double e = 0;
+  for (const Body& b : w.bodies()) e += 0.5 * b.mass * b.velocity.squaredNorm();
+  return e;
+}
+
+}  // namespace
+
+// A bond that breaks frees its bodies' spheres, which overlap across the face by the fill's
+// reach: pushing them apart at that overlap (kn·0.1·a, 650 N here) would hand the pair a
+// hundred times the energy it had. The contact starts with its overlap excused, so the cells
+// leave with less energy than they came with (the face's fracture energy spent), and the excused
+// part follows the overlap down: the law is kn·(δ − excused) at every step, and pressed back
+// together the cells resist at once.
+TEST(WorldBonds, BrokenBondsHandNoEnergyToOverlappingSpheres) {
+  World w = parted_pair(1.0);
+  const double before = cells_kinetic_energy(w);
+  const double kn = w.options().contact.kn;
+  int steps = 0;
+  while (w.bonds()[0].holds() && steps < 2000) w.step(1), ++steps;
+  ASSERT_FALSE(w.bonds()[0].holds()) << "the face did not fail in " << steps << " steps";
+  w.step(1);  // the freed pair is a candidate from the next step
+  ASSERT_EQ(w.contacts().size(), 1u);
+  const double at_break = w.contacts()[0].state.excused;
+  EXPECT_GT(at_break, 0.09 * kA);  // the 0.1·a overlap, less the opening at failure
+  EXPECT_LT(at_break, 0.1 * kA);
+  double excused = at_break;
+  for (int k = 0; k < 20; ++k) {
+    w.step(1);
+    ASSERT_EQ(w.contacts().size(), 1u);
+    const ContactState& c = w.contacts()[0].state;
+    excused = std::min(excused, c.overlap);
+    EXPECT_EQ(c.excused, excused) << "step " << k;
+    EXPECT_EQ(c.normal_force, kn * (c.overlap - c.excused)) << "step " << k;
+  }
+  const double after = cells_kinetic_energy(w);
+  EXPECT_LT(after, before);  // without the excuse: ~0.2 J from 7e-4 J
+  std::printf("kinetic energy %.3e J before, %.3e J after the break; excused %.1f µm\n", before,
+              after, at_break * 1e6);
+
+  // Pressed back together: kn·(δ − excused) > 0 at once.
+  for (Body& b : w.bodies()) b.velocity = -b.velocity;
+  w.step(5);
+  ASSERT_EQ(w.contacts().size(), 1u);
+  const ContactState& c = w.contacts()[0].state;
+  EXPECT_GT(c.overlap, c.excused);
+  EXPECT_GT(c.normal_force, 0.0);
+  EXPECT_EQ(c.normal_force, kn * (c.overlap - c.excused));
 }

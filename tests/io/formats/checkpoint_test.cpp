@@ -69,6 +69,7 @@ void expect_identical(const World& a, const World& b) {
     ASSERT_EQ(x.j, y.j);
     EXPECT_TRUE(same_bits(x.state.shear, y.state.shear)) << "contact " << k;
     EXPECT_TRUE(same_bits(x.state.normal_force, y.state.normal_force)) << "contact " << k;
+    EXPECT_TRUE(same_bits(x.state.excused, y.state.excused)) << "contact " << k;
   }
   ASSERT_EQ(a.wall_contacts().size(), b.wall_contacts().size());
   for (std::size_t k = 0; k < a.wall_contacts().size(); ++k) {
@@ -465,14 +466,14 @@ TEST(DemCheckpoint, CornerContactsSurviveASaveAndLoad) {
 TEST(DemCheckpoint, FuzzCorpusSeedIsOfTheCurrentFormat) {
   CheckpointInfo info;
   const std::string corpus = std::string(CLUMPKIT_SOURCE_DIR) + "/tests/fuzz/corpus/checkpoint/";
-  const World w = load_checkpoint(corpus + "sorted-servo-v13.ckpt", &info);
-  EXPECT_EQ(read_bytes(corpus + "sorted-servo-v13.ckpt").substr(12, 4),
-            std::string("\x0d\0\0\0", 4));
+  const World w = load_checkpoint(corpus + "sorted-servo-v14.ckpt", &info);
+  EXPECT_EQ(read_bytes(corpus + "sorted-servo-v14.ckpt").substr(12, 4),
+            std::string("\x0e\0\0\0", 4));
   EXPECT_GT(w.bodies().size(), 0u);
   EXPECT_FALSE(w.walls().empty());
   EXPECT_EQ(info.state.at("phase"), "2");
   // The bonded seed: bonds, their damage and the law's friction come back.
-  const World bonded = load_checkpoint(corpus + "bonded-cells-v13.ckpt");
+  const World bonded = load_checkpoint(corpus + "bonded-cells-v14.ckpt");
   EXPECT_EQ(bonded.bonds().size(), 28u);
   EXPECT_EQ(bonded.options().cohesive.friction, 0.3);
 }
@@ -488,7 +489,7 @@ TEST(DemCheckpoint, AnOlderVersionIsRefusedNamingBoth) {
   } catch (const InvalidInput& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("sorted-servo-v10.ckpt"), std::string::npos) << what;
-    EXPECT_NE(what.find("unsupported version 10 (expected 13)"), std::string::npos) << what;
+    EXPECT_NE(what.find("unsupported version 10 (expected 14)"), std::string::npos) << what;
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
   }
 }
