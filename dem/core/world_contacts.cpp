@@ -165,6 +165,7 @@ void World::carry_pairs() {
     }
     // A pair freed by a bond that broke at the last step starts touching with its overlap
     // excused (part_bodies).
+    if (!excuses) continue;  // parted_ is empty without bonds
     while (p < parted_.size() && std::make_pair(parted_[p].i, parted_[p].j) < candidates_[k]) ++p;
     if (p < parted_.size() && std::make_pair(parted_[p].i, parted_[p].j) == candidates_[k]) {
       force[k] = SlotForce{Vec3::Zero(), 0.0};
