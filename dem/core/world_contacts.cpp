@@ -21,6 +21,11 @@ namespace {
 // no further than the next chunk — the 95th percentile of j − i over the candidates, from a
 // sample — within [n/64, n/16] (at least 128), so a phase has 8 to 32 chunks to share among
 // threads. A function of the candidates alone, never of the thread count.
+// Contacts in (i, j) order, as the contact lists and parted_ keep them.
+bool pair_order(const PairContact& a, const PairContact& b) {
+  return std::make_pair(a.i, a.j) < std::make_pair(b.i, b.j);
+}
+
 std::size_t chunk_spheres(std::size_t n, const std::vector<std::pair<int, int>>& candidates) {
   const std::size_t lo = std::max<std::size_t>(128, n / 64);
   const std::size_t hi = std::max<std::size_t>(128, n / 16);
@@ -205,10 +210,7 @@ void World::export_pairs() const {
   // Pairs still waiting for their slots (parted_, never candidates yet) in their places.
   if (!parted_.empty()) {
     const auto middle = contacts_.insert(contacts_.end(), parted_.begin(), parted_.end());
-    std::inplace_merge(contacts_.begin(), middle, contacts_.end(),
-                       [](const PairContact& a, const PairContact& b) {
-                         return std::make_pair(a.i, a.j) < std::make_pair(b.i, b.j);
-                       });
+    std::inplace_merge(contacts_.begin(), middle, contacts_.end(), pair_order);
   }
   sc.contacts_fresh_ = true;
 }
@@ -374,12 +376,9 @@ void World::part_bodies(const std::vector<std::pair<int, int>>& held_before) {
       }
   }
   if (parted.empty()) return;
-  const auto key = [](const PairContact& c) { return std::make_pair(c.i, c.j); };
-  std::sort(parted.begin(), parted.end(),
-            [&](const PairContact& x, const PairContact& y) { return key(x) < key(y); });
+  std::sort(parted.begin(), parted.end(), pair_order);
   const auto middle = parted_.insert(parted_.end(), parted.begin(), parted.end());
-  std::inplace_merge(parted_.begin(), middle, parted_.end(),
-                     [&](const PairContact& x, const PairContact& y) { return key(x) < key(y); });
+  std::inplace_merge(parted_.begin(), middle, parted_.end(), pair_order);
 }
 
 void World::compute_forces() {

@@ -12,6 +12,18 @@ namespace clumpkit::dem::test {
 
 constexpr double kCellEdge = 0.0065;  // m: Hu et al. 2023's cell size
 
+// The body of a cubic cell of edge a at its centroid: one sphere of radius `radius` on it, the
+// cube's mass and moments at density rho.
+inline Body cube_cell_body(const Cell& cell, double a, double radius, double rho) {
+  Body b;
+  b.spheres = {Sphere{Vec3::Zero(), radius}};
+  b.volume = a * a * a;
+  b.mass = rho * b.volume;
+  b.moments = Vec3::Constant(b.mass * a * a / 6.0);
+  b.position = cell.mass.centroid;
+  return b;
+}
+
 // A 2 × 2 × 4 column of cubic cells of edge a (Voronoi cells of grid seeds in a box), each body
 // a sphere inscribed in its cube with the cube's mass and moments, bonded on every shared face.
 // The bottom and top layers are driven (huge mass, no rotation): the top at `velocity` along z.
@@ -28,12 +40,7 @@ inline World bonded_column(double velocity) {
   o.gravity = Vec3::Zero();
   World w(o);
   for (std::size_t c = 0; c < cells.cells.size(); ++c) {
-    Body b;
-    b.spheres = {Sphere{Vec3::Zero(), 0.5 * a}};
-    b.volume = a * a * a;
-    b.mass = rho * b.volume;
-    b.moments = Vec3::Constant(b.mass * a * a / 6.0);
-    b.position = cells.cells[c].mass.centroid;
+    Body b = cube_cell_body(cells.cells[c], a, 0.5 * a, rho);
     const int layer = static_cast<int>(c) / 4;
     if (layer == 0 || layer == 3) {
       b.mass *= 1e12;

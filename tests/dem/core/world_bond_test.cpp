@@ -127,12 +127,7 @@ World parted_pair(double speed) {
   o.cohesive.g_t = 12;
   World w(o);
   for (std::size_t c = 0; c < 2; ++c) {
-    Body b;
-    b.spheres = {Sphere{Vec3::Zero(), 0.55 * a}};
-    b.volume = a * a * a;
-    b.mass = rho * b.volume;
-    b.moments = Vec3::Constant(b.mass * a * a / 6.0);
-    b.position = cells.cells[c].mass.centroid;
+    Body b = test::cube_cell_body(cells.cells[c], a, 0.55 * a, rho);
     b.velocity = Vec3(0, 0, c == 0 ? -speed : speed);
     w.add_body(b);
   }
