@@ -17,15 +17,15 @@ using namespace detail;
 
 namespace {
 
-// Spheres per chunk of the contact pass (StepCache::pair_wrench_): enough that most pairs reach
-// no further than the next chunk — the 95th percentile of j − i over the candidates, from a
-// sample — within [n/64, n/16] (at least 128), so a phase has 8 to 32 chunks to share among
-// threads. A function of the candidates alone, never of the thread count.
 // Contacts in (i, j) order, as the contact lists and parted_ keep them.
 bool pair_order(const PairContact& a, const PairContact& b) {
   return std::make_pair(a.i, a.j) < std::make_pair(b.i, b.j);
 }
 
+// Spheres per chunk of the contact pass (StepCache::pair_wrench_): enough that most pairs reach
+// no further than the next chunk — the 95th percentile of j − i over the candidates, from a
+// sample — within [n/64, n/16] (at least 128), so a phase has 8 to 32 chunks to share among
+// threads. A function of the candidates alone, never of the thread count.
 std::size_t chunk_spheres(std::size_t n, const std::vector<std::pair<int, int>>& candidates) {
   const std::size_t lo = std::max<std::size_t>(128, n / 64);
   const std::size_t hi = std::max<std::size_t>(128, n / 16);

@@ -62,9 +62,8 @@ def read_bonds(path):
 
 
 def vtp_array(text, name):
-    i = text.find("<Points>") if name == "Points" else text.find('Name="%s"' % name)
-    if name == "Points":
-        i = text.find("<DataArray", i)
+    """The values of fragments.vtp's data array `name` ("Points" for the sphere centres), as text."""
+    i = text.find("<DataArray", text.find("<Points>")) if name == "Points" else text.find('Name="%s"' % name)
     if i < 0:
         sys.exit("fragments.vtp: no array %s" % name)
     i = text.find(">", i) + 1

@@ -16,7 +16,7 @@ particles can show.
 
 SPECIMEN_DIR holds the specimen.csv the test started from (cell volumes); TEST_DIR the test's
 curve.csv (broken_class_*), report.json (breakage.class_bounds) and fragments.vtp (each cell's
-particle).
+particle). Needs python3-numpy (face_overlap.py's readers).
 """
 import argparse
 import csv
@@ -24,29 +24,19 @@ import json
 import math
 import os
 import random
-import sys
+
+from face_overlap import read_specimen, vtp_array
 
 
 def class_sizes(specimen, test):
     """Particles in each size class: volume-equivalent diameter of each particle's cells."""
-    with open(os.path.join(specimen, "specimen.csv")) as f:
-        lines = f.read().split("\n")
-    k = lines.index("# spheres")
-    volume = [float(l.split(",")[11]) for l in lines[4:k] if l.strip()]
+    volume = read_specimen(os.path.join(specimen, "specimen.csv"))[2]
     with open(os.path.join(test, "fragments.vtp")) as f:
         text = f.read()
-    def array(name):
-        i = text.find('Name="%s"' % name)
-        if i < 0:
-            sys.exit("%s/fragments.vtp: no array %s" % (test, name))
-        i = text.find(">", i) + 1
-        return [int(v) for v in text[i:text.find("</DataArray>", i)].split()]
-    particle_of = {}
-    for body, particle in zip(array("body"), array("particle")):
-        particle_of[body] = particle
+    particle_of = dict(zip(vtp_array(text, "body"), vtp_array(text, "particle")))  # one per cell
     pvol = {}
-    for body, p in particle_of.items():
-        pvol[p] = pvol.get(p, 0.0) + volume[body - 1]
+    for body, particle in particle_of.items():
+        pvol[particle] = pvol.get(particle, 0.0) + volume[int(body) - 1]
     with open(os.path.join(test, "report.json")) as f:
         bounds = json.load(f)["breakage"]["class_bounds"]
     counts = [0] * (len(bounds) - 1)
