@@ -219,6 +219,30 @@ void World::update_bonded() {
   bonded_.erase(std::unique(bonded_.begin(), bonded_.end()), bonded_.end());
 }
 
+// What update_bonded would leave after the bonds of bond_broke_ stopped holding, at the cost of
+// those bonds: a pair leaves bonded_ unless another bond of its bodies still holds.
+std::vector<std::pair<int, int>> World::release_bonded() {
+  const StepCache& sc = cache_.get();
+  std::vector<std::pair<int, int>> freed;
+  for (std::size_t k = 0; k < bonds_.size(); ++k) {
+    if (!sc.bond_broke_[k]) continue;
+    const Bond& bond = bonds_[k];
+    bool held = false;
+    for (std::size_t e = sc.body_bond_begin_[bond.a]; e < sc.body_bond_begin_[bond.a + 1]; ++e) {
+      const Bond& other = bonds_[sc.body_bond_items_[e] >> 1];
+      held = held || (&other != &bond && (other.a == bond.b || other.b == bond.b) && other.holds());
+    }
+    if (!held) freed.emplace_back(std::min(bond.a, bond.b), std::max(bond.a, bond.b));
+  }
+  std::sort(freed.begin(), freed.end());
+  freed.erase(std::unique(freed.begin(), freed.end()), freed.end());
+  for (const std::pair<int, int>& pair : freed) {
+    const auto at = std::lower_bound(bonded_.begin(), bonded_.end(), pair);
+    if (at != bonded_.end() && *at == pair) bonded_.erase(at);
+  }
+  return freed;
+}
+
 // Called once a sphere has moved more than sqrt(near_limit_) since the last filter (or there is
 // none). Let D be the largest displacement since the last build: the skin list still holds every
 // pair that can touch while each sphere stays within skin/2 − D of where it is now, so when that
@@ -309,6 +333,40 @@ void World::filter_candidates() {
     candidates_.resize(at);
   }
   near_valid_ = true;
+  freed_.clear();
+  near_lacks_freed_only_ = false;
+}
+
+// The near list `before` (filtered for sphere_at_filter_ while the pairs of freed_ were bonded)
+// with the pairs of the freed bodies' spheres that filter_candidates would keep, merged in order:
+// the list a whole filter makes, at the cost of the freed bodies' spheres. A crushable specimen
+// breaks a bond at most steps past its yield, and a whole filter of its skin list (the bonded
+// cells' pairs included) cost several steps each time.
+void World::add_freed_candidates(const std::vector<std::pair<int, int>>& before) {
+  ++filters_;
+  const double near = options_.near_skin_fraction * options_.skin;
+  std::vector<std::pair<int, int>> added;
+  for (const auto& [a, b] : freed_) {  // a < b, so each of a's spheres comes first in its pairs
+    const int first_b = body_first_sphere_[b], end_b = body_first_sphere_[b + 1];
+    for (int s = body_first_sphere_[a]; s < body_first_sphere_[a + 1]; ++s) {
+      auto it =
+          std::lower_bound(neighbours_.begin(), neighbours_.end(), std::make_pair(s, first_b));
+      for (; it != neighbours_.end() && it->first == s && it->second < end_b; ++it) {
+        const auto [i, j] = *it;
+        // filter_pairs' test, the same expression (contraction is off: the same bits)
+        const double r = sphere_radius_[i] + sphere_radius_[j] + near;
+        if ((sphere_at_filter_[j] - sphere_at_filter_[i]).squaredNorm() < r * r)
+          added.push_back(*it);
+      }
+    }
+  }
+  std::sort(added.begin(), added.end());
+  std::vector<std::pair<int, int>> merged(before.size() + added.size());
+  std::merge(before.begin(), before.end(), added.begin(), added.end(), merged.begin());
+  candidates_.swap(merged);
+  near_valid_ = true;
+  freed_.clear();
+  near_lacks_freed_only_ = false;
 }
 
 void World::step(int count) {
@@ -343,7 +401,10 @@ void World::step(int count) {
         sc.walls_valid_ = false;
         walls_stale = true;
       }
-      filter_candidates();
+      if (!moved && near_lacks_freed_only_)  // only bonds broke since the last filter
+        add_freed_candidates(carry ? sc.old_candidates_ : candidates_);
+      else
+        filter_candidates();
       if (carry) {
         derive_pair_index();
         carry_pairs();
@@ -440,6 +501,8 @@ void World::restore(ListState lists, std::vector<PairContact> contacts,
   sphere_at_filter_ = std::move(lists.filter_positions);
   near_limit_ = lists.near_limit;
   near_valid_ = false;  // filtered from the restored lists at the next step
+  freed_.clear();
+  near_lacks_freed_only_ = false;
   contacts_ = std::move(contacts);
   parted_.clear();  // the lists given here are the whole history
   wall_contacts_ = std::move(wall_contacts);

@@ -214,6 +214,7 @@ class World {
   bool refresh_neighbours();
   void build_neighbours();
   void filter_candidates();
+  void add_freed_candidates(const std::vector<std::pair<int, int>>& before);
   void compute_forces();
   void integrate();
   // Fast path (world.cpp): per-candidate contact slots mirror contacts_ / wall_contacts_ during
@@ -265,11 +266,19 @@ class World {
   std::vector<BondMoments> bond_moments_;    // one per bond: its closed form while undamaged
   std::vector<std::pair<int, int>> bonded_;  // sorted (a, b), a < b, of the bonds that hold
   void update_bonded();
+  // The pairs of bonded_ whose last bond broke at this step (bond_broke_ of the step cache),
+  // taken out of bonded_: sorted (a, b), a < b.
+  std::vector<std::pair<int, int>> release_bonded();
+  // Body pairs freed since the last filter while candidates_ stayed filtered for
+  // sphere_at_filter_ (sorted): the near list then only lacks their spheres' pairs, which
+  // add_freed_candidates merges in instead of filtering the whole skin list again.
+  std::vector<std::pair<int, int>> freed_;
+  bool near_lacks_freed_only_ = false;
   // Contacts of the spheres of bodies whose bond broke at the last step that overlapped then
   // (sorted (i, j), no force yet, excused = the overlap): not candidates until the next filter,
   // they wait here for their slots (carry_pairs, import_pairs), and contacts() lists them.
   std::vector<PairContact> parted_;
-  void part_bodies(const std::vector<std::pair<int, int>>& held_before);
+  void part_bodies(const std::vector<std::pair<int, int>>& freed);
   mutable std::vector<PairContact> contacts_;   // sorted (i, j); see contacts()
   std::vector<WallContact> wall_contacts_;      // sorted (sphere, wall)
   std::vector<VertexContact> vertex_contacts_;  // sorted (body, vertex, wall)

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <iterator>
 #include <tuple>
 
 namespace clumpkit::dem {
@@ -354,14 +353,11 @@ void World::vertex_wall_contacts() {
   vertex_contacts_ = std::move(next);
 }
 
-// The bodies whose last bond broke at this step (in held_before, no longer in bonded_): each
-// pair of their spheres that overlaps at this step's positions waits in parted_ for its slot,
-// with that overlap excused (ContactState::excused). Serial: a few pairs per broken bond, at the
-// steps where one breaks.
-void World::part_bodies(const std::vector<std::pair<int, int>>& held_before) {
-  std::vector<std::pair<int, int>> freed;  // both lists sorted
-  std::set_difference(held_before.begin(), held_before.end(), bonded_.begin(), bonded_.end(),
-                      std::back_inserter(freed));
+// The bodies whose last bond broke at this step (freed: sorted, out of bonded_): each pair of
+// their spheres that overlaps at this step's positions waits in parted_ for its slot, with that
+// overlap excused (ContactState::excused). Serial: a few pairs per broken bond, at the steps
+// where one breaks.
+void World::part_bodies(const std::vector<std::pair<int, int>>& freed) {
   std::vector<PairContact> parted;
   for (const auto& [a, b] : freed) {
     for (int s = body_first_sphere_[a]; s < body_first_sphere_[a + 1]; ++s)
@@ -452,6 +448,7 @@ void World::compute_forces() {
   // the next step: the near list is filtered again from the skin list, which holds them.
   if (!bonds_.empty()) {
     sc.bond_wrench_.resize(bonds_.size());
+    sc.bond_broke_.assign(bonds_.size(), 0);
     std::atomic<bool> broke{false};
     parallel_items(bonds_.size(), [&](std::size_t k) {
       Bond& bond = bonds_[k];
@@ -463,13 +460,22 @@ void World::compute_forces() {
         return;
       const bool held = bond.holds();
       sc.bond_wrench_[k] = bond_wrench(bond, options_.cohesive, pa, ra, pb, rb);
-      if (held && !bond.holds()) broke.store(true, std::memory_order_relaxed);
+      if (held && !bond.holds()) {
+        sc.bond_broke_[k] = 1;
+        broke.store(true, std::memory_order_relaxed);
+      }
       if (moments.pristine) moments.pristine = bond.undamaged();
     });
     if (broke.load()) {
-      const std::vector<std::pair<int, int>> held_before = bonded_;
-      update_bonded();
-      part_bodies(held_before);
+      const std::vector<std::pair<int, int>> freed = release_bonded();
+      part_bodies(freed);
+      // A near list filtered for sphere_at_filter_ lacks only the freed pairs' spheres now.
+      if (near_valid_ || near_lacks_freed_only_) {
+        std::vector<std::pair<int, int>> all(freed_.size() + freed.size());
+        std::merge(freed_.begin(), freed_.end(), freed.begin(), freed.end(), all.begin());
+        freed_.swap(all);
+        near_lacks_freed_only_ = true;
+      }
       near_valid_ = false;
     }
   }

@@ -116,6 +116,8 @@ bool World::sort_bodies() {
   // The Verlet lists name old spheres: the next step searches the grid again.
   dirty_ = true;
   near_valid_ = false;
+  freed_.clear();
+  near_lacks_freed_only_ = false;
   neighbours_.clear();
   candidates_.clear();
   sphere_at_build_.clear();

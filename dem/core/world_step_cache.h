@@ -116,6 +116,7 @@ struct StepCache {
   // Bonds: per bond its wrench of this step; per body its bonds in index order (range in
   // body_bond_items_, each 2·bond + 1 when the body is the bond's b), built by load_bodies.
   std::vector<BondWrench> bond_wrench_;
+  std::vector<std::uint8_t> bond_broke_;  // per bond: stopped holding at this step's bond pass
   // Per body with bonds: its rotation matrix at this step's contact pass (made by load_bodies and
   // after each body's advance), so the bond pass reads two matrices per bond instead of making
   // them from the quaternions: a body has about ten bonds. Empty in a world without bonds.

@@ -27,7 +27,10 @@ inline Body cube_cell_body(const Cell& cell, double a, double radius, double rho
 // A 2 × 2 × 4 column of cubic cells of edge a (Voronoi cells of grid seeds in a box), each body
 // a sphere inscribed in its cube with the cube's mass and moments, bonded on every shared face.
 // The bottom and top layers are driven (huge mass, no rotation): the top at `velocity` along z.
-inline World bonded_column(double velocity) {
+// With `octants` each body is eight spheres on the centres of its octants instead (several
+// spheres a cell, as the fill makes them). `overlap` (× a) widens the spheres so that those of
+// neighbouring cells overlap by that much across their face, as the fill's spheres reach across.
+inline World bonded_column(double velocity, bool octants = false, double overlap = 0.0) {
   const double a = kCellEdge, rho = 2650;
   std::vector<Vec3> seeds;
   for (int k = 0; k < 4; ++k)
@@ -40,7 +43,13 @@ inline World bonded_column(double velocity) {
   o.gravity = Vec3::Zero();
   World w(o);
   for (std::size_t c = 0; c < cells.cells.size(); ++c) {
-    Body b = cube_cell_body(cells.cells[c], a, 0.5 * a, rho);
+    Body b = cube_cell_body(cells.cells[c], a, (0.5 + 0.5 * overlap) * a, rho);
+    if (octants) {
+      b.spheres.clear();
+      for (int k = 0; k < 8; ++k)
+        b.spheres.push_back(Sphere{0.25 * a * Vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1),
+                                   (0.25 + 0.5 * overlap) * a});
+    }
     const int layer = static_cast<int>(c) / 4;
     if (layer == 0 || layer == 3) {
       b.mass *= 1e12;

@@ -85,6 +85,62 @@ TEST(WorldBonds, SameBitsForOneAndTwoThreadsAndBrokenCellsTouch) {
   EXPECT_FALSE(w.contacts().empty());
 }
 
+// A bond that breaks between two filters of the near list adds its cells' sphere pairs to the
+// list by a merge (World::add_freed_candidates) instead of a filter of the whole skin list: the
+// next step must be the one a whole filter gives. A copy of the world restored from its lists
+// filters the whole skin list at its next step; both step once and are compared to the bit. The
+// spheres overlap across the faces by 0.1·a, so a freed pair touches at once (with its overlap
+// excused): a pair left out of the list would lose that contact.
+TEST(WorldBonds, ABrokenBondAddsItsCellsPairsAsAWholeFilterWould) {
+  for (const bool octants : {false, true}) {
+    SCOPED_TRACE(octants ? "eight spheres a cell" : "one sphere a cell");
+    World w = test::bonded_column(0.5, octants, 0.1);
+    // Each driven cell of the top layer at its own speed, so that faces fail one after another.
+    for (int c = 12; c < 16; ++c) w.bodies()[c].velocity = Vec3(0, 0, 0.2 + 0.1 * (c - 12));
+    auto holding = [&] {
+      int n = 0;
+      for (const Bond& b : w.bonds()) n += b.holds();
+      return n;
+    };
+    int breaks = 0, merged = 0, touching_after_break = 0;
+    for (int s = 0; s < 4000; ++s) {
+      if (s == 2000)  // the broken layers pushed back together, so the freed spheres touch
+        for (int c = 12; c < 16; ++c) w.bodies()[c].velocity = Vec3(0, 0, -1.0 - 0.2 * (c - 12));
+      const int before = holding();
+      w.step(1);
+      if (holding() == before) continue;
+      ++breaks;
+      const World::ListState at_break = w.list_state();
+      World whole = w;
+      whole.restore(w.list_state(), w.contacts(), w.wall_contacts());
+      w.step(1);
+      whole.step(1);
+      const World::ListState after = w.list_state();
+      // The merge ran when the near list was made again without the spheres' positions moving on.
+      merged += after.filters == at_break.filters + 1 &&
+                after.filter_positions == at_break.filter_positions;
+      touching_after_break += !whole.contacts().empty();
+      ASSERT_EQ(w.contacts().size(), whole.contacts().size()) << "step " << s;
+      for (std::size_t k = 0; k < w.contacts().size(); ++k) {
+        const PairContact &c = w.contacts()[k], &d = whole.contacts()[k];
+        ASSERT_EQ(std::make_pair(c.i, c.j), std::make_pair(d.i, d.j)) << "step " << s;
+        EXPECT_EQ(c.state.normal_force, d.state.normal_force) << "step " << s;
+        EXPECT_EQ(c.state.shear, d.state.shear) << "step " << s;
+        EXPECT_EQ(c.state.excused, d.state.excused) << "step " << s;
+      }
+      for (std::size_t b = 0; b < w.bodies().size(); ++b) {
+        EXPECT_EQ(w.bodies()[b].position, whole.bodies()[b].position) << "step " << s;
+        EXPECT_EQ(w.bodies()[b].velocity, whole.bodies()[b].velocity) << "step " << s;
+      }
+    }
+    EXPECT_GT(breaks, 2);
+    EXPECT_GT(merged, 0);
+    std::printf("%d steps with a break, %d merged into the near list\n", breaks, merged);
+    EXPECT_GT(touching_after_break, 0);
+    EXPECT_FALSE(w.contacts().empty());
+  }
+}
+
 TEST(WorldBonds, SortingKeepsEachBondOnItsBodies) {
   World w = column(0.0);
   // Reverse the bodies (by editing positions the sort key sees, then sorting back is a no-op):
