@@ -64,6 +64,13 @@ BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Vec3& pa,
 
 BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Vec3& pa, const Mat3& ra,
                        const Vec3& pb, const Mat3& rb) {
+  BondPointsAfter after;
+  return bond_wrench(bond, law, pa, ra, pb, rb, after);
+}
+
+BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Vec3& pa, const Mat3& ra,
+                       const Vec3& pb, const Mat3& rb, BondPointsAfter& after) {
+  after = BondPointsAfter{};
   BondWrench w;
   const Vec3 n = ra * bond.normal_in_a;
   for (BondPoint& p : bond.points) {
@@ -74,7 +81,9 @@ BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Vec3& pa, co
     // The slip of a crack is kept in a's frame, so that the pair turning together moves it along.
     const Vec3 dt = ra.transpose() * (jump - dn * n);
     const CohesiveTraction t = cohesive_traction(law, bond.factor, dn, dt, p.state);
-    const Vec3 f = -p.area * (t.normal * n + ra * t.shear);  // on b
+    after.holds = after.holds || p.state.damage < 1.0;             // Bond::holds
+    after.undamaged = after.undamaged && !(p.state.damage > 0.0);  // Bond::undamaged
+    const Vec3 f = -p.area * (t.normal * n + ra * t.shear);        // on b
     const Vec3 at = 0.5 * (xa + xb);
     w.force_b += f;
     w.torque_b += (at - pb).cross(f);

@@ -57,6 +57,16 @@ BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Vec3& pa,
 BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Vec3& pa, const Mat3& ra,
                        const Vec3& pb, const Mat3& rb);
 
+/// What a bond's points are after bond_wrench: whether one still holds (Bond::holds) and whether
+/// none has any damage (Bond::undamaged), found in its loop over them.
+struct BondPointsAfter {
+  bool holds = false;
+  bool undamaged = true;
+};
+/// bond_wrench with the orientations as matrices, and the points' state after it in `after`.
+BondWrench bond_wrench(Bond& bond, const CohesiveParams& law, const Vec3& pa, const Mat3& ra,
+                       const Vec3& pb, const Mat3& rb, BondPointsAfter& after);
+
 /// The stiffness the bond adds to a body it joins, for the critical time step: Σ area·max(K_I,
 /// K_II) over its points (N/m).
 double bond_stiffness(const Bond& bond, const CohesiveParams& law);

@@ -14,6 +14,7 @@ BondMoments bond_moments(const Bond& bond) {
     m.centroid_b += p.area * p.in_b;
   }
   m.pristine = bond.undamaged();
+  m.holding = bond.holds();
   if (m.area > 0.0) {
     m.centroid_a /= m.area;
     m.centroid_b /= m.area;

@@ -20,6 +20,7 @@ struct BondMoments {
   double reach = 0.0;              ///< max |v|
   double misfit = 0.0;             ///< max |P·v − u|: how far the copies were apart, as made
   bool pristine = true;            ///< no point has any damage (damage never heals)
+  bool holding = true;             ///< a point still holds (Bond::holds; never again once false)
 };
 
 /// The moments of `bond`'s points, and whether every point is undamaged.

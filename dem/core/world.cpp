@@ -82,6 +82,7 @@ int World::add_body(Body body) {
   sphere_world_.resize(sphere_body_.size());
   dirty_ = true;
   sc.pairs_valid_ = sc.walls_valid_ = false;
+  sc.index_valid_ = false;
   return index;
 }
 
@@ -159,6 +160,10 @@ void World::build_neighbours() {
   frame_at_build_ = frame_;
   radius_at_build_ = 0.0;
   for (double r : sphere_radius_) radius_at_build_ = std::max(radius_at_build_, r);
+  // carry_pairs' scratch is not held through the search (the peak of a large packing).
+  std::vector<SlotForce>().swap(sc.carry_force_);
+  std::vector<std::uint8_t>().swap(sc.carry_active_);
+  std::vector<double>().swap(sc.carry_excused_);
   find_skin_pairs(sphere_world_, sphere_radius_, sphere_body_, options_.skin, sc.grid_,
                   neighbours_);
   sc.grid_ = NeighbourGrid{};  // scratch of a search every few hundred steps: not kept between
@@ -193,6 +198,7 @@ int World::add_bond(Bond bond) {
   bonds_.push_back(std::move(bond));
   dirty_ = true;
   sc.pairs_valid_ = false;
+  sc.index_valid_ = false;
   return static_cast<int>(bonds_.size()) - 1;
 }
 
@@ -361,9 +367,14 @@ void World::add_freed_candidates(const std::vector<std::pair<int, int>>& before)
     }
   }
   std::sort(added.begin(), added.end());
-  std::vector<std::pair<int, int>> merged(before.size() + added.size());
-  std::merge(before.begin(), before.end(), added.begin(), added.end(), merged.begin());
-  candidates_.swap(merged);
+  if (&before != &candidates_) {  // the list before sits in old_candidates_: candidates_ is free
+    candidates_.resize(before.size() + added.size());
+    std::merge(before.begin(), before.end(), added.begin(), added.end(), candidates_.begin());
+  } else {
+    std::vector<std::pair<int, int>> merged(before.size() + added.size());
+    std::merge(before.begin(), before.end(), added.begin(), added.end(), merged.begin());
+    candidates_.swap(merged);
+  }
   near_valid_ = true;
   freed_.clear();
   near_lacks_freed_only_ = false;

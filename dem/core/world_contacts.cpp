@@ -153,10 +153,15 @@ void World::carry_pairs() {
   StepCache& sc = cache_.get();
   const std::vector<std::pair<int, int>>& old = sc.old_candidates_;
   const std::size_t m = candidates_.size();
-  std::vector<SlotForce> force(m);
-  std::vector<std::uint8_t> active(m, 0);
+  // Into the arrays the last carry left behind, not new ones at every filter (a crushable
+  // specimen past its yield filters at most steps).
   const bool excuses = !bonds_.empty();
-  std::vector<double> excused(excuses ? m : 0, 0.0);
+  std::vector<SlotForce>& force = sc.carry_force_;
+  std::vector<std::uint8_t>& active = sc.carry_active_;
+  std::vector<double>& excused = sc.carry_excused_;
+  force.assign(m, SlotForce{Vec3::Zero(), 0.0});
+  active.assign(m, 0);
+  excused.assign(excuses ? m : 0, 0.0);
   sc.slot_excused_.resize(excuses ? old.size() : 0, 0.0);
   std::size_t o = 0, p = 0;
   for (std::size_t k = 0; k < m; ++k) {
@@ -458,13 +463,14 @@ void World::compute_forces() {
       // Most bonds, most steps: undamaged and far below the onset, the closed form.
       if (elastic_bond_wrench(moments, bond, options_.cohesive, pa, ra, pb, rb, sc.bond_wrench_[k]))
         return;
-      const bool held = bond.holds();
-      sc.bond_wrench_[k] = bond_wrench(bond, options_.cohesive, pa, ra, pb, rb);
-      if (held && !bond.holds()) {
+      BondPointsAfter after;
+      sc.bond_wrench_[k] = bond_wrench(bond, options_.cohesive, pa, ra, pb, rb, after);
+      if (moments.holding && !after.holds) {
         sc.bond_broke_[k] = 1;
         broke.store(true, std::memory_order_relaxed);
       }
-      if (moments.pristine) moments.pristine = bond.undamaged();
+      moments.holding = after.holds;
+      moments.pristine = moments.pristine && after.undamaged;
     });
     if (broke.load()) {
       const std::vector<std::pair<int, int>> freed = release_bonded();

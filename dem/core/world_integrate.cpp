@@ -29,18 +29,21 @@ void World::load_bodies() {
   }
   // Corner wrenches only where corners exist (a world of spheres keeps none).
   sc.vertex_wrench_.assign(sc.any_vertices_ ? nb : 0, Wrench{Vec3::Zero(), Vec3::Zero()});
-  // Each body's bonds in index order (counting sort), and which bodies have any.
-  sc.body_bond_begin_.assign(nb + 1, 0);
-  for (const Bond& bond : bonds_)
-    ++sc.body_bond_begin_[bond.a + 1], ++sc.body_bond_begin_[bond.b + 1];
-  for (std::size_t k = 0; k < nb; ++k) sc.body_bond_begin_[k + 1] += sc.body_bond_begin_[k];
-  sc.body_bond_items_.resize(sc.body_bond_begin_[nb]);
-  {
+  // Each body's bonds in index order (counting sort), and which bodies have any: made again only
+  // when bodies or bonds were added or renumbered (element tests step one step a call).
+  if (!sc.index_valid_) {
+    sc.body_bond_begin_.assign(nb + 1, 0);
+    for (const Bond& bond : bonds_)
+      ++sc.body_bond_begin_[bond.a + 1], ++sc.body_bond_begin_[bond.b + 1];
+    for (std::size_t k = 0; k < nb; ++k) sc.body_bond_begin_[k + 1] += sc.body_bond_begin_[k];
+    sc.body_bond_items_.resize(sc.body_bond_begin_[nb]);
     std::vector<std::size_t> at(sc.body_bond_begin_.begin(), sc.body_bond_begin_.end() - 1);
     for (std::size_t i = 0; i < bonds_.size(); ++i) {
       sc.body_bond_items_[at[bonds_[i].a]++] = 2 * i;
       sc.body_bond_items_[at[bonds_[i].b]++] = 2 * i + 1;
     }
+    sc.sphere_body64_.assign(sphere_body_.begin(), sphere_body_.end());
+    sc.index_valid_ = true;
   }
   parallel_items(nb, [&](std::size_t k) {
     const Body& b = bodies_[k];
@@ -69,7 +72,6 @@ void World::load_bodies() {
     sc.rotation_[t.rotation] = Rotation{bodies_[k].orientation, bodies_[k].moments};
     if (!sc.bond_matrix_.empty()) sc.bond_matrix_[k] = bodies_[k].orientation.toRotationMatrix();
   });
-  sc.sphere_body64_.assign(sphere_body_.begin(), sphere_body_.end());
   sc.damping_valid_ = false;  // masses may have changed
 }
 

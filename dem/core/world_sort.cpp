@@ -125,6 +125,7 @@ bool World::sort_bodies() {
   StepCache& sc = cache_.get();
   sc.pairs_valid_ = sc.walls_valid_ = false;
   sc.damping_valid_ = false;
+  sc.index_valid_ = false;
   return true;
 }
 

@@ -103,6 +103,10 @@ struct StepCache {
   // Per candidate in a world with bonds (empty without): the overlap its law ignores
   // (ContactState::excused), read and written with slot_force_ while the slot is active.
   std::vector<double> slot_excused_;
+  // The slot arrays before the last carry_pairs, kept as its scratch for the next.
+  std::vector<SlotForce> carry_force_;
+  std::vector<std::uint8_t> carry_active_;
+  std::vector<double> carry_excused_;
   // The contact lists' history (40 bytes a contact, no geometry) while new slots are made for it:
   // the lists themselves are released before the grid search (World::pack_contacts).
   std::vector<PairHistory> pending_;
@@ -128,6 +132,9 @@ struct StepCache {
   std::vector<Wrench> vertex_wrench_;
   std::vector<std::size_t> body_bond_begin_;
   std::vector<std::uint64_t> body_bond_items_;
+  // body_bond_begin_, body_bond_items_ and sphere_body64_ hold for the bodies and bonds as they
+  // are (World::add_body, add_bond and sort_bodies clear it).
+  bool index_valid_ = false;
   std::vector<Wall> walls_at_build_;  // walls when wall_cand_ was built
   // Sphere positions when wall_cand_ was built, in a cell frame (spheres may then move more
   // than skin/2 between grid builds); empty without one: the build positions serve.
