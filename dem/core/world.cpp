@@ -347,7 +347,7 @@ void World::filter_candidates() {
 // with the pairs of the freed bodies' spheres that filter_candidates would keep, merged in order:
 // the list a whole filter makes, at the cost of the freed bodies' spheres. A crushable specimen
 // breaks a bond at most steps past its yield, and a whole filter of its skin list (the bonded
-// cells' pairs included) cost several steps each time.
+// cells' pairs included) at each of them made those steps the dearest.
 void World::add_freed_candidates(const std::vector<std::pair<int, int>>& before) {
   ++filters_;
   const double near = options_.near_skin_fraction * options_.skin;
