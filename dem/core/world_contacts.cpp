@@ -450,7 +450,7 @@ void World::compute_forces() {
   vertex_wall_contacts();
 
   // Bonds, one wrench slot per bond. One that stops holding lets its bodies' spheres touch from
-  // the next step: the near list is filtered again from the skin list, which holds them.
+  // the next step: their pairs join the near list from the skin list, which holds them.
   if (!bonds_.empty()) {
     sc.bond_wrench_.resize(bonds_.size());
     sc.bond_broke_.assign(bonds_.size(), 0);
