@@ -224,8 +224,7 @@ void filter_pairs(const std::vector<std::pair<int, int>>& pairs, const std::vect
   keep.resize(m);
   parallel_items(m, [&](std::size_t k) {
     const auto [i, j] = pairs[k];
-    const double r = radius[i] + radius[j] + near;
-    keep[k] = (position[j] - position[i]).squaredNorm() < r * r;
+    keep[k] = near_pair(position, radius, near, i, j);
   });
   std::size_t kept = 0;
   for (std::size_t k = 0; k < m; ++k) kept += keep[k];

@@ -34,6 +34,14 @@ void find_skin_pairs(const std::vector<Vec3>& position, const std::vector<double
                      const std::vector<int>& body_of, double skin, NeighbourGrid& grid,
                      std::vector<std::pair<int, int>>& pairs);
 
+/// Whether spheres i and j are closer than r_i + r_j + near (m) at `position`: the near list's
+/// test (filter_pairs, and the World's merge of freed pairs, which must keep the same pairs).
+inline bool near_pair(const std::vector<Vec3>& position, const std::vector<double>& radius,
+                      double near, int i, int j) {
+  const double r = radius[i] + radius[j] + near;
+  return (position[j] - position[i]).squaredNorm() < r * r;
+}
+
 /// The pairs of `pairs` whose centres are closer than r_i + r_j + near (m) at `position`, in the
 /// same order, written to `out` (the near list of the two-level Verlet list); `keep` is scratch.
 void filter_pairs(const std::vector<std::pair<int, int>>& pairs, const std::vector<Vec3>& position,

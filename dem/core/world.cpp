@@ -235,8 +235,10 @@ std::vector<std::pair<int, int>> World::release_bonded() {
     const Bond& bond = bonds_[k];
     bool held = false;
     for (std::size_t e = sc.body_bond_begin_[bond.a]; e < sc.body_bond_begin_[bond.a + 1]; ++e) {
-      const Bond& other = bonds_[sc.body_bond_items_[e] >> 1];
-      held = held || (&other != &bond && (other.a == bond.b || other.b == bond.b) && other.holds());
+      const std::size_t i = sc.body_bond_items_[e] >> 1;
+      const Bond& other = bonds_[i];
+      held =
+          held || (i != k && (other.a == bond.b || other.b == bond.b) && bond_moments_[i].holding);
     }
     if (!held) freed.emplace_back(std::min(bond.a, bond.b), std::max(bond.a, bond.b));
   }
@@ -340,15 +342,16 @@ void World::filter_candidates() {
   }
   near_valid_ = true;
   freed_.clear();
-  near_lacks_freed_only_ = false;
 }
 
-// The near list `before` (filtered for sphere_at_filter_ while the pairs of freed_ were bonded)
-// with the pairs of the freed bodies' spheres that filter_candidates would keep, merged in order:
+// The near list of the last step (old_candidates_, filtered for sphere_at_filter_ while the pairs
+// of freed_ were bonded) with the pairs of the freed bodies' spheres that filter_candidates would
+// keep, merged in order into candidates_:
 // the list a whole filter makes, at the cost of the freed bodies' spheres. A crushable specimen
 // breaks a bond at most steps past its yield, and a whole filter of its skin list (the bonded
 // cells' pairs included) at each of them made those steps the dearest.
-void World::add_freed_candidates(const std::vector<std::pair<int, int>>& before) {
+void World::add_freed_candidates() {
+  StepCache& sc = cache_.get();
   ++filters_;
   const double near = options_.near_skin_fraction * options_.skin;
   std::vector<std::pair<int, int>> added;
@@ -358,26 +361,17 @@ void World::add_freed_candidates(const std::vector<std::pair<int, int>>& before)
       auto it =
           std::lower_bound(neighbours_.begin(), neighbours_.end(), std::make_pair(s, first_b));
       for (; it != neighbours_.end() && it->first == s && it->second < end_b; ++it) {
-        const auto [i, j] = *it;
-        // filter_pairs' test, the same expression (contraction is off: the same bits)
-        const double r = sphere_radius_[i] + sphere_radius_[j] + near;
-        if ((sphere_at_filter_[j] - sphere_at_filter_[i]).squaredNorm() < r * r)
+        if (near_pair(sphere_at_filter_, sphere_radius_, near, it->first, it->second))
           added.push_back(*it);
       }
     }
   }
   std::sort(added.begin(), added.end());
-  if (&before != &candidates_) {  // the list before sits in old_candidates_: candidates_ is free
-    candidates_.resize(before.size() + added.size());
-    std::merge(before.begin(), before.end(), added.begin(), added.end(), candidates_.begin());
-  } else {
-    std::vector<std::pair<int, int>> merged(before.size() + added.size());
-    std::merge(before.begin(), before.end(), added.begin(), added.end(), merged.begin());
-    candidates_.swap(merged);
-  }
+  const std::vector<std::pair<int, int>>& before = sc.old_candidates_;
+  candidates_.resize(before.size() + added.size());
+  std::merge(before.begin(), before.end(), added.begin(), added.end(), candidates_.begin());
   near_valid_ = true;
   freed_.clear();
-  near_lacks_freed_only_ = false;
 }
 
 void World::step(int count) {
@@ -412,8 +406,8 @@ void World::step(int count) {
         sc.walls_valid_ = false;
         walls_stale = true;
       }
-      if (!moved && near_lacks_freed_only_)  // only bonds broke since the last filter
-        add_freed_candidates(carry ? sc.old_candidates_ : candidates_);
+      if (!moved && carry && !freed_.empty())  // only bonds broke since the last filter
+        add_freed_candidates();
       else
         filter_candidates();
       if (carry) {
@@ -513,7 +507,6 @@ void World::restore(ListState lists, std::vector<PairContact> contacts,
   near_limit_ = lists.near_limit;
   near_valid_ = false;  // filtered from the restored lists at the next step
   freed_.clear();
-  near_lacks_freed_only_ = false;
   contacts_ = std::move(contacts);
   parted_.clear();  // the lists given here are the whole history
   wall_contacts_ = std::move(wall_contacts);

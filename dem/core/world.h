@@ -214,7 +214,7 @@ class World {
   bool refresh_neighbours();
   void build_neighbours();
   void filter_candidates();
-  void add_freed_candidates(const std::vector<std::pair<int, int>>& before);
+  void add_freed_candidates();
   void compute_forces();
   void integrate();
   // Fast path (world.cpp): per-candidate contact slots mirror contacts_ / wall_contacts_ during
@@ -270,10 +270,10 @@ class World {
   // taken out of bonded_: sorted (a, b), a < b.
   std::vector<std::pair<int, int>> release_bonded();
   // Body pairs freed since the last filter while candidates_ stayed filtered for
-  // sphere_at_filter_ (sorted): the near list then only lacks their spheres' pairs, which
-  // add_freed_candidates merges in instead of filtering the whole skin list again.
+  // sphere_at_filter_ (sorted; empty when a whole filter is due for another reason): the near
+  // list then only lacks their spheres' pairs, which add_freed_candidates merges in instead of
+  // filtering the whole skin list again.
   std::vector<std::pair<int, int>> freed_;
-  bool near_lacks_freed_only_ = false;
   // Contacts of the spheres of bodies whose bond broke at the last step that overlapped then
   // (sorted (i, j), no force yet, excused = the overlap): not candidates until the next filter,
   // they wait here for their slots (carry_pairs, import_pairs), and contacts() lists them.

@@ -475,14 +475,14 @@ void World::compute_forces() {
     if (broke.load()) {
       const std::vector<std::pair<int, int>> freed = release_bonded();
       part_bodies(freed);
-      // A near list filtered for sphere_at_filter_ lacks only the freed pairs' spheres now.
-      if (near_valid_ || near_lacks_freed_only_) {
+      // A near list filtered for sphere_at_filter_ lacks only the freed pairs' spheres now (a
+      // bond whose bodies another bond still holds changes nothing).
+      if (near_valid_ && !freed.empty()) {
         std::vector<std::pair<int, int>> all(freed_.size() + freed.size());
         std::merge(freed_.begin(), freed_.end(), freed.begin(), freed.end(), all.begin());
         freed_.swap(all);
-        near_lacks_freed_only_ = true;
+        near_valid_ = false;
       }
-      near_valid_ = false;
     }
   }
 

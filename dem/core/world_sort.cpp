@@ -117,7 +117,6 @@ bool World::sort_bodies() {
   dirty_ = true;
   near_valid_ = false;
   freed_.clear();
-  near_lacks_freed_only_ = false;
   neighbours_.clear();
   candidates_.clear();
   sphere_at_build_.clear();
