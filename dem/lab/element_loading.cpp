@@ -4,6 +4,7 @@
 #include "dem/measure/strain_rate.h"
 #include "dem/measure/stress.h"
 #include "geom/errors.h"
+#include "geom/format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +16,49 @@ namespace clumpkit::dem {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+
+// Starts, checks and ends the oedometer's holds (ElementTestSettings::hold_stresses) after a
+// step: a hold starts at the step whose axial stress reaches its target and is checked every
+// 100 of its steps, as the consolidation is. Returns the CurveRow::held code of a hold that
+// ended at this step (2 at equilibrium, 3 at the step limit), else 0.
+int advance_hold(const World& world, const TestCell& cell, const ElementTestSettings& s,
+                 ElementTestState& st) {
+  const int holds = static_cast<int>(s.hold_stresses.size());
+  if (!st.holding) {
+    if (st.next_hold < holds && axial_stress(world, cell) >= s.hold_stresses[st.next_hold]) {
+      st.holding = true;
+      st.hold_steps = 0;
+    }
+    return 0;
+  }
+  if (++st.hold_steps % 100 != 0) return 0;
+  const double target = s.hold_stresses[st.next_hold];
+  const bool equilibrium =
+      std::abs(axial_stress(world, cell) / target - 1.0) <= s.consolidation_tolerance &&
+      mean_unbalanced_force_ratio(world) <= s.consolidation_unbalanced;
+  if (!equilibrium && st.hold_steps < s.max_hold_steps) return 0;
+  st.holding = false;
+  ++st.next_hold;
+  return equilibrium ? 2 : 3;
+}
+
+void check_holds(const ElementTestSettings& s) {
+  if (s.hold_stresses.empty()) return;
+  if (s.kind != TestKind::oedometer)
+    throw InvalidInput("element test: hold stresses are for the oedometer test only");
+  if (s.max_hold_steps < 100)
+    throw InvalidInput("element test: max_hold_steps must be at least 100, got " +
+                       std::to_string(s.max_hold_steps));
+  double last = s.confining;
+  for (double h : s.hold_stresses) {
+    if (!(h > last) || !(h <= s.final_stress))
+      throw InvalidInput(
+          "element test: hold stresses must rise above the confining stress to "
+          "at most the final stress, got " +
+          format_number(h));
+    last = h;
+  }
+}
 
 }  // namespace
 
@@ -96,6 +140,11 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
     throw InvalidInput("element test: final stress must exceed the confining stress");
   if (s.kind == TestKind::triaxial) positive(s.max_axial_strain, "maximum axial strain");
   if (s.record_every < 1) throw InvalidInput("element test: record_every must be at least 1");
+  check_holds(s);
+  const int holds = static_cast<int>(s.hold_stresses.size());
+  if (state.next_hold < 0 || state.next_hold > holds || (state.holding && state.next_hold == holds))
+    throw InvalidInput("element test: the state's hold " + std::to_string(state.next_hold) +
+                       " is not one of the test's " + std::to_string(holds));
 
   ElementTestState& st = state;
   if (st.phase == Phase::start) {
@@ -171,7 +220,9 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
     if (s.kind == TestKind::isotropic) duration = (s.final_stress - s.confining) / rate;
     if (s.kind == TestKind::oedometer) duration = 0.5 / s.strain_rate;
     if (s.kind == TestKind::triaxial) duration = s.max_axial_strain / s.strain_rate;
-    const long long max_steps = static_cast<long long>(std::ceil(4.0 * duration / dt)) + 1000;
+    const long long max_steps = static_cast<long long>(std::ceil(4.0 * duration / dt)) + 1000 +
+                                static_cast<long long>(s.hold_stresses.size()) * s.max_hold_steps;
+    const bool final_held = !s.hold_stresses.empty() && s.hold_stresses.back() >= s.final_stress;
     long long& step = st.loading_steps;
     while (step < max_steps) {
       // The rate of the next record's steps, from the last row's stress (so a resumed test
@@ -182,7 +233,8 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
                                               grains, s.inertial_number,
                                               std::max(st.curve.back().axial_stress, s.confining)))
               : base_speed;
-      for (int k = 0; k < s.record_every; ++k, ++step) {
+      int ended = 0;  // CurveRow::held of a hold that ended
+      for (int k = 0; k < s.record_every && !ended; ++k) {
         Control axial, lateral;
         switch (s.kind) {
           case TestKind::isotropic: {
@@ -191,7 +243,8 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
             break;
           }
           case TestKind::oedometer:
-            axial = Control{Mode::velocity, 0.0, platen_speed};
+            axial = st.holding ? Control{Mode::top_stress, s.hold_stresses[st.next_hold], 0.0}
+                               : Control{Mode::velocity, 0.0, platen_speed};
             lateral = Control{Mode::fixed, 0.0, 0.0};
             break;
           case TestKind::triaxial:
@@ -204,13 +257,19 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
                      quarter = 0.25 * cell_height(world, cell);
         st.interior_strain +=
             interior_axial_strain_rate(world, base + quarter, base + 3.0 * quarter) * dt;
+        ++step;
+        if (!s.hold_stresses.empty()) ended = advance_hold(world, cell, s, st);
       }
-      const CurveRow c = row(step);
+      CurveRow c = row(step);
+      c.held = ended ? ended : st.holding ? 1 : 0;
       st.curve.push_back(c);
       bool done = false;
       if (s.kind == TestKind::isotropic)
         done = c.p >= s.final_stress * (1.0 - s.consolidation_tolerance);
-      if (s.kind == TestKind::oedometer) done = c.axial_stress >= s.final_stress;
+      // With holds: once the last has ended, and at its end when it holds the final stress.
+      if (s.kind == TestKind::oedometer)
+        done = !st.holding && st.next_hold == static_cast<int>(s.hold_stresses.size()) &&
+               (final_held || c.axial_stress >= s.final_stress);
       if (s.kind == TestKind::triaxial) done = c.axial_strain >= s.max_axial_strain;
       if (done) break;
       if (stop && stop()) return result(true);

@@ -63,8 +63,16 @@ struct ElementTestSettings {
   /// confining one then spends its steps where the strain is, instead of loading at the rate the
   /// lowest stress allows. 0: strain_rate throughout.
   double inertial_number = 0.0;
-  double max_axial_strain = 0.2;  ///< triaxial end
-  double friction = -1;           ///< μ of the test (negative: the world's)
+  /// Oedometer: axial stresses (Pa, ascending, each above `confining` and at most
+  /// `final_stress`) where the platen stops and its servo holds the stress (the bottom platen
+  /// fixed) until equilibrium, the load increments of a laboratory oedometer: every 100 steps,
+  /// the axial stress within consolidation_tolerance of the target and the unbalanced-force
+  /// ratio at most consolidation_unbalanced, or max_hold_steps. The state at each hold's end
+  /// carries no rate part of the stress (the platen is at rest). Empty: a continuous test.
+  std::vector<double> hold_stresses;
+  long long max_hold_steps = 200'000;  ///< a hold's step limit
+  double max_axial_strain = 0.2;       ///< triaxial end
+  double friction = -1;                ///< μ of the test (negative: the world's)
   /// μ during the consolidation (negative: the test's). 0 consolidates a frictionless packing
   /// to its densest state at the confining stress, whatever its preparation (a protocol that
   /// makes specimens of different sizes and laws comparable); the test's μ applies from the
@@ -111,6 +119,9 @@ struct CurveRow {
   double axial_stress = 0, lateral_stress = 0, p = 0, q = 0;
   double porosity = 0, coordination = 0, unbalanced = 0;
   double interior_axial_strain = 0;
+  /// 0 while loading; 1 a row within a hold (ElementTestSettings::hold_stresses); 2 the row
+  /// that ends a hold at equilibrium, 3 one that ends it at max_hold_steps.
+  double held = 0;
   /// Breakage (ElementTestSettings::initial_grading given; else 0): bonds with every point
   /// failed, fragments (bodies joined by intact bonds), particles of the specimen
   /// (ElementTestSettings::particles) in more than one fragment, and the indices against the
@@ -140,6 +151,9 @@ struct ElementTestState {
   double solid_volume = 0;          ///< Σ body volumes (m³)
   double test_friction = 0;         ///< μ of the loading
   double interior_strain = 0;       ///< Σ rate·dt of CurveRow::interior_axial_strain so far
+  int next_hold = 0;                ///< the hold_stresses entry reached next (or being held)
+  bool holding = false;             ///< the platen is holding hold_stresses[next_hold]
+  long long hold_steps = 0;         ///< steps of the hold so far
   std::vector<CurveRow> curve;
 };
 
@@ -156,10 +170,11 @@ struct ElementTestResult {
 /// Consolidates the specimen in `cell` isotropically to the confining stress (servo on every
 /// wall, gravity as the world has it), then loads it: isotropic — all walls follow a stress ramp
 /// to final_stress; oedometer — lateral walls fixed, top platen at strain_rate until
-/// final_stress; triaxial — lateral stress held by servo, top platen at strain_rate to
-/// max_axial_strain. `stop` is asked every 1,000 consolidation steps, at the consolidated state
-/// (state.phase loading, one curve row) and every record; it ends the test early when true.
-/// Deterministic: the same world and settings give the same curve for any thread count.
+/// final_stress, held at each of hold_stresses on the way; triaxial — lateral stress held by
+/// servo, top platen at strain_rate to max_axial_strain. `stop` is asked every 1,000 consolidation
+/// steps, at the consolidated state (state.phase loading, one curve row) and every record; it ends
+/// the test early when true. Deterministic: the same world and settings give the same curve for any
+/// thread count.
 ElementTestResult run_element_test(World& world, const TestCell& cell,
                                    const ElementTestSettings& settings,
                                    const std::function<bool()>& stop = {});

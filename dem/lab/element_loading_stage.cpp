@@ -19,7 +19,7 @@ namespace clumpkit::dem {
 namespace {
 
 constexpr const char* kStage = "test";
-constexpr int kRowFields = 20 + kBreakageClasses;
+constexpr int kRowFields = 21 + kBreakageClasses;
 
 // The curve row's numbers in file order (the step is the first, written as a double: exact up
 // to 2^53 steps).
@@ -46,7 +46,8 @@ std::array<double*, kRowFields - 1> row_fields(CurveRow& c) {
           &c.broken_by_class[0],
           &c.broken_by_class[1],
           &c.broken_by_class[2],
-          &c.broken_by_class[3]};
+          &c.broken_by_class[3],
+          &c.held};
 }
 
 // How far the test is (0..1): the consolidation is the first tenth (by its step cap), the
@@ -85,6 +86,9 @@ StageRecord element_test_record(const ElementTestState& st, const TestCell& cell
   put_number(r, "solid_volume", st.solid_volume);
   put_number(r, "test_friction", st.test_friction);
   put_number(r, "interior_strain", st.interior_strain);
+  r["next_hold"] = std::to_string(st.next_hold);
+  r["holding"] = st.holding ? "1" : "0";
+  r["hold_steps"] = std::to_string(st.hold_steps);
   put_cell(r, cell);
   put_test_curve(r, st.curve, [](CurveRow& c) { return row_fields(c); });
   return r;
@@ -102,6 +106,9 @@ void read_element_test_record(const StageRecord& r, const std::string& where, El
   st.solid_volume = record_number(r, "solid_volume", where);
   st.test_friction = record_number(r, "test_friction", where);
   st.interior_strain = record_number(r, "interior_strain", where);
+  st.next_hold = static_cast<int>(record_integer(r, "next_hold", where));
+  st.holding = record_integer(r, "holding", where) != 0;
+  st.hold_steps = record_integer(r, "hold_steps", where);
   cell = read_cell(r, where);
   st.curve =
       read_test_curve<CurveRow>(r, kRowFields, where, [](CurveRow& c) { return row_fields(c); });

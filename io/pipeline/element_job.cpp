@@ -68,11 +68,48 @@ nlohmann::ordered_json measured(double v) {
   return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
 }
 
+// The oedometer's holds: the state at the end of each (and its breakage), and e–log σv of the
+// consolidated state and those ends, where the platen was at rest: the compression index over
+// the last decade and the knee without the rate part of a continuous curve's stresses.
+void report_holds(const std::vector<dem::CurveRow>& curve, const std::vector<double>& work,
+                  bool crushable, nlohmann::ordered_json& rep) {
+  std::vector<double> e = {curve.front().porosity / (1 - curve.front().porosity)},
+                      sv = {curve.front().axial_stress};
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (std::size_t k = 1; k < curve.size(); ++k) {
+    const dem::CurveRow& c = curve[k];
+    if (c.held < 2) continue;
+    nlohmann::ordered_json h = {{"axial_stress", c.axial_stress},
+                                {"axial_strain", c.axial_strain},
+                                {"void_ratio", c.porosity / (1 - c.porosity)},
+                                {"equilibrium", c.held == 2},
+                                {"step", c.step}};
+    if (crushable) {
+      h["hardin_br"] = c.hardin_br;
+      h["einav_b"] = c.einav_b;
+      h["marsal_bg"] = c.marsal_bg;
+      h["particles_broken"] = c.particles_broken;
+      h["bonds_broken"] = c.bonds_broken;
+      h["work"] = work[k];
+    }
+    list.push_back(h);
+    e.push_back(c.porosity / (1 - c.porosity));
+    sv.push_back(c.axial_stress);
+  }
+  rep["holds"] = list;
+  const double top = *std::max_element(sv.begin(), sv.end());
+  rep["compression_index_held"] = measured(dem::compression_index(e, sv, 0.1 * top, top));
+  rep["yield_stress_held"] = measured(dem::yield_stress(e, sv));
+}
+
 }  // namespace
 
 LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specimen_dir,
                                   const TestRecipe& recipe, const std::string& out_dir,
                                   const LabJobOptions& options, const Interrupter& interrupter) {
+  if (!recipe.settings.hold_stresses.empty() && kind != dem::TestKind::oedometer)
+    throw InvalidInput(recipe.path + ": test.hold_stresses: for the oedometer test only, not the " +
+                       std::string(kind_name(kind)) + " test");
   TestSetup setup = setup_test(
       kind_name(kind), specimen_dir, recipe, out_dir, options.resume, options.checkpoint_seconds,
       options.allow_dynamic, recipe.settings.strain_rate, "test.strain_rate", interrupter,
@@ -113,10 +150,11 @@ LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specime
   fs::remove_all(out / "checkpoints");
 
   const std::vector<double> work = crushable ? input_work(r.curve) : std::vector<double>{};
+  const bool holds = !s.hold_stresses.empty();
   write_file_atomically((out / "curve.csv").string(), [&](std::ostream& f) {
     f << "step,axial_strain,volumetric_strain,axial_stress_pa,radial_stress_pa,p_pa,q_pa,"
          "porosity,coordination_number,unbalanced_force,interior_axial_strain"
-      << (crushable ? breakage_header() : "") << "\n";
+      << (crushable ? breakage_header() : "") << (holds ? ",held" : "") << "\n";
     for (std::size_t k = 0; k < r.curve.size(); ++k) {
       const dem::CurveRow& c = r.curve[k];
       f << c.step << "," << format_number(c.axial_strain) << ","
@@ -124,7 +162,8 @@ LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specime
         << format_number(c.lateral_stress) << "," << format_number(c.p) << "," << format_number(c.q)
         << "," << format_number(c.porosity) << "," << format_number(c.coordination) << ","
         << format_number(c.unbalanced) << "," << format_number(c.interior_axial_strain)
-        << (crushable ? breakage_values(c, work[k]) : "") << "\n";
+        << (crushable ? breakage_values(c, work[k]) : "")
+        << (holds ? "," + std::to_string(static_cast<int>(c.held)) : "") << "\n";
     }
   });
 
@@ -181,6 +220,7 @@ LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specime
     const double top = *std::max_element(sv.begin(), sv.end());
     rep["compression_index"] = measured(dem::compression_index(e, sv, 0.1 * top, top));
     rep["yield_stress"] = measured(dem::yield_stress(e, sv));
+    if (holds) report_holds(r.curve, work, crushable, rep);
     for (const auto& c : r.curve)
       plot.x.push_back(c.axial_strain), plot.y.push_back(c.axial_stress / 1e3);
     x_label = "axial strain (-)";

@@ -1,6 +1,7 @@
 #include "io/recipes/lab_recipe.h"
 
 #include "geom/errors.h"
+#include "geom/format.h"
 #include "io/base/text.h"
 #include "io/recipes/section_table.h"
 #include "io/recipes/toml_fields.h"
@@ -71,6 +72,21 @@ const RecipeSection<TestRecipe>& test_section() {
            [](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
              if (!(x >= 1 && x <= 1e6)) f.fail(field, "must be in [1, 1e6], got " + toml_show(v));
            }),
+       custom_key<R>("hold_stresses", "Pa", "ascending, in (confining, final_stress]",
+                     "oedometer: stresses where the platen stops and its servo holds the stress "
+                     "until equilibrium (consolidation_tolerance; unbalanced-force ratio 1e-3), "
+                     "the load increments of a laboratory oedometer",
+                     "none: continuous loading",
+                     [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
+                       r.settings.hold_stresses = f.numbers(v, field);
+                     }),
+       custom_key<R>("max_hold_steps", "steps", "[100, 1e9]", "step limit of one hold", "200000",
+                     [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
+                       const long long n = f.integer(v, field);
+                       if (n < 100 || n > 1000000000)
+                         f.fail(field, "must be in [100, 1e9], got " + toml_show(v));
+                       r.settings.max_hold_steps = n;
+                     }),
        number_key<R>(
            "max_axial_strain", "", "(0, 0.9)", "where a triaxial test ends",
            [](R& r) -> double& { return r.settings.max_axial_strain; }, &TomlFields::positive,
@@ -187,6 +203,16 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
   if (have_final && !(s.final_stress > s.confining))
     f.fail("test.final_stress", "must exceed test.confining");
   if (!have_final) s.final_stress = 4.0 * s.confining;
+  double last = s.confining;
+  for (std::size_t i = 0; i < s.hold_stresses.size(); ++i) {
+    const double h = s.hold_stresses[i];
+    if (!(h > last) || !(h <= s.final_stress))
+      f.fail("test.hold_stresses[" + std::to_string(i) + "]",
+             "must rise above test.confining (" + format_number(s.confining) +
+                 ") to at most test.final_stress (" + format_number(s.final_stress) + "), got " +
+                 format_number(h));
+    last = h;
+  }
   return r;
 }
 

@@ -19,15 +19,6 @@ namespace clumpkit {
 
 namespace {
 
-std::vector<double> numbers(const TomlFields& f, const toml::node& n, const std::string& field) {
-  const auto* a = n.as_array();
-  if (!a || a->empty()) f.fail(field, "expected a non-empty array of numbers, got " + toml_show(n));
-  std::vector<double> v;
-  for (std::size_t i = 0; i < a->size(); ++i)
-    v.push_back(f.number(*a->get(i), field + "[" + std::to_string(i) + "]"));
-  return v;
-}
-
 // A container length: a number, checked by the specs' one rule (dem::check_container_length).
 double container_length(const TomlFields& f, const std::string& field, double v) {
   try {
@@ -57,7 +48,7 @@ dem::ZoneRegion zone_region(const TomlFields& f, const toml::node& n, const std:
     } else if (k == "small_volume_fraction") {
       have_fraction = true;
       if (v.is_array()) {
-        const std::vector<double> ends = numbers(f, v, field);
+        const std::vector<double> ends = f.numbers(v, field);
         if (ends.size() != 2)
           f.fail(field, "expected one number or [inner, outer], got " + toml_show(v));
         z.small_fraction = ends[0], z.small_fraction_outer = ends[1];
@@ -95,7 +86,7 @@ void read_zones(const TomlFields& f, const toml::node& n, SpecimenRecipe& r, boo
       else
         f.fail(field, "expected \"radial\", \"depth\" or \"spherical\", got " + toml_show(v));
     } else if (k == "origin") {
-      const std::vector<double> o = numbers(f, v, field);
+      const std::vector<double> o = f.numbers(v, field);
       if (o.size() != 3) f.fail(field, "expected [x, y, z] in m, got " + toml_show(v));
       r.zones.origin = Vec3(o[0], o[1], o[2]);
       have_origin = true;
@@ -148,7 +139,7 @@ void read_container(const TomlFields& f, const toml::node& val, SpecimenRecipe& 
         f.fail(field, "must be in (0, 180] degrees, got " + toml_show(cv));
       seen.angle = true;
     } else if (c == "size") {
-      const std::vector<double> v = numbers(f, cv, field);
+      const std::vector<double> v = f.numbers(cv, field);
       if (v.size() != 3) f.fail(field, "expected [x, y, z] edges, got " + toml_show(cv));
       for (int a = 0; a < 3; ++a)
         r.container_size[a] = container_length(f, field + "[" + std::to_string(a) + "]", v[a]);
@@ -192,9 +183,9 @@ void read_gradation(const TomlFields& f, const toml::node& val, SpecimenRecipe& 
   for (const auto& [gk, gv] : f.table(val, k)) {
     const std::string g(gk.str()), field = "gradation." + g;
     if (g == "sieves")
-      r.sieves = numbers(f, gv, field);
+      r.sieves = f.numbers(gv, field);
     else if (g == "passing")
-      r.passing = numbers(f, gv, field);
+      r.passing = f.numbers(gv, field);
     else
       f.fail(field, "unknown key (known: sieves, passing)");
   }
@@ -557,7 +548,7 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
       if (n < 1 || n > 100) f.fail(k, "must be in [1, 100], got " + toml_show(val));
       r.layers = static_cast<int>(n);
     } else if (k == "calibration_frictions") {
-      r.calibration_frictions = numbers(f, val, k);
+      r.calibration_frictions = f.numbers(val, k);
     } else {
       f.fail(
           k,

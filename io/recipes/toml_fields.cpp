@@ -44,6 +44,15 @@ std::pair<double, double> TomlFields::pair(const toml::node& n, const std::strin
   return {number(*a->get(0), field), number(*a->get(1), field)};
 }
 
+std::vector<double> TomlFields::numbers(const toml::node& n, const std::string& field) const {
+  const auto* a = n.as_array();
+  if (!a || a->empty()) fail(field, "expected a non-empty array of numbers, got " + toml_show(n));
+  std::vector<double> v;
+  for (std::size_t i = 0; i < a->size(); ++i)
+    v.push_back(number(*a->get(i), field + "[" + std::to_string(i) + "]"));
+  return v;
+}
+
 long long TomlFields::integer(const toml::node& n, const std::string& field) const {
   const auto* i = n.as_integer();
   if (!i) fail(field, "expected an integer, got " + toml_show(n));

@@ -7,6 +7,7 @@
 
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace clumpkit {
 
@@ -22,6 +23,8 @@ struct TomlFields {
   double positive(const toml::node& n, const std::string& field) const;  ///< number > 0
   double non_negative(const toml::node& n, const std::string& field) const;  ///< number >= 0
   std::pair<double, double> pair(const toml::node& n, const std::string& field) const;
+  /// A non-empty array of finite numbers (FIELD[i] named in errors).
+  std::vector<double> numbers(const toml::node& n, const std::string& field) const;
   long long integer(const toml::node& n, const std::string& field) const;
   /// An integer in [lo, hi]: "must be in [lo, hi], got VALUE" otherwise.
   int integer_in(const toml::node& n, const std::string& field, long long lo, long long hi) const;

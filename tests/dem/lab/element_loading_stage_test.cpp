@@ -33,6 +33,9 @@ TEST(ElementTestRecord, StateAndCellRoundTripExactly) {
   st.volume0 = 1e-4 / 7.0;
   st.solid_volume = 6.3e-5;
   st.test_friction = 0.5;
+  st.next_hold = 2;
+  st.holding = true;
+  st.hold_steps = 4321;
   for (int k = 0; k < 3; ++k) {
     CurveRow c;
     c.step = 300 * k;
@@ -45,6 +48,7 @@ TEST(ElementTestRecord, StateAndCellRoundTripExactly) {
     c.porosity = 0.4 - k * 1e-17;
     c.coordination = 4.25;
     c.unbalanced = k == 2 ? std::nan("") : 1e-3 * k;
+    c.held = k;
     st.curve.push_back(c);
   }
   TestCell cell;
@@ -60,6 +64,9 @@ TEST(ElementTestRecord, StateAndCellRoundTripExactly) {
   EXPECT_EQ(back.consolidation_steps, st.consolidation_steps);
   EXPECT_EQ(back.consolidated, st.consolidated);
   EXPECT_EQ(back.loading_steps, st.loading_steps);
+  EXPECT_EQ(back.next_hold, 2);
+  EXPECT_TRUE(back.holding);
+  EXPECT_EQ(back.hold_steps, 4321);
   for (const auto f :
        {&ElementTestState::start_height, &ElementTestState::height0, &ElementTestState::volume0,
         &ElementTestState::solid_volume, &ElementTestState::test_friction})
@@ -67,9 +74,10 @@ TEST(ElementTestRecord, StateAndCellRoundTripExactly) {
   ASSERT_EQ(back.curve.size(), st.curve.size());
   for (std::size_t k = 0; k < st.curve.size(); ++k) {
     EXPECT_EQ(back.curve[k].step, st.curve[k].step);
-    for (const auto f : {&CurveRow::axial_strain, &CurveRow::volumetric_strain,
-                         &CurveRow::axial_stress, &CurveRow::lateral_stress, &CurveRow::p,
-                         &CurveRow::q, &CurveRow::porosity, &CurveRow::coordination})
+    for (const auto f :
+         {&CurveRow::axial_strain, &CurveRow::volumetric_strain, &CurveRow::axial_stress,
+          &CurveRow::lateral_stress, &CurveRow::p, &CurveRow::q, &CurveRow::porosity,
+          &CurveRow::coordination, &CurveRow::held})
       EXPECT_TRUE(same_bits(back.curve[k].*f, st.curve[k].*f)) << "row " << k;
   }
   EXPECT_TRUE(std::isnan(back.curve[2].unbalanced));
@@ -112,4 +120,5 @@ TEST(ElementTestRecord, MalformedRecordsAreRefusedNamingTheEntry) {
   refused("cell.lateral", "0,1", "lateral walls");  // a cylinder has one
   refused("cell.lateral", "a", "cell.lateral");
   refused("height0", "", "height0");
+  refused("hold_steps", "", "hold_steps");
 }

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <string>
 
 using namespace clumpkit;
 using namespace clumpkit::dem;
@@ -162,4 +163,113 @@ TEST(DemElementTest, GrainScaleOfParticlesMadeOfSeveralBodies) {
   EXPECT_NEAR(grain_scale({a, b, c}, {0, 0, 2}).density, 2650, 1e-9);
   EXPECT_NEAR(inertial_strain_rate(GrainScale{0.01, 2650}, 1e-3, 2650e4), 1e-3 * 100 / 0.01, 1e-12);
   EXPECT_THROW(grain_scale({a, b}, {0}), InvalidInput);
+}
+
+namespace {
+
+// The cube's oedometer to 2 × its consolidation stress, held at 1.5 × and at the final stress.
+ElementTestSettings held_oedometer() {
+  ElementTestSettings t;
+  t.kind = TestKind::oedometer;
+  t.confining = test::compressed_cube().mean_stress;
+  t.final_stress = 2.0 * t.confining;
+  t.hold_stresses = {1.5 * t.confining, t.final_stress};
+  t.strain_rate = 1.0;
+  t.record_every = 300;
+  t.consolidation_tolerance = 0.05;
+  t.consolidation_unbalanced = 2e-2;
+  t.max_consolidation_steps = 60000;
+  return t;
+}
+
+// Its curve on one thread, run once for the tests below.
+const std::vector<CurveRow>& held_oedometer_curve() {
+  static const std::vector<CurveRow> curve = run(held_oedometer(), 1);
+  return curve;
+}
+
+}  // namespace
+
+TEST(DemElementTest, OedometerHoldsEachStressUntilEquilibriumSameBytesForOneAndTwoThreads) {
+  const ElementTestSettings t = held_oedometer();
+  const std::vector<CurveRow>& one = held_oedometer_curve();
+  // Each hold ends in a row of its own at equilibrium: the axial stress within the tolerance of
+  // its target and the unbalanced-force ratio at most the limit (measured at that step).
+  std::vector<std::size_t> ends;
+  for (std::size_t k = 0; k < one.size(); ++k)
+    if (one[k].held >= 2) ends.push_back(k);
+  ASSERT_EQ(ends.size(), t.hold_stresses.size());
+  for (std::size_t h = 0; h < ends.size(); ++h) {
+    const CurveRow& c = one[ends[h]];
+    EXPECT_EQ(c.held, 2) << "hold " << h;
+    EXPECT_LE(std::abs(c.axial_stress / t.hold_stresses[h] - 1), t.consolidation_tolerance) << h;
+    EXPECT_LE(c.unbalanced, t.consolidation_unbalanced) << h;
+    // The row before the end is within the hold (or its start).
+    EXPECT_TRUE(one[ends[h] - 1].held == 1 || one[ends[h] - 1].held == 0) << h;
+  }
+  // The test ends with the last hold, which holds the final stress; it loaded in between (a row
+  // marked 0 after the first hold, whose stress rises above it).
+  EXPECT_EQ(ends.back(), one.size() - 1);
+  EXPECT_EQ(one[ends[0] + 1].held, 0);
+  EXPECT_GT(one[ends[0] + 1].axial_strain, one[ends[0]].axial_strain);
+  // A hold's rows stay near its target; the platen moves in by the creep only.
+  for (std::size_t k = 1; k < one.size(); ++k) {
+    if (one[k].held != 1 || one[k - 1].held != 1) continue;
+    const double target =
+        t.hold_stresses[std::upper_bound(ends.begin(), ends.end(), k) - ends.begin()];
+    EXPECT_NEAR(one[k].axial_stress / target, 1.0, 0.25) << "row " << k;
+  }
+  const std::vector<CurveRow> two = run(t, 2);
+  expect_same_bytes(one, two);
+  for (std::size_t k = 0; k < std::min(one.size(), two.size()); ++k)
+    EXPECT_EQ(one[k].held, two[k].held) << "row " << k;
+}
+
+TEST(DemElementTest, OedometerStoppedWithinAHoldContinuesToTheSameBytes) {
+  const ElementTestSettings t = held_oedometer();
+  const std::vector<CurveRow>& whole = held_oedometer_curve();
+  CellSpecimen s = test::cube_in_cell();
+  ElementTestState state;
+  // Stopped at the first record within a hold; its state through a stage record (as a
+  // checkpoint keeps it) and continued on the same world.
+  const ElementTestResult first =
+      run_element_test(s.world, s.cell, t, state, [&] { return state.holding; });
+  ASSERT_TRUE(first.stopped);
+  ASSERT_TRUE(state.holding);
+  ElementTestState back;
+  TestCell cell;
+  read_element_test_record(element_test_record(state, s.cell), "checkpoint", back, cell);
+  EXPECT_EQ(back.next_hold, state.next_hold);
+  EXPECT_EQ(back.hold_steps, state.hold_steps);
+  EXPECT_TRUE(back.holding);
+  const ElementTestResult rest = run_element_test(s.world, cell, t, back);
+  EXPECT_FALSE(rest.stopped);
+  expect_same_bytes(whole, rest.curve);
+  for (std::size_t k = 0; k < std::min(whole.size(), rest.curve.size()); ++k)
+    EXPECT_EQ(whole[k].held, rest.curve[k].held) << "row " << k;
+}
+
+TEST(DemElementTest, HoldsOutsideTheOedometerOrOutOfOrderAreRefused) {
+  const auto refused = [](ElementTestSettings t, const std::string& named) {
+    CellSpecimen s = test::cube_in_cell();
+    try {
+      run_element_test(s.world, s.cell, t);
+      ADD_FAILURE() << "ran";
+    } catch (const InvalidInput& e) {
+      EXPECT_NE(std::string(e.what()).find(named), std::string::npos) << e.what();
+    }
+  };
+  ElementTestSettings t = held_oedometer();
+  t.kind = TestKind::triaxial;
+  refused(t, "oedometer test only");
+  t = held_oedometer();
+  t.hold_stresses = {2 * t.confining, 1.5 * t.confining};
+  refused(t, "must rise");
+  t.hold_stresses = {t.confining};
+  refused(t, "must rise");
+  t.hold_stresses = {3 * t.final_stress};
+  refused(t, "at most the final stress");
+  t = held_oedometer();
+  t.max_hold_steps = 50;
+  refused(t, "max_hold_steps");
 }

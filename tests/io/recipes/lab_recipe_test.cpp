@@ -7,6 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <string>
+#include <vector>
+
 using namespace clumpkit;
 
 namespace {
@@ -94,5 +98,32 @@ TEST(TestRecipe, InertialNumberIsHeldOnlyWhenAskedAndQuasiStatic) {
   for (const char* bad : {"0.02", "0", "-1e-3"}) {
     const std::string e = test_error_of(std::string("[test]\ninertial_number = ") + bad + "\n");
     EXPECT_NE(e.find("t.toml: test.inertial_number: "), std::string::npos) << e;
+  }
+}
+
+TEST(TestRecipe, HoldStressesRiseFromTheConfiningToTheFinalStress) {
+  const TestRecipe r = parse_test_recipe(
+      "[test]\nconfining = 1e5\nfinal_stress = 1e6\nhold_stresses = [2e5, 5e5, 1e6]\n"
+      "max_hold_steps = 5000\n",
+      "t.toml");
+  EXPECT_EQ(r.settings.hold_stresses, (std::vector<double>{2e5, 5e5, 1e6}));
+  EXPECT_EQ(r.settings.max_hold_steps, 5000);
+  EXPECT_TRUE(parse_test_recipe("[test]\n", "t.toml").settings.hold_stresses.empty());
+  // The order of keys in the table does not matter: checked against both stresses at the end.
+  EXPECT_EQ(parse_test_recipe("[test]\nhold_stresses = [3e5]\nconfining = 1e5\n", "t.toml")
+                .settings.hold_stresses.size(),
+            1u);
+  const std::string base = "[test]\nconfining = 1e5\nfinal_stress = 1e6\n";
+  for (const auto& [bad, field, shown] : std::vector<std::array<std::string, 3>>{
+           {"hold_stresses = [5e5, 2e5]", "test.hold_stresses[1]", "200000"},
+           {"hold_stresses = [1e5]", "test.hold_stresses[0]", "100000"},
+           {"hold_stresses = [2e6]", "test.hold_stresses[0]", "2000000"},
+           {"hold_stresses = []", "test.hold_stresses", "[]"},
+           {"hold_stresses = [\"a\"]", "test.hold_stresses[0]", "a"},
+           {"hold_stresses = 3e5", "test.hold_stresses", "300000"},
+           {"max_hold_steps = 10", "test.max_hold_steps", "10"}}) {
+    const std::string e = test_error_of(base + bad + "\n");
+    EXPECT_NE(e.find("t.toml: " + field + ": "), std::string::npos) << e;
+    EXPECT_NE(e.find(shown), std::string::npos) << e;
   }
 }
