@@ -49,18 +49,25 @@ void check_holds(const ElementTestSettings& s) {
   if (s.max_hold_steps < 100)
     throw InvalidInput("element test: max_hold_steps must be at least 100, got " +
                        std::to_string(s.max_hold_steps));
-  double last = s.confining;
-  for (double h : s.hold_stresses) {
-    if (!(h > last) || !(h <= s.final_stress))
-      throw InvalidInput(
-          "element test: hold stresses must rise above the confining stress to "
-          "at most the final stress, got " +
-          format_number(h));
-    last = h;
-  }
+  const int bad = first_hold_out_of_order(s.hold_stresses, s.confining, s.final_stress);
+  if (bad >= 0)
+    throw InvalidInput(
+        "element test: hold stresses must rise above the confining stress to "
+        "at most the final stress, got " +
+        format_number(s.hold_stresses[bad]));
 }
 
 }  // namespace
+
+int first_hold_out_of_order(const std::vector<double>& holds, double confining,
+                            double final_stress) {
+  double last = confining;
+  for (std::size_t i = 0; i < holds.size(); ++i) {
+    if (!(holds[i] > last) || !(holds[i] <= final_stress)) return static_cast<int>(i);
+    last = holds[i];
+  }
+  return -1;
+}
 
 WorldOptions element_test_world_options(const std::vector<Body>& bodies,
                                         const ContactParams& contact) {

@@ -104,6 +104,12 @@ struct ElementTestSettings {
   BreakageLimits breakage_limits;
 };
 
+/// The first entry of `holds` (ElementTestSettings::hold_stresses) that does not rise above the
+/// one before it (the first above `confining`) or lies above `final_stress`; −1 when all are in
+/// order.
+int first_hold_out_of_order(const std::vector<double>& holds, double confining,
+                            double final_stress);
+
 /// Size classes of a crushable specimen's particles whose broken fractions are tracked.
 inline constexpr int kBreakageClasses = 4;
 

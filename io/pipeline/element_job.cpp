@@ -68,6 +68,16 @@ nlohmann::ordered_json measured(double v) {
   return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
 }
 
+// The compression index over the last decade of the stresses `sv` and the knee of e–log σv
+// (dem/measure/compressibility.h), as report.json's `compression_index` and `yield_stress` with
+// `suffix`.
+void report_compressibility(const std::vector<double>& e, const std::vector<double>& sv,
+                            const std::string& suffix, nlohmann::ordered_json& rep) {
+  const double top = *std::max_element(sv.begin(), sv.end());
+  rep["compression_index" + suffix] = measured(dem::compression_index(e, sv, 0.1 * top, top));
+  rep["yield_stress" + suffix] = measured(dem::yield_stress(e, sv));
+}
+
 // The oedometer's holds: the state at the end of each (and its breakage), and e–log σv of the
 // consolidated state and those ends, where the platen was at rest: the compression index over
 // the last decade and the knee without the rate part of a continuous curve's stresses.
@@ -79,9 +89,11 @@ void report_holds(const std::vector<dem::CurveRow>& curve, const std::vector<dou
   for (std::size_t k = 1; k < curve.size(); ++k) {
     const dem::CurveRow& c = curve[k];
     if (c.held < 2) continue;
+    e.push_back(c.porosity / (1 - c.porosity));
+    sv.push_back(c.axial_stress);
     nlohmann::ordered_json h = {{"axial_stress", c.axial_stress},
                                 {"axial_strain", c.axial_strain},
-                                {"void_ratio", c.porosity / (1 - c.porosity)},
+                                {"void_ratio", e.back()},
                                 {"equilibrium", c.held == 2},
                                 {"step", c.step}};
     if (crushable) {
@@ -93,13 +105,9 @@ void report_holds(const std::vector<dem::CurveRow>& curve, const std::vector<dou
       h["work"] = work[k];
     }
     list.push_back(h);
-    e.push_back(c.porosity / (1 - c.porosity));
-    sv.push_back(c.axial_stress);
   }
   rep["holds"] = list;
-  const double top = *std::max_element(sv.begin(), sv.end());
-  rep["compression_index_held"] = measured(dem::compression_index(e, sv, 0.1 * top, top));
-  rep["yield_stress_held"] = measured(dem::yield_stress(e, sv));
+  report_compressibility(e, sv, "_held", rep);
 }
 
 }  // namespace
@@ -217,9 +225,7 @@ LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specime
     std::vector<double> e, sv;
     for (const auto& c : r.curve)
       e.push_back(c.porosity / (1 - c.porosity)), sv.push_back(c.axial_stress);
-    const double top = *std::max_element(sv.begin(), sv.end());
-    rep["compression_index"] = measured(dem::compression_index(e, sv, 0.1 * top, top));
-    rep["yield_stress"] = measured(dem::yield_stress(e, sv));
+    report_compressibility(e, sv, "", rep);
     if (holds) report_holds(r.curve, work, crushable, rep);
     for (const auto& c : r.curve)
       plot.x.push_back(c.axial_strain), plot.y.push_back(c.axial_stress / 1e3);

@@ -203,16 +203,12 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
   if (have_final && !(s.final_stress > s.confining))
     f.fail("test.final_stress", "must exceed test.confining");
   if (!have_final) s.final_stress = 4.0 * s.confining;
-  double last = s.confining;
-  for (std::size_t i = 0; i < s.hold_stresses.size(); ++i) {
-    const double h = s.hold_stresses[i];
-    if (!(h > last) || !(h <= s.final_stress))
-      f.fail("test.hold_stresses[" + std::to_string(i) + "]",
-             "must rise above test.confining (" + format_number(s.confining) +
-                 ") to at most test.final_stress (" + format_number(s.final_stress) + "), got " +
-                 format_number(h));
-    last = h;
-  }
+  const int bad = dem::first_hold_out_of_order(s.hold_stresses, s.confining, s.final_stress);
+  if (bad >= 0)
+    f.fail("test.hold_stresses[" + std::to_string(bad) + "]",
+           "must rise above test.confining (" + format_number(s.confining) +
+               ") to at most test.final_stress (" + format_number(s.final_stress) + "), got " +
+               format_number(s.hold_stresses[bad]));
   return r;
 }
 
