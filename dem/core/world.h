@@ -60,6 +60,15 @@ struct WorldOptions {
   ContactParams contact;
   /// The law of every bond (dem/core/bond.h); unused in a world without bonds.
   CohesiveParams cohesive;
+  /// Whether a bond that no longer holds (every point failed) still acts: its points press in
+  /// compression and slide with the law's friction, the crack's faces (true: the crushing rig,
+  /// whose cells meet each other only through one inner sphere), or exert nothing (false: cells
+  /// filled with spheres, which touch from the step the bond stops holding). Points fixed in
+  /// both bodies stand for the faces only while the bodies stay where the crack opened: once a
+  /// fragment has moved or turned away, a point's copies are no longer where the faces touch,
+  /// and their spring, applied at the copies' midpoint, does work no potential accounts for (in
+  /// a crushable specimen past its yield, it spun a freed cell up to 9·10⁴ rad/s).
+  bool broken_bonds_act = true;
   /// Normal and shear stiffness (N/m) of one corner of a polyhedral body on a plane wall
   /// (Body::vertices); friction is the wall's, else the contact law's; the dashpot is the
   /// contact law's damping ratio. Unused without such bodies.

@@ -204,6 +204,7 @@ World loose_packing(const CompressionSpec& spec, std::vector<Body> bodies,
     // that the specimen at rest never loads: the same stiffness, bonds that cannot fail
     // (dem::unbreakable). finish_specimen restores the material's law.
     o.cohesive = unbreakable(spec.cohesive);
+    o.broken_bonds_act = false;  // the cells' spheres touch once a bond stops holding
     // Bodies keep their indices: the closing moves each particle's cells together (groups).
     o.sort_every = 0;
   }

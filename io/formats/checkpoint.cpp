@@ -146,6 +146,7 @@ struct WorldCodec {
     w.f64(o.cohesive.sigma_t), w.f64(o.cohesive.g_n), w.f64(o.cohesive.g_t);
     w.f64(o.cohesive.friction);
     w.f64(o.vertex_stiffness);
+    w.u8(o.broken_bonds_act ? 1 : 0);
     w.i64(lists.steps);
     w.f64(lists.time);
     w.i64(lists.builds);
@@ -228,6 +229,9 @@ struct WorldCodec {
     if (!(o.cohesive.friction >= 0.0) || !std::isfinite(o.cohesive.friction))
       r.fail("cohesive friction " + std::to_string(o.cohesive.friction) + " is not valid");
     o.vertex_stiffness = r.f64();
+    const std::uint8_t broken_act = r.u8();
+    if (broken_act > 1) r.fail("corrupt broken-bond flag " + std::to_string(broken_act));
+    o.broken_bonds_act = broken_act == 1;
     const std::int64_t steps = r.i64();
     const double time = r.f64();
     const std::int64_t builds = r.i64();

@@ -133,6 +133,7 @@ TestSetup setup_test(const std::string& kind, const std::string& specimen_dir,
       dem::element_test_world_options(bodies, contact_law(spec_report, report_path, recipe));
   if (bonds) {
     o.cohesive = bonds->law;
+    o.broken_bonds_act = false;            // the cells' spheres touch once a bond stops holding
     o.skin = dem::crushable_skin(bodies);  // above 0.2·r_min: the median is at least r_min
     // Bodies keep their indices: the breakage measures size each fragment from its cells as
     // built (ElementTestSettings::reference).

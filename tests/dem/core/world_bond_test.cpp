@@ -241,3 +241,41 @@ TEST(WorldBonds, BrokenBondsHandNoEnergyToOverlappingSpheres) {
   EXPECT_GT(c.normal_force, 0.0);
   EXPECT_EQ(c.normal_force, kn * (c.overlap - c.excused));
 }
+
+// Once a bond no longer holds, its points stand for the crack's faces only while the cells stay
+// where it opened. The crushing rig keeps them (its cells meet only through one inner sphere);
+// cells filled with spheres (broken_bonds_act = false) meet through those alone. Pressed back
+// 5 µm past where they were bonded, the pair feels the faces' spring K_I·A·5 µm on top of the
+// spheres' contact, or the contact alone.
+TEST(WorldBonds, BrokenBondsActOnlyWhereTheWorldSaysSo) {
+  for (const bool act : {true, false}) {
+    SCOPED_TRACE(act);
+    World w = parted_pair(1.0);
+    w.options().broken_bonds_act = act;
+    const std::vector<Body> start = w.bodies();
+    int steps = 0;
+    while (w.bonds()[0].holds() && steps < 2000) w.step(1), ++steps;
+    ASSERT_FALSE(w.bonds()[0].holds());
+    w.step(20);
+    const double shift = 2.5e-6;
+    for (int c = 0; c < 2; ++c) {
+      Body& b = w.bodies()[c];
+      b.position = start[c].position + Vec3(0, 0, c == 0 ? shift : -shift);
+      b.orientation = start[c].orientation;
+      b.velocity = b.angular_velocity = Vec3::Zero();
+    }
+    w.step(1);
+    ASSERT_EQ(w.contacts().size(), 1u);
+    const Vec3 contact = w.contacts()[0].state.force();  // on body 1, the upper cell
+    const Vec3 bond = w.bodies()[1].force - contact;
+    const double faces = w.options().cohesive.kn * kA * kA * 2 * shift;
+    if (act) {
+      EXPECT_NEAR(bond.z() / faces, 1.0, 0.02);  // the faces push the upper cell up
+    } else {
+      EXPECT_EQ(w.bodies()[1].force, contact);
+      EXPECT_EQ(w.bodies()[0].force, -contact);
+    }
+    std::printf("broken bonds act %d: the bond's part of the force %.4g N (K_I·A·δ = %.4g N)\n",
+                act, bond.z(), faces);
+  }
+}

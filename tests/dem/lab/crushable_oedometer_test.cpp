@@ -38,7 +38,8 @@ std::vector<CurveRow> crushable_oedometer(int threads, World* end = nullptr) {
   const CompressionResult& c = weak_specimen();
   WorldOptions o = element_test_world_options(c.world.bodies(), c.world.options().contact);
   o.cohesive = c.world.options().cohesive;
-  o.sort_every = 0;  // bodies keep their indices (the reference poses)
+  o.broken_bonds_act = false;  // as the pipeline's crushable tests
+  o.sort_every = 0;            // bodies keep their indices (the reference poses)
   World w(o);
   for (Body b : c.world.bodies()) {
     b.mass *= 1000, b.moments *= 1000;  // λ = 1000, as the crushing recipes

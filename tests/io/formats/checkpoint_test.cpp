@@ -392,6 +392,7 @@ TEST(DemCheckpoint, BondsSurviveASaveAndLoadAndContinueBitIdentically) {
   // run on to failure: the same bits as the run that was never stopped.
   World straight = test::bonded_column(0.05);
   World first = test::bonded_column(0.05);
+  straight.options().broken_bonds_act = first.options().broken_bonds_act = false;  // not default
   // Three interfaces opened to 1.2 onset openings each (δ_u is 1.78 of it).
   const double onset = first.options().cohesive.sigma_n / first.options().cohesive.kn;
   const int half = static_cast<int>(3 * 1.2 * onset / 0.05 / first.options().timestep);
@@ -418,6 +419,7 @@ TEST(DemCheckpoint, BondsSurviveASaveAndLoadAndContinueBitIdentically) {
   }
   EXPECT_EQ(resumed.options().cohesive.g_t, first.options().cohesive.g_t);
   EXPECT_EQ(resumed.options().cohesive.friction, first.options().cohesive.friction);
+  EXPECT_FALSE(resumed.options().broken_bonds_act);
   straight.step(2 * half);
   resumed.step(half);
   expect_identical(straight, resumed);
@@ -466,16 +468,17 @@ TEST(DemCheckpoint, CornerContactsSurviveASaveAndLoad) {
 TEST(DemCheckpoint, FuzzCorpusSeedIsOfTheCurrentFormat) {
   CheckpointInfo info;
   const std::string corpus = std::string(CLUMPKIT_SOURCE_DIR) + "/tests/fuzz/corpus/checkpoint/";
-  const World w = load_checkpoint(corpus + "sorted-servo-v14.ckpt", &info);
-  EXPECT_EQ(read_bytes(corpus + "sorted-servo-v14.ckpt").substr(12, 4),
-            std::string("\x0e\0\0\0", 4));
+  const World w = load_checkpoint(corpus + "sorted-servo-v15.ckpt", &info);
+  EXPECT_EQ(read_bytes(corpus + "sorted-servo-v15.ckpt").substr(12, 4),
+            std::string("\x0f\0\0\0", 4));
   EXPECT_GT(w.bodies().size(), 0u);
   EXPECT_FALSE(w.walls().empty());
   EXPECT_EQ(info.state.at("phase"), "2");
   // The bonded seed: bonds, their damage and the law's friction come back.
-  const World bonded = load_checkpoint(corpus + "bonded-cells-v14.ckpt");
+  const World bonded = load_checkpoint(corpus + "bonded-cells-v15.ckpt");
   EXPECT_EQ(bonded.bonds().size(), 28u);
   EXPECT_EQ(bonded.options().cohesive.friction, 0.3);
+  EXPECT_TRUE(bonded.options().broken_bonds_act);  // the crushing rig's setting
 }
 
 // A checkpoint of the engine before the contact pass summed the bodies (version 10) would not
@@ -489,7 +492,7 @@ TEST(DemCheckpoint, AnOlderVersionIsRefusedNamingBoth) {
   } catch (const InvalidInput& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("sorted-servo-v10.ckpt"), std::string::npos) << what;
-    EXPECT_NE(what.find("unsupported version 10 (expected 14)"), std::string::npos) << what;
+    EXPECT_NE(what.find("unsupported version 10 (expected 15)"), std::string::npos) << what;
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
   }
 }
