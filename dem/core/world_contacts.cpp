@@ -458,11 +458,11 @@ void World::compute_forces() {
     parallel_items(bonds_.size(), [&](std::size_t k) {
       Bond& bond = bonds_[k];
       BondMoments& moments = bond_moments_[k];
-      const Mat3 &ra = sc.bond_matrix_[bond.a], &rb = sc.bond_matrix_[bond.b];
       if (!moments.holding && !options_.broken_bonds_act) {
         sc.bond_wrench_[k] = BondWrench{};  // its bodies' spheres touch instead
         return;
       }
+      const Mat3 &ra = sc.bond_matrix_[bond.a], &rb = sc.bond_matrix_[bond.b];
       const Vec3 &pa = sc.kinematics_[bond.a].position, &pb = sc.kinematics_[bond.b].position;
       // Most bonds, most steps: undamaged and far below the onset, the closed form.
       if (elastic_bond_wrench(moments, bond, options_.cohesive, pa, ra, pb, rb, sc.bond_wrench_[k]))

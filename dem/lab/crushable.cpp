@@ -99,4 +99,11 @@ World crushable_particle(const Tessellation& cells, const std::vector<CellBond>&
   return w;
 }
 
+WorldOptions cell_packing_options(WorldOptions o, const CohesiveParams& law) {
+  o.cohesive = law;
+  o.broken_bonds_act = false;
+  o.sort_every = 0;
+  return o;
+}
+
 }  // namespace clumpkit::dem

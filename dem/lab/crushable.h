@@ -29,6 +29,12 @@ Body cell_body(const Cell& cell, double density);
 /// the bond holds. Throws what cell_body and fill throw.
 Body cell_clump_body(const Cell& cell, double density, const FillOptions& fill);
 
+/// `o` for a world of cell_clump_body cells bonded by `law`: the law on every bond, broken bonds
+/// exerting nothing (WorldOptions::broken_bonds_act: the cells' spheres touch once a bond stops
+/// holding) and no sorting (bodies keep their indices: each particle's cells stay together, and
+/// the breakage measures find their reference poses).
+WorldOptions cell_packing_options(WorldOptions o, const CohesiveParams& law);
+
 /// Adds one bond per shared face to `world`, whose bodies 0… are the cells in order at the
 /// cells' positions (make_bond with the face's integration points and strength factor). Throws
 /// InvalidInput from add_bond.

@@ -4,6 +4,7 @@
 
 #include "dem/core/timestep.h"
 #include "dem/lab/cell.h"
+#include "dem/lab/crushable.h"
 #include "dem/measure/sampled_porosity.h"
 #include "dem/measure/stress.h"
 #include "dem/specimen/zoned_packing.h"
@@ -202,11 +203,9 @@ World loose_packing(const CompressionSpec& spec, std::vector<Body> bodies,
     // contacts far above the final stress (a mean stress of 0.8 MPa while closing at 1e-4 per
     // step to n = 0.65, 0.17 MPa at 1e-5, against kPa once relaxed), which would break bonds
     // that the specimen at rest never loads: the same stiffness, bonds that cannot fail
-    // (dem::unbreakable). finish_specimen restores the material's law.
-    o.cohesive = unbreakable(spec.cohesive);
-    o.broken_bonds_act = false;  // the cells' spheres touch once a bond stops holding
-    // Bodies keep their indices: the closing moves each particle's cells together (groups).
-    o.sort_every = 0;
+    // (dem::unbreakable). finish_specimen restores the material's law. Bodies keep their
+    // indices: the closing moves each particle's cells together (groups).
+    o = cell_packing_options(o, unbreakable(spec.cohesive));
   }
   o.skin = 0.2 * r_min;  // a length of the specimen: similar specimens scale exactly
   World world(o);

@@ -1,6 +1,7 @@
 #include "io/pipeline/lab_setup.h"
 
 #include "dem/core/timestep.h"
+#include "dem/lab/crushable.h"
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "geom/hash.h"
@@ -132,12 +133,10 @@ TestSetup setup_test(const std::string& kind, const std::string& specimen_dir,
   dem::WorldOptions o =
       dem::element_test_world_options(bodies, contact_law(spec_report, report_path, recipe));
   if (bonds) {
-    o.cohesive = bonds->law;
-    o.broken_bonds_act = false;            // the cells' spheres touch once a bond stops holding
-    o.skin = dem::crushable_skin(bodies);  // above 0.2·r_min: the median is at least r_min
     // Bodies keep their indices: the breakage measures size each fragment from its cells as
     // built (ElementTestSettings::reference).
-    o.sort_every = 0;
+    o = dem::cell_packing_options(o, bonds->law);
+    o.skin = dem::crushable_skin(bodies);  // above 0.2·r_min: the median is at least r_min
   }
   // Refused before anything is written unless the user asks for a dynamic test.
   const double inertial = dem::inertial_number(bodies, strain_rate, recipe.settings.confining);

@@ -1,6 +1,7 @@
 // An oedometer on a small crushable specimen (bonded cells from a crushable compression): the
 // breakage columns count what broke, the fragments keep the particles' volume, and the rows are
 // the same bytes for one and two threads. The short sibling of tests/cli/crushable_test.cpp.
+#include "dem/lab/crushable.h"
 #include "dem/lab/element_loading.h"
 
 #include "dem/core/timestep.h"
@@ -36,10 +37,9 @@ const CompressionResult& weak_specimen() {
 std::vector<CurveRow> crushable_oedometer(int threads, World* end = nullptr) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
   const CompressionResult& c = weak_specimen();
-  WorldOptions o = element_test_world_options(c.world.bodies(), c.world.options().contact);
-  o.cohesive = c.world.options().cohesive;
-  o.broken_bonds_act = false;  // as the pipeline's crushable tests
-  o.sort_every = 0;            // bodies keep their indices (the reference poses)
+  const WorldOptions o =
+      cell_packing_options(element_test_world_options(c.world.bodies(), c.world.options().contact),
+                           c.world.options().cohesive);
   World w(o);
   for (Body b : c.world.bodies()) {
     b.mass *= 1000, b.moments *= 1000;  // λ = 1000, as the crushing recipes
