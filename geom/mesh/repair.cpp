@@ -3,7 +3,10 @@
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "geom/mesh/cgal_surface.h"
+#include "geom/mesh/deviation.h"
+#include "geom/mesh/shell_union.h"
 #include "geom/mesh/weld.h"
+#include "geom/mesh/wrap.h"
 
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -16,6 +19,7 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iterator>
 #include <map>
@@ -148,20 +152,98 @@ RepairHole close_hole(SurfaceMesh& sm, SurfaceMesh::Halfedge_index h) {
   return hole;
 }
 
+// A capped surface bounding less than this fraction of its diagonal cubed encloses nothing: a
+// sheet capped on itself bounds exactly zero up to rounding (1e-16 of it), a plate of a
+// thousandth of its width 1e-4.
+constexpr double kNoVolume = 1e-9;
+
+void check_wrap_options(const RepairOptions& o) {
+  auto fraction = [](double v, const char* name) {
+    if (!(std::isfinite(v) && v > 0 && v <= 1))
+      throw InvalidInput(std::string("repair: ") + name +
+                         " must lie in (0, 1] (a fraction of the bounding-box diagonal), got " +
+                         format_number(v));
+  };
+  fraction(o.wrap_alpha, "wrap_alpha");
+  fraction(o.wrap_offset, "wrap_offset");
+  if (o.local_rounds < 0)
+    throw InvalidInput("repair: local_rounds must be at least 0, got " +
+                       std::to_string(o.local_rounds));
+}
+
+// Steps 7 and 8 on the closed surface of step 5: crossings mended in place (locally within a
+// shell, then shells through each other by union), else the surface wrapped.
+void mend_crossings(Mesh& mesh, const RepairOptions& o, RepairReport& r) {
+  const Crossings found = find_crossings(mesh);
+  r.crossings_within = found.within_shells;
+  r.crossings_between = found.between_shells;
+  int left = found.total();
+  const Mesh closed = mesh;
+  if (o.wrap != WrapMode::always && left > 0) {
+    bool local = false;
+    if (found.within_shells > 0 && o.local_rounds > 0) {
+      r.local_rounds = mend_crossings_locally(mesh, o.local_rounds);
+      for (const CrossingRound& round : r.local_rounds)
+        local = local || round.pairs_after < round.pairs_before;
+    }
+    Crossings now = local ? find_crossings(mesh) : found;
+    if (now.between_shells > 0) {
+      r.united_shells = unite_crossing_shells(mesh);
+      if (r.united_shells > 0) now = find_crossings(mesh);
+    }
+    left = now.total();
+    r.changed = local || r.united_shells > 0;
+    if (left == 0)
+      r.mended_by = local && r.united_shells > 0 ? "local and union" : local ? "local" : "union";
+  }
+  if (o.wrap == WrapMode::always || (o.wrap == WrapMode::fallback && left > 0)) {
+    const auto t0 = std::chrono::steady_clock::now();
+    r.wrap_alpha = o.wrap_alpha * r.diagonal;
+    r.wrap_offset = o.wrap_offset * r.diagonal;
+    mesh = alpha_wrap(closed, r.wrap_alpha, r.wrap_offset);
+    r.wrap_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.wrapped = r.changed = true;
+    r.mended_by = left > 0 ? "wrap" : "";
+  }
+}
+
 }  // namespace
+
+WrapMode wrap_mode_from_string(const std::string& text, const std::string& field) {
+  if (text == "fallback") return WrapMode::fallback;
+  if (text == "always") return WrapMode::always;
+  if (text == "never") return WrapMode::never;
+  throw InvalidInput(field + " must be fallback, always or never, got '" + text + "'");
+}
+
+const char* to_string(WrapMode mode) {
+  switch (mode) {
+    case WrapMode::fallback:
+      return "fallback";
+    case WrapMode::always:
+      return "always";
+    case WrapMode::never:
+      return "never";
+  }
+  return "fallback";
+}
 
 RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   if (!(options.min_component >= 0.0 && options.min_component <= 1.0))
     throw InvalidInput("repair: min_component must lie in [0, 1], got " +
                        format_number(options.min_component));
+  check_wrap_options(options);
   RepairReport r;
+  const Mesh input = mesh;
   {
     const MeshCheck before = check_mesh(mesh);
     r.boundary_edges_before = before.boundary_edges;
     r.volume_before = before.volume;
   }
   const std::vector<std::array<int, 3>> kept = drop_duplicates(mesh, r);
-  if (kept.empty()) refuse("duplicates", "no triangle is left (repeated corners, double walls)");
+  if (kept.empty())
+    refuse("duplicates",
+           "no triangle is left (repeated corners, double walls): the mesh encloses no volume");
 
   r.nonmanifold_edges = check_mesh(Mesh{mesh.vertices, kept}).nonmanifold_edges;
   cgal_surface::Soup soup = cgal_surface::used_soup(mesh, kept);
@@ -181,7 +263,10 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
   sm.collect_garbage();
   r.degenerate_triangles =
       static_cast<int>(faces_before - std::min<std::size_t>(faces_before, sm.number_of_faces()));
-  if (sm.number_of_faces() == 0) refuse("degenerate", "no triangle is left");
+  if (sm.number_of_faces() == 0)
+    refuse("degenerate",
+           "no triangle is left (every one has zero area): the "
+           "mesh encloses no volume");
 
   if (options.min_component > 0.0) remove_small_components(sm, options.min_component, r);
 
@@ -207,25 +292,54 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options) {
     }
   }
 
+  Mesh capped = cgal_surface::from_surface_mesh(sm);
+  {
+    const auto box = bounding_box(capped);  // without the debris removed above
+    r.diagonal = (box[1] - box[0]).norm();
+  }
+  r.volume_capped = check_mesh(capped).volume;
+  // A sheet, a single triangle or the faces of a point cloud close onto themselves: the capped
+  // surface bounds nothing, and wrapping it would invent a slab of twice the offset.
+  if (!(std::abs(r.volume_capped) > kNoVolume * std::pow(r.diagonal, 3)))
+    refuse("volume", "the surface encloses no volume: a sheet or loose faces, capped, bound " +
+                         format_number(r.volume_capped) + " (bounding-box diagonal " +
+                         format_number(r.diagonal) + ")");
+  mend_crossings(capped, options, r);
   // Faces of the shells split at a non-manifold edge or vertex touch there without crossing.
-  const auto crossing = cgal_surface::crossing_faces(sm);
+  sm = cgal_surface::to_surface_mesh(capped);
+  // Unchanged and found free of crossings above, the surface needs no second search.
+  const bool check = r.changed || r.crossings_within + r.crossings_between > 0;
+  const auto crossing =
+      check ? cgal_surface::crossing_faces(sm) : decltype(cgal_surface::crossing_faces(sm)){};
   if (!crossing.empty())
     refuse("self-intersection check",
            "the closed surface intersects itself, so it bounds no volume (" +
                std::to_string(crossing.size()) +
                " pairs of faces cross: shells through each other, a fold, or a hole's patch "
-               "through the surface); first " +
-               at(face_centroid(sm, crossing.front().first)));
+               "through the surface" +
+               (options.wrap == WrapMode::never ? "; --wrap fallback would wrap it" : "") +
+               "); first " + at(face_centroid(sm, crossing.front().first)));
   PMP::orient_to_bound_a_volume(sm);
   sm.collect_garbage();
   mesh = cgal_surface::from_surface_mesh(sm);
   const MeshCheck after = check_mesh(mesh);
   r.boundary_edges_after = after.boundary_edges;
   r.volume_after = after.volume;
-  const auto box = bounding_box(mesh);
-  if (!(r.volume_after > 1e-12 * std::pow((box[1] - box[0]).norm(), 3)))
+  if (!(r.volume_after > 1e-12 * std::pow(r.diagonal, 3)))
     refuse("orientation", "the closed surface encloses no volume (signed volume " +
                               format_number(r.volume_after) + ")");
+  if (r.changed) {
+    const SurfaceDeviation d = surface_deviation(mesh, input);
+    r.distance_max = d.max / r.diagonal;
+    r.distance_mean = d.mean / r.diagonal;
+    r.distance_max_at = d.at;
+    if (r.wrapped && r.distance_max > options.wrap_warn_distance)
+      r.warnings.push_back("the wrap moved the surface by up to " + format_number(d.max, 4) + " (" +
+                           format_number(100 * r.distance_max, 3) +
+                           " % of the bounding-box diagonal, more than " +
+                           format_number(100 * options.wrap_warn_distance, 3) + " %) " + at(d.at) +
+                           ": a cavity or gap narrower than alpha was bridged");
+  }
   return r;
 }
 

@@ -1,8 +1,9 @@
 // Repair of a triangle soup into a closed solid, as a pipeline of named steps: duplicates and
 // double walls, non-manifold edges and vertices split, degenerate triangles, small components,
-// holes, orientation, and a final self-intersection check.
+// holes, crossings mended (locally, by union, by a wrap), orientation, and a final check.
 #pragma once
 
+#include "geom/mesh/crossings.h"
 #include "geom/mesh/mesh.h"
 
 #include <cstddef>
@@ -11,11 +12,37 @@
 
 namespace clumpkit {
 
-/// What repair_mesh may discard.
+/// When repair_mesh wraps the surface (CGAL 3D Alpha Wrapping) instead of keeping its triangles.
+enum class WrapMode {
+  fallback,  ///< only when the local mend and the union leave faces crossing
+  always,    ///< every mesh, after the holes are closed
+  never,     ///< never: crossings left are refused
+};
+
+/// Parses "fallback", "always" or "never"; throws InvalidInput naming `field` otherwise.
+WrapMode wrap_mode_from_string(const std::string& text, const std::string& field);
+const char* to_string(WrapMode mode);
+
+/// What repair_mesh may discard and how it mends what crosses.
 struct RepairOptions {
   /// Components (after the split at non-manifold edges and vertices) with fewer triangles than
   /// this fraction of the largest component's are debris and removed; 0 keeps every component.
   double min_component = 0.01;
+  WrapMode wrap = WrapMode::fallback;
+  /// The wrap's alpha (cavities and gaps narrower than about this are bridged) and offset (the
+  /// wrap lies this far outside the surface), as fractions of the bounding-box diagonal. The
+  /// defaults keep what the fill sees: its default voxel is about 1/70 of a compact particle's
+  /// diagonal, so alpha at 1/100 bridges nothing the fill resolves; the offset adds about
+  /// offset × area to the volume (0.3 % for a sphere at 1/3000 of the diagonal).
+  double wrap_alpha = 0.01;
+  double wrap_offset = 1.0 / 3000.0;
+  /// Rounds of the local mend at most, per shell (each a call of CGAL's
+  /// remove_self_intersections; the mend stops earlier when a round does not shrink the
+  /// crossings).
+  int local_rounds = 4;
+  /// A wrap whose sampled distance to the input exceeds this fraction of the diagonal is
+  /// reported in RepairReport::warnings with the place.
+  double wrap_warn_distance = 0.02;
 };
 
 /// One hole closed: its edge count, where it was (the centroid of its boundary vertices), and
@@ -48,8 +75,29 @@ struct RepairReport {
   // holes
   int holes = 0;  ///< holes closed
   std::vector<RepairHole> closed_holes;
+  // crossings: the closed surface after the holes, before anything below changed it
+  double volume_capped = 0;  ///< its signed volume (shells through each other counted twice)
+  int crossings_within = 0, crossings_between = 0;  ///< pairs of faces crossing (crossings.h)
+  std::vector<CrossingRound> local_rounds;          ///< the local mend, round by round
+  int united_shells = 0;                            ///< shells joined into another by their union
+  // wrap
+  bool wrapped = false;
+  double wrap_alpha = 0, wrap_offset = 0;  ///< used, in the mesh's units
+  double wrap_seconds = 0;
+  /// What mended the crossings: "" (none to mend), "local", "union", "local and union" or "wrap".
+  std::string mended_by;
+  /// Whenever the surface was changed beyond welding and hole closing (a mend or a wrap): the
+  /// sampled one-sided distance from the result to the input, as fractions of the bounding-box
+  /// diagonal, and the place of the largest.
+  bool changed = false;
+  double distance_max = 0, distance_mean = 0;
+  Vec3 distance_max_at = Vec3::Zero();
+  double diagonal = 0;  ///< of the input's bounding box
   // orientation
   bool reoriented = false;  ///< some triangles were flipped
+  /// What the user should hear: a wrap that moved the surface by more than
+  /// options.wrap_warn_distance, naming the place.
+  std::vector<std::string> warnings;
 };
 
 /// Repairs `mesh` (welded already: io/formats/mesh_io.h welds on reading) into a closed,
@@ -67,11 +115,18 @@ struct RepairReport {
 ///  5. holes: each boundary cycle closed by triangulate_refine_and_fair_hole, falling back to
 ///     triangulate_hole and then to a planar cap (a fan from the boundary's centroid); split
 ///     vertices welded again when that leaves a closed manifold (holes that met at a vertex);
-///  6. orientation: orient_to_bound_a_volume;
-///  7. self-intersection check.
+///  6. volume: a closed surface that encloses no volume (a sheet, a single triangle, faces of a
+///     point cloud, capped on themselves) is refused here;
+///  7. self-intersections: crossings within a shell (folds, a patch through the surface) mended
+///     locally (mend_crossings_locally), then shells through each other joined by their union
+///     (unite_crossing_shells);
+///  8. wrap: with options.wrap fallback, when faces still cross, the closed surface of step 5
+///     is replaced by its alpha wrap (alpha_wrap); always: every mesh; never: not at all;
+///  9. orientation: orient_to_bound_a_volume;
+/// 10. self-intersection check.
 /// Throws InvalidInput with one line "repair, step '<step>': <what> [at (x, y, z)]" naming the
 /// step that could not finish and the first place: no triangle left, a hole no method closes,
-/// the surface intersecting itself (the first pair of faces), or no enclosed volume.
+/// no enclosed volume, or the surface intersecting itself (the first pair of faces).
 RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options = {});
 
 /// Splits each edge shared by more than two triangles, and each vertex where separate fans meet,

@@ -1,6 +1,7 @@
 #include "geom/shapes/shape_fraction.h"
 
 #include "geom/errors.h"
+#include "geom/format.h"
 #include "geom/limits.h"
 #include "geom/shapes/block.h"
 #include "geom/shapes/hull.h"
@@ -69,6 +70,18 @@ const std::vector<ParameterInfo>& method_parameters(const std::string& method) {
 }
 
 void validate(const FractionSpec& spec, const std::string& prefix) {
+  if (spec.method == kMeshMethod) {  // files, a scale, and nothing to draw
+    if (!spec.params.empty())
+      throw InvalidInput(prefix + "." + spec.params.begin()->first +
+                         ": unknown parameter for method mesh (known: folder, scale)");
+    if (!(std::isfinite(spec.scale) && spec.scale > 0))
+      throw InvalidInput(prefix + ".scale: must be a positive number, got " +
+                         format_number(spec.scale));
+    if (spec.count != static_cast<int>(spec.files.size()))
+      throw InvalidInput(prefix + ".count: " + std::to_string(spec.count) + " particles but " +
+                         std::to_string(spec.files.size()) + " mesh files");
+    return;
+  }
   const std::vector<ParameterInfo>* table = nullptr;
   try {
     table = &method_parameters(spec.method);
@@ -140,6 +153,10 @@ void validate(const FractionSpec& spec, const std::string& prefix) {
 }
 
 GeneratedShape generate_shape(const FractionSpec& spec, Rng& rng) {
+  if (spec.method == kMeshMethod)
+    throw InvalidInput("fraction " + spec.name +
+                       ": the particles of a mesh fraction are read "
+                       "from their files, not generated");
   GeneratedShape g;
   // Draw every parameter in table order (fixed order => reproducible streams).
   std::map<std::string, double> v;

@@ -17,10 +17,18 @@ namespace clumpkit {
 /// (see method_parameters) and each is a Distribution, so a recipe can fix or randomise any.
 struct FractionSpec {
   std::string name;
-  std::string method;  ///< block | hull | polyhedron | ellipsoid
+  std::string method;  ///< block | hull | polyhedron | ellipsoid | mesh
   int count = 0;
   std::map<std::string, Distribution> params;
+  /// Method "mesh" (kMeshMethod): the mesh files, one particle each in this order (count is their
+  /// number), and the factor from their length unit to the recipe's. Read by the io layer
+  /// (io/pipeline/particle_shape.h), never generated.
+  std::vector<std::string> files;
+  double scale = 1.0;
 };
+
+/// The method of fractions whose particles are mesh files (scans, imported shapes).
+inline const std::string kMeshMethod = "mesh";
 
 /// A parameter a method accepts, with the default used when a recipe omits it.
 struct ParameterInfo {
@@ -48,7 +56,8 @@ struct GeneratedShape {
   int attempts = 1;  ///< draws needed (hull rejection sampling), 1 otherwise
 };
 
-/// Draws the parameters and builds the mesh. For `block`, either L, W, H are given, or W with
+/// Draws the parameters and builds the mesh (InvalidInput for a mesh fraction: its particles
+/// are read, not drawn). For `block`, either L, W, H are given, or W with
 /// L_over_H (Jin et al. 2017 Fig. 2: lognormal) and W_split, where W/H = (L/H)^W_split so that
 /// H ≤ W ≤ L.
 GeneratedShape generate_shape(const FractionSpec& spec, Rng& rng);

@@ -140,6 +140,41 @@ void add_weld_option(CLI::App* command, double& weld_tolerance) {
       ->capture_default_str();
 }
 
+void add_repair_options(CLI::App* command, RepairOptions& options, std::string& wrap) {
+  command
+      ->add_option("--min-component", options.min_component,
+                   "Remove components with fewer triangles than this fraction of the largest "
+                   "one's (fins, loose triangles, debris); 0 keeps all")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  wrap = to_string(options.wrap);
+  command
+      ->add_option("--wrap", wrap,
+                   "When to replace the closed surface by its alpha wrap (CGAL 3D Alpha "
+                   "Wrapping: watertight, manifold, free of crossings by construction): "
+                   "fallback (only when faces still cross after the local mend and the union), "
+                   "always, never (crossings left are refused)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"fallback", "always", "never"}));
+  command
+      ->add_option("--wrap-alpha", options.wrap_alpha,
+                   "The wrap's alpha as a fraction of the bounding-box diagonal: cavities and "
+                   "gaps narrower than about this are bridged")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-6, 1.0));
+  command
+      ->add_option("--wrap-offset", options.wrap_offset,
+                   "How far outside the surface the wrap lies, as a fraction of the bounding-box "
+                   "diagonal (adds about offset x area to the volume)")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-7, 1.0));
+}
+
+RepairOptions repair_options_from(RepairOptions options, const std::string& wrap) {
+  options.wrap = wrap_mode_from_string(wrap, "--wrap");
+  return options;
+}
+
 void note(const std::string& message) {
   std::fprintf(stderr, "clumpkit: note: %s\n", message.c_str());
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "dem/run/stage_store.h"
+#include "geom/mesh/repair.h"
 #include "geom/progress.h"
 #include "io/pipeline/threads.h"
 
@@ -35,6 +36,13 @@ void register_repair(CLI::App& app);
 
 /// The --weld-tolerance option of the commands that read a mesh (MeshReadOptions).
 void add_weld_option(CLI::App* command, double& weld_tolerance);
+
+/// The options of the repair chain (geom/mesh/repair.h), for `repair` and `fill --repair`:
+/// --min-component, --wrap, --wrap-alpha, --wrap-offset. `wrap` receives the text of --wrap;
+/// repair_options_from turns it into the mode after parsing.
+void add_repair_options(CLI::App* command, RepairOptions& options, std::string& wrap);
+/// `options` with the mode of `wrap` ("fallback", "always" or "never").
+RepairOptions repair_options_from(RepairOptions options, const std::string& wrap);
 
 /// The options every job command shares, declared by one call (add_job_options).
 struct JobOptions {

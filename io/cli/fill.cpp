@@ -15,11 +15,12 @@ namespace clumpkit::cli {
 
 void register_fill(CLI::App& app) {
   struct Opts {
-    std::string mesh, out, png, vtp;
+    std::string mesh, out, png, vtp, wrap;
     FillOptions fill;
+    RepairOptions repair;
     int spheres = -1;
     double max_memory_gib = 0;  // 0: half of this machine's memory
-    bool json = false, allow_open = false, check_resolution = false;
+    bool json = false, allow_open = false, check_resolution = false, repair_first = false;
     MeshReadOptions read;
   };
   auto o = std::make_shared<Opts>();
@@ -64,6 +65,12 @@ void register_fill(CLI::App& app) {
               "Accept a mesh that is not watertight: inside/outside by Embree ray-parity voting "
               "(the report says so; volumes are then approximate, and the overshoot is measured "
               "against the voted inside; `clumpkit repair` closes the mesh instead)");
+  c->add_flag("--repair", o->repair_first,
+              "Repair the mesh in memory first, as `clumpkit repair` does (holes closed, "
+              "crossings mended, a wrap as the last resort; --wrap and the other repair options "
+              "below), so a raw scan fills in one command; the report's `repair` says what it "
+              "did");
+  add_repair_options(c, o->repair, o->wrap);
   c->add_option("--png", o->png,
                 "Also write this picture (900 px: front, side, top and oblique views, the spheres "
                 "lit and coloured under the translucent mesh, caps outside it red)");
@@ -89,6 +96,8 @@ void register_fill(CLI::App& app) {
     job.allow_open = o->allow_open;
     job.check_resolution = o->check_resolution;
     job.read = o->read;
+    job.repair = o->repair_first;
+    job.repair_options = repair_options_from(o->repair, o->wrap);
     const FillJobResult r = run_fill_job(job, note, warning);
     const nlohmann::ordered_json& j = r.report;
     const Fidelity& f = r.fidelity;

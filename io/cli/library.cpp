@@ -16,7 +16,9 @@ void register_library(CLI::App& app) {
   struct Opts {
     RecipeJobOptions run;
     double max_memory_gib = 0;  // 0: half of this machine's memory
-    bool png = false, vtp = false;
+    bool png = false, vtp = false, repair = false;
+    RepairOptions repair_options;
+    std::string wrap;
   };
   auto o = std::make_shared<Opts>();
   auto* c = app.add_subcommand(
@@ -36,6 +38,12 @@ void register_library(CLI::App& app) {
   c->add_flag("--vtp", o->vtp,
               "Also write NNNNN.vtp for ParaView: the mesh as polygons, the spheres as vertices "
               "with radius and diameter (Glyph: Sphere, Scale Array diameter, Scale Factor 1)");
+  c->add_flag("--repair", o->repair,
+              "Repair the files of mesh fractions (method = \"mesh\") in memory before their "
+              "fill, as `clumpkit repair` does (holes closed, crossings mended, a wrap as the "
+              "last resort), so a folder of raw scans becomes a library in one command; each "
+              "NNNNN.json's `repair` says what it did");
+  add_repair_options(c, o->repair_options, o->wrap);
   add_max_memory_option(c, o->max_memory_gib,
                         "a particle whose fill is estimated to need more than this many GiB "
                         "divided by the threads");
@@ -48,6 +56,8 @@ void register_library(CLI::App& app) {
     lo.png = o->png;
     lo.vtp = o->vtp;
     lo.max_memory_bytes = max_memory_bytes(o->max_memory_gib);
+    lo.repair = o->repair;
+    lo.repair_options = repair_options_from(o->repair_options, o->wrap);
     const auto r = run_library(recipe, o->run.out, lo, signal_interrupter(bar, "library"));
     bar.finish();
     warn_redone(o->run.out, r.redone);

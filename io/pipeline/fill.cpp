@@ -7,6 +7,7 @@
 #include "io/formats/clump_vtp.h"
 #include "io/formats/mesh_io.h"
 #include "io/pipeline/output_dir.h"
+#include "io/pipeline/repair.h"
 #include "io/reports/views.h"
 
 #include <algorithm>
@@ -126,15 +127,30 @@ FillJobResult run_fill_job(const FillJobOptions& options,
   }
   MeshReadReport report;
   Mesh mesh;
-  try {
-    mesh = read_mesh(options.mesh, &report, options.read);
-  } catch (const InvalidInput& e) {
-    if (!options.allow_open) throw;
-    // Welded as a closed one would be; still throws for unreadable files.
-    mesh = read_mesh_raw(options.mesh, options.read, &report);
-    if (mesh.triangles.empty()) throw;
-    fo.field.vote_sign = true;
-    note(std::string(e.what()) + "; deciding inside/outside by ray-parity voting");
+  nlohmann::ordered_json repaired;
+  if (options.repair) {
+    RepairedMesh m = read_repaired_mesh(options.mesh, options.read, options.repair_options);
+    mesh = std::move(m.mesh);
+    repaired = repair_json(m.repair, m.read, options.repair_options);
+    for (const std::string& w : m.repair.warnings) warn(options.mesh + ": " + w);
+    note(options.mesh + ": repaired (" + std::to_string(m.repair.holes) + " holes closed, " +
+         std::to_string(m.repair.crossings_within + m.repair.crossings_between) +
+         " crossing pairs" +
+         (m.repair.mended_by.empty() ? "" : ", mended by " + m.repair.mended_by) +
+         (m.repair.wrapped ? ", wrapped" : "") + "); volume " +
+         format_number(m.repair.volume_after, 6));
+    validate_solid(mesh, options.mesh, &report);
+  } else {
+    try {
+      mesh = read_mesh(options.mesh, &report, options.read);
+    } catch (const InvalidInput& e) {
+      if (!options.allow_open) throw;
+      // Welded as a closed one would be; still throws for unreadable files.
+      mesh = read_mesh_raw(options.mesh, options.read, &report);
+      if (mesh.triangles.empty()) throw;
+      fo.field.vote_sign = true;
+      note(std::string(e.what()) + "; deciding inside/outside by ray-parity voting");
+    }
   }
   for (const std::string& line : mesh_read_notes(options.mesh, report)) note(line);
   const double t_read = seconds_since(t0);
@@ -192,6 +208,7 @@ FillJobResult run_fill_job(const FillJobOptions& options,
     res["seconds"] = seconds_since(t);
   }
   j["resolution"] = res;
+  if (options.repair) j["repair"] = repaired;
   j["seconds"] = seconds_since(t0);
   nlohmann::ordered_json phases;
   phases["read"] = t_read;  // reading, welding and checking the mesh

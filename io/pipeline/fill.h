@@ -4,6 +4,7 @@
 
 #include "geom/fill/fidelity.h"
 #include "geom/fill/fill.h"
+#include "geom/mesh/repair.h"
 #include "io/formats/mesh_io.h"
 
 #include <nlohmann/json.hpp>
@@ -27,6 +28,10 @@ struct FillJobOptions {
   /// first one.
   bool check_resolution = false;
   MeshReadOptions read;  ///< welding on reading
+  /// Repair the mesh in memory first (io/pipeline/repair.h: the chain of `clumpkit repair`), so a
+  /// raw scan fills in one command; the report's `repair` says what it did.
+  bool repair = false;
+  RepairOptions repair_options;
 };
 
 /// What the fill job did.
@@ -37,7 +42,7 @@ struct FillJobResult {
   /// max_overshoot, refine (sweeps, moves, covered_fraction and overshoot_fraction before and
   /// after), resolution (voxel, smallest_sphere_voxels; with check_resolution the finer voxel, its
   /// covered_fraction and the change), seconds, seconds_by_phase (read, index, field, fill,
-  /// fidelity), triangles.
+  /// fidelity), triangles; with FillJobOptions::repair also `repair` (repair_json).
   nlohmann::ordered_json report;
 };
 

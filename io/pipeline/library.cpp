@@ -5,7 +5,6 @@
 #include "geom/fill/fidelity.h"
 #include "geom/fill/fill.h"
 #include "geom/format.h"
-#include "geom/mesh/refine.h"
 #include "geom/template/clump_template.h"
 #include "io/base/atomic_file.h"
 #include "io/base/json_file.h"
@@ -18,6 +17,7 @@
 #include "io/pipeline/manifest.h"
 #include "io/pipeline/output_dir.h"
 #include "io/pipeline/particle_runner.h"
+#include "io/pipeline/particle_shape.h"
 #include "io/reports/views.h"
 
 #include <tbb/parallel_for.h>
@@ -33,6 +33,11 @@ namespace fs = std::filesystem;
 namespace clumpkit {
 
 namespace {
+
+// The repair of mesh fractions' files, when asked for.
+const RepairOptions* repair_of(const LibraryOptions& options) {
+  return options.repair ? &options.repair_options : nullptr;
+}
 
 // The memory one fill may use: the budget shared by the fills running at once.
 double fill_memory_share(const LibraryOptions& options) {
@@ -51,9 +56,8 @@ void check_fill_memory(const ShapeRecipe& recipe, const std::vector<int>& fracti
   for (std::size_t i = 0; i < fraction_of.size(); ++i) {
     if (seen[fraction_of[i]]) continue;
     seen[fraction_of[i]] = 1;
-    Rng rng = Rng::stream(recipe.seed, i);
-    GeneratedShape shape = generate_shape(recipe.fractions[fraction_of[i]], rng);
-    if (recipe.refine_triangles > 0) shape.mesh = refine(shape.mesh, recipe.refine_triangles);
+    const GeneratedShape shape =
+        particle_shape(recipe, i, fraction_of[i], repair_of(options)).shape;
     const double need =
         fill_bytes_estimate(shape.mesh, fill_field_options(shape.mesh, recipe.fill));
     if (!(need <= share))
@@ -103,10 +107,9 @@ void write_pictures(const fs::path& out, const std::vector<nlohmann::ordered_jso
 // One particle, start to finish; returns its record (also written as NNNNN.json).
 nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, int fraction,
                                      const fs::path& dir, const LibraryOptions& options) {
-  Rng rng = Rng::stream(recipe.seed, i);
   const FractionSpec& spec = recipe.fractions[fraction];
-  GeneratedShape shape = generate_shape(spec, rng);
-  if (recipe.refine_triangles > 0) shape.mesh = refine(shape.mesh, recipe.refine_triangles);
+  const ParticleShape particle = particle_shape(recipe, i, fraction, repair_of(options));
+  const GeneratedShape& shape = particle.shape;
   const Descriptors desc = describe(shape.mesh);
   FillOptions fill_options = recipe.fill;
   fill_options.field.max_bytes = fill_memory_share(options);
@@ -115,7 +118,8 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
   if (!(fill_options.field.voxel_size > 0.0) && !fill_options.field.vote_sign)
     fill_options.field.voxel_size = desc.axes(0) / fill_options.field.voxels;
   validate(fill_options);
-  // One search tree serves the field, the fill and the fidelity (generated meshes are closed).
+  // One search tree serves the field, the fill and the fidelity (every mesh here is closed:
+  // generated, or read as a solid).
   const MeshIndex index(shape.mesh);
   const FillResult filled =
       fill(index, make_distance_field(index, fill_field_options(shape.mesh, fill_options)),
@@ -149,6 +153,8 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
   rec["id"] = i;
   rec["fraction"] = spec.name;
   rec["method"] = spec.method;
+  if (!particle.source.empty()) rec["source"] = particle.source;
+  if (!particle.repair.is_null()) rec["repair"] = particle.repair;
   rec["attempts"] = shape.attempts;
   auto& params = rec["parameters"] = nlohmann::ordered_json::object();
   for (const auto& [name, v] : shape.sampled) params[name] = v;

@@ -1,6 +1,7 @@
 // Clump libraries: shapes + sphere fill + fidelity for every particle of a recipe, resumable.
 #pragma once
 
+#include "geom/mesh/repair.h"
 #include "io/pipeline/shapes.h"
 #include "io/recipes/recipe.h"
 
@@ -17,6 +18,11 @@ struct LibraryOptions {
   /// this divided by the worker threads, and one whose estimate exceeds its share is refused
   /// before allocating (the finished particles stay for a resume).
   double max_memory_bytes = 0;
+  /// Repair the files of mesh fractions in memory before their fill (io/pipeline/repair.h), so a
+  /// folder of raw scans becomes a library in one command; each record's `repair` says what it
+  /// did.
+  bool repair = false;
+  RepairOptions repair_options;
 };
 
 struct LibraryResult {

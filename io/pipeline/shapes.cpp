@@ -3,7 +3,6 @@
 #include "geom/descriptors/descriptors.h"
 #include "geom/errors.h"
 #include "geom/format.h"
-#include "geom/mesh/refine.h"
 #include "io/base/atomic_file.h"
 #include "io/base/text.h"
 #include "io/formats/descriptor_table.h"
@@ -11,6 +10,7 @@
 #include "io/pipeline/manifest.h"
 #include "io/pipeline/output_dir.h"
 #include "io/pipeline/particle_runner.h"
+#include "io/pipeline/particle_shape.h"
 
 #include <tbb/parallel_for.h>
 #include <nlohmann/json.hpp>
@@ -47,10 +47,7 @@ ShapeBatchResult run_shape_batch(const ShapeRecipe& recipe, const std::string& o
   for_each_particle(
       recipe, particle_fractions(recipe), {}, 0,
       [&](std::size_t i) {
-        Rng rng = Rng::stream(recipe.seed, i);
-        items[i].shape = generate_shape(recipe.fractions[items[i].fraction], rng);
-        if (recipe.refine_triangles > 0)
-          items[i].shape.mesh = refine(items[i].shape.mesh, recipe.refine_triangles);
+        items[i].shape = particle_shape(recipe, i, items[i].fraction).shape;
         items[i].desc = describe(items[i].shape.mesh);
       },
       "shapes", interrupter);

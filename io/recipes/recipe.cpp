@@ -6,7 +6,10 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -19,8 +22,31 @@ std::string show(const toml::node& n) {
 }
 
 struct Parser : TomlFields {
+  // The .stl, .obj and .ply files of `folder` (relative to the recipe's folder), by name.
+  std::vector<std::string> mesh_files(const std::string& folder, const std::string& field) const {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(folder).is_absolute()
+                             ? fs::path(folder)
+                             : fs::path(file).parent_path() / fs::path(folder);
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) fail(field, "no such folder: " + dir.string());
+    std::vector<std::string> files;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+      std::string ext = entry.path().extension().string();
+      for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (entry.is_regular_file() && (ext == ".stl" || ext == ".obj" || ext == ".ply"))
+        files.push_back(entry.path().string());
+    }
+    if (ec) fail(field, "cannot list " + dir.string() + ": " + ec.message());
+    if (files.empty()) fail(field, "no .stl, .obj or .ply file in " + dir.string());
+    std::sort(files.begin(), files.end());
+    return files;
+  }
+
   FractionSpec fraction(const toml::table& t, const std::string& prefix) const {
     FractionSpec f;
+    std::string folder;
+    bool scaled = false;
     for (const auto& [key, val] : t) {
       const std::string k(key.str());
       const std::string field = prefix + "." + k;
@@ -36,6 +62,11 @@ struct Parser : TomlFields {
         if (i->get() < 0 || i->get() > 10000000)
           fail(field, "must be in [0, 10000000], got " + show(val));
         f.count = static_cast<int>(i->get());
+      } else if (k == "folder") {
+        folder = string(val, field);
+      } else if (k == "scale") {
+        f.scale = positive(val, field);
+        scaled = true;
       } else if (k == "roundness") {
         const auto [lo, hi] = pair(val, field);
         f.params["roundness_min"] = constant(lo);
@@ -46,8 +77,16 @@ struct Parser : TomlFields {
       }
     }
     if (f.method.empty())
-      fail(prefix + ".method", "missing (one of block, hull, polyhedron, ellipsoid)");
-    if (!t.contains("count")) fail(prefix + ".count", "missing");
+      fail(prefix + ".method", "missing (one of block, hull, polyhedron, ellipsoid, mesh)");
+    if (f.method == kMeshMethod) {
+      if (folder.empty()) fail(prefix + ".folder", "missing (the folder of the mesh files)");
+      f.files = mesh_files(folder, prefix + ".folder");
+      if (!t.contains("count")) f.count = static_cast<int>(f.files.size());
+    } else {
+      if (!folder.empty()) fail(prefix + ".folder", "only for method mesh");
+      if (scaled) fail(prefix + ".scale", "only for method mesh");
+    }
+    if (!t.contains("count") && f.method != kMeshMethod) fail(prefix + ".count", "missing");
     if (f.name.empty()) f.name = f.method;
     try {
       validate(f, prefix);

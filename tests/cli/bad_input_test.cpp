@@ -107,22 +107,24 @@ struct Inputs {
           "v 0.3 0.3 0.3\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
           "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 4 8 7\nf 4 7 3\nf 1 5 8\n"
           "f 1 8 4\nf 2 3 7\nf 2 7 6\n");
-    // Two closed unit cubes through each other: `repair` closes nothing and its final check
-    // finds the surface crossing itself.
+    // A closed unit cube and a half-size cube facing inward (a void) through its corner: neither
+    // the local mend (no shell crosses itself) nor the union (a void is no operand) mends it, so
+    // `repair --wrap never` refuses it at its final check.
     std::string crossing;
-    for (const char* shift : {"0", "0.5"}) {
-      const double o = std::stod(shift);
+    for (const auto& [o, size] : {std::pair<double, double>{0, 1}, {0.75, 0.5}})
       for (int v = 0; v < 8; ++v)
-        crossing += "v " + std::to_string((v & 1) + o) + " " + std::to_string(((v >> 1) & 1) + o) +
-                    " " + std::to_string(((v >> 2) & 1) + o) + "\n";
-    }
+        crossing += "v " + std::to_string((v & 1) * size + o) + " " +
+                    std::to_string(((v >> 1) & 1) * size + o) + " " +
+                    std::to_string(((v >> 2) & 1) * size + o) + "\n";
     for (int base : {0, 8}) {
       const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
                                {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-      for (const auto& q : quads)
-        crossing += "f " + std::to_string(base + q[0] + 1) + " " + std::to_string(base + q[1] + 1) +
-                    " " + std::to_string(base + q[2] + 1) + " " + std::to_string(base + q[3] + 1) +
+      for (const auto& q : quads) {
+        const int a = base == 0 ? q[1] : q[3], c = base == 0 ? q[3] : q[1];  // the void reversed
+        crossing += "f " + std::to_string(base + q[0] + 1) + " " + std::to_string(base + a + 1) +
+                    " " + std::to_string(base + q[2] + 1) + " " + std::to_string(base + c + 1) +
                     "\n";
+      }
     }
     write(d / "crossing.obj", crossing);
     write(d / "parent_file", "a file, not a directory\n");
@@ -148,8 +150,13 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
   for (const char* f : {"missing.stl", "a_dir", "empty.stl", "garbage.obj", "trunc_be.ply",
                         "long_list.ply", "nan.obj", "twice.obj", "short_line.ply"})
     cases.push_back({"repair " + in(f) + " -o " + mesh_out, f, mesh_out});
-  cases.push_back({"repair " + in("crossing.obj") + " -o " + mesh_out,
+  cases.push_back({"repair " + in("crossing.obj") + " -o " + mesh_out + " --wrap never",
                    "step 'self-intersection check'", mesh_out});
+  cases.push_back({"repair " + in("flat.obj") + " -o " + mesh_out, "encloses no volume", mesh_out});
+  cases.push_back(
+      {"repair " + in("box.stl") + " -o " + mesh_out + " --wrap sometimes", "--wrap", mesh_out});
+  cases.push_back(
+      {"fill " + in("flat.obj") + " --repair -o " + csv_out, "encloses no volume", csv_out});
   cases.push_back({"repair " + in("box.stl") + " -o " + in("box.stl"), "would be overwritten", ""});
   cases.push_back({"repair " + in("box.stl") + " -o " + in("out.off"), "out.off", in("out.off")});
   cases.push_back({"describe " + in("box.stl") + " --weld-tolerance -1", "-1", ""});

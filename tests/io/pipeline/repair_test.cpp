@@ -5,8 +5,11 @@
 
 #include "geom/errors.h"
 #include "geom/shapes/primitives.h"
+#include "io/base/json_file.h"
 #include "io/formats/mesh_io.h"
 #include "io/pipeline/fill.h"
+#include "io/pipeline/library.h"
+#include "io/recipes/recipe.h"
 
 #include <gtest/gtest.h>
 
@@ -177,21 +180,119 @@ TEST(RepairJob, AClosedMeshIsKeptAndWhatCannotBeRepairedIsRefusedWithNothingWrit
   const RepairJobResult r = run_repair_job((d / "ball.obj").string(), (d / "out.obj").string());
   EXPECT_EQ(r.repair.holes, 0);
   EXPECT_NEAR(r.repair.volume_after, r.repair.volume_before, 1e-12);
-  // Two spheres through each other: closed, but the surface crosses itself.
+  // Two spheres through each other: closed, the surface crossing itself, mended by their union
+  // and reported so.
   Mesh two = make_icosphere(2);
   Mesh other = make_icosphere(2);
   transform(other, Mat3::Identity(), Vec3(0.5, 0, 0));
   append_mesh(two, other);
   write_mesh((d / "two.ply").string(), two);
+  const RepairJobResult u = run_repair_job((d / "two.ply").string(), (d / "two-out.ply").string());
+  EXPECT_EQ(u.report["mended_by"], "union");
+  EXPECT_EQ(u.report["self_intersections"]["united_shells"], 1);
+  EXPECT_GT(u.report["self_intersections"]["crossings_between_shells"].get<int>(), 0);
+  EXPECT_EQ(u.report["wrap"]["applied"], false);
+  EXPECT_TRUE(u.report["changed"].get<bool>());
+  EXPECT_LT(u.report["distance"]["max_fraction"].get<double>(), 0.01);
+  EXPECT_LT(u.repair.volume_after, u.repair.volume_capped);
+  // A flat sheet encloses nothing: refused with one line naming the file, nothing written.
+  Mesh sheet;
+  sheet.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+  sheet.triangles = {{0, 1, 2}, {0, 2, 3}};
+  write_mesh((d / "sheet.obj").string(), sheet);
   try {
-    run_repair_job((d / "two.ply").string(), (d / "two-out.ply").string());
-    FAIL() << "a self-intersecting result was written";
+    run_repair_job((d / "sheet.obj").string(), (d / "sheet-out.obj").string());
+    FAIL() << "a sheet was repaired";
   } catch (const InvalidInput& e) {
     const std::string m = e.what();
-    EXPECT_NE(m.find((d / "two.ply").string()), std::string::npos) << m;
-    EXPECT_NE(m.find("intersects itself"), std::string::npos) << m;
+    EXPECT_NE(m.find((d / "sheet.obj").string()), std::string::npos) << m;
+    EXPECT_NE(m.find("encloses no volume"), std::string::npos) << m;
   }
-  EXPECT_FALSE(fs::exists(d / "two-out.ply"));
+  EXPECT_FALSE(fs::exists(d / "sheet-out.obj"));
   EXPECT_THROW(run_repair_job((d / "ball.obj").string(), (d / "ball.obj").string()), InvalidInput);
   EXPECT_THROW(run_repair_job((d / "ball.obj").string(), (d / "out.off").string()), InvalidInput);
+}
+
+TEST(RepairJob, FillWithRepairFillsARawScanInOneCommandAndRecordsTheRepair) {
+  const fs::path d = scratch("fill");
+  write_mesh((d / "holed.ply").string(), holed_sphere());
+  FillJobOptions fill = fill_options(d / "holed.ply", d / "clump.csv", 5);
+  // Without --repair the open mesh is refused; with it, it is closed, filled and reported.
+  EXPECT_THROW(run_fill_job(
+                   fill, [](const std::string&) {}, [](const std::string&) {}),
+               InvalidInput);
+  fill.repair = true;
+  std::vector<std::string> notes;
+  const FillJobResult f = run_fill_job(
+      fill, [&](const std::string& n) { notes.push_back(n); }, [](const std::string&) {});
+  ASSERT_TRUE(f.report.contains("repair"));
+  EXPECT_EQ(f.report["repair"]["holes"], 3);
+  EXPECT_EQ(f.report["repair"]["boundary_edges_after"], 0);
+  EXPECT_EQ(f.report["inside_outside"], "ray parity along the grid rows (watertight mesh)");
+  EXPECT_LE(f.fidelity.overshoot_fraction, fill.fill.max_overshoot);
+  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) {
+    return n.find("repaired") != std::string::npos;
+  }));
+  EXPECT_TRUE(fs::exists(d / "clump.csv"));
+}
+
+TEST(RepairJob, LibraryWithRepairMakesALibraryOfAFolderOfRawScans) {
+  const fs::path d = scratch("library");
+  fs::create_directories(d / "scans");
+  // A holed sphere of radius 10 (mm) and a closed box of 20 × 10 × 10 mm: the raw scans.
+  Mesh ball = holed_sphere();
+  for (Vec3& v : ball.vertices) v *= 10.0;
+  write_mesh((d / "scans" / "a-ball.ply").string(), ball);
+  write_mesh((d / "scans" / "b-box.obj").string(), make_box(Vec3(20, 10, 10)));
+  const std::string text =
+      "seed = 3\n[[fraction]]\nname = \"scans\"\nmethod = \"mesh\"\nfolder = \"scans\"\n"
+      "scale = 0.001\n[fill]\nspheres = 5\n";
+  const ShapeRecipe recipe = parse_shape_recipe(text, (d / "scans.toml").string());
+  ASSERT_EQ(recipe.fractions.size(), 1u);
+  EXPECT_EQ(recipe.fractions[0].count, 2);
+  // Without --repair the open scan is refused, naming it, and nothing is published.
+  try {
+    run_library(recipe, (d / "plain").string(), {});
+    FAIL() << "an open scan went into a library";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("a-ball.ply"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(d / "plain"));
+  LibraryOptions options;
+  options.repair = true;
+  const LibraryResult r = run_library(recipe, (d / "lib").string(), options);
+  EXPECT_EQ(r.particles, 2u);
+  nlohmann::ordered_json ball_rec, box_rec;
+  ASSERT_TRUE(read_sealed_record((d / "lib" / "particles" / "00000.json").string(), ball_rec));
+  ASSERT_TRUE(read_sealed_record((d / "lib" / "particles" / "00001.json").string(), box_rec));
+  EXPECT_EQ(ball_rec["method"], "mesh");
+  EXPECT_NE(ball_rec["source"].get<std::string>().find("a-ball.ply"), std::string::npos);
+  EXPECT_EQ(ball_rec["repair"]["holes"], 3);
+  EXPECT_EQ(box_rec["repair"]["holes"], 0);
+  // Scaled to metres: the ball's volume within 1 % of the closed sphere's, the box's exact.
+  const double ball_volume = signed_volume(make_icosphere(3)) * 1e-6;
+  EXPECT_NEAR(ball_rec["descriptors"]["volume"].get<double>() / ball_volume, 1.0, 0.01);
+  EXPECT_NEAR(box_rec["descriptors"]["volume"].get<double>(), 2e-6, 1e-15);
+  // A recipe's mesh fraction errors name the field.
+  const auto error_of = [&](const std::string& t) {
+    try {
+      parse_shape_recipe(t, (d / "scans.toml").string());
+    } catch (const InvalidInput& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error_of("[[fraction]]\nmethod = \"mesh\"\n").find("fraction[0].folder: missing"),
+            std::string::npos);
+  EXPECT_NE(error_of("[[fraction]]\nmethod = \"mesh\"\nfolder = \"none\"\n").find("no such folder"),
+            std::string::npos);
+  EXPECT_NE(error_of("[[fraction]]\nmethod = \"mesh\"\nfolder = \"scans\"\ncount = 3\n")
+                .find("fraction[0].count: 3 particles but 2 mesh files"),
+            std::string::npos);
+  EXPECT_NE(error_of("[[fraction]]\nmethod = \"mesh\"\nfolder = \"scans\"\nscale = -1\n")
+                .find("fraction[0].scale"),
+            std::string::npos);
+  EXPECT_NE(error_of("[[fraction]]\nmethod = \"block\"\ncount = 1\nW = 0.02\nscale = 2\n")
+                .find("fraction[0].scale: only for method mesh"),
+            std::string::npos);
 }
