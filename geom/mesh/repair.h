@@ -40,6 +40,10 @@ struct RepairOptions {
   /// remove_self_intersections; the mend stops earlier when a round does not shrink the
   /// crossings).
   int local_rounds = 4;
+  /// The local mend is skipped (the union and the wrap take the crossings) when more pairs of
+  /// faces cross within shells than this fraction of the triangles (at least 32): a soup rather
+  /// than a scan's folds.
+  double local_limit = 0.02;
   /// A wrap whose sampled distance to the input exceeds this fraction of the diagonal is
   /// reported in RepairReport::warnings with the place.
   double wrap_warn_distance = 0.02;
@@ -80,6 +84,9 @@ struct RepairReport {
   int crossings_within = 0, crossings_between = 0;  ///< pairs of faces crossing (crossings.h)
   std::vector<CrossingRound> local_rounds;          ///< the local mend, round by round
   int united_shells = 0;                            ///< shells joined into another by their union
+  /// Triangles of (nearly) zero area collapsed away after the mends (the input's own, or the
+  /// needles and caps a mend leaves).
+  int slivers = 0;
   // wrap
   bool wrapped = false;
   double wrap_alpha = 0, wrap_offset = 0;  ///< used, in the mesh's units
@@ -87,8 +94,9 @@ struct RepairReport {
   /// What mended the crossings: "" (none to mend), "local", "union", "local and union" or "wrap".
   std::string mended_by;
   /// Whenever the surface was changed beyond welding and hole closing (a mend or a wrap): the
-  /// sampled one-sided distance from the result to the input, as fractions of the bounding-box
-  /// diagonal, and the place of the largest.
+  /// sampled one-sided distance from the result to the closed surface before the mends (the
+  /// input with its holes closed), as fractions of the bounding-box diagonal, and the place of
+  /// the largest.
   bool changed = false;
   double distance_max = 0, distance_mean = 0;
   Vec3 distance_max_at = Vec3::Zero();
@@ -120,13 +128,18 @@ struct RepairReport {
 ///  7. self-intersections: crossings within a shell (folds, a patch through the surface) mended
 ///     locally (mend_crossings_locally), then shells through each other joined by their union
 ///     (unite_crossing_shells);
-///  8. wrap: with options.wrap fallback, when faces still cross, the closed surface of step 5
-///     is replaced by its alpha wrap (alpha_wrap); always: every mesh; never: not at all;
+///     then triangles of (nearly) zero area collapsed (CGAL remove_degenerate_faces and
+///     experimental::remove_almost_degenerate_faces);
+///  8. wrap: with options.wrap fallback, when faces still cross, a sliver stays, or the surface
+///     touches itself so that it would not read back as a solid once written (its equal
+///     positions joined), the closed surface of step 5 is replaced by its alpha wrap
+///     (alpha_wrap); always: every mesh; never: not at all;
 ///  9. orientation: orient_to_bound_a_volume;
 /// 10. self-intersection check.
 /// Throws InvalidInput with one line "repair, step '<step>': <what> [at (x, y, z)]" naming the
 /// step that could not finish and the first place: no triangle left, a hole no method closes,
-/// no enclosed volume, or the surface intersecting itself (the first pair of faces).
+/// no enclosed volume, the surface intersecting itself (the first pair of faces) or touching
+/// itself, or a triangle of (nearly) zero area.
 RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options = {});
 
 /// Splits each edge shared by more than two triangles, and each vertex where separate fans meet,

@@ -5,6 +5,7 @@
 #include "io/pipeline/output_dir.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 namespace clumpkit {
@@ -71,6 +72,7 @@ nlohmann::ordered_json repair_json(const RepairReport& p, const MeshReadReport& 
         {{"shell", c.shell}, {"pairs_before", c.pairs_before}, {"pairs_after", c.pairs_after}});
   si["local_rounds"] = rounds;
   si["united_shells"] = p.united_shells;
+  si["slivers"] = p.slivers;
   j["self_intersections"] = si;
   nlohmann::ordered_json w;
   w["mode"] = to_string(options.wrap);
@@ -121,18 +123,19 @@ std::vector<std::string> repair_lines(const RepairReport& p, const MeshReadRepor
   for (const CrossingRound& c : p.local_rounds)
     add("  local round on shell %d: %d -> %d pairs", c.shell, c.pairs_before, c.pairs_after);
   if (p.united_shells > 0) add("  union: %d shells joined into another", p.united_shells);
+  if (p.slivers > 0) add("  slivers: %d triangles of (nearly) zero area collapsed", p.slivers);
   if (p.wrapped)
-    add("wrap: alpha %s, offset %s, %.2f s%s", format_number(p.wrap_alpha, 4).c_str(),
-        format_number(p.wrap_offset, 4).c_str(), p.wrap_seconds,
-        p.mended_by == "wrap" ? " (what the local mend and the union left)" : "");
+    add("wrap: alpha %s, offset %s, %.2f s", format_number(p.wrap_alpha, 4).c_str(),
+        format_number(p.wrap_offset, 4).c_str(), p.wrap_seconds);
   else
     add("wrap: not needed");
   if (!p.mended_by.empty()) add("mended by: %s", p.mended_by.c_str());
   if (p.changed)
     add("changed beyond welding and hole closing: volume %s -> %s (%+.3f %%), distance to the "
-        "input max %.3g %% (at %s), mean %.3g %% of the diagonal %s",
-        format_number(p.volume_capped, 6).c_str(), format_number(p.volume_after, 6).c_str(),
-        100.0 * (p.volume_after / p.volume_capped - 1.0), 100.0 * p.distance_max,
+        "closed input max %.3g %% (at %s), mean %.3g %% of the diagonal %s",
+        format_number(std::abs(p.volume_capped), 6).c_str(),
+        format_number(p.volume_after, 6).c_str(),
+        100.0 * (p.volume_after / std::abs(p.volume_capped) - 1.0), 100.0 * p.distance_max,
         point_text(p.distance_max_at).c_str(), 100.0 * p.distance_mean,
         format_number(p.diagonal, 6).c_str());
   add("orientation: %s", p.reoriented ? "re-oriented" : "kept");

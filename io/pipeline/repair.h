@@ -30,8 +30,8 @@ RepairedMesh read_repaired_mesh(const std::string& path, const MeshReadOptions& 
 /// small_components, small_component_triangles, holes (count) and closed_holes (edges, method,
 /// at), then self_intersections (volume_capped, crossings_within_shells,
 /// crossings_between_shells, rounds of the local mend: shell, pairs_before, pairs_after;
-/// united_shells), wrap (mode, applied, alpha, offset in mesh units and as fractions of the
-/// diagonal, seconds), mended_by, changed, diagonal, and, when changed, distance (max and mean
+/// united_shells, slivers), wrap (mode, applied, alpha, offset in mesh units and as fractions of
+/// the diagonal, seconds), mended_by, changed, diagonal, and, when changed, distance (max and mean
 /// as fractions of the diagonal, max_at), warnings; reoriented.
 nlohmann::ordered_json repair_json(const RepairReport& repair, const MeshReadReport& read,
                                    const RepairOptions& options);

@@ -144,10 +144,12 @@ def main():
     print("|---|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         if r["repair_code"] == 0:
-            change = (r["volume_after"] / r["volume_capped"] - 1) * 100 if r["volume_capped"] else 0
+            # The capped surface may face inward (orientation comes after): its size counts.
+            capped = abs(r["volume_capped"])
+            change = (r["volume_after"] / capped - 1) * 100 if capped else 0
             dist = f"{100 * r['distance']:.3f} %" if r["distance"] is not None else "-"
             print(f"| {r['name']} | {'solid' if r['raw_ok'] else 'refused'} | {r['steps']} | "
-                  f"{r['triangles_out']} | {r['crossings']} | {r['volume_capped']:.4g} -> "
+                  f"{r['triangles_out']} | {r['crossings']} | {abs(r['volume_capped']):.4g} -> "
                   f"{r['volume_after']:.4g} ({change:+.2f} %) | {dist} | {r['seconds']:.2f} | "
                   f"{r['peak']:.0f} | {'yes' if r['describe'] else 'NO'}, "
                   f"{'yes' if r['fill'] else 'NO'} |")

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <string>
 #include <vector>
@@ -165,6 +166,7 @@ TEST(MeshRepair, TwoSpheresThroughEachOtherBecomeTheirUnion) {
   EXPECT_NEAR(r.volume_capped / (2.0 * sphere), 1.0, 1e-9);  // counted twice before
   EXPECT_NEAR(volume_of(m) / exact, 1.0, 0.01);
   EXPECT_NEAR(r.volume_after, volume_of(m), 1e-12);
+  std::printf("two spheres through each other: union/exact %.6f\n", volume_of(m) / exact);
   // Wrapped instead (the union's fallback), the result still holds the union within 1 %.
   Mesh wrapped = make_icosphere(5);
   append_mesh(wrapped, other);
@@ -175,6 +177,8 @@ TEST(MeshRepair, TwoSpheresThroughEachOtherBecomeTheirUnion) {
   EXPECT_EQ(w.united_shells, 0);
   EXPECT_TRUE(check_mesh(wrapped).closed && check_mesh(wrapped).manifold);
   EXPECT_NEAR(volume_of(wrapped) / exact, 1.0, 0.01);
+  std::printf("two spheres through each other: wrap/exact %.6f, %zu triangles\n",
+              volume_of(wrapped) / exact, wrapped.triangles.size());
   EXPECT_GT(volume_of(wrapped), volume_of(m));  // the wrap lies outside, by the offset
 }
 
@@ -220,6 +224,11 @@ TEST(MeshRepair, AScannedSphereWithFoldsHolesAndDoubleWallsClosesNearItsVolume) 
   const MeshCheck c = check_mesh(m);
   EXPECT_TRUE(c.closed && c.manifold && c.oriented);
   EXPECT_NEAR(volume_of(m) / volume_of(sphere), 1.0, 0.02);
+  std::printf(
+      "scanned sphere: %d folds, %d holes, %d crossing pairs, mended by %s, volume/sphere "
+      "%.6f\n",
+      static_cast<int>(folded.size()), r.holes, r.crossings_within, r.mended_by.c_str(),
+      volume_of(m) / volume_of(sphere));
 }
 
 // Acceptance 1(c): two cubes sharing an edge (split) and a box whose face is pushed through one
@@ -301,6 +310,14 @@ TEST(MeshRepair, AlwaysWrappingGivesAClosedManifoldSurfaceWithoutCrossingsNearTh
               0.5 * offset * surface_area(sphere));
   EXPECT_LT(r.distance_max * r.diagonal, 3.0 * offset);
   EXPECT_GT(r.distance_mean * r.diagonal, 0.5 * offset);
+  // Within the bound no warning; past a bound below the offset, one naming the place.
+  EXPECT_TRUE(r.warnings.empty());
+  Mesh again = sphere;
+  o.wrap_warn_distance = 0.5 * o.wrap_offset;
+  const RepairReport w = repair_mesh(again, o);
+  ASSERT_EQ(w.warnings.size(), 1u);
+  EXPECT_NE(w.warnings[0].find("the wrap moved the surface"), std::string::npos) << w.warnings[0];
+  EXPECT_NE(w.warnings[0].find(" at ("), std::string::npos) << w.warnings[0];
 }
 
 TEST(MeshRepair, BadWrapOptionsAreRefusedNamingTheOption) {
@@ -340,6 +357,12 @@ TEST(MeshRepair, HolesMeetingAtAVertexAreClosed) {
   EXPECT_GE(r.holes, 1);
   EXPECT_EQ(r.boundary_edges_after, 0);
   EXPECT_NEAR(volume_of(m) / volume_of(sphere), 1.0, 0.01);
+  // What is written reads back as a solid: its equal positions joined, a closed manifold. (The
+  // patch through both copies of the vertex once left an edge of three triangles there, which
+  // every reader refused; such a surface now goes to the wrap.)
+  Mesh welded = m;
+  weld_vertices(welded, 1e-9);
+  EXPECT_TRUE(check_mesh(welded).closed && check_mesh(welded).manifold);
 }
 
 TEST(MeshRepair, FloatingDebrisIsRemovedAndEachClosedHoleIsReported) {
