@@ -167,6 +167,9 @@ void check_wrap_options(const RepairOptions& o) {
   };
   fraction(o.wrap_alpha, "wrap_alpha");
   fraction(o.wrap_offset, "wrap_offset");
+  if (!(o.local_limit >= 0 && o.local_limit <= 1))
+    throw InvalidInput("repair: local_limit must lie in [0, 1], got " +
+                       format_number(o.local_limit));
   if (o.local_rounds < 0)
     throw InvalidInput("repair: local_rounds must be at least 0, got " +
                        std::to_string(o.local_rounds));
@@ -187,8 +190,6 @@ void collapse_slivers(Mesh& mesh) {
   mesh = cgal_surface::from_surface_mesh(sm);
 }
 
-// Steps 7 and 8 on the closed surface of step 5: crossings mended in place (locally within a
-// shell, then shells through each other by union), else the surface wrapped.
 // Whether the closed surface reads back as a solid once written: its coincident vertices joined
 // (as a reader welds them, at the STL reader's 1e-9 of the diagonal), it is a closed manifold,
 // or closed lobes that only touch along an edge or at a vertex. A shell pinched onto itself, a
@@ -242,7 +243,10 @@ void mend_crossings(Mesh& mesh, const RepairOptions& o, RepairReport& r) {
   }
   const bool sound = now.total() == 0 && !check_mesh(mesh).degenerate && reads_back(mesh);
   if (sound && found.total() > 0)
-    r.mended_by = local && r.united_shells > 0 ? "local and union" : local ? "local" : "union";
+    r.mended_by = local && r.united_shells > 0 ? "local and union"
+                  : local                      ? "local"
+                  : r.united_shells > 0        ? "union"
+                                               : "slivers";
   if (o.wrap == WrapMode::always || (o.wrap == WrapMode::fallback && !sound)) {
     const auto t0 = std::chrono::steady_clock::now();
     r.wrap_alpha = o.wrap_alpha * r.diagonal;

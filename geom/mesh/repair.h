@@ -91,7 +91,8 @@ struct RepairReport {
   bool wrapped = false;
   double wrap_alpha = 0, wrap_offset = 0;  ///< used, in the mesh's units
   double wrap_seconds = 0;
-  /// What mended the crossings: "" (none to mend), "local", "union", "local and union" or "wrap".
+  /// What mended the crossings: "" (none to mend), "local", "union", "local and union",
+  /// "slivers" (their collapse) or "wrap".
   std::string mended_by;
   /// Whenever the surface was changed beyond welding and hole closing (a mend or a wrap): the
   /// sampled one-sided distance from the result to the closed surface before the mends (the

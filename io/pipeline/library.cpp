@@ -169,6 +169,10 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
   for (std::size_t k = 0; k < library_fidelity_columns().size(); ++k)
     f[library_fidelity_columns()[k]] = fv[k];
   f["clump_volume_method"] = fid.clump_volume_method;
+  f["voxel"] = filled.voxel;
+  f["stopped_by"] = filled.stopped_by;
+  // `f` is no reference into `rec` past this point: an ordered_json keeps its members in a
+  // vector, which the next member may move.
   auto& t = rec["template"] = nlohmann::ordered_json::object();
   t["volume"] = tpl.mass.volume;
   t["centroid"] = {tpl.position.x(), tpl.position.y(), tpl.position.z()};
@@ -178,8 +182,6 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
                            tpl.orientation.z()};
   t["density_factor"] = tpl.density_factor;
   t["spheres_file"] = "particles/" + stem + ".template.csv";
-  f["voxel"] = filled.voxel;
-  f["stopped_by"] = filled.stopped_by;
   write_sealed_record((dir / (stem + ".json")).string(), rec);
   return rec;
 }
