@@ -7,7 +7,9 @@ defect and is listed last.
 
     tests/bench/repair_corpus.py FOLDER [--bin build/io/clumpkit] [--out /tmp/repair-corpus]
 
-Prints a Markdown table (one row per mesh) for tests/bench/RESULTS.md. Single-threaded
+The corpus of RESULTS.md (issue 78) is not in the repository: tests/bench/repair_corpus_sources.csv
+names each file's public repository, commit and path (OFF files were converted to OBJ as
+triangle fans). Prints a Markdown table (one row per mesh) for tests/bench/RESULTS.md. Single-threaded
 (`taskset -c 0` when available) so that the seconds compare with the acceptance's one-core bound.
 """
 import argparse
