@@ -217,7 +217,7 @@ void mend_crossings(Mesh& mesh, const RepairOptions& o, RepairReport& r) {
   if (o.wrap != WrapMode::always && found.total() > 0) {
     // Crossings on more than a few percent of the triangles are a soup, not a scan's folds: the
     // local mend would smooth and refill most of the surface, in minutes, and leave it for the
-    // wrap all the same (the corpus of RESULTS.md, issue 78); the union is still tried.
+    // wrap all the same (tests/bench/repair_corpus.py on public meshes); the union is still tried.
     const double limit = std::max(32.0, o.local_limit * static_cast<double>(mesh.triangles.size()));
     if (found.within_shells > 0 && o.local_rounds > 0 && found.within_shells <= limit) {
       r.local_rounds = mend_crossings_locally(mesh, o.local_rounds);

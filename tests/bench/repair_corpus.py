@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Every mesh of a folder through `describe`, `repair` and `fill` (issue 78, acceptance 2): what the
+"""Every mesh of a folder through `describe`, `repair` and `fill`: what the
 mesh was (triangles, whether `describe` takes it as it is), what `repair` did (steps used, volume
 change, distance to the input, seconds and peak memory on one core), and whether `describe` and
 `fill --spheres 20` accept the result. Any crash, signal, multi-line error or partial output is a
@@ -7,7 +7,7 @@ defect and is listed last.
 
     tests/bench/repair_corpus.py FOLDER [--bin build/io/clumpkit] [--out /tmp/repair-corpus]
 
-The corpus of RESULTS.md (issue 78) is not in the repository: tests/bench/repair_corpus_sources.csv
+The corpus of RESULTS.md is not in the repository: tests/bench/repair_corpus_sources.csv
 names each file's public repository, commit and path (OFF files were converted to OBJ as
 triangle fans). Prints a Markdown table (one row per mesh) for tests/bench/RESULTS.md. Single-threaded
 (`taskset -c 0` when available) so that the seconds compare with the acceptance's one-core bound.
