@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace clumpkit {
@@ -59,6 +60,8 @@ OvershootLedger::OvershootLedger(const MeshIndex& index, const std::array<Vec3, 
   if (double(ny_) * nz_ > 5e7)
     throw InvalidInput("overshoot ledger: more than 5e7 rows (spacing too small)");
   rows_.resize(std::size_t(ny_) * nz_);
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  single_inside_.assign(rows_.size(), {inf, -inf});
 }
 
 OvershootLedger::~OvershootLedger() = default;
@@ -72,6 +75,8 @@ OvershootLedger::Row& OvershootLedger::row(int j, int k) const {
     if (xs.size() % 2 == 0)  // else: no inside known, all outside (over-counts, never under)
       for (std::size_t q = 0; q + 1 < xs.size(); q += 2)
         r->inside.emplace_back(xs[q].x, xs[q + 1].x);
+    if (r->inside.size() == 1)
+      single_inside_[std::size_t(k) * ny_ + j] = {r->inside[0].first, r->inside[0].second};
   }
   return *r;
 }
@@ -91,6 +96,10 @@ double OvershootLedger::visit(const Sphere& s, Visit what) const {
       const double w2 = r * r - (y - c.y()) * (y - c.y()) - (z - c.z()) * (z - c.z());
       if (!(w2 > 0.0)) continue;
       const double w = std::sqrt(w2);
+      // Inside the row's one inside interval: no part outside (for_parts_outside would find
+      // none), so nothing to measure, record or erase.
+      const auto& one = single_inside_[std::size_t(k) * ny_ + j];
+      if (one[0] <= c.x() - w && c.x() + w <= one[1]) continue;
       Row& row_jk = row(j, k);
       auto& out = row_jk.outside;
       parts.clear();

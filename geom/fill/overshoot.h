@@ -46,6 +46,10 @@ class OvershootLedger {
   double spacing_;
   int ny_ = 0, nz_ = 0;
   mutable std::vector<std::unique_ptr<Row>> rows_;  // made when first touched
+  // Per row, the mesh's inside interval when the row is made and has exactly one, else an empty
+  // one (+inf, -inf): a chord inside it has no part outside, which most chords of a sphere are,
+  // so visit() settles them from this flat array without touching the row.
+  mutable std::vector<std::array<double, 2>> single_inside_;
   double volume_ = 0.0;
 };
 
