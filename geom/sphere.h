@@ -8,6 +8,9 @@
 
 namespace clumpkit {
 
+/// π to double precision (C++17 has no std::numbers), shared so that no file keeps its own copy.
+inline constexpr double kPi = 3.14159265358979323846;
+
 struct Sphere {
   Vec3 center = Vec3::Zero();
   double radius = 0.0;

@@ -1,6 +1,7 @@
 #include "dem/core/body.h"
 
 #include "geom/errors.h"
+#include "geom/sphere.h"
 
 #include <cmath>
 #include <string>
@@ -8,7 +9,6 @@
 namespace clumpkit::dem {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 void check_density(double density) {
   if (!(density > 0.0) || !std::isfinite(density))

@@ -1,13 +1,12 @@
 #include "dem/core/contact.h"
 
 #include "geom/errors.h"
+#include "geom/sphere.h"
 
 #include <cmath>
 #include <string>
 
 namespace clumpkit::dem {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double damping_ratio_from_restitution(double e) {
   if (!(e > 0.0 && e <= 1.0))

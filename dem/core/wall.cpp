@@ -1,6 +1,7 @@
 #include "dem/core/wall.h"
 
 #include "geom/errors.h"
+#include "geom/sphere.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,7 +40,6 @@ Wall Wall::probe(const Vec3& apex, double diameter, double apex_deg, const Vec3&
                        std::to_string(apex_deg));
   if (!apex.allFinite() || !velocity.allFinite())
     throw InvalidInput("probe wall: apex and velocity must be finite");
-  constexpr double kPi = 3.14159265358979323846;
   const double radius = 0.5 * diameter;
   Wall w;
   w.kind = Kind::probe;

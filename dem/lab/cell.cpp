@@ -2,6 +2,7 @@
 
 #include "dem/measure/stress.h"
 #include "geom/errors.h"
+#include "geom/sphere.h"
 
 #include <algorithm>
 #include <array>
@@ -11,8 +12,6 @@
 namespace clumpkit::dem {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 int add_frictionless(World& world, Wall wall) {
   wall.friction = 0.0;

@@ -4,6 +4,7 @@
 #include "dem/run/single_stage.h"
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "geom/sphere.h"
 
 #include <algorithm>
 #include <array>
@@ -15,10 +16,8 @@
 namespace clumpkit::dem {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr const char* kStage = "cpt";
-constexpr int kRowFields = 8;
+constexpr const char* kCptStage = "cpt";
+constexpr int kCptRowFields = 8;
 
 // The cell's vertical axis (x, y): the cylinder's (a segment's apex), or the middle of the
 // cuboid's side walls.
@@ -30,7 +29,7 @@ Vec3 cell_axis(const World& world, const TestCell& cell) {
               0.5 * (w[cell.lateral[2]].point.y() + w[cell.lateral[3]].point.y()), 0.0);
 }
 
-std::array<double*, kRowFields - 1> row_fields(CptRow& c) {
+std::array<double*, kCptRowFields - 1> row_fields(CptRow& c) {
   return {&c.depth, &c.tip_force,    &c.sleeve_force,  &c.qc,
           &c.fs,    &c.axial_stress, &c.lateral_stress};
 }
@@ -234,7 +233,8 @@ void read_cpt_record(const StageRecord& r, const std::string& where, CptState& s
   st.probe = static_cast<int>(record_integer(r, "probe", where));
   st.reached_bottom = record_integer(r, "reached_bottom", where) != 0;
   cell = read_cell(r, where);
-  st.curve = read_test_curve<CptRow>(r, kRowFields, where, [](CptRow& c) { return row_fields(c); });
+  st.curve =
+      read_test_curve<CptRow>(r, kCptRowFields, where, [](CptRow& c) { return row_fields(c); });
 }
 
 CptResult run_cpt(CellSpecimen& specimen, const CptSettings& settings, const StageControl& control,
@@ -242,7 +242,7 @@ CptResult run_cpt(CellSpecimen& specimen, const CptSettings& settings, const Sta
                   const std::function<void(const CellSpecimen&, const CptState&)>& consolidated) {
   CptState state;
   SingleStage stage;
-  stage.stage = kStage;
+  stage.stage = kCptStage;
   stage.what = "cpt";
   stage.resume = [&](const StageRecord& record, const World& world) {
     read_cpt_record(record, std::string("cpt checkpoint"), state, specimen.cell);

@@ -5,6 +5,7 @@
 #include "dem/measure/stress.h"
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "geom/sphere.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,8 +15,6 @@
 namespace clumpkit::dem {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Starts, checks and ends the oedometer's holds (ElementTestSettings::hold_stresses) after a
 // step: a hold starts at the step whose axial stress reaches its target and is checked every

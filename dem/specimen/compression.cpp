@@ -22,9 +22,9 @@ namespace clumpkit::dem {
 
 namespace {
 
-enum Stream : std::uint64_t { particles_stream = 11, placement_stream = 12 };
+enum CompressionStream : std::uint64_t { particles_stream = 11, placement_stream = 12 };
 
-constexpr const char* kStage = "compression";
+constexpr const char* kCompressionStage = "compression";
 
 // The container of `size` (cuboid edges, or diameter, diameter, height), centred on the z-axis
 // and standing on z = 0: its walls' positions.
@@ -427,21 +427,22 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const StageCont
   r.relaxed_by = "step_cap";
   bool relaxed = false;  // the relaxation ended (the stage finished)
   CheckpointInfo info;
-  if (const std::optional<StageRecord> done = store.finished(kStage)) {
-    world = store.finished_world(kStage);
-    cell = read_cell(*done, kStage);
-    factor = record_number(*done, "factor", kStage);
-    relax = static_cast<long>(record_integer(*done, "relax_steps", kStage));
+  if (const std::optional<StageRecord> done = store.finished(kCompressionStage)) {
+    world = store.finished_world(kCompressionStage);
+    cell = read_cell(*done, kCompressionStage);
+    factor = record_number(*done, "factor", kCompressionStage);
+    relax = static_cast<long>(record_integer(*done, "relax_steps", kCompressionStage));
     const auto by = done->find("relaxed_by");
     if (by != done->end()) r.relaxed_by = by->second;
     relaxed = true;
-  } else if (std::optional<World> running = store.running(kStage, info)) {
+  } else if (std::optional<World> running = store.running(kCompressionStage, info)) {
     world = std::move(*running);
-    cell = read_cell(info.state, kStage);
-    factor = record_number(info.state, "factor", kStage);
-    first_step = static_cast<long>(record_integer(info.state, "closing_step", kStage)) + 1;
-    s = record_number(info.state, "scale", kStage);
-    relax = static_cast<long>(record_integer(info.state, "relax_steps", kStage));
+    cell = read_cell(info.state, kCompressionStage);
+    factor = record_number(info.state, "factor", kCompressionStage);
+    first_step =
+        static_cast<long>(record_integer(info.state, "closing_step", kCompressionStage)) + 1;
+    s = record_number(info.state, "scale", kCompressionStage);
+    relax = static_cast<long>(record_integer(info.state, "relax_steps", kCompressionStage));
   } else {
     world = loose_packing(spec, in_zones.bodies, crushable, zoned(spec) ? &in_zones : nullptr, size,
                           factor, cell);
@@ -449,7 +450,7 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const StageCont
   }
   // The checkpointed state: where the closing and the relaxation are.
   long k = first_step - 1;
-  StageCheckpoints checkpoints(store, control, kStage);
+  StageCheckpoints checkpoints(store, control, kCompressionStage);
   const auto state = [&] {
     StageRecord st;
     put_cell(st, cell);
@@ -506,7 +507,7 @@ CompressionResult compress_specimen(const CompressionSpec& spec, const StageCont
   if (!relaxed) {
     StageRecord record = state();
     record["relaxed_by"] = r.relaxed_by;
-    store.finish(kStage, record, &world);
+    store.finish(kCompressionStage, record, &world);
   }
 
   finish_specimen(spec, size, solid, zones, r);

@@ -2,6 +2,7 @@
 #include "dem/specimen/placement.h"
 
 #include "geom/errors.h"
+#include "geom/sphere.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +10,6 @@
 
 namespace clumpkit::dem {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// Uniform grid over a rectangular footprint [x0, x0 + wx] × [y0, y0 + wy], growing upwards in z
 /// from z0 as spheres are added. Holds indices of placed spheres.

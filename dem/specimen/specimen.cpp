@@ -28,7 +28,7 @@ namespace clumpkit::dem {
 namespace {
 
 // Random streams of the stages (Rng::stream(seed, index)).
-enum Stream : std::uint64_t {
+enum SpecimenStream : std::uint64_t {
   calibration_particles = 1,
   calibration_placement,
   layer_particles_stream,

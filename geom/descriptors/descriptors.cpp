@@ -3,6 +3,7 @@
 #include "geom/descriptors/farthest_pair.h"
 #include "geom/errors.h"
 #include "geom/mesh/cgal_mesh.h"
+#include "geom/sphere.h"
 
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
@@ -23,7 +24,6 @@ namespace clumpkit {
 namespace {
 
 using Vec2 = Eigen::Vector2d;
-constexpr double kPi = 3.14159265358979323846;
 
 // Relative gap below which two principal moments count as equal (axes then undefined).
 constexpr double kDegenerateMoments = 1e-8;

@@ -7,6 +7,7 @@
 #include "geom/mesh/shell_union.h"
 #include "geom/mesh/weld.h"
 #include "geom/mesh/wrap.h"
+#include "geom/sphere.h"
 
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -156,7 +157,6 @@ RepairHole close_hole(SurfaceMesh& sm, SurfaceMesh::Halfedge_index h) {
 // sheet capped on itself bounds exactly zero up to rounding (1e-16 of it), a plate of a
 // thousandth of its width 1e-4.
 constexpr double kNoVolume = 1e-9;
-constexpr double kPi = 3.14159265358979323846;
 
 void check_wrap_options(const RepairOptions& o) {
   auto fraction = [](double v, const char* name) {

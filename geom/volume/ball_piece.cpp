@@ -1,5 +1,7 @@
 #include "geom/volume/ball_piece.h"
 
+#include "geom/sphere.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -10,8 +12,6 @@
 
 namespace clumpkit::detail {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 using Mat2 = Eigen::Matrix2d;
 

@@ -1,6 +1,7 @@
 #include "geom/volume/inclusion_exclusion.h"
 
 #include "geom/errors.h"
+#include "geom/sphere.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Fixed_alpha_shape_3.h>
@@ -23,8 +24,6 @@
 
 namespace clumpkit {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Vb = CGAL::Triangulation_vertex_base_with_info_3<

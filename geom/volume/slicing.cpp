@@ -1,6 +1,7 @@
 #include "geom/volume/slicing.h"
 
 #include "geom/errors.h"
+#include "geom/sphere.h"
 
 #include <algorithm>
 #include <array>
@@ -10,8 +11,6 @@
 
 namespace clumpkit {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
 
 // Antiderivatives P_mn(t) of cos^m(t) sin^n(t), m + n <= 4, in closed form:

@@ -1,6 +1,7 @@
 #include "geom/volume/union_of_balls.h"
 
 #include "geom/errors.h"
+#include "geom/sphere.h"
 #include "geom/volume/ball_piece.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -30,8 +31,6 @@ using detail::ball_piece;
 using detail::HalfSpace;
 using detail::Piece;
 using detail::Scratch;
-
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kChunk = 1 << 18;  // balls owned by one chunk of the power diagram
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;

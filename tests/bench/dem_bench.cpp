@@ -61,7 +61,6 @@ using namespace clumpkit::dem::bench;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // The LAMMPS decks: $CLUMPKIT_LAMMPS_DECKS, else ../shared/baselines/lammps from the working
 // directory (scripts/bench runs from the repository root).
 std::string baseline_dir() {
