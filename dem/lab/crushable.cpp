@@ -40,7 +40,11 @@ Body cell_body(const Cell& cell, double density) {
 
 Body cell_clump_body(const Cell& cell, double density, const FillOptions& fill_options) {
   Body b = cell_body(cell, density);
-  const FillResult filled = fill(cell_mesh(cell), fill_options);
+  // A cell's spheres must not reach into its bonded neighbours: the fill's per-sphere rule
+  // (a few percent of each radius) only, not the pass that spends the rest of the budget.
+  FillOptions options = fill_options;
+  options.spend_budget = false;
+  const FillResult filled = fill(cell_mesh(cell), options);
   // The fill's spheres are in the parent's frame: into the body's principal frame.
   const Eigen::Quaterniond to_body = b.orientation.conjugate();
   b.spheres.clear();

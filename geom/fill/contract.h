@@ -43,6 +43,10 @@ class FillContract {
   }
   /// Whether the ledger would stay within the budget with `s` recorded too.
   bool within_budget(const Sphere& s) const;
+  /// Outside volume that recording `s` would add to the ledger.
+  double added(const Sphere& s) const { return ledger_.added(s); }
+  /// Outside volume the budget still allows.
+  double spare() const { return outside_budget_ - ledger_.volume(); }
   /// The sphere at c: radius from the exact distance (the features can run high where several
   /// compete), grown if `grow`, it fits and the ledger holds it, and then recorded on the ledger.
   PlacedSphere place(const Vec3& c, bool grow);

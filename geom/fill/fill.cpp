@@ -3,6 +3,7 @@
 #include "geom/errors.h"
 #include "geom/fill/contract.h"
 #include "geom/fill/coverage_grid.h"
+#include "geom/fill/fill_grow.h"
 #include "geom/fill/fill_refine.h"
 #include "geom/fill/skeleton.h"
 #include "geom/mesh/mesh_index.h"
@@ -213,6 +214,8 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
     r.refine_sweeps = stats.sweeps;
     r.refine_moves = stats.moves;
   }
+  if (options.spend_budget && options.max_overshoot > 0)
+    r.grow_steps = grow_spheres(r.clump.spheres, recorded, grid, contract, interrupter).steps;
   r.overshoot = contract.overshoot();
   return r;
 }

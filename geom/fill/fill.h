@@ -24,6 +24,8 @@ struct FillResult {
   /// what the refinement did.
   Clump greedy;
   int refine_sweeps = 0, refine_moves = 0;
+  /// Radius steps of the pass that spent the rest of the overshoot budget (fill_grow.h).
+  int grow_steps = 0;
   /// "spheres" (the budget), "coverage" (the target), "min-radius" (the candidates left are
   /// smaller) or "candidates" (no medial candidate left adds coverage).
   std::string stopped_by;

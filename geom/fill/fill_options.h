@@ -42,6 +42,10 @@ struct FillOptions {
   /// (CoverageGrid::work): it stops when its searches have read this many times the row spans
   /// the greedy pass read (≤ 0: no limit).
   double refine_work = 1.0;
+  /// After the refinement, spend what is left of the overshoot budget by growing spheres past
+  /// the surface where that covers most per volume outside (geom/fill/fill_grow.h), so a larger
+  /// --max-overshoot never gives less coverage.
+  bool spend_budget = true;
   /// Resolution from the count: with a sphere budget, the voxel is made fine enough that the
   /// smallest sphere the budget is expected to need spans kVoxelsPerSmallestRadius voxels
   /// (fill_field_options), within the voxel budget and at most kCountVoxelGrowth times the

@@ -120,11 +120,13 @@ void register_fill(CLI::App& app) {
                     format_number(res["finer_voxel"].get<double>()).c_str(),
                     res["covered_fraction_finer"].get<double>(),
                     res["covered_change"].get<double>());
-      if (r.fill.refine_sweeps > 0)
+      if (r.fill.refine_sweeps > 0 || r.fill.grow_steps > 0)
         std::printf(
-            "refined in %d sweeps (%d moves): covered %.4f -> %.4f, overshoot %.4f -> %.4f\n",
-            r.fill.refine_sweeps, r.fill.refine_moves, r.greedy_fidelity.covered_fraction,
-            f.covered_fraction, r.greedy_fidelity.overshoot_fraction, f.overshoot_fraction);
+            "refined in %d sweeps (%d moves), %d steps of growth within the overshoot budget: "
+            "covered %.4f -> %.4f, overshoot %.4f -> %.4f\n",
+            r.fill.refine_sweeps, r.fill.refine_moves, r.fill.grow_steps,
+            r.greedy_fidelity.covered_fraction, f.covered_fraction,
+            r.greedy_fidelity.overshoot_fraction, f.overshoot_fraction);
     }
   });
 }

@@ -29,6 +29,7 @@ nlohmann::ordered_json refine_json(const FillResult& r, const Fidelity& before,
   nlohmann::ordered_json j;
   j["sweeps"] = r.refine_sweeps;
   j["moves"] = r.refine_moves;
+  j["budget_steps"] = r.grow_steps;  // radius steps that spent the rest of the overshoot budget
   j["covered_fraction_before"] = before.covered_fraction;
   j["covered_fraction_after"] = after.covered_fraction;
   j["overshoot_fraction_before"] = before.overshoot_fraction;
@@ -96,7 +97,8 @@ SolidFill fill_solid(const Mesh& mesh, FillOptions fo, const std::string& name,
   }
   // The greedy clump of the fill kept, assessed the same way (the report's "before").
   t = std::chrono::steady_clock::now();
-  out.greedy_fidelity = out.fill.refine_moves > 0 ? assess(out.fill.greedy) : out.fidelity;
+  out.greedy_fidelity =
+      out.fill.refine_moves > 0 || out.fill.grow_steps > 0 ? assess(out.fill.greedy) : out.fidelity;
   out.seconds_fidelity += seconds_since(t);
   return out;
 }

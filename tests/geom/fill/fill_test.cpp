@@ -75,6 +75,7 @@ TEST(Fill, CapsuleSpheresRunAlongTheAxis) {
   FillOptions o;
   o.spheres = 10;
   o.tolerance_relative = 0.0;
+  o.spend_budget = false;  // no sphere grown past the surface
   const FillResult r = fill(c, o);
   const Fidelity f = assess_fidelity(c, r.clump, r.voxel / 2);
   EXPECT_GT(f.covered_fraction, 0.97);  // a capsule is a swept sphere: few spheres fill it
@@ -91,6 +92,7 @@ TEST(Fill, ZeroToleranceKeepsEverySphereInside) {
   FillOptions o;
   o.spheres = 60;
   o.tolerance_relative = 0.0;
+  o.spend_budget = false;  // the per-sphere rule alone: with no tolerance, every sphere inside
   const FillResult r = fill(b, o);
   const MeshIndex d(b);
   for (const auto& s : r.clump.spheres) EXPECT_LE(s.radius, d.distance(s.center) + 1e-9);
@@ -223,7 +225,8 @@ TEST(Fill, InterrupterHearsTheBudgetFractionAndStopsTheFill) {
   FillOptions o;
   o.spheres = 40;
   o.field.voxels = 20;
-  o.refine_iterations = 0;  // the refinement polls at 1.0 before each sphere it searches
+  o.refine_iterations = 0;  // the refinement polls at 1.0 before each sphere it searches,
+  o.spend_budget = false;   // and the budget pass before each step
   std::vector<double> heard;
   const FillResult full = fill(box, o, [&](std::string_view stage, double fraction) {
     EXPECT_EQ(stage, "fill");
