@@ -85,6 +85,18 @@ SolidFill fill_solid(const Mesh& mesh, FillOptions fo, const std::string& name,
     out.seconds_fidelity += seconds_since(t);
     const double measured = out.fidelity.overshoot_fraction;
     if (!(measured > contract)) break;
+    // The growth pass fills the ledger to 0.9 of the budget, where the report's rows, one voxel
+    // apart, can read over it although the ledger holds (thin caps on faces that lie along the
+    // voxel lattice, as a box's: tests/bench/RESULTS.md). The clump without that pass is tried
+    // first, before any smaller budget.
+    if (fo.spend_budget && fo.max_overshoot > 0) {
+      fo.spend_budget = false;
+      --attempt;  // not one of the smaller budgets
+      note("the clump put " + format_number(measured, 3) + " of the volume outside the mesh (" +
+           inside_outside(fo) + "), over --max-overshoot " + format_number(contract) +
+           "; filled again without spending the rest of the budget");
+      continue;
+    }
     if (attempt == 2 || fo.max_overshoot == 0)
       throw InvalidInput(name + ": the clump puts " + format_number(measured, 3) +
                          " of the volume outside the mesh, over --max-overshoot " +
