@@ -3,7 +3,6 @@
 #include "geom/errors.h"
 
 #include <cstdint>
-#include <limits>
 #include <string>
 
 namespace clumpkit {

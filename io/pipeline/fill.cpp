@@ -73,7 +73,8 @@ SolidFill fill_solid(const Mesh& mesh, FillOptions fo, const std::string& name,
                               : assess_fidelity(index, clump, out.fill.voxel);
   };
   const double contract = fo.max_overshoot;
-  for (int attempt = 0;; ++attempt) {
+  int smaller = 0;  // fills again with a smaller budget
+  while (true) {
     t = std::chrono::steady_clock::now();
     out.fill = fill(index, field, fo, interrupter);
     out.seconds_fill += seconds_since(t);
@@ -85,27 +86,26 @@ SolidFill fill_solid(const Mesh& mesh, FillOptions fo, const std::string& name,
     out.seconds_fidelity += seconds_since(t);
     const double measured = out.fidelity.overshoot_fraction;
     if (!(measured > contract)) break;
+    const std::string over = "the clump put " + format_number(measured, 3) +
+                             " of the volume outside the mesh (" + inside_outside(fo) +
+                             "), over --max-overshoot " + format_number(contract);
     // The growth pass fills the ledger to 0.9 of the budget, where the report's rows, one voxel
     // apart, can read over it although the ledger holds (thin caps on faces that lie along the
     // voxel lattice, as a box's: tests/bench/RESULTS.md). The clump without that pass is tried
     // first, before any smaller budget.
     if (fo.spend_budget && fo.max_overshoot > 0) {
       fo.spend_budget = false;
-      --attempt;  // not one of the smaller budgets
-      note("the clump put " + format_number(measured, 3) + " of the volume outside the mesh (" +
-           inside_outside(fo) + "), over --max-overshoot " + format_number(contract) +
-           "; filled again without spending the rest of the budget");
+      note(over + "; filled again without spending the rest of the budget");
       continue;
     }
-    if (attempt == 2 || fo.max_overshoot == 0)
+    if (smaller == 2 || fo.max_overshoot == 0)
       throw InvalidInput(name + ": the clump puts " + format_number(measured, 3) +
                          " of the volume outside the mesh, over --max-overshoot " +
                          format_number(contract) + " (" + inside_outside(fo) +
                          "); close the mesh (clumpkit repair) or allow more");
     fo.max_overshoot *= 0.5 * contract / measured;
-    note("the clump put " + format_number(measured, 3) + " of the volume outside the mesh (" +
-         inside_outside(fo) + "), over --max-overshoot " + format_number(contract) +
-         "; filled again with a smaller budget");
+    ++smaller;
+    note(over + "; filled again with a smaller budget");
   }
   // The greedy clump of the fill kept, assessed the same way (the report's "before").
   t = std::chrono::steady_clock::now();
