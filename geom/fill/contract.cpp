@@ -30,18 +30,19 @@ std::array<Vec3, 2> ledger_box(const DistanceField& field) {
 }  // namespace
 
 FillContract::FillContract(const MeshIndex& index, const DistanceField& field,
-                           const FillOptions& options, std::int64_t grid_interior)
+                           const FillOptions& options, double voxel, std::int64_t grid_interior)
     : index_(index),
       mesh_(index.mesh()),
       field_(field),
-      tolerance_(options.tolerance >= 0 ? options.tolerance : options.tolerance_voxels * field.h),
+      voxel_(voxel),
+      tolerance_(options.tolerance >= 0 ? options.tolerance : options.tolerance_voxels * voxel),
       relative_(options.tolerance_relative),
       directions_(fibonacci_directions()),
-      ledger_(index, ledger_box(field), field.h / 3.0) {
+      ledger_(index, ledger_box(field), voxel / 3.0) {
   // The mesh volume: exact for a closed mesh, the interior voxels' for one that is not.
   const double closed_volume = signed_volume(mesh_);
   mesh_volume_ = options.field.vote_sign || !(closed_volume > 0.0)
-                     ? double(grid_interior) * field.h * field.h * field.h
+                     ? double(grid_interior) * voxel * voxel * voxel
                      : closed_volume;
   outside_budget_ = 0.9 * options.max_overshoot * mesh_volume_;
 }
@@ -57,7 +58,7 @@ bool FillContract::within_budget(const Sphere& s) const {
 }
 
 PlacedSphere FillContract::place(const Vec3& c, bool grow) {
-  const double d = index_.distance(c, near_distance(c) * (1.0 + 1e-9) + 1e-12 * field_.h);
+  const double d = index_.distance(c, near_distance(c) * (1.0 + 1e-9) + 1e-12 * voxel_);
   const double g = grown(d);
   if (grow && g > d && fits(c, g)) {
     const Sphere big{c, g};

@@ -23,10 +23,11 @@ struct PlacedSphere {
 /// 0.9 of the budget (room for the ledger's midpoint-rule error); else it keeps radius d.
 class FillContract {
  public:
-  /// `grid_interior` voxels stand for the mesh volume where the mesh is not closed
-  /// (options.field.vote_sign, or no positive signed volume).
+  /// `voxel` is the coverage lattice's (the field's, or finer): the ledger's rows lie a third of
+  /// it apart. `grid_interior` voxels of it stand for the mesh volume where the mesh is not
+  /// closed (options.field.vote_sign, or no positive signed volume).
   FillContract(const MeshIndex& index, const DistanceField& field, const FillOptions& options,
-               std::int64_t grid_interior);
+               double voxel, std::int64_t grid_interior);
 
   /// Distance from p to the surface through the field's features: a few dozen point–triangle
   /// distances, never below the truth (geom/fill/distance_field.h).
@@ -57,13 +58,14 @@ class FillContract {
 
   /// The ledger's outside volume over the mesh volume.
   double overshoot() const { return ledger_.volume() / mesh_volume_; }
-  double voxel() const { return field_.h; }
+  /// The coverage lattice's voxel.
+  double voxel() const { return voxel_; }
 
  private:
   const MeshIndex& index_;
   const Mesh& mesh_;
   const DistanceField& field_;
-  double tolerance_, relative_;
+  double voxel_, tolerance_, relative_;
   std::vector<Vec3> directions_;
   OvershootLedger ledger_;
   double mesh_volume_, outside_budget_;

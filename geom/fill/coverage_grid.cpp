@@ -27,25 +27,35 @@ void for_words(int i0, int i1, F&& f) {
 
 CoverageGrid::CoverageGrid(const DistanceField& f)
     : origin_(f.origin), h_(f.h), dims_(f.dims), words_((f.dims[0] + 63) / 64) {
+  inside_.resize(f.d.size());
+  for (std::size_t q = 0; q < f.d.size(); ++q) inside_[q] = f.d[q] > 0.0f;
+  init();
+}
+
+void CoverageGrid::init() {
   const std::size_t rows = std::size_t(dims_[1]) * dims_[2];
   bits_.assign(rows * words_, 0);
-  inside_.assign(f.d.size(), 0);
-  count_.assign(f.d.size(), 0);
+  count_.assign(inside_.size(), 0);
   for (int k = 0; k < dims_[2]; ++k)
-    for (int j = 0; j < dims_[1]; ++j)
+    for (int j = 0; j < dims_[1]; ++j) {
+      const std::uint8_t* in = &inside_[(std::size_t(k) * dims_[1] + j) * std::size_t(dims_[0])];
       for (int i = 0; i < dims_[0]; ++i)
-        if (f.at(i, j, k) > 0.0f) {
+        if (in[i]) {
           row(j, k)[i >> 6] |= std::uint64_t(1) << (i & 63);
-          inside_[f.index(i, j, k)] = 1;
           ++interior_;
         }
+    }
   uncovered_ = interior_;
   block_dims_ = {words_ * 8, (dims_[1] + 7) / 8, (dims_[2] + 7) / 8};
   blocks_.assign(std::size_t(block_dims_[0]) * block_dims_[1] * block_dims_[2], 0);
+  pieces_.assign(blocks_.size(), 0);
   for (int k = 0; k < dims_[2]; ++k)
     for (int j = 0; j < dims_[1]; ++j)
       for (int i = 0; i < dims_[0]; ++i)
         if (row(j, k)[i >> 6] >> (i & 63) & 1) ++block(i, j, k);
+  for (int k = 0; k < dims_[2]; ++k)
+    for (int j = 0; j < dims_[1]; ++j)
+      for (int i = 0; i < dims_[0]; i += 8) update_pieces(i, j, k);
 }
 
 template <class F>
@@ -88,16 +98,17 @@ std::int64_t CoverageGrid::uncovered_in_blocks(const Sphere& s) const {
     if (lo[a] > hi[a]) return 0;
   }
   std::int64_t n = 0;
-  int span_lo[64], span_hi[64];  // the row spans of one row of blocks, when first needed
+  // The row spans of one row of blocks, each worked out when a block first needs it.
+  int span_lo[64], span_hi[64];
   for (int bz = lo[2] >> 3; bz <= hi[2] >> 3; ++bz)
     for (int by = lo[1] >> 3; by <= hi[1] >> 3; ++by) {
-      bool spans = false;
+      std::uint64_t known = 0;  // spans worked out in this row of blocks
       const int k0 = std::max(lo[2], 8 * bz), k1 = std::min(hi[2], 8 * bz + 7);
       const int j0 = std::max(lo[1], 8 * by), j1 = std::min(hi[1], 8 * by + 7);
       for (int bx = lo[0] >> 3; bx <= hi[0] >> 3; ++bx) {
         ++work_;
-        const std::int32_t in_block =
-            blocks_[(std::size_t(bz) * block_dims_[1] + by) * block_dims_[0] + bx];
+        const std::size_t b = (std::size_t(bz) * block_dims_[1] + by) * block_dims_[0] + bx;
+        const std::int32_t in_block = blocks_[b];
         if (in_block == 0) continue;
         // Nearest and farthest voxel centres of the block from the ball's centre.
         const int box_lo[3] = {8 * bx, 8 * by, 8 * bz};
@@ -114,32 +125,31 @@ std::int64_t CoverageGrid::uncovered_in_blocks(const Sphere& s) const {
           n += in_block;
           continue;
         }
-        if (!spans) {  // the formula of for_spans, row by row
-          spans = true;
-          for (int k = 8 * bz; k < 8 * bz + 8; ++k)
-            for (int j = 8 * by; j < 8 * by + 8; ++j) {
-              const int q = (k - 8 * bz) * 8 + (j - 8 * by);
-              span_lo[q] = 1, span_hi[q] = 0;
-              if (k < k0 || k > k1 || j < j0 || j > j1) continue;
-              const double dz = k - g.z(), dy = j - g.y();
-              const double rem = r2 - dy * dy - dz * dz;
-              if (rem < 0.0) continue;
+        // Only the row pieces with an uncovered voxel, each within its row's span (the formula
+        // of for_spans).
+        const int x0 = 8 * bx, x1 = 8 * bx + 7;
+        for (std::uint64_t left = pieces_[b]; left != 0; left &= left - 1) {
+          const int q = __builtin_ctzll(left);
+          const int k = 8 * bz + (q >> 3), j = 8 * by + (q & 7);
+          if (k < k0 || k > k1 || j < j0 || j > j1) continue;
+          if (!(known >> q & 1)) {
+            known |= std::uint64_t(1) << q;
+            span_lo[q] = 1, span_hi[q] = 0;
+            const double dz = k - g.z(), dy = j - g.y();
+            const double rem = r2 - dy * dy - dz * dz;
+            if (rem >= 0.0) {
               const double w = std::sqrt(rem);
               span_lo[q] = std::max(0, int(std::ceil(g.x() - w)));
               span_hi[q] = std::min(dims_[0] - 1, int(std::floor(g.x() + w)));
             }
-        }
-        const int x0 = 8 * bx, x1 = 8 * bx + 7;
-        for (int k = k0; k <= k1; ++k)
-          for (int j = j0; j <= j1; ++j) {
-            const int q = (k - 8 * bz) * 8 + (j - 8 * by);
-            const int a = std::max(span_lo[q], x0), b = std::min(span_hi[q], x1);
-            if (a > b) continue;
-            ++work_;
-            const std::uint64_t byte = row(j, k)[bx >> 3] >> (8 * (bx & 7)) & 0xFF;
-            const std::uint64_t mask = ((std::uint64_t(1) << (b - a + 1)) - 1) << (a - x0);
-            n += __builtin_popcountll(byte & mask);
           }
+          const int a = std::max(span_lo[q], x0), e = std::min(span_hi[q], x1);
+          if (a > e) continue;
+          ++work_;
+          const std::uint64_t byte = row(j, k)[bx >> 3] >> (8 * (bx & 7)) & 0xFF;
+          const std::uint64_t mask = ((std::uint64_t(1) << (e - a + 1)) - 1) << (a - x0);
+          n += __builtin_popcountll(byte & mask);
+        }
       }
     }
   return n;
@@ -163,7 +173,10 @@ void CoverageGrid::cover(const Sphere& s) {
       uncovered_ -= __builtin_popcountll(cleared);
       w[q] &= ~mask;
       for (int byte = 0; cleared != 0; ++byte, cleared >>= 8)
-        if (cleared & 0xFF) block(64 * q + 8 * byte, j, k) -= __builtin_popcountll(cleared & 0xFF);
+        if (cleared & 0xFF) {
+          block(64 * q + 8 * byte, j, k) -= __builtin_popcountll(cleared & 0xFF);
+          update_pieces(64 * q + 8 * byte, j, k);
+        }
     });
     std::uint16_t* c = counts(j, k);
     const std::uint8_t* in = &inside_[(std::size_t(k) * dims_[1] + j) * std::size_t(dims_[0])];
@@ -188,6 +201,7 @@ void CoverageGrid::uncover(const Sphere& s) {
         w[i >> 6] |= std::uint64_t(1) << (i & 63);
         ++uncovered_;
         ++block(i, j, k);
+        update_pieces(i, j, k);
       }
     }
   });

@@ -118,6 +118,10 @@ double base_voxel_size(const Mesh& mesh, const FieldOptions& o) {
 
 }  // namespace
 
+double distance_voxel_size(const Mesh& mesh, const FieldOptions& o) {
+  return base_voxel_size(mesh, o);
+}
+
 double field_voxel_size(const Mesh& mesh, const FieldOptions& o) {
   const double h = base_voxel_size(mesh, o);
   if (!(o.count_voxel > 0.0) || !(o.count_voxel < h)) return h;
@@ -156,10 +160,10 @@ namespace {
 // is cast again a hair off the voxel centres, which decides those centres the same way unless
 // they lie within 1e-4 voxel of the surface, and if still odd its voxels are decided by a 7-ray
 // vote each. The two voxels either side of a crossing get the crossed triangle
-// in `hint`: its distance bounds their nearest-triangle search.
+// in `hint` (when given): its distance bounds their nearest-triangle search.
 std::vector<std::uint8_t> inside_by_rows(const MeshIndex& index, const DistanceField& f,
-                                         std::vector<std::int32_t>& hint) {
-  std::vector<std::uint8_t> in(f.d.size(), 0);
+                                         std::vector<std::int32_t>* hint) {
+  std::vector<std::uint8_t> in(static_cast<std::size_t>(product(f.dims)), 0);
   // Rows still odd after three nudges (one running in a face's plane) are decided voxel by
   // voxel by a 7-ray vote afterwards; one flag per row, so no thread writes another's.
   std::vector<std::uint8_t> odd(std::size_t(f.dims[1]) * f.dims[2], 0);
@@ -176,11 +180,12 @@ std::vector<std::uint8_t> inside_by_rows(const MeshIndex& index, const DistanceF
         const int i1 = std::min(f.dims[0] - 1, int(std::floor((xs[q + 1].x - f.origin.x()) / f.h)));
         for (int i = i0; i <= i1; ++i) in[f.index(i, j, k)] = 1;
       }
-      for (const auto& x : xs) {
-        const int i = int(std::floor((x.x - f.origin.x()) / f.h));
-        if (i >= 0 && i < f.dims[0]) hint[f.index(i, j, k)] = x.triangle;
-        if (i + 1 >= 0 && i + 1 < f.dims[0]) hint[f.index(i + 1, j, k)] = x.triangle;
-      }
+      if (hint)
+        for (const auto& x : xs) {
+          const int i = int(std::floor((x.x - f.origin.x()) / f.h));
+          if (i >= 0 && i < f.dims[0]) (*hint)[f.index(i, j, k)] = x.triangle;
+          if (i + 1 >= 0 && i + 1 < f.dims[0]) (*hint)[f.index(i + 1, j, k)] = x.triangle;
+        }
     }
   });
   if (std::find(odd.begin(), odd.end(), 1) != odd.end()) {
@@ -198,11 +203,10 @@ std::vector<std::uint8_t> inside_by_rows(const MeshIndex& index, const DistanceF
 // Layers of the band around the surface voxels.
 constexpr int kBand = 2;
 
-// The field's lattice (voxel size, origin, dims) with its arrays allocated; throws before
-// allocating when it is too large or over options.max_bytes.
-DistanceField empty_field(const Mesh& mesh, const FieldOptions& options) {
+// The field's lattice at voxel h (origin, dims), with its distance and feature arrays allocated
+// when `distances`; throws before allocating when it is too large or over options.max_bytes.
+DistanceField empty_field(const Mesh& mesh, const FieldOptions& options, double h, bool distances) {
   init_openvdb();
-  const double h = field_voxel_size(mesh, options);
   const auto bb = bounding_box(mesh);
   DistanceField f;
   f.h = h;
@@ -229,8 +233,10 @@ DistanceField empty_field(const Mesh& mesh, const FieldOptions& options) {
   }
   f.origin = lo;
 
-  f.d.assign(static_cast<std::size_t>(total), 0.0f);
-  f.feature.assign(static_cast<std::size_t>(total), -1);
+  if (distances) {
+    f.d.assign(static_cast<std::size_t>(total), 0.0f);
+    f.feature.assign(static_cast<std::size_t>(total), -1);
+  }
 
   return f;
 }
@@ -243,14 +249,15 @@ std::vector<std::uint8_t> inside_voxels(const MeshIndex& index, DistanceField& f
   const Mesh& mesh = index.mesh();
   std::vector<std::uint8_t> in;
   if (options.vote_sign) {
-    in.assign(f.d.size(), 0);
+    in.assign(static_cast<std::size_t>(product(f.dims)), 0);
     const RayInside rays(mesh);
     tbb::parallel_for(0, f.dims[2], [&](int k) {
       for (int j = 0; j < f.dims[1]; ++j)
         for (int i = 0; i < f.dims[0]; ++i) in[f.index(i, j, k)] = rays.inside(f.position(i, j, k));
     });
   } else {
-    in = inside_by_rows(index, f, f.feature);  // f.feature holds the rows' hints until step 2
+    // f.feature, when kept, holds the rows' hints until step 2.
+    in = inside_by_rows(index, f, f.feature.empty() ? nullptr : &f.feature);
   }
 
   return in;
@@ -451,11 +458,32 @@ void interior_voxels(const MeshIndex& index, DistanceField& f, const std::vector
 }  // namespace
 
 DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& options) {
-  DistanceField f = empty_field(index.mesh(), options);
+  DistanceField f =
+      empty_field(index.mesh(), options, distance_voxel_size(index.mesh(), options), true);
   const std::vector<std::uint8_t> in = inside_voxels(index, f, options);
   std::vector<std::uint8_t> layer = surface_voxels(index, f, in);
   band_voxels(index, f, in, layer);
   interior_voxels(index, f, in, layer);
+  return f;
+}
+
+DistanceField make_finer_field(const MeshIndex& index, const DistanceField& coarse,
+                               const FieldOptions& options) {
+  DistanceField f =
+      empty_field(index.mesh(), options, field_voxel_size(index.mesh(), options), false);
+  const std::vector<std::uint8_t> in = inside_voxels(index, f, options);
+  f.d.assign(in.size(), static_cast<float>(-f.h));
+  // A voxel on the surface itself stays inside (a value above 0), as its sign says.
+  tbb::parallel_for(0, f.dims[2], [&](int k) {
+    for (int j = 0; j < f.dims[1]; ++j)
+      for (int i = 0; i < f.dims[0]; ++i) {
+        const std::int64_t q = f.index(i, j, k);
+        if (in[q])
+          f.d[q] = std::max(
+              std::numeric_limits<float>::min(),
+              static_cast<float>(feature_distance(coarse, index.mesh(), f.position(i, j, k))));
+      }
+  });
   return f;
 }
 

@@ -72,8 +72,14 @@ struct DistanceField {
 /// where no feature is kept (far outside) the field's trilinear sample, negated to a magnitude.
 double feature_distance(const DistanceField& field, const Mesh& mesh, const Vec3& p);
 
-/// Voxel size implied by the options for this mesh.
+/// Voxel size implied by the options for this mesh: the fill's coverage lattice, made finer by
+/// FieldOptions::count_voxel where the sphere budget asks.
 double field_voxel_size(const Mesh& mesh, const FieldOptions& options);
+
+/// Voxel size of the distances make_distance_field computes: the resolution asked, before
+/// FieldOptions::count_voxel (distances that fine buy the fill nothing: its spheres take exact
+/// radii from the mesh, and only their coverage is counted on the finer lattice).
+double distance_voxel_size(const Mesh& mesh, const FieldOptions& options);
 
 /// Voxels of the field make_distance_field would build for this mesh.
 double field_voxel_count(const Mesh& mesh, const FieldOptions& options);
@@ -83,8 +89,8 @@ double field_voxel_count(const Mesh& mesh, const FieldOptions& options);
 /// per triangle (the mesh as read, its Embree BVH) and 64 MiB for the program itself.
 double fill_bytes_estimate(const Mesh& mesh, const FieldOptions& options);
 
-/// Builds the field over the mesh bounding box plus two voxels. The cost does not grow with the
-/// triangle count beyond the index's O(log n) queries:
+/// Builds the field over the mesh bounding box plus two voxels, at distance_voxel_size. The cost
+/// does not grow with the triangle count beyond the index's O(log n) queries:
 ///  1. sign: one ray per grid row along x, inside between crossings 1–2, 3–4, … (or, with
 ///     vote_sign, a 7-ray vote per voxel for meshes that are not closed);
 ///  2. exact distances (bounded nearest-triangle queries) in a band of two voxels around the
@@ -99,5 +105,13 @@ DistanceField make_distance_field(const MeshIndex& index, const FieldOptions& op
 
 /// The same with an index built for the call.
 DistanceField make_distance_field(const Mesh& mesh, const FieldOptions& options);
+
+/// A field on the finer lattice of `options` (field_voxel_size: the sphere budget's voxel),
+/// laid like make_distance_field's, whose values come from `coarse`'s features: the sign by step
+/// 1 above, each inside voxel's value feature_distance(coarse, its centre), −h outside; no
+/// features kept. What a fill needs of a finer field — its medial candidates and its inside
+/// voxels — at a fraction of make_distance_field's cost on that lattice (no band, no sweep).
+DistanceField make_finer_field(const MeshIndex& index, const DistanceField& coarse,
+                               const FieldOptions& options);
 
 }  // namespace clumpkit

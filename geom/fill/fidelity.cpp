@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -85,6 +86,32 @@ void surface_distances(const Mesh& mesh, const Clump& clump, double spacing, Fid
   r.surface_mean_distance = sum / double(samples);
 }
 
+// One row per cell of a (y, z) lattice of the given spacing over the box, at a point of its
+// cell from a low-discrepancy sequence (stratified sampling): rows on a regular lattice alias
+// with clumps whose spheres sit on the fill's own voxel lattice (a cube's corner spheres all read
+// alike, their thin caps missed or counted whole: 0.019 outside read where 0.009 was, coverage
+// 0.01 low, on a unit cube at 460 spheres), while jittered rows have no phase to lock to. The
+// jitter's irrational steps (the R2 sequence, Roberts 2018) also keep rows off mesh edges and
+// vertices.
+struct RowCells {
+  double y0, z0, spacing;
+  int ny, nz;
+  RowCells(const std::array<Vec3, 2>& bb, double s)
+      : y0(bb[0].y()),
+        z0(bb[0].z()),
+        spacing(s),
+        ny(static_cast<int>((bb[1].y() - bb[0].y()) / s) + 1),
+        nz(static_cast<int>((bb[1].z() - bb[0].z()) / s) + 1) {}
+  double y(int j, int k) const {
+    const double n = double(std::size_t(k) * ny + j);
+    return y0 + (j + std::fmod(0.5 + 0.7548776662466927 * n, 1.0)) * spacing;
+  }
+  double z(int j, int k) const {
+    const double n = double(std::size_t(k) * ny + j);
+    return z0 + (k + std::fmod(0.5 + 0.5698402909980532 * n, 1.0)) * spacing;
+  }
+};
+
 // What both entry points share: `index` is set for a watertight mesh (rows from its crossings),
 // null for one that is not (rows by ray-parity voting).
 Fidelity assess(const Mesh& mesh, const MeshIndex* index, const Clump& clump, double spacing) {
@@ -101,17 +128,16 @@ Fidelity assess(const Mesh& mesh, const MeshIndex* index, const Clump& clump, do
     bb[0] = bb[0].cwiseMin(s.center - Vec3::Constant(s.radius));
     bb[1] = bb[1].cwiseMax(s.center + Vec3::Constant(s.radius));
   }
-  // Row lattice in (y, z), offset by an irrational fraction so no row passes exactly through a
-  // mesh edge or vertex.
-  const double y0 = bb[0].y() + spacing * 0.5012345, z0 = bb[0].z() + spacing * 0.4987654;
-  const int ny = static_cast<int>((bb[1].y() - y0) / spacing) + 1;
-  const int nz = static_cast<int>((bb[1].z() - z0) / spacing) + 1;
+  const RowCells cells(bb, spacing);
+  const double y0 = cells.y0, z0 = cells.z0;
+  const int ny = cells.ny, nz = cells.nz;
   std::vector<std::vector<int>> ball_rows(std::size_t(ny) * nz);
   for (int s = 0; s < static_cast<int>(clump.spheres.size()); ++s) {
     const auto& sp = clump.spheres[s];
-    const int ja = std::max(0, int(std::ceil((sp.center.y() - sp.radius - y0) / spacing))),
+    // The cells the sphere's extent reaches (their rows may still miss it: w² ≤ 0 below).
+    const int ja = std::max(0, int(std::floor((sp.center.y() - sp.radius - y0) / spacing))),
               jb = std::min(ny - 1, int(std::floor((sp.center.y() + sp.radius - y0) / spacing)));
-    const int ka = std::max(0, int(std::ceil((sp.center.z() - sp.radius - z0) / spacing))),
+    const int ka = std::max(0, int(std::floor((sp.center.z() - sp.radius - z0) / spacing))),
               kb = std::min(nz - 1, int(std::floor((sp.center.z() + sp.radius - z0) / spacing)));
     for (int k = ka; k <= kb; ++k)
       for (int j = ja; j <= jb; ++j) ball_rows[std::size_t(k) * ny + j].push_back(s);
@@ -126,7 +152,7 @@ Fidelity assess(const Mesh& mesh, const MeshIndex* index, const Clump& clump, do
   std::vector<Interval> chords, solid;
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j) {
-      const double y = y0 + j * spacing, z = z0 + k * spacing;
+      const double y = cells.y(j, k), z = cells.z(j, k);
       solid.clear();
       std::vector<MeshIndex::Crossing> xs;
       if (index) {

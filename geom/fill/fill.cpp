@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <queue>
 #include <string>
 
@@ -33,18 +34,40 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
                 const Interrupter& interrupter) {
   validate(options);
   FillResult r;
-  r.voxel = field.h;
   const int budget = options.spheres > 0 ? options.spheres : (options.coverage > 0 ? 1 << 30 : 50);
+  // Coarse to fine: where the sphere budget asks for a finer voxel than the field's
+  // (fill_field_options), the medial candidates and the coverage that places and measures the
+  // spheres come from a lattice of that voxel whose distances are the field's features
+  // (make_finer_field: the candidates a field that fine would give, at a fraction of its cost),
+  // while the greedy choice ranks the candidates by what they cover on the field's own lattice
+  // (`coarse`). Each chosen sphere's search, the refinement and the growth pass count on the
+  // finer lattice (`grid`), which the result's voxel names.
+  std::optional<DistanceField> finer;
+  {
+    FieldOptions lattice = fill_field_options(distance.mesh(), options);
+    lattice.voxel_size = field.h;
+    const double h = field_voxel_size(distance.mesh(), lattice);
+    if (h < field.h) {
+      lattice.voxel_size = h;
+      lattice.count_voxel = 0.0;
+      finer.emplace(make_finer_field(distance, field, lattice));
+    }
+  }
+  const DistanceField& lattice = finer ? *finer : field;
   // The field may be off by a few voxels deep inside: select candidates with a margin, then
   // apply min_radius to the exact radius.
   auto cand =
-      medial_candidates(field, options.ridge, std::max(0.0, options.min_radius - 3.0 * field.h));
+      medial_candidates(lattice, options.ridge, std::max(0.0, options.min_radius - 3.0 * field.h));
   r.candidates = static_cast<int>(cand.size());
-  CoverageGrid grid(field);
-  if (grid.interior() == 0)
+  CoverageGrid coarse(field);
+  std::optional<CoverageGrid> fine;
+  if (finer) fine.emplace(*finer);
+  CoverageGrid& grid = fine ? *fine : coarse;
+  r.voxel = lattice.h;
+  if (grid.interior() == 0 || coarse.interior() == 0)
     throw InvalidInput("the mesh has no interior voxel at voxel size " + std::to_string(field.h) +
                        ": use more --voxels");
-  FillContract contract(distance, field, options, grid.interior());
+  FillContract contract(distance, field, options, r.voxel, grid.interior());
   std::vector<char> exact(cand.size(), 0);
   // Distances while searching come from the field's features (exact distances to the nearest
   // triangles of the voxels around a point: a few dozen point–triangle distances, whatever the
@@ -88,7 +111,7 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
   // is re-checked where it ends.
   auto search = [&](Vec3 c, double rad, bool grow, auto&& gain) {
     std::int64_t best = gain(Sphere{c, rad});
-    for (double step = 0.5 * field.h; step > 0.2 * field.h; step *= 0.5) {
+    for (double step = 0.5 * r.voxel; step > 0.2 * r.voxel; step *= 0.5) {
       for (int iter = 0; iter < 4; ++iter) {
         bool moved = false;
         for (int dz = -1; dz <= 1; ++dz)
@@ -118,6 +141,7 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
   std::vector<char> recorded;
   auto keep = [&](const PlacedSphere& p) {
     grid.cover(p.sphere);
+    if (fine) coarse.cover(p.sphere);
     r.clump.spheres.push_back(p.sphere);
     recorded.push_back(p.recorded);
     r.coverage_curve.push_back(grid.covered_fraction());
@@ -192,7 +216,7 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
         skipped_small = true;
         continue;
       }
-      e.gain = grid.uncovered_in(Sphere{cand[e.index].center, cand[e.index].radius});
+      e.gain = coarse.uncovered_in(Sphere{cand[e.index].center, cand[e.index].radius});
       e.round = round;
       if (e.gain > 0) queue.push(e);
     }
@@ -206,7 +230,8 @@ FillResult fill(const MeshIndex& distance, const DistanceField& field, const Fil
   }
   r.greedy = r.clump;
   if (options.refine_iterations > 0) {
-    const auto budget_work = static_cast<std::int64_t>(options.refine_work * grid.work());
+    const auto budget_work = static_cast<std::int64_t>(
+        options.refine_work * double(grid.work() + (fine ? coarse.work() : 0)));
     const RefineStats stats = refine_spheres(
         r.clump.spheres, recorded, grid, contract, options.min_radius, options.refine_iterations,
         options.refine_min_gain,

@@ -13,7 +13,7 @@ namespace clumpkit {
 
 struct FillResult {
   Clump clump;
-  double voxel = 0.0;
+  double voxel = 0.0;  ///< the coverage lattice's (finer than the field's where the budget asks)
   int candidates = 0;
   /// Covered fraction of the interior voxels after each sphere of the greedy pass (same length
   /// as the clump); the refined clump's coverage is the fidelity report's.
@@ -39,6 +39,11 @@ struct FillResult {
 /// medial candidate whose ball covers the most still-uncovered interior voxels. Coverage gains
 /// only decrease as spheres are added, so a lazy priority queue (re-evaluate the top, accept if
 /// still the best) picks exactly the greedy choice. Ties go to the lower candidate index.
+/// Coarse to fine: where the sphere budget asks for a finer voxel than the field's
+/// (fill_field_options, field_voxel_size), the candidates come from a lattice of that voxel whose
+/// distances are the field's features (make_finer_field), the greedy pass ranks them by what they
+/// cover on the field's own voxels, and the chosen spheres' search, the refinement and the growth
+/// pass count coverage on the finer lattice, whose voxel the result reports.
 /// The interrupter is told ("fill", the fraction of the budget or coverage target reached) before
 /// each sphere; asked to stop, the fill throws Interrupted.
 FillResult fill(const MeshIndex& index, const DistanceField& field, const FillOptions& options,

@@ -6,6 +6,7 @@
 #include "geom/sphere.h"
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -50,6 +51,17 @@ class OvershootLedger {
   // one (+inf, -inf): a chord inside it has no part outside, which most chords of a sphere are,
   // so visit() settles them from this flat array without touching the row.
   mutable std::vector<std::array<double, 2>> single_inside_;
+  mutable std::vector<std::uint32_t> recorded_parts_;  // per row: its recorded parts outside
+  // Blocks of 8 × 8 rows: the intersection of their rows' one inside intervals, once every row
+  // of the block is made and has one (`complete`), so visit() settles a whole block at once when
+  // the widest chord of its rows lies inside it — most of a large sphere's rows.
+  struct Block {
+    int made = 0;         // rows made with exactly one inside interval
+    bool broken = false;  // a row made with none or several
+    double lo = -1e300, hi = 1e300;
+  };
+  mutable std::vector<Block> blocks_;
+  int nby_ = 0;  // blocks along y
   double volume_ = 0.0;
 };
 

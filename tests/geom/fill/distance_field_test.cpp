@@ -95,3 +95,35 @@ TEST(DistanceField, SameResultsOnOneAndTwoThreads) {
   EXPECT_EQ(b.feature, c.feature);
   EXPECT_EQ(a.d, c.d);
 }
+
+// The fill's finer lattice: distances from a coarser field's features. Its sign is the full
+// field's at that voxel; its values are exact distances to real triangles, never below the truth
+// and within a voxel of the full field's, and the count voxel alone never refines the distances.
+TEST(DistanceField, FinerLatticeFromACoarseFieldsFeatures) {
+  Rng rng(3);
+  const Mesh block = make_block(BlockParams{75.1, 58.0, 49.8, 2, 0.8, 1.2}, rng);
+  const MeshIndex index(block);
+  FieldOptions coarse_options;
+  coarse_options.voxels = 24;
+  FieldOptions fine_options = coarse_options;
+  fine_options.count_voxel = 1e-9;  // as fine as kCountVoxelGrowth allows
+  const DistanceField coarse = make_distance_field(index, fine_options);
+  EXPECT_EQ(coarse.h, distance_voxel_size(block, coarse_options));
+  const DistanceField finer = make_finer_field(index, coarse, fine_options);
+  EXPECT_NEAR(finer.h, coarse.h / std::cbrt(kCountVoxelGrowth), 1e-12 * coarse.h);
+  FieldOptions full_options = coarse_options;
+  full_options.voxel_size = finer.h;
+  const DistanceField full = make_distance_field(index, full_options);
+  ASSERT_EQ(full.dims, finer.dims);
+  double worst = 0.0;
+  for (std::size_t q = 0; q < full.d.size(); ++q) {
+    ASSERT_EQ(full.d[q] > 0.0f, finer.d[q] > 0.0f) << q;
+    if (!(finer.d[q] > 0.0f)) continue;
+    const int i = int(q % full.dims[0]), j = int(q / full.dims[0] % full.dims[1]),
+              k = int(q / (std::size_t(full.dims[0]) * full.dims[1]));
+    const double exact = index.distance(full.position(i, j, k));
+    EXPECT_GE(finer.d[q], exact * (1 - 1e-6) - 1e-9) << q;
+    worst = std::max(worst, std::abs(double(finer.d[q]) - double(full.d[q])));
+  }
+  EXPECT_LT(worst, finer.h);
+}

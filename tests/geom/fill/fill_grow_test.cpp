@@ -25,7 +25,7 @@ Grown grow_under(const Mesh& mesh, const std::vector<Sphere>& inscribed, FillOpt
   const MeshIndex index(mesh);
   const DistanceField field = make_distance_field(index, fill_field_options(mesh, o));
   CoverageGrid grid(field);
-  FillContract contract(index, field, o, grid.interior());
+  FillContract contract(index, field, o, field.h, grid.interior());
   Grown g;
   g.spheres = inscribed;
   for (const Sphere& s : g.spheres) grid.cover(s);
@@ -83,8 +83,12 @@ TEST(FillGrow, TheOctahedronsCornersCoverMoreForEveryLargerBudget) {
     const Fidelity f = assess_fidelity(mesh, r.clump, r.voxel / 2);
     EXPECT_GT(f.covered_fraction, last) << budget;
     EXPECT_LE(f.overshoot_fraction, budget + 1e-9) << budget;
-    if (budget == 0.01) EXPECT_GE(f.covered_fraction, 0.895);
-    if (budget == 0.022) EXPECT_GE(f.covered_fraction, 0.905);
+    if (budget == 0.01) {
+      EXPECT_GE(f.covered_fraction, 0.895);
+    }
+    if (budget == 0.022) {
+      EXPECT_GE(f.covered_fraction, 0.905);
+    }
     last = f.covered_fraction;
   }
 }
