@@ -49,11 +49,88 @@ double intersection_length(const std::vector<Interval>& a, const std::vector<Int
   return s;
 }
 
+// Spheres bucketed by centre on a uniform grid of about one sphere per cell, each cell with its
+// largest radius, so the signed distance from a point to the nearest sphere surface
+// (min over spheres of |x − c| − r) reads only the cells that can hold a smaller value than one
+// known: the same minimum as a loop over all spheres, at a fraction of the cost for hundreds.
+class SphereCells {
+ public:
+  explicit SphereCells(const std::vector<Sphere>& spheres) : spheres_(spheres) {
+    lo_ = hi_ = spheres.front().center;
+    for (const Sphere& s : spheres) {
+      lo_ = lo_.cwiseMin(s.center);
+      hi_ = hi_.cwiseMax(s.center);
+      r_max_ = std::max(r_max_, s.radius);
+    }
+    const Vec3 extent = (hi_ - lo_).cwiseMax(Vec3::Constant(1e-9 * (1.0 + r_max_)));
+    size_ = std::cbrt(extent.prod() / double(spheres.size()));
+    size_ = std::max(size_, extent.maxCoeff() / 64.0);
+    for (int a = 0; a < 3; ++a) n_[a] = std::min(64, int(extent[a] / size_) + 1);
+    cells_.resize(std::size_t(n_[0]) * n_[1] * n_[2]);
+    r_cell_.assign(cells_.size(), 0.0);
+    for (int q = 0; q < int(spheres.size()); ++q) {
+      const std::size_t c = cell(spheres[q].center);
+      cells_[c].push_back(q);
+      r_cell_[c] = std::max(r_cell_[c], spheres[q].radius);
+    }
+  }
+
+  // The minimum over spheres of |x − c| − r; `nearest` holds a sphere to start from and is set to
+  // the one found.
+  double nearest_surface(const Vec3& x, int& nearest) const {
+    double best = (x - spheres_[nearest].center).norm() - spheres_[nearest].radius;
+    int lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+      const double reach = best + r_max_;
+      lo[a] = std::clamp(int(std::floor((x[a] - reach - lo_[a]) / size_)), 0, n_[a] - 1);
+      hi[a] = std::clamp(int(std::floor((x[a] + reach - lo_[a]) / size_)), 0, n_[a] - 1);
+    }
+    for (int k = lo[2]; k <= hi[2]; ++k)
+      for (int j = lo[1]; j <= hi[1]; ++j)
+        for (int i = lo[0]; i <= hi[0]; ++i) {
+          const std::size_t c = (std::size_t(k) * n_[1] + j) * n_[0] + i;
+          if (cells_[c].empty()) continue;
+          // The cell's box (its centres) nearest x, less its largest radius: no sphere of it
+          // comes closer.
+          double gap2 = 0.0;
+          const int at[3] = {i, j, k};
+          for (int a = 0; a < 3; ++a) {
+            const double b0 = lo_[a] + at[a] * size_, b1 = b0 + size_;
+            const double g = x[a] < b0 ? b0 - x[a] : (x[a] > b1 ? x[a] - b1 : 0.0);
+            gap2 += g * g;
+          }
+          if (std::sqrt(gap2) - r_cell_[c] >= best) continue;
+          for (int q : cells_[c]) {
+            const double v = (x - spheres_[q].center).norm() - spheres_[q].radius;
+            if (v < best) best = v, nearest = q;
+          }
+        }
+    return best;
+  }
+
+ private:
+  std::size_t cell(const Vec3& p) const {
+    int at[3];
+    for (int a = 0; a < 3; ++a)
+      at[a] = std::clamp(int(std::floor((p[a] - lo_[a]) / size_)), 0, n_[a] - 1);
+    return (std::size_t(at[2]) * n_[1] + at[1]) * n_[0] + at[0];
+  }
+
+  const std::vector<Sphere>& spheres_;
+  Vec3 lo_, hi_;
+  double r_max_ = 0.0, size_ = 1.0;
+  int n_[3] = {1, 1, 1};
+  std::vector<std::vector<int>> cells_;
+  std::vector<double> r_cell_;
+};
+
 // Surface points spread by area: four per spacing² (at least 2,000, at most 400,000), the
 // triangle of each drawn by stratified area and its place in it from a low-discrepancy
 // sequence. The count follows the area, not the triangles, so a scan-sized mesh costs what
 // its coarse original does.
 void surface_distances(const Mesh& mesh, const Clump& clump, double spacing, Fidelity& r) {
+  const SphereCells cells(clump.spheres);
+  int last = 0;  // the sphere nearest the sample before: its value bounds the next one's
   std::vector<double> cumulative(mesh.triangles.size());
   double area = 0.0;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -77,9 +154,7 @@ void surface_distances(const Mesh& mesh, const Clump& clump, double spacing, Fid
     const double u2 = std::fmod(0.5 + 0.5698402909980532 * double(q), 1.0);
     const double s1 = std::sqrt(u1);
     const Vec3 x = (1.0 - s1) * a + s1 * (1.0 - u2) * b + s1 * u2 * c;
-    double dmin = 1e300;
-    for (const auto& s : clump.spheres) dmin = std::min(dmin, (x - s.center).norm() - s.radius);
-    const double d = std::abs(dmin);
+    const double d = std::abs(cells.nearest_surface(x, last));
     sum += d;
     r.surface_max_distance = std::max(r.surface_max_distance, d);
   }
@@ -112,9 +187,33 @@ struct RowCells {
   }
 };
 
+// The fields beyond the volumes: centroid offset and inertia error against the solid, surface
+// distances, and how far the spheres poke out.
+void shape_errors(const Mesh& mesh, const MeshIndex* index, const Clump& clump, double spacing,
+                  const UnionProperties& u, Fidelity& r) {
+  const Vec3 centroid = solid_centroid(mesh);
+  r.centroid_offset = (u.mass.centroid - centroid).norm();
+  const Vec3 lm = Eigen::SelfAdjointEigenSolver<Mat3>(solid_inertia(mesh, centroid)).eigenvalues();
+  const Vec3 lc = Eigen::SelfAdjointEigenSolver<Mat3>(u.mass.inertia).eigenvalues();
+  for (int q = 0; q < 3; ++q)
+    r.inertia_error = std::max(r.inertia_error, std::abs(lc[q] - lm[q]) / lm[q]);
+  surface_distances(mesh, clump, spacing, r);
+  // How far each sphere pokes out: radius minus the distance from its centre to the surface
+  // (meaningful for centres inside the mesh, as every fill's are).
+  std::unique_ptr<MeshIndex> own;
+  if (!index) own = std::make_unique<MeshIndex>(mesh);
+  const MeshIndex& dist = index ? *index : *own;
+  for (const auto& s : clump.spheres) {
+    const double d = dist.distance(s.center);
+    r.overshoot_depth_max = std::max(r.overshoot_depth_max, s.radius - d);
+  }
+  r.overshoot_depth_max = std::max(0.0, r.overshoot_depth_max);
+}
+
 // What both entry points share: `index` is set for a watertight mesh (rows from its crossings),
 // null for one that is not (rows by ray-parity voting).
-Fidelity assess(const Mesh& mesh, const MeshIndex* index, const Clump& clump, double spacing) {
+Fidelity assess(const Mesh& mesh, const MeshIndex* index, const Clump& clump, double spacing,
+                bool volumes_only) {
   validate(clump);
   Fidelity r;
   r.spheres = static_cast<int>(clump.spheres.size());
@@ -201,25 +300,7 @@ Fidelity assess(const Mesh& mesh, const MeshIndex* index, const Clump& clump, do
   r.clump_volume = u.mass.volume;
   r.overshoot_fraction = std::max(0.0, (ball - both) * cell) / r.mesh_volume;
   r.covered_fraction = (r.clump_volume - (ball - both) * cell) / r.mesh_volume;
-  const Vec3 centroid = solid_centroid(mesh);
-  r.centroid_offset = (u.mass.centroid - centroid).norm();
-  const Vec3 lm = Eigen::SelfAdjointEigenSolver<Mat3>(solid_inertia(mesh, centroid)).eigenvalues();
-  const Vec3 lc = Eigen::SelfAdjointEigenSolver<Mat3>(u.mass.inertia).eigenvalues();
-  for (int q = 0; q < 3; ++q)
-    r.inertia_error = std::max(r.inertia_error, std::abs(lc[q] - lm[q]) / lm[q]);
-
-  surface_distances(mesh, clump, spacing, r);
-
-  // How far each sphere pokes out: radius minus the distance from its centre to the surface
-  // (meaningful for centres inside the mesh, as every fill's are).
-  std::unique_ptr<MeshIndex> own;
-  if (!index) own = std::make_unique<MeshIndex>(mesh);
-  const MeshIndex& dist = index ? *index : *own;
-  for (const auto& s : clump.spheres) {
-    const double d = dist.distance(s.center);
-    r.overshoot_depth_max = std::max(r.overshoot_depth_max, s.radius - d);
-  }
-  r.overshoot_depth_max = std::max(0.0, r.overshoot_depth_max);
+  if (!volumes_only) shape_errors(mesh, index, clump, spacing, u, r);
   return r;
 }
 
@@ -228,13 +309,25 @@ Fidelity assess(const Mesh& mesh, const MeshIndex* index, const Clump& clump, do
 Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing) {
   const MeshCheck check = check_mesh(mesh);
   if (!(check.closed && check.manifold && check.oriented))
-    return assess(mesh, nullptr, clump, spacing);
+    return assess(mesh, nullptr, clump, spacing, false);
   const MeshIndex index(mesh);
-  return assess(mesh, &index, clump, spacing);
+  return assess(mesh, &index, clump, spacing, false);
 }
 
 Fidelity assess_fidelity(const MeshIndex& index, const Clump& clump, double spacing) {
-  return assess(index.mesh(), &index, clump, spacing);
+  return assess(index.mesh(), &index, clump, spacing, false);
+}
+
+Fidelity assess_volumes(const Mesh& mesh, const Clump& clump, double spacing) {
+  const MeshCheck check = check_mesh(mesh);
+  if (!(check.closed && check.manifold && check.oriented))
+    return assess(mesh, nullptr, clump, spacing, true);
+  const MeshIndex index(mesh);
+  return assess(mesh, &index, clump, spacing, true);
+}
+
+Fidelity assess_volumes(const MeshIndex& index, const Clump& clump, double spacing) {
+  return assess(index.mesh(), &index, clump, spacing, true);
 }
 
 }  // namespace clumpkit

@@ -59,4 +59,10 @@ Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing = 
 /// in it grows with the triangle count but the mesh's volume integrals.
 Fidelity assess_fidelity(const MeshIndex& index, const Clump& clump, double spacing = 0.0);
 
+/// The volumes alone (mesh and clump volume, covered and overshoot fractions, as
+/// assess_fidelity gives them; the other fields stay 0): what a fill's figures before its
+/// refinement need, without the surface samples and mass properties.
+Fidelity assess_volumes(const Mesh& mesh, const Clump& clump, double spacing = 0.0);
+Fidelity assess_volumes(const MeshIndex& index, const Clump& clump, double spacing = 0.0);
+
 }  // namespace clumpkit

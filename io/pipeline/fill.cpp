@@ -107,10 +107,15 @@ SolidFill fill_solid(const Mesh& mesh, FillOptions fo, const std::string& name,
     ++smaller;
     note(over + "; filled again with a smaller budget");
   }
-  // The greedy clump of the fill kept, assessed the same way (the report's "before").
+  // The greedy clump of the fill kept, its volumes assessed the same way (the report's "before":
+  // covered and overshoot only).
   t = std::chrono::steady_clock::now();
-  out.greedy_fidelity =
-      out.fill.refine_moves > 0 || out.fill.grow_steps > 0 ? assess(out.fill.greedy) : out.fidelity;
+  if (out.fill.refine_moves > 0 || out.fill.grow_steps > 0)
+    out.greedy_fidelity = fo.field.vote_sign
+                              ? assess_volumes(mesh, out.fill.greedy, out.fill.voxel)
+                              : assess_volumes(index, out.fill.greedy, out.fill.voxel);
+  else
+    out.greedy_fidelity = out.fidelity;
   out.seconds_fidelity += seconds_since(t);
   return out;
 }

@@ -33,3 +33,19 @@ TEST(Fidelity, BallsInPhaseWithARowLatticeReadTheirVolume) {
   EXPECT_NEAR(f.overshoot_fraction, balls, 0.15 * balls);
   EXPECT_NEAR(f.covered_fraction, 0.0, 0.15 * balls);
 }
+
+// The volumes alone are the full report's volumes, to the bit, and leave the rest at 0.
+TEST(Fidelity, VolumesAloneAreTheFullReportsVolumes) {
+  const Mesh cube = make_box(Vec3(1, 1, 1));
+  Clump clump;
+  clump.spheres = {Sphere{Vec3(0, 0, 0), 0.5}, Sphere{Vec3(0.3, 0.3, 0.3), 0.25}};
+  const Fidelity full = assess_fidelity(cube, clump, 0.03),
+                 volumes = assess_volumes(cube, clump, 0.03);
+  EXPECT_EQ(volumes.mesh_volume, full.mesh_volume);
+  EXPECT_EQ(volumes.clump_volume, full.clump_volume);
+  EXPECT_EQ(volumes.covered_fraction, full.covered_fraction);
+  EXPECT_EQ(volumes.overshoot_fraction, full.overshoot_fraction);
+  EXPECT_GT(full.overshoot_fraction, 0.0);  // the second sphere reaches past the corner's faces
+  EXPECT_GT(full.surface_mean_distance, 0.0);
+  EXPECT_EQ(volumes.surface_mean_distance, 0.0);
+}
