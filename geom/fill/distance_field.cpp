@@ -93,8 +93,10 @@ double budget_voxel(const Mesh& mesh, double h, double budget) {
   return h;
 }
 
+}  // namespace
+
 // The voxel of the options before the sphere budget's (FieldOptions::count_voxel) is applied.
-double base_voxel_size(const Mesh& mesh, const FieldOptions& o) {
+double distance_voxel_size(const Mesh& mesh, const FieldOptions& o) {
   if (o.voxel_size > 0.0) {
     if (!std::isfinite(o.voxel_size))
       throw InvalidInput("voxel size must be finite, got " + std::to_string(o.voxel_size));
@@ -116,14 +118,8 @@ double base_voxel_size(const Mesh& mesh, const FieldOptions& o) {
   return h;
 }
 
-}  // namespace
-
-double distance_voxel_size(const Mesh& mesh, const FieldOptions& o) {
-  return base_voxel_size(mesh, o);
-}
-
 double field_voxel_size(const Mesh& mesh, const FieldOptions& o) {
-  const double h = base_voxel_size(mesh, o);
+  const double h = distance_voxel_size(mesh, o);
   if (!(o.count_voxel > 0.0) || !(o.count_voxel < h)) return h;
   if (!std::isfinite(o.count_voxel))
     throw InvalidInput("count voxel must be finite, got " + std::to_string(o.count_voxel));

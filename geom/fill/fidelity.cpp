@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace clumpkit {
@@ -47,6 +48,13 @@ double intersection_length(const std::vector<Interval>& a, const std::vector<Int
     (a[i].second < b[j].second) ? ++i : ++j;
   }
   return s;
+}
+
+// Point n of the R2 sequence in the unit square (Roberts 2018): the low-discrepancy sequence of
+// both the surface samples and the rows' places in their cells.
+std::pair<double, double> r2_point(double n) {
+  return {std::fmod(0.5 + 0.7548776662466927 * n, 1.0),
+          std::fmod(0.5 + 0.5698402909980532 * n, 1.0)};
 }
 
 // Spheres bucketed by centre on a uniform grid of about one sphere per cell, each cell with its
@@ -150,8 +158,7 @@ void surface_distances(const Mesh& mesh, const Clump& clump, double spacing, Fid
     const auto& tri = mesh.triangles[t];
     const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
     // R2 sequence (Roberts 2018) mapped uniformly onto the triangle.
-    const double u1 = std::fmod(0.5 + 0.7548776662466927 * double(q), 1.0);
-    const double u2 = std::fmod(0.5 + 0.5698402909980532 * double(q), 1.0);
+    const auto [u1, u2] = r2_point(double(q));
     const double s1 = std::sqrt(u1);
     const Vec3 x = (1.0 - s1) * a + s1 * (1.0 - u2) * b + s1 * u2 * c;
     const double d = std::abs(cells.nearest_surface(x, last));
@@ -178,12 +185,10 @@ struct RowCells {
         ny(static_cast<int>((bb[1].y() - bb[0].y()) / s) + 1),
         nz(static_cast<int>((bb[1].z() - bb[0].z()) / s) + 1) {}
   double y(int j, int k) const {
-    const double n = double(std::size_t(k) * ny + j);
-    return y0 + (j + std::fmod(0.5 + 0.7548776662466927 * n, 1.0)) * spacing;
+    return y0 + (j + r2_point(double(std::size_t(k) * ny + j)).first) * spacing;
   }
   double z(int j, int k) const {
-    const double n = double(std::size_t(k) * ny + j);
-    return z0 + (k + std::fmod(0.5 + 0.5698402909980532 * n, 1.0)) * spacing;
+    return z0 + (k + r2_point(double(std::size_t(k) * ny + j)).second) * spacing;
   }
 };
 
@@ -304,14 +309,20 @@ Fidelity assess(const Mesh& mesh, const MeshIndex* index, const Clump& clump, do
   return r;
 }
 
+// A mesh without its index: rows from its crossings where it is watertight, by ray-parity voting
+// where not.
+Fidelity assess_mesh(const Mesh& mesh, const Clump& clump, double spacing, bool volumes_only) {
+  const MeshCheck check = check_mesh(mesh);
+  if (!(check.closed && check.manifold && check.oriented))
+    return assess(mesh, nullptr, clump, spacing, volumes_only);
+  const MeshIndex index(mesh);
+  return assess(mesh, &index, clump, spacing, volumes_only);
+}
+
 }  // namespace
 
 Fidelity assess_fidelity(const Mesh& mesh, const Clump& clump, double spacing) {
-  const MeshCheck check = check_mesh(mesh);
-  if (!(check.closed && check.manifold && check.oriented))
-    return assess(mesh, nullptr, clump, spacing, false);
-  const MeshIndex index(mesh);
-  return assess(mesh, &index, clump, spacing, false);
+  return assess_mesh(mesh, clump, spacing, false);
 }
 
 Fidelity assess_fidelity(const MeshIndex& index, const Clump& clump, double spacing) {
@@ -319,11 +330,7 @@ Fidelity assess_fidelity(const MeshIndex& index, const Clump& clump, double spac
 }
 
 Fidelity assess_volumes(const Mesh& mesh, const Clump& clump, double spacing) {
-  const MeshCheck check = check_mesh(mesh);
-  if (!(check.closed && check.manifold && check.oriented))
-    return assess(mesh, nullptr, clump, spacing, true);
-  const MeshIndex index(mesh);
-  return assess(mesh, &index, clump, spacing, true);
+  return assess_mesh(mesh, clump, spacing, true);
 }
 
 Fidelity assess_volumes(const MeshIndex& index, const Clump& clump, double spacing) {

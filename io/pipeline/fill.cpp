@@ -68,7 +68,11 @@ SolidFill fill_solid(const Mesh& mesh, FillOptions fo, const std::string& name,
   // voting against the field's sign), the fill runs again with a budget scaled down by the
   // miss, twice at most, and a clump that still breaks the contract is refused: no report shows
   // an overshoot above max_overshoot with exit 0.
-  auto assess = [&](const Clump& clump) {
+  // volumes_only: the volumes alone (assess_volumes), for the greedy clump's "before".
+  auto assess = [&](const Clump& clump, bool volumes_only) {
+    if (volumes_only)
+      return fo.field.vote_sign ? assess_volumes(mesh, clump, out.fill.voxel)
+                                : assess_volumes(index, clump, out.fill.voxel);
     return fo.field.vote_sign ? assess_fidelity(mesh, clump, out.fill.voxel)
                               : assess_fidelity(index, clump, out.fill.voxel);
   };
@@ -82,7 +86,7 @@ SolidFill fill_solid(const Mesh& mesh, FillOptions fo, const std::string& name,
       throw InvalidInput(name + ": no sphere fits with --min-radius " +
                          format_number(fo.min_radius));
     t = std::chrono::steady_clock::now();
-    out.fidelity = assess(out.fill.clump);
+    out.fidelity = assess(out.fill.clump, false);
     out.seconds_fidelity += seconds_since(t);
     const double measured = out.fidelity.overshoot_fraction;
     if (!(measured > contract)) break;
@@ -111,9 +115,7 @@ SolidFill fill_solid(const Mesh& mesh, FillOptions fo, const std::string& name,
   // covered and overshoot only).
   t = std::chrono::steady_clock::now();
   if (out.fill.refine_moves > 0 || out.fill.grow_steps > 0)
-    out.greedy_fidelity = fo.field.vote_sign
-                              ? assess_volumes(mesh, out.fill.greedy, out.fill.voxel)
-                              : assess_volumes(index, out.fill.greedy, out.fill.voxel);
+    out.greedy_fidelity = assess(out.fill.greedy, true);
   else
     out.greedy_fidelity = out.fidelity;
   out.seconds_fidelity += seconds_since(t);
