@@ -33,9 +33,13 @@ struct MassProperties {
 /// that is not positive and finite.
 void validate(const Clump& clump);
 
-/// Indices of the spheres left after exact deduplication: of spheres sharing a centre exactly,
-/// only the largest is kept (the others are nested in it). Sorted ascending. Both sphere-union
-/// engines use it, so they agree on what a duplicate is.
+/// Centres closer than this times the larger radius count as one (distinct_balls).
+inline constexpr double kCoincidentCentres = 1e-8;
+
+/// Indices of the spheres left after deduplication: of spheres whose centres lie within
+/// kCoincidentCentres times the larger radius of each other, only the largest (then the lowest
+/// index) is kept; the others lie inside it but for a sliver at most that thick. Sorted
+/// ascending. Both sphere-union engines use it, so they agree on what a duplicate is.
 std::vector<int> distinct_balls(const std::vector<Sphere>& spheres);
 
 }  // namespace clumpkit
