@@ -14,7 +14,7 @@ namespace clumpkit {
 struct FillResult {
   Clump clump;
   double voxel = 0.0;  ///< the coverage lattice's (finer than the field's where the budget asks)
-  int candidates = 0;
+  int candidates = 0;  ///< medial candidates considered (a looser ridge adds some late)
   /// Covered fraction of the interior voxels after each sphere of the greedy pass (same length
   /// as the clump); the refined clump's coverage is the fidelity report's.
   std::vector<double> coverage_curve;
