@@ -34,8 +34,8 @@ std::vector<int> distinct_balls(const std::vector<Sphere>& s) {
   // power-diagram plane between their balls lies at (d² + r_i² - r_j²) / 2d from the centre,
   // and the rounding of r_i² - r_j² divided by a d of a few ulps moves it by the whole radius:
   // the triangulation (exact predicates) and the floating-point half-spaces then disagree on
-  // which balls bound which, and the union's volume came out 1e-5 to 3e-3 high on fills whose
-  // refinement had put copies of a sphere 1e-16 apart. A ball dropped here lies inside its
+  // which balls bound which, and the union's volume came out up to 3e-3 high on fills that
+  // had put copies of a sphere 1e-16 apart. A ball dropped here lies inside its
   // keeper but for a sliver no thicker than d, so the union loses at most 4πr²·d, 3e-8 of its
   // volume.
   Vec3 lo = s[0].center, hi = s[0].center;

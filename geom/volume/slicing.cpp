@@ -313,18 +313,12 @@ MassProperties union_properties_by_slicing(const Clump& clump) {
   const Vec3 ref = 0.5 * (lo + hi);
   const double extent = (hi - lo).norm();
 
-  // Drop balls inside another ball (the first of exact duplicates stays): they change nothing.
+  // Drop balls inside another ball: they change nothing (distinct_balls left no two alike).
   BallSlicer slicer;
   for (int i = 0; i < n0; ++i) {
     bool hidden = false;
-    for (int j = 0; j < n0 && !hidden; ++j) {
-      if (j == i) continue;
-      const double d = (in[j].center - in[i].center).norm();
-      if (d + in[i].radius <= in[j].radius) {
-        const bool duplicate = d == 0.0 && in[i].radius == in[j].radius;
-        hidden = !duplicate || j < i;
-      }
-    }
+    for (int j = 0; j < n0 && !hidden; ++j)
+      hidden = j != i && (in[j].center - in[i].center).norm() + in[i].radius <= in[j].radius;
     if (!hidden) slicer.balls.push_back({in[i].center - ref, in[i].radius});
   }
   const std::vector<Sphere>& balls = slicer.balls;
