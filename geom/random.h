@@ -1,7 +1,7 @@
 // Seeded, platform-independent random numbers: generator, distributions and per-item streams.
 #pragma once
 
-#include "geom/mesh/mesh.h"
+#include "geom/vec.h"
 
 #include <cstdint>
 

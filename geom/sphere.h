@@ -2,7 +2,7 @@
 // and DEM routine shares.
 #pragma once
 
-#include "geom/mesh/mesh.h"
+#include "geom/vec.h"
 
 #include <vector>
 

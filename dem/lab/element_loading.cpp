@@ -43,8 +43,10 @@ int advance_hold(const World& world, const TestCell& cell, const ElementTestSett
 
 void check_holds(const ElementTestSettings& s) {
   if (s.hold_stresses.empty()) return;
-  if (s.kind != TestKind::oedometer)
-    throw InvalidInput("element test: hold stresses are for the oedometer test only");
+  if (!s.path->holds)
+    throw InvalidInput(std::string("element test: hold stresses are for the oedometer test only, "
+                                   "not the ") +
+                       s.path->name + " test");
   if (s.max_hold_steps < 100)
     throw InvalidInput("element test: max_hold_steps must be at least 100, got " +
                        std::to_string(s.max_hold_steps));
@@ -128,59 +130,175 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
   return run_element_test(world, cell, s, state, stop);
 }
 
-ElementTestResult run_element_test(World& world, const TestCell& cell, const ElementTestSettings& s,
-                                   ElementTestState& state, const std::function<bool()>& stop) {
-  using Mode = Control::Mode;
-  using Phase = ElementTestState::Phase;
+namespace {
+
+// Rejects settings and a resumed state the test cannot run with, before anything moves.
+void check_element_test(const ElementTestSettings& s, const ElementTestState& state) {
   auto positive = [](double v, const char* what) {
     if (!(v > 0.0) || !std::isfinite(v))
       throw InvalidInput(std::string("element test: ") + what + " must be positive, got " +
                          std::to_string(v));
   };
+  if (s.path == nullptr) throw InvalidInput("element test: no loading path");
   positive(s.confining, "confining stress");
   positive(s.strain_rate, "strain rate");
   if (!(s.inertial_number >= 0.0) || !std::isfinite(s.inertial_number))
     throw InvalidInput("element test: inertial number must be 0 or positive, got " +
                        std::to_string(s.inertial_number));
-  if (s.kind != TestKind::triaxial && !(s.final_stress > s.confining))
+  if (s.path->ends_at_final_stress && !(s.final_stress > s.confining))
     throw InvalidInput("element test: final stress must exceed the confining stress");
-  if (s.kind == TestKind::triaxial) positive(s.max_axial_strain, "maximum axial strain");
+  if (!s.path->ends_at_final_stress) positive(s.max_axial_strain, "maximum axial strain");
   if (s.record_every < 1) throw InvalidInput("element test: record_every must be at least 1");
   check_holds(s);
   const int holds = static_cast<int>(s.hold_stresses.size());
   if (state.next_hold < 0 || state.next_hold > holds || (state.holding && state.next_hold == holds))
     throw InvalidInput("element test: the state's hold " + std::to_string(state.next_hold) +
                        " is not one of the test's " + std::to_string(holds));
+}
+
+// The state of a new test: the loading friction, the consolidation's, and the specimen's
+// starting height and solid volume.
+void start_element_test(World& world, const TestCell& cell, const ElementTestSettings& s,
+                        ElementTestState& st) {
+  st.test_friction = s.friction >= 0.0 ? s.friction : world.options().contact.friction;
+  world.rescale_friction(s.consolidation_friction >= 0.0 ? s.consolidation_friction
+                                                         : st.test_friction);
+  st.start_height = cell_height(world, cell);
+  st.solid_volume = 0;
+  for (const Body& b : world.bodies()) st.solid_volume += b.volume;
+  st.phase = ElementTestState::Phase::consolidation;
+}
+
+// The result of the test so far, from its state.
+ElementTestResult element_test_result(const ElementTestState& st, bool stopped) {
+  ElementTestResult r;
+  r.consolidation_steps = st.consolidation_steps;
+  r.consolidated = st.consolidated;
+  r.curve = st.curve;
+  r.solid_volume = st.solid_volume;
+  r.stopped = stopped;
+  return r;
+}
+
+// The curve's row at loading step `step`: strains from the consolidated state.
+CurveRow loading_row(const World& world, const TestCell& cell, const ElementTestSettings& s,
+                     const ElementTestState& st, long long step) {
+  const double h0 = st.height0, v0 = st.volume0;
+  CurveRow c;
+  c.step = step;
+  c.axial_strain = (h0 - cell_height(world, cell)) / h0;
+  const double v = cell_volume(world, cell);
+  c.volumetric_strain = (v0 - v) / v0;
+  c.axial_stress = axial_stress(world, cell);
+  c.lateral_stress = lateral_stress(world, cell);
+  c.p = (c.axial_stress + 2.0 * c.lateral_stress) / 3.0;
+  c.q = c.axial_stress - c.lateral_stress;
+  c.porosity = 1.0 - st.solid_volume / v;
+  c.coordination = coordination_number(world);
+  c.unbalanced = mean_unbalanced_force_ratio(world);
+  // The rate integrates to the gauge's logarithmic strain; as the others, engineering.
+  c.interior_axial_strain = -std::expm1(-st.interior_strain);
+  if (!s.initial_grading.empty()) measure_breakage(world, s, c);
+  return c;
+}
+
+// A bound on the loading steps: the planned duration four times over.
+long long loading_step_bound(const ElementTestSettings& s, double rate, double dt) {
+  const double duration = s.path->duration(s, rate);
+  return static_cast<long long>(std::ceil(4.0 * duration / dt)) + 1000 +
+         static_cast<long long>(s.hold_stresses.size()) * s.max_hold_steps;
+}
+
+// The steps of one record (record_every, or fewer when a hold ends): returns the
+// CurveRow::held code of a hold that ended, else 0.
+int loading_record(World& world, const TestCell& cell, const ElementTestSettings& s,
+                   ElementTestState& st, const ServoGain& gain, double rate, double dt,
+                   double platen_speed) {
+  long long& step = st.loading_steps;
+  int ended = 0;  // CurveRow::held of a hold that ended
+  for (int k = 0; k < s.record_every && !ended; ++k) {
+    Control axial, lateral;
+    s.path->controls(LoadingStep{world, cell, s, st, rate, dt, platen_speed}, axial, lateral);
+    drive_cell(world, cell, axial, lateral, gain, 1);
+    const double base = world.walls()[cell.bottom].point.z(),
+                 quarter = 0.25 * cell_height(world, cell);
+    st.interior_strain +=
+        interior_axial_strain_rate(world, base + quarter, base + 3.0 * quarter) * dt;
+    ++step;
+    if (!s.hold_stresses.empty()) ended = advance_hold(world, cell, s, st);
+  }
+  return ended;
+}
+
+// Whether the loading has ended at the recorded row `c`.
+bool loading_done(const ElementTestSettings& s, const ElementTestState& st, const CurveRow& c,
+                  bool final_held) {
+  // With holds: once the last has ended, and at its end when it holds the final stress.
+  const bool holds_done = !st.holding && st.next_hold == static_cast<int>(s.hold_stresses.size());
+  return holds_done && (final_held || s.path->done(s, c));
+}
+
+// The loading phase, from the consolidated state (or a resumed one) to its end, recording a
+// row every record_every steps; the walls stop at its end. Returns whether `stop` ended it.
+bool run_loading(World& world, const TestCell& cell, const ElementTestSettings& s,
+                 ElementTestState& st, const ServoGain& gain, double dt,
+                 const std::function<bool()>& stop) {
+  const double h0 = st.height0;
+  if (st.curve.empty()) {
+    st.curve.push_back(loading_row(world, cell, s, st, 0));
+    // Asked once at the consolidated state too: a caller may save it (or stop there).
+    if (stop && stop()) return true;
+  }
+  const double rate =
+      s.stress_rate > 0.0 ? s.stress_rate : 20.0 * s.confining * s.strain_rate;  // Pa/s
+  const double base_speed = s.strain_rate * h0;
+  const bool held_inertial = s.inertial_number > 0.0 && s.path->strain_driven;
+  const GrainScale grains = held_inertial ? grain_scale(world.bodies(), s.particles) : GrainScale{};
+  const long long max_steps = loading_step_bound(s, rate, dt);
+  const bool final_held = !s.hold_stresses.empty() && s.hold_stresses.back() >= s.final_stress;
+  const long long& step = st.loading_steps;
+  while (step < max_steps) {
+    // The rate of the next record's steps, from the last row's stress (so a resumed test
+    // continues at the same speed).
+    const double platen_speed =
+        held_inertial
+            ? std::max(base_speed, h0 * inertial_strain_rate(
+                                            grains, s.inertial_number,
+                                            std::max(st.curve.back().axial_stress, s.confining)))
+            : base_speed;
+    const int ended = loading_record(world, cell, s, st, gain, rate, dt, platen_speed);
+    CurveRow c = loading_row(world, cell, s, st, step);
+    c.held = ended ? ended : st.holding ? 1 : 0;
+    st.curve.push_back(c);
+    if (loading_done(s, st, c, final_held)) break;
+    if (stop && stop()) return true;
+  }
+  for (int w : cell.lateral) set_wall_speed(world, w, 0.0);
+  set_wall_speed(world, cell.bottom, 0.0);
+  set_wall_speed(world, cell.top, 0.0);
+  st.phase = ElementTestState::Phase::done;
+  return false;
+}
+
+}  // namespace
+
+ElementTestResult run_element_test(World& world, const TestCell& cell, const ElementTestSettings& s,
+                                   ElementTestState& state, const std::function<bool()>& stop) {
+  using Phase = ElementTestState::Phase;
+  check_element_test(s, state);
 
   ElementTestState& st = state;
-  if (st.phase == Phase::start) {
-    st.test_friction = s.friction >= 0.0 ? s.friction : world.options().contact.friction;
-    world.rescale_friction(s.consolidation_friction >= 0.0 ? s.consolidation_friction
-                                                           : st.test_friction);
-    st.start_height = cell_height(world, cell);
-    st.solid_volume = 0;
-    for (const Body& b : world.bodies()) st.solid_volume += b.volume;
-    st.phase = Phase::consolidation;
-  }
+  if (st.phase == Phase::start) start_element_test(world, cell, s, st);
   const double dt = world.options().timestep;
   const ServoGain gain =
       test_servo_gain(s.gain, s.servo_strain_rate, s.strain_rate, st.start_height, dt);
-  auto result = [&](bool stopped) {
-    ElementTestResult r;
-    r.consolidation_steps = st.consolidation_steps;
-    r.consolidated = st.consolidated;
-    r.curve = st.curve;
-    r.solid_volume = st.solid_volume;
-    r.stopped = stopped;
-    return r;
-  };
 
   // 1. Isotropic consolidation to the confining stress.
   if (st.phase == Phase::consolidation) {
     const Consolidation c = consolidate_cell(world, cell, s.confining, s.consolidation_tolerance,
                                              s.consolidation_unbalanced, s.max_consolidation_steps,
                                              gain, st.consolidation_steps, stop);
-    if (c == Consolidation::stopped) return result(true);
+    if (c == Consolidation::stopped) return element_test_result(st, true);
     st.consolidated = c == Consolidation::equilibrium;
     st.height0 = cell_height(world, cell);
     st.volume0 = cell_volume(world, cell);
@@ -190,102 +308,9 @@ ElementTestResult run_element_test(World& world, const TestCell& cell, const Ele
   }
 
   // 2. Loading, from the consolidated state.
-  const double h0 = st.height0, v0 = st.volume0;
-  auto row = [&](long long step) {
-    CurveRow c;
-    c.step = step;
-    c.axial_strain = (h0 - cell_height(world, cell)) / h0;
-    const double v = cell_volume(world, cell);
-    c.volumetric_strain = (v0 - v) / v0;
-    c.axial_stress = axial_stress(world, cell);
-    c.lateral_stress = lateral_stress(world, cell);
-    c.p = (c.axial_stress + 2.0 * c.lateral_stress) / 3.0;
-    c.q = c.axial_stress - c.lateral_stress;
-    c.porosity = 1.0 - st.solid_volume / v;
-    c.coordination = coordination_number(world);
-    c.unbalanced = mean_unbalanced_force_ratio(world);
-    // The rate integrates to the gauge's logarithmic strain; as the others, engineering.
-    c.interior_axial_strain = -std::expm1(-st.interior_strain);
-    if (!s.initial_grading.empty()) measure_breakage(world, s, c);
-    return c;
-  };
-  if (st.phase == Phase::loading) {
-    if (st.curve.empty()) {
-      st.curve.push_back(row(0));
-      // Asked once at the consolidated state too: a caller may save it (or stop there).
-      if (stop && stop()) return result(true);
-    }
-    const double rate =
-        s.stress_rate > 0.0 ? s.stress_rate : 20.0 * s.confining * s.strain_rate;  // Pa/s
-    const double base_speed = s.strain_rate * h0;
-    const bool held_inertial = s.inertial_number > 0.0 && s.kind != TestKind::isotropic;
-    const GrainScale grains =
-        held_inertial ? grain_scale(world.bodies(), s.particles) : GrainScale{};
-    // A bound on the loading steps: the planned duration four times over.
-    double duration = 0;
-    if (s.kind == TestKind::isotropic) duration = (s.final_stress - s.confining) / rate;
-    if (s.kind == TestKind::oedometer) duration = 0.5 / s.strain_rate;
-    if (s.kind == TestKind::triaxial) duration = s.max_axial_strain / s.strain_rate;
-    const long long max_steps = static_cast<long long>(std::ceil(4.0 * duration / dt)) + 1000 +
-                                static_cast<long long>(s.hold_stresses.size()) * s.max_hold_steps;
-    const bool final_held = !s.hold_stresses.empty() && s.hold_stresses.back() >= s.final_stress;
-    long long& step = st.loading_steps;
-    while (step < max_steps) {
-      // The rate of the next record's steps, from the last row's stress (so a resumed test
-      // continues at the same speed).
-      const double platen_speed =
-          held_inertial
-              ? std::max(base_speed, h0 * inertial_strain_rate(
-                                              grains, s.inertial_number,
-                                              std::max(st.curve.back().axial_stress, s.confining)))
-              : base_speed;
-      int ended = 0;  // CurveRow::held of a hold that ended
-      for (int k = 0; k < s.record_every && !ended; ++k) {
-        Control axial, lateral;
-        switch (s.kind) {
-          case TestKind::isotropic: {
-            const double target = std::min(s.final_stress, s.confining + rate * dt * double(step));
-            axial = lateral = Control{Mode::stress, target, 0.0};
-            break;
-          }
-          case TestKind::oedometer:
-            axial = st.holding ? Control{Mode::top_stress, s.hold_stresses[st.next_hold], 0.0}
-                               : Control{Mode::velocity, 0.0, platen_speed};
-            lateral = Control{Mode::fixed, 0.0, 0.0};
-            break;
-          case TestKind::triaxial:
-            axial = Control{Mode::velocity, 0.0, platen_speed};
-            lateral = Control{Mode::stress, s.confining, 0.0};
-            break;
-        }
-        drive_cell(world, cell, axial, lateral, gain, 1);
-        const double base = world.walls()[cell.bottom].point.z(),
-                     quarter = 0.25 * cell_height(world, cell);
-        st.interior_strain +=
-            interior_axial_strain_rate(world, base + quarter, base + 3.0 * quarter) * dt;
-        ++step;
-        if (!s.hold_stresses.empty()) ended = advance_hold(world, cell, s, st);
-      }
-      CurveRow c = row(step);
-      c.held = ended ? ended : st.holding ? 1 : 0;
-      st.curve.push_back(c);
-      bool done = false;
-      if (s.kind == TestKind::isotropic)
-        done = c.p >= s.final_stress * (1.0 - s.consolidation_tolerance);
-      // With holds: once the last has ended, and at its end when it holds the final stress.
-      if (s.kind == TestKind::oedometer)
-        done = !st.holding && st.next_hold == static_cast<int>(s.hold_stresses.size()) &&
-               (final_held || c.axial_stress >= s.final_stress);
-      if (s.kind == TestKind::triaxial) done = c.axial_strain >= s.max_axial_strain;
-      if (done) break;
-      if (stop && stop()) return result(true);
-    }
-    for (int w : cell.lateral) set_wall_speed(world, w, 0.0);
-    set_wall_speed(world, cell.bottom, 0.0);
-    set_wall_speed(world, cell.top, 0.0);
-    st.phase = Phase::done;
-  }
-  return result(false);
+  if (st.phase == Phase::loading && run_loading(world, cell, s, st, gain, dt, stop))
+    return element_test_result(st, true);
+  return element_test_result(st, false);
 }
 
 void measure_breakage(const World& world, const ElementTestSettings& s, CurveRow& row) {

@@ -1,5 +1,5 @@
-// Element tests on a DEM specimen in a servo-controlled cell (dem/lab/cell.h): isotropic,
-// oedometer, triaxial.
+// Element tests on a DEM specimen in a servo-controlled cell (dem/lab/cell.h), along a loading
+// path (LoadingPath below): isotropic, oedometer, triaxial, constant-p′ triaxial.
 #pragma once
 
 #include "dem/core/world.h"
@@ -46,12 +46,13 @@ GrainScale grain_scale(const std::vector<Body>& bodies, const std::vector<int>& 
 /// The strain rate ε̇ = I·sqrt(σ/ρ)/d (1/s) that gives inertial number I under stress σ (Pa).
 double inertial_strain_rate(const GrainScale& grains, double inertial, double stress);
 
-/// Which element test.
-enum class TestKind { isotropic, oedometer, triaxial };
+struct LoadingPath;
+extern const LoadingPath kTriaxialPath;
 
 /// Parameters of run_element_test (SI).
 struct ElementTestSettings {
-  TestKind kind = TestKind::triaxial;
+  /// Which test: how the walls are driven while loading and when it ends (LoadingPath below).
+  const LoadingPath* path = &kTriaxialPath;
   double confining = 100e3;  ///< consolidation stress, and the lateral stress of a triaxial
   /// isotropic: stress at the end of loading; oedometer: axial stress at the end (Pa).
   double final_stress = 400e3;
@@ -163,6 +164,52 @@ struct ElementTestState {
   std::vector<CurveRow> curve;
 };
 
+/// What a path's controls read at a loading step.
+struct LoadingStep {
+  const World& world;
+  const TestCell& cell;
+  const ElementTestSettings& settings;
+  const ElementTestState& state;
+  double stress_rate;   ///< Pa/s of a stress ramp
+  double dt;            ///< time step (s)
+  double platen_speed;  ///< closing speed of a strain-driven platen (m/s)
+};
+
+/// How an element test's walls are driven while loading, and when the loading ends: one path per
+/// test kind, defined in dem/lab/loading_paths.cpp. A new test kind is a new path there (and its
+/// entry in the job's registry, io/pipeline/test_kinds.cpp); run_element_test reads nothing
+/// else of the kind.
+struct LoadingPath {
+  const char* name;
+  /// The top platen closes at the strain rate (sped up to hold an inertial number, when one is
+  /// set); false: the walls follow a stress ramp at stress_rate.
+  bool strain_driven;
+  /// Ends at final_stress, which must then exceed the confining stress; false: at
+  /// max_axial_strain, which must then be positive.
+  bool ends_at_final_stress;
+  /// Takes hold_stresses: the platen stops at each and its servo holds the stress.
+  bool holds;
+  /// The walls' controls of the next step.
+  void (*controls)(const LoadingStep& at, Control& axial, Control& lateral);
+  /// Whether the loading has reached its end at the recorded row (holds aside).
+  bool (*done)(const ElementTestSettings& s, const CurveRow& row);
+  /// How far the loading is at the row: 0 at the consolidated state, 1 at the end (unclamped).
+  double (*progress)(const ElementTestSettings& s, const CurveRow& row);
+  /// The planned duration of the loading (s), of which the step cap is four times.
+  double (*duration)(const ElementTestSettings& s, double stress_rate);
+};
+
+/// All walls follow a stress ramp from the confining stress to final_stress.
+extern const LoadingPath kIsotropicPath;
+/// The lateral walls fixed, the top platen driven to final_stress (holding at hold_stresses).
+extern const LoadingPath kOedometerPath;
+/// The lateral stress held at the confining stress, the top platen driven to max_axial_strain.
+extern const LoadingPath kTriaxialPath;
+/// The mean stress p′ = (σa + 2σr)/3 held at the confining stress while the top platen is
+/// driven to max_axial_strain: the lateral servo's target is σr = (3p′ − σa)/2 from the axial
+/// stress before each step (never below 0), the path of a stress-path cell's constant-p′ test.
+extern const LoadingPath kConstantMeanStressPath;
+
 /// What a test produced.
 struct ElementTestResult {
   long long consolidation_steps = 0;
@@ -174,10 +221,11 @@ struct ElementTestResult {
 };
 
 /// Consolidates the specimen in `cell` isotropically to the confining stress (servo on every
-/// wall, gravity as the world has it), then loads it: isotropic — all walls follow a stress ramp
-/// to final_stress; oedometer — lateral walls fixed, top platen at strain_rate until
-/// final_stress, held at each of hold_stresses on the way; triaxial — lateral stress held by
-/// servo, top platen at strain_rate to max_axial_strain. `stop` is asked every 1,000 consolidation
+/// wall, gravity as the world has it), then loads it along settings.path: isotropic — all walls
+/// follow a stress ramp to final_stress; oedometer — lateral walls fixed, top platen at
+/// strain_rate until final_stress, held at each of hold_stresses on the way; triaxial — lateral
+/// stress held by servo, top platen at strain_rate to max_axial_strain; triaxial-p — the same
+/// with the mean stress held instead of the lateral one. `stop` is asked every 1,000 consolidation
 /// steps, at the consolidated state (state.phase loading, one curve row) and every record; it ends
 /// the test early when true. Deterministic: the same world and settings give the same curve for any
 /// thread count.

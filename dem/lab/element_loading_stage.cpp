@@ -57,18 +57,7 @@ double fraction_done(const ElementTestState& st, const ElementTestSettings& s) {
     return 0.1 * std::min(1.0, double(st.consolidation_steps) /
                                    double(std::max(1LL, s.max_consolidation_steps)));
   const CurveRow& c = st.curve.back();
-  double f = 0;
-  switch (s.kind) {
-    case TestKind::isotropic:
-      f = (c.p - s.confining) / (s.final_stress - s.confining);
-      break;
-    case TestKind::oedometer:
-      f = (c.axial_stress - s.confining) / (s.final_stress - s.confining);
-      break;
-    case TestKind::triaxial:
-      f = c.axial_strain / s.max_axial_strain;
-      break;
-  }
+  const double f = s.path->progress(s, c);
   return 0.1 + 0.9 * std::clamp(std::isfinite(f) ? f : 0.0, 0.0, 1.0);
 }
 

@@ -2,9 +2,9 @@
 
 #include "dem/specimen/container.h"
 
+#include "dem/core/crushable.h"
 #include "dem/core/timestep.h"
 #include "dem/lab/cell.h"
-#include "dem/lab/crushable.h"
 #include "dem/measure/sampled_porosity.h"
 #include "dem/measure/stress.h"
 #include "dem/specimen/zoned_packing.h"

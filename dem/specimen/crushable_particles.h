@@ -2,7 +2,7 @@
 // planes), each cut into bonded Voronoi cells filled with spheres, drawn for a solid volume.
 #pragma once
 
-#include "dem/lab/crushable.h"
+#include "dem/core/crushable.h"
 #include "dem/specimen/placement.h"
 #include "dem/specimen/specimen_particles.h"
 #include "geom/cells/voronoi_cells.h"

@@ -1,7 +1,7 @@
 // Triangle surface mesh: the one geometry type every shape generator and descriptor works on.
 #pragma once
 
-#include <Eigen/Dense>
+#include "geom/vec.h"
 
 #include <array>
 #include <cstdint>
@@ -9,9 +9,6 @@
 #include <vector>
 
 namespace clumpkit {
-
-using Vec3 = Eigen::Vector3d;
-using Mat3 = Eigen::Matrix3d;
 
 /// Indexed triangle mesh. Triangles are counter-clockwise seen from outside (outward normals).
 struct Mesh {

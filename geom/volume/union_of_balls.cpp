@@ -66,73 +66,30 @@ class Poll {
   bool stop_ = false;
 };
 
-// The pieces of the balls owned by one chunk (`owned`, indices into `balls`), from the regular
-// triangulation of `local` (owned first, then the halo; indices into `balls`). Pieces of other
-// balls are not touched.
-void chunk_pieces(const std::vector<Sphere>& s, const std::vector<int>& balls,
-                  const std::vector<int>& local, std::size_t owned, std::vector<Piece>& pieces,
-                  Poll& poll) {
-  const int n = static_cast<int>(local.size());
-  // Regular triangulation of the weighted centres (weight r²); info = index into `local`.
-  std::vector<std::pair<K::Weighted_point_3, int>> points;
-  points.reserve(n);
-  for (int k = 0; k < n; ++k) {
-    const Sphere& b = s[balls[local[k]]];
-    points.emplace_back(K::Weighted_point_3(K::Point_3(b.center.x(), b.center.y(), b.center.z()),
-                                            b.radius * b.radius),
-                        k);
-  }
-  RegularTriangulation rt;
-  rt.insert(points.begin(), points.end());
-  std::vector<std::pair<K::Weighted_point_3, int>>().swap(points);
-  poll(0);
-
-  // Power-diagram neighbours of the owned balls = edges of the regular triangulation (any
-  // dimension 0–3). The vertices are renumbered in the triangulation's own order (spatially
-  // sorted on insertion), and the owned balls are visited in that order: their cells and
-  // neighbours then lie close together in memory (visited in slab order, two loads in three missed
-  // the cache). `local_of[id]` is the index into `local` of vertex `id`.
-  const int own = static_cast<int>(owned);
-  std::vector<int> local_of;
-  local_of.reserve(n);
-  for (auto v = rt.finite_vertices_begin(); v != rt.finite_vertices_end(); ++v) {
-    local_of.push_back(v->info());
-    v->info() = static_cast<int>(local_of.size()) - 1;
-  }
-  const int nv = static_cast<int>(local_of.size());
-  std::vector<Sphere> ball(nv);  // the vertices' balls, in vertex order
-  std::vector<int> index(nv);    // and their indices into `balls`
-  for (int id = 0; id < nv; ++id) {
-    index[id] = local[local_of[id]];
-    ball[id] = s[balls[index[id]]];
-  }
-  // Neighbours from the cells (dimension 3) or the edges (lower dimensions): the cells' vertices
-  // are read once into a flat array and each owned vertex gets the list of its cells (counted,
-  // then placed); its neighbours are the other vertices of those cells, each kept once (a
-  // stamp per vertex). One sort of every edge of the chunk cost more than the triangulation. In
-  // dimension 3 every finite edge lies on a finite cell, and the six edges of each cell are much
-  // faster to collect than CGAL's edge iterator.
+// A chunk's power-diagram neighbourhoods: the vertices of its regular triangulation, renumbered
+// in the triangulation's own order, and the cells (or edges) around each owned vertex.
+struct ChunkGraph {
+  int own = 0;                // the owned balls are local[0 .. own)
+  std::vector<int> local_of;  // the index into `local` of each vertex
+  std::vector<Sphere> ball;   // the vertices' balls, in vertex order
+  std::vector<int> index;     // and their indices into `balls`
   std::vector<std::array<int, 4>> cells;
   std::vector<std::pair<int, int>> edges;
-  const bool solid = rt.dimension() == 3;
-  if (solid) {
-    cells.reserve(rt.number_of_finite_cells());
-    for (auto c = rt.finite_cells_begin(); c != rt.finite_cells_end(); ++c)
-      cells.push_back(
-          {c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
-  } else {
-    for (auto e = rt.finite_edges_begin(); e != rt.finite_edges_end(); ++e) {
-      const int a = e->first->vertex(e->second)->info();
-      const int b = e->first->vertex(e->third)->info();
-      edges.emplace_back(a, b);
-    }
-  }
-  rt.clear();
-  auto is_owned = [&](int id) { return local_of[id] < own; };
-  // row[id] .. row[id + 1]: the cells (or edges) of owned vertex id.
-  std::vector<std::size_t> row(nv + 1, 0);
+  bool solid = false;            // dimension 3: neighbours from the cells, else the edges
+  std::vector<std::size_t> row;  // row[id] .. row[id + 1]: the cells (or edges) of owned vertex id
   std::vector<int> incident;
-  auto place = [&](const auto& items, auto&& vertices_of) {
+
+  // Whether vertex id is one of the balls the chunk owns.
+  bool is_owned(int id) const { return local_of[id] < own; }
+  // The number of finite vertices.
+  int vertices() const { return static_cast<int>(local_of.size()); }
+
+  // Lists, for each owned vertex, the items (cells or edges) it is a vertex of: counted, then
+  // placed.
+  template <class Items, class VerticesOf>
+  void place(const Items& items, VerticesOf&& vertices_of) {
+    const int nv = vertices();
+    row.assign(nv + 1, 0);
     for (const auto& item : items)
       for (const int v : vertices_of(item))
         if (is_owned(v)) ++row[v + 1];
@@ -142,18 +99,126 @@ void chunk_pieces(const std::vector<Sphere>& s, const std::vector<int>& balls,
     for (std::size_t c = 0; c < items.size(); ++c)
       for (const int v : vertices_of(items[c]))
         if (is_owned(v)) incident[next[v]++] = static_cast<int>(c);
-  };
-  if (solid)
-    place(cells, [](const std::array<int, 4>& c) { return c; });
+  }
+};
+
+// Regular triangulation of the weighted centres (weight r²) of the balls `local` (indices into
+// `balls`); info = index into `local`.
+void triangulate(const std::vector<Sphere>& s, const std::vector<int>& balls,
+                 const std::vector<int>& local, RegularTriangulation& rt) {
+  const int n = static_cast<int>(local.size());
+  std::vector<std::pair<K::Weighted_point_3, int>> points;
+  points.reserve(n);
+  for (int k = 0; k < n; ++k) {
+    const Sphere& b = s[balls[local[k]]];
+    points.emplace_back(K::Weighted_point_3(K::Point_3(b.center.x(), b.center.y(), b.center.z()),
+                                            b.radius * b.radius),
+                        k);
+  }
+  rt.insert(points.begin(), points.end());
+  std::vector<std::pair<K::Weighted_point_3, int>>().swap(points);
+}
+
+// The neighbourhoods of the chunk's `owned` balls (the first of `local`) from its regular
+// triangulation `rt`, which is cleared.
+ChunkGraph chunk_graph(RegularTriangulation& rt, const std::vector<Sphere>& s,
+                       const std::vector<int>& balls, const std::vector<int>& local,
+                       std::size_t owned) {
+  ChunkGraph g;
+  // Power-diagram neighbours of the owned balls = edges of the regular triangulation (any
+  // dimension 0–3). The vertices are renumbered in the triangulation's own order (spatially
+  // sorted on insertion), and the owned balls are visited in that order: their cells and
+  // neighbours then lie close together in memory (visited in slab order, two loads in three missed
+  // the cache). `local_of[id]` is the index into `local` of vertex `id`.
+  g.own = static_cast<int>(owned);
+  g.local_of.reserve(local.size());
+  for (auto v = rt.finite_vertices_begin(); v != rt.finite_vertices_end(); ++v) {
+    g.local_of.push_back(v->info());
+    v->info() = static_cast<int>(g.local_of.size()) - 1;
+  }
+  const int nv = g.vertices();
+  g.ball.resize(nv);
+  g.index.resize(nv);
+  for (int id = 0; id < nv; ++id) {
+    g.index[id] = local[g.local_of[id]];
+    g.ball[id] = s[balls[g.index[id]]];
+  }
+  // Neighbours from the cells (dimension 3) or the edges (lower dimensions): the cells' vertices
+  // are read once into a flat array and each owned vertex gets the list of its cells (counted,
+  // then placed); its neighbours are the other vertices of those cells, each kept once (a
+  // stamp per vertex). One sort of every edge of the chunk cost more than the triangulation. In
+  // dimension 3 every finite edge lies on a finite cell, and the six edges of each cell are much
+  // faster to collect than CGAL's edge iterator.
+  g.solid = rt.dimension() == 3;
+  if (g.solid) {
+    g.cells.reserve(rt.number_of_finite_cells());
+    for (auto c = rt.finite_cells_begin(); c != rt.finite_cells_end(); ++c)
+      g.cells.push_back(
+          {c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
+  } else {
+    for (auto e = rt.finite_edges_begin(); e != rt.finite_edges_end(); ++e) {
+      const int a = e->first->vertex(e->second)->info();
+      const int b = e->first->vertex(e->third)->info();
+      g.edges.emplace_back(a, b);
+    }
+  }
+  rt.clear();
+  if (g.solid)
+    g.place(g.cells, [](const std::array<int, 4>& c) { return c; });
   else
-    place(edges, [](const std::pair<int, int>& e) {
+    g.place(g.edges, [](const std::pair<int, int>& e) {
       return std::array<int, 2>{e.first, e.second};
     });
+  return g;
+}
+
+// The half-spaces of owned vertex id's power cell, one per neighbour in index order; `seen` is
+// the stamp per vertex, `neighbours` a work array.
+void power_planes(const ChunkGraph& g, int id, std::vector<int>& seen,
+                  std::vector<std::pair<int, int>>& neighbours, std::vector<HalfSpace>& planes) {
+  // Each neighbour once, in index order (the half-spaces' order, so a ball's piece does not
+  // depend on the chunking).
+  neighbours.clear();
+  seen[id] = id;
+  auto add = [&](int b) {
+    if (seen[b] != id) neighbours.push_back({g.index[b], b});
+    seen[b] = id;
+  };
+  for (std::size_t r = g.row[id]; r < g.row[id + 1]; ++r) {
+    if (g.solid)
+      for (const int b : g.cells[g.incident[r]]) add(b);
+    else
+      add(g.edges[g.incident[r]].first), add(g.edges[g.incident[r]].second);
+  }
+  std::sort(neighbours.begin(), neighbours.end());
+  const Sphere& bi = g.ball[id];
+  planes.clear();
+  for (const auto& [j, b] : neighbours) {
+    const Sphere& bj = g.ball[b];
+    const Vec3 dv = bj.center - bi.center;
+    const double d2 = dv.squaredNorm();
+    const double dist = std::sqrt(d2);
+    planes.push_back(
+        {dv / dist, (d2 + (bi.radius - bj.radius) * (bi.radius + bj.radius)) / (2.0 * dist)});
+  }
+}
+
+// The pieces of the balls owned by one chunk (`owned`, indices into `balls`), from the regular
+// triangulation of `local` (owned first, then the halo; indices into `balls`). Pieces of other
+// balls are not touched.
+void chunk_pieces(const std::vector<Sphere>& s, const std::vector<int>& balls,
+                  const std::vector<int>& local, std::size_t owned, std::vector<Piece>& pieces,
+                  Poll& poll) {
+  RegularTriangulation rt;
+  triangulate(s, balls, local, rt);
+  poll(0);
+  const ChunkGraph g = chunk_graph(rt, s, balls, local, owned);
+  const int nv = g.vertices();
 
   // Owned balls that are no vertex are hidden: their pieces are empty.
   std::vector<char> is_vertex(owned, 0);
   for (int id = 0; id < nv; ++id)
-    if (is_owned(id)) is_vertex[local_of[id]] = 1;
+    if (g.is_owned(id)) is_vertex[g.local_of[id]] = 1;
   for (std::size_t k = 0; k < owned; ++k)
     if (!is_vertex[k]) pieces[local[k]].empty = true;
 
@@ -164,34 +229,10 @@ void chunk_pieces(const std::vector<Sphere>& s, const std::vector<int>& balls,
   constexpr std::size_t kPollEvery = 1 << 12;
   std::size_t since_poll = owned - std::count(is_vertex.begin(), is_vertex.end(), char(1));
   for (int id = 0; id < nv; ++id) {
-    if (!is_owned(id)) continue;
+    if (!g.is_owned(id)) continue;
     if (++since_poll >= kPollEvery) poll(std::exchange(since_poll, 0));
-    // Each neighbour once, in index order (the half-spaces' order, so a ball's piece does not
-    // depend on the chunking).
-    neighbours.clear();
-    seen[id] = id;
-    auto add = [&](int b) {
-      if (seen[b] != id) neighbours.push_back({index[b], b});
-      seen[b] = id;
-    };
-    for (std::size_t r = row[id]; r < row[id + 1]; ++r) {
-      if (solid)
-        for (const int b : cells[incident[r]]) add(b);
-      else
-        add(edges[incident[r]].first), add(edges[incident[r]].second);
-    }
-    std::sort(neighbours.begin(), neighbours.end());
-    const Sphere& bi = ball[id];
-    planes.clear();
-    for (const auto& [j, b] : neighbours) {
-      const Sphere& bj = ball[b];
-      const Vec3 dv = bj.center - bi.center;
-      const double d2 = dv.squaredNorm();
-      const double dist = std::sqrt(d2);
-      planes.push_back(
-          {dv / dist, (d2 + (bi.radius - bj.radius) * (bi.radius + bj.radius)) / (2.0 * dist)});
-    }
-    pieces[index[id]] = ball_piece(bi.radius, planes, scratch);
+    power_planes(g, id, seen, neighbours, planes);
+    pieces[g.index[id]] = ball_piece(g.ball[id].radius, planes, scratch);
   }
   poll(since_poll);
 }

@@ -1,8 +1,7 @@
-// `clumpkit test isotropic|oedometer|triaxial --specimen DIR --recipe T.toml --out DIR`.
+// `clumpkit test KIND --specimen DIR --recipe T.toml --out DIR` (KIND: io/pipeline/test_kinds.h).
 #include "geom/format.h"
 #include "io/cli/common.h"
-#include "io/pipeline/cpt.h"
-#include "io/pipeline/element_job.h"
+#include "io/pipeline/test_kinds.h"
 #include "io/recipes/lab_recipe.h"
 
 #include <nlohmann/json.hpp>
@@ -21,27 +20,21 @@ void register_test(CLI::App& app) {
     bool allow_dynamic = false, save_consolidated = false;
   };
   auto o = std::make_shared<Opts>();
+  std::string kinds;
+  for (const TestKind& k : test_kinds())
+    kinds += std::string(kinds.empty() ? "" : "; ") + k.name + ": " + k.summary;
   auto* c = app.add_subcommand(
       "test",
       "Element test or cone penetration test of a specimen (a `clumpkit specimen` directory) in a "
       "frictionless cylinder cell, gravity off: isotropic consolidation to [test] confining by "
-      "servo-controlled walls, then isotropic (stress ramp to final_stress: bulk_modulus), "
-      "oedometer (radial wall fixed, "
-      "platen at strain_rate to final_stress: constrained_modulus, and "
-      "constrained_modulus_interior from the strain of the middle half of the height, k0, "
-      "compression_index over the last decade, yield_stress at the knee of e-log sv) or "
-      "triaxial (radial "
-      "stress held, platen at strain_rate to max_axial_strain: young_modulus at 1e-4, "
-      "peak_friction_angle, critical_friction_angle) or cpt (the [probe] cone pushed down the "
-      "cell's axis from the top platen at its velocity to its depth, the cell's stresses held: "
-      "curve.csv step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa). Writes DIR/curve.csv "
-      "(compression positive), curve.png, report.json, manifest.json, in DIR.partial until the end "
-      "(a "
-      "checkpoint every --checkpoint-seconds and on Ctrl-C; continue with --resume). A crushable "
-      "specimen (bonds.csv) adds breakage columns (bonds broken in mode I, II or mixed), "
-      "grading.csv, the breakage plots and fragments.vtp (colour by particle or fragment). Same "
-      "bytes for any --threads and after a resume.");
-  c->add_option("KIND", o->kind, "isotropic, oedometer, triaxial or cpt")->required();
+      "servo-controlled walls, then the test of KIND (" +
+          kinds +
+          "). Writes DIR/curve.csv (compression positive), curve.png, report.json, manifest.json, "
+          "in DIR.partial until the end (a checkpoint every --checkpoint-seconds and on Ctrl-C; "
+          "continue with --resume). A crushable specimen (bonds.csv) adds breakage columns (bonds "
+          "broken in mode I, II or mixed), grading.csv, the breakage plots and fragments.vtp "
+          "(colour by particle or fragment). Same bytes for any --threads and after a resume.");
+  c->add_option("KIND", o->kind, test_kind_names())->required();
   c->add_option("--specimen", o->specimen, "Specimen directory")->required();
   add_recipe_job_options(c, o->run, "Test recipe (see assets/recipes/test-*.toml)", JobKind::staged,
                          "Print report.json on stdout");
@@ -56,8 +49,8 @@ void register_test(CLI::App& app) {
               "cpt --recipe RECIPE`)");
   c->callback([o] {
     const auto t0 = std::chrono::steady_clock::now();
-    const bool cpt = o->kind == "cpt";
-    if (!cpt) test_kind(o->kind);  // an unknown kind is refused before anything is read
+    const TestKind& kind = find_test_kind(o->kind);  // refused before anything is read
+    const bool cpt = kind.path == nullptr;
     set_threads(o->run.job.threads);
     const TestRecipe recipe = read_test_recipe(o->run.recipe);
     ProgressBar bar("test", o->run.job.quiet);
@@ -67,9 +60,7 @@ void register_test(CLI::App& app) {
     jo.allow_dynamic = o->allow_dynamic;
     jo.save_consolidated = o->save_consolidated;
     const LabJobResult job =
-        cpt ? run_cpt_job(o->specimen, recipe, o->run.out, jo, signal_interrupter(bar, "test"))
-            : run_element_test_job(test_kind(o->kind), o->specimen, recipe, o->run.out, jo,
-                                   signal_interrupter(bar, "test"));
+        kind.job(kind, o->specimen, recipe, o->run.out, jo, signal_interrupter(bar, "test"));
     bar.finish();
     if (!job.afresh_reason.empty()) note("started afresh: " + job.afresh_reason);
     const nlohmann::ordered_json& rep = job.report;

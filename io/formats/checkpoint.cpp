@@ -210,6 +210,30 @@ struct WorldCodec {
 
   // Reads the current format (kCheckpointVersion) only.
   static World read(Reader& r) {
+    const WorldOptions o = read_options(r);
+    const std::int64_t steps = r.i64();
+    const double time = r.f64();
+    const std::int64_t builds = r.i64();
+    const std::uint8_t dirty = r.u8();
+    if (dirty > 1) r.fail("corrupt neighbour-list flag " + std::to_string(dirty));
+
+    World world = [&] {
+      try {
+        return World(o);
+      } catch (const InvalidInput& e) {
+        r.fail(e.what());
+      }
+    }();
+
+    read_bodies(r, world);
+    read_walls(r, world);
+    read_bonds(r, world);
+    restore_contacts_and_lists(r, world, steps, time, builds, dirty);
+    return world;
+  }
+
+  // The world's options, each checked where a value could be out of range.
+  static WorldOptions read_options(Reader& r) {
     WorldOptions o;
     o.gravity = r.vec();
     o.timestep = r.f64();
@@ -232,20 +256,11 @@ struct WorldCodec {
     const std::uint8_t broken_act = r.u8();
     if (broken_act > 1) r.fail("corrupt broken-bond flag " + std::to_string(broken_act));
     o.broken_bonds_act = broken_act == 1;
-    const std::int64_t steps = r.i64();
-    const double time = r.f64();
-    const std::int64_t builds = r.i64();
-    const std::uint8_t dirty = r.u8();
-    if (dirty > 1) r.fail("corrupt neighbour-list flag " + std::to_string(dirty));
+    return o;
+  }
 
-    World world = [&] {
-      try {
-        return World(o);
-      } catch (const InvalidInput& e) {
-        r.fail(e.what());
-      }
-    }();
-
+  // The bodies, added to the world in order (orientations kept bit for bit).
+  static void read_bodies(Reader& r, World& world) {
     const std::size_t bodies = r.count(8, "body");
     for (std::size_t k = 0; k < bodies; ++k) {
       Body b;
@@ -281,7 +296,10 @@ struct WorldCodec {
       }
       world.bodies().back().orientation = q;  // exact bits, not re-normalised
     }
+  }
 
+  // The walls, a probe's profile validated.
+  static void read_walls(Reader& r, World& world) {
     const std::size_t walls = r.count(1 + 12 * 8, "wall");
     for (std::size_t k = 0; k < walls; ++k) {
       Wall wall;
@@ -305,32 +323,38 @@ struct WorldCodec {
       }
       world.add_wall(wall);
     }
+  }
 
-    {
-      const std::size_t bonds = r.count(8 + 24 + 8 + 8, "bond");
-      for (std::size_t k = 0; k < bonds; ++k) {
-        Bond bond;
-        bond.a = r.i32(), bond.b = r.i32();
-        bond.normal_in_a = r.vec();
-        bond.factor = r.f64();
-        bond.points.resize(r.count(12 * 8, "bond point"));
-        for (BondPoint& p : bond.points) {
-          p.in_a = r.vec(), p.in_b = r.vec(), p.area = r.f64(), p.state.damage = r.f64();
-          p.state.slip = r.vec();
-          p.state.failure_mix = r.f64();
-          if (!(p.state.damage >= 0.0 && p.state.damage <= 1.0))
-            r.fail("bond " + std::to_string(k) + " has a damage outside [0, 1]");
-          if (!(p.state.failure_mix >= 0.0 && p.state.failure_mix <= 1.0))
-            r.fail("bond " + std::to_string(k) + " has a failure mix outside [0, 1]");
-        }
-        try {
-          world.add_bond(std::move(bond));
-        } catch (const InvalidInput& e) {
-          r.fail("bond " + std::to_string(k) + ": " + e.what());
-        }
+  // The bonds, each point's damage and failure mix checked.
+  static void read_bonds(Reader& r, World& world) {
+    const std::size_t bonds = r.count(8 + 24 + 8 + 8, "bond");
+    for (std::size_t k = 0; k < bonds; ++k) {
+      Bond bond;
+      bond.a = r.i32(), bond.b = r.i32();
+      bond.normal_in_a = r.vec();
+      bond.factor = r.f64();
+      bond.points.resize(r.count(12 * 8, "bond point"));
+      for (BondPoint& p : bond.points) {
+        p.in_a = r.vec(), p.in_b = r.vec(), p.area = r.f64(), p.state.damage = r.f64();
+        p.state.slip = r.vec();
+        p.state.failure_mix = r.f64();
+        if (!(p.state.damage >= 0.0 && p.state.damage <= 1.0))
+          r.fail("bond " + std::to_string(k) + " has a damage outside [0, 1]");
+        if (!(p.state.failure_mix >= 0.0 && p.state.failure_mix <= 1.0))
+          r.fail("bond " + std::to_string(k) + " has a failure mix outside [0, 1]");
+      }
+      try {
+        world.add_bond(std::move(bond));
+      } catch (const InvalidInput& e) {
+        r.fail("bond " + std::to_string(k) + ": " + e.what());
       }
     }
+  }
 
+  // The contact lists and neighbour lists (their sphere and wall indices checked), restored
+  // together with the clock read before the bodies.
+  static void restore_contacts_and_lists(Reader& r, World& world, std::int64_t steps, double time,
+                                         std::int64_t builds, std::uint8_t dirty) {
     const int n_spheres = world.sphere_count();
     const int n_walls = static_cast<int>(world.walls().size());
     auto check_sphere = [&](int s, const char* what) {
@@ -397,7 +421,6 @@ struct WorldCodec {
     } catch (const InvalidInput& e) {
       r.fail(e.what());
     }
-    return world;
   }
 };
 

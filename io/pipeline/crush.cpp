@@ -1,7 +1,7 @@
 #include "io/pipeline/crush.h"
 
 #include "dem/core/bond.h"
-#include "dem/lab/crushable.h"
+#include "dem/core/crushable.h"
 #include "dem/lab/weibull.h"
 #include "geom/cells/cell_bonds.h"
 #include "geom/errors.h"
@@ -156,17 +156,13 @@ std::vector<dem::CrushSample> read_curve(const fs::path& path) {
   return out;
 }
 
-}  // namespace
+// The colours of a plot's series, in turn.
+const std::array<std::array<unsigned char, 3>, 6> kCrushColours{
+    {{20, 70, 180}, {200, 60, 40}, {30, 150, 60}, {150, 60, 170}, {230, 140, 20}, {60, 60, 60}}};
 
-CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
-                         const Interrupter& interrupter) {
-  check_output_directory(out_dir);
-  std::vector<Job> jobs;
-  for (std::size_t s = 0; s < recipe.sets.size(); ++s)
-    for (int k = 0; k < recipe.sets[s].samples; ++k) jobs.push_back({s, std::size_t(k)});
-  const std::size_t total = jobs.size();
-
-  const fs::path out = out_dir + ".partial", parts = out / "particles";
+// The partial directory: started afresh unless it was started from this very recipe, cleared of
+// stray temporaries and stamped with the recipe.
+void prepare_crush_partial(const CrushRecipe& recipe, const fs::path& out, const fs::path& parts) {
   const fs::path stamp = out / "recipe.toml";
   std::error_code ec;
   if (fs::exists(out) && !(fs::exists(stamp) && read_file(stamp.string()) == recipe.text))
@@ -175,12 +171,15 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
   fs::create_directories(parts, ec);
   if (ec) throw IoError(out.string() + ": cannot create directory: " + ec.message());
   write_file_atomically(stamp.string(), [&](std::ostream& o) { o << recipe.text; });
+}
 
-  CrushJobResult result;
-  result.particles = total;
-  std::vector<nlohmann::ordered_json> records(total);
+// The particles still to crush: those without a record and a curve of an earlier run, or whose
+// record is damaged (noted as redone). The others' records are read back and counted resumed.
+std::vector<std::size_t> resume_crush_particles(const fs::path& parts,
+                                                std::vector<nlohmann::ordered_json>& records,
+                                                CrushJobResult& result) {
   std::vector<std::size_t> todo;
-  for (std::size_t i = 0; i < total; ++i) {
+  for (std::size_t i = 0; i < records.size(); ++i) {
     const fs::path rec = parts / (id_name(i) + ".json");
     if (fs::exists(rec) && fs::exists(parts / (id_name(i) + ".csv"))) {
       if (read_sealed_record(rec.string(), records[i])) {
@@ -191,12 +190,21 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
     }
     todo.push_back(i);
   }
+  return todo;
+}
 
+// Crushes the particles to do into their records; true when the interrupter stopped the run.
+// The first particle's failure is rethrown (an invalid input with the recipe's path).
+bool crush_particles(const CrushRecipe& recipe, const std::vector<Job>& jobs,
+                     const std::vector<std::size_t>& todo, const fs::path& parts,
+                     std::vector<nlohmann::ordered_json>& records, std::size_t resumed,
+                     const Interrupter& interrupter) {
+  const std::size_t total = jobs.size();
   // Particles in parallel, each deterministic on its own stream; the interrupter is asked
   // between particles, from one thread at a time.
   std::mutex tell;
   std::atomic<bool> stop{false};
-  std::atomic<std::size_t> done{result.resumed};
+  std::atomic<std::size_t> done{resumed};
   std::exception_ptr failure;
   tbb::parallel_for(std::size_t(0), todo.size(), [&](std::size_t k) {
     if (stop.load()) return;
@@ -219,20 +227,13 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
       throw InvalidInput(recipe.path + ": " + e.what());
     }
   }
-  if (stop.load())
-    throw Interrupted("crush interrupted; the finished particles are kept in " + out.string() +
-                      " for a rerun");
+  return stop.load();
+}
 
-  // Every curve, read once: the largest force of each (a survivor's strength lies above it over
-  // D²) and the plots of each set.
-  std::vector<std::vector<dem::CrushSample>> curve(total);
-  std::vector<double> max_force(total, 0.0);
-  for (std::size_t i = 0; i < total; ++i) {
-    curve[i] = read_curve(parts / (id_name(i) + ".csv"));
-    for (const dem::CrushSample& x : curve[i]) max_force[i] = std::max(max_force[i], x.force);
-  }
-
-  // Per particle table.
+// Per particle table (results.csv), with the largest force of each curve.
+void write_crush_results(const fs::path& out, const std::vector<nlohmann::ordered_json>& records,
+                         const std::vector<double>& max_force) {
+  const std::size_t total = records.size();
   write_file_atomically((out / "results.csv").string(), [&](std::ostream& o) {
     o << "id,set,sample,diameter_m,cells,bonds,failed,failure,peak_force_n,peak_travel_m,"
          "strength_pa,fragments,largest_fragment,imbalance,steps,max_force_n\n"
@@ -249,42 +250,40 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
         << r["steps"].get<long long>() << "," << max_force[i] << "\n";
     }
   });
+}
 
-  // Weibull statistics per set (Hu et al. 2023 eq. 12), bootstrap streams after the particles'.
-  // A particle that did not fail within the test (tipped over, or pressed flat without a load
-  // drop) enters as a right-censored sample at the largest stress it carried.
-  nlohmann::ordered_json report;
-  report["recipe"] = recipe.path;
-  report["particles"] = total;
-  report["units"] = "SI: m, N, Pa (the paper's mm and MPa: × 1e3 and × 1e-6)";
-  report["bond_scale"] = recipe.scale;
-  report["density_scaling"] = recipe.rig.density_scaling;
-  report["bed_depth"] = recipe.rig.bed_depth;
-  report["survivors"] =
-      "a particle without a failure by the end of its test enters its set's fits as a "
-      "right-censored sample at the largest stress it carried (least squares: Johnson's adjusted "
-      "ranks; maximum likelihood: its survival probability)";
-  std::vector<std::vector<double>> strengths(recipe.sets.size()), survived(recipe.sets.size());
-  std::vector<double> set_diameter(recipe.sets.size(), 0.0), set_force(recipe.sets.size(), 0.0);
-  for (std::size_t i = 0; i < total; ++i) {
-    const auto& r = records[i];
-    const std::size_t s = jobs[i].set;
-    const double d = r["diameter"].get<double>();
-    set_diameter[s] += d / recipe.sets[s].samples;
-    if (r["failed"].get<bool>()) {
-      strengths[s].push_back(r["strength"].get<double>());
-      set_force[s] += r["peak_force"].get<double>();
-    } else if (max_force[i] > 0.0) {
-      survived[s].push_back(max_force[i] / (d * d));
+// The Weibull statistics of a run: each set's strengths and survivors, its fits, and the size law
+// across the sets that ask for it; the state its steps share.
+struct CrushStatistics {
+  CrushStatistics(const CrushRecipe& crush_recipe, std::size_t particles)
+      : recipe(crush_recipe),
+        total(particles),
+        strengths(crush_recipe.sets.size()),
+        survived(crush_recipe.sets.size()),
+        set_diameter(crush_recipe.sets.size(), 0.0),
+        set_force(crush_recipe.sets.size(), 0.0) {}
+
+  // Each particle into its set: a failed one by its strength and peak force, another (when it
+  // carried a load) by the largest stress it carried.
+  void tally(const std::vector<Job>& jobs, const std::vector<nlohmann::ordered_json>& records,
+             const std::vector<double>& max_force) {
+    for (std::size_t i = 0; i < total; ++i) {
+      const auto& r = records[i];
+      const std::size_t s = jobs[i].set;
+      const double d = r["diameter"].get<double>();
+      set_diameter[s] += d / recipe.sets[s].samples;
+      if (r["failed"].get<bool>()) {
+        strengths[s].push_back(r["strength"].get<double>());
+        set_force[s] += r["peak_force"].get<double>();
+      } else if (max_force[i] > 0.0) {
+        survived[s].push_back(max_force[i] / (d * d));
+      }
     }
   }
-  std::vector<double> law_d, law_sigma;
-  std::vector<std::size_t> law_sets;
-  std::vector<PlotSeries> weibull_plot;
-  const std::array<std::array<unsigned char, 3>, 6> colours{
-      {{20, 70, 180}, {200, 60, 40}, {30, 150, 60}, {150, 60, 170}, {230, 140, 20}, {60, 60, 60}}};
-  auto& sets = report["sets"];
-  for (std::size_t s = 0; s < recipe.sets.size(); ++s) {
+
+  // Set s's entry of the report; a fit also adds the set to the size law (when it asks) and
+  // its points to the Weibull plot.
+  nlohmann::ordered_json fit_set(std::size_t s) {
     const CrushSet& cs = recipe.sets[s];
     nlohmann::ordered_json j;
     j["name"] = cs.name;
@@ -327,7 +326,7 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
         p.points.y.push_back(std::log(std::log(1.0 / ps)));
       }
       p.label = cs.name;
-      p.rgb = colours[s % colours.size()];
+      p.rgb = kCrushColours[s % kCrushColours.size()];
       p.line = false;
       p.marker = 4;
       weibull_plot.push_back(p);
@@ -336,57 +335,73 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
       j["weibull_modulus"] = nullptr;
       j["note"] = "fewer than 3 failed samples with distinct strengths: no fit";
     }
-    sets.push_back(j);
+    return j;
   }
-  bool distinct = false;
-  for (double d : law_d) distinct = distinct || d != law_d.front();
-  if (law_d.size() >= 2 && distinct) {
-    const dem::SizeLaw law = dem::size_law(law_d, law_sigma);
-    report["size_exponent"] = law.exponent;
-    report["size_coefficient"] = law.coefficient;
-    report["spearman"] = dem::spearman(law_d, law_sigma);
-    // Bootstrap of α: each set's strengths resampled, σ0 refitted, the law fitted again.
-    Rng boot = Rng::stream(recipe.seed, total + 2 * recipe.sets.size());
-    std::vector<double> alphas;
-    for (int b = 0; b < recipe.bootstrap; ++b) {
-      std::vector<double> s0;
-      for (std::size_t s : law_sets) {
-        const auto [f, c] = dem::weibull_resample(strengths[s], survived[s], boot);
-        s0.push_back(dem::weibull_least_squares(f, c).sigma0);
+
+  // The size law across the fitted sets of distinct diameters, into the report and size.png.
+  void fit_size_law(nlohmann::ordered_json& report, const fs::path& out) {
+    bool distinct = false;
+    for (double d : law_d) distinct = distinct || d != law_d.front();
+    if (law_d.size() >= 2 && distinct) {
+      const dem::SizeLaw law = dem::size_law(law_d, law_sigma);
+      report["size_exponent"] = law.exponent;
+      report["size_coefficient"] = law.coefficient;
+      report["spearman"] = dem::spearman(law_d, law_sigma);
+      // Bootstrap of α: each set's strengths resampled, σ0 refitted, the law fitted again.
+      Rng boot = Rng::stream(recipe.seed, total + 2 * recipe.sets.size());
+      std::vector<double> alphas;
+      for (int b = 0; b < recipe.bootstrap; ++b) {
+        std::vector<double> s0;
+        for (std::size_t s : law_sets) {
+          const auto [f, c] = dem::weibull_resample(strengths[s], survived[s], boot);
+          s0.push_back(dem::weibull_least_squares(f, c).sigma0);
+        }
+        alphas.push_back(dem::size_law(law_d, s0).exponent);
       }
-      alphas.push_back(dem::size_law(law_d, s0).exponent);
+      std::sort(alphas.begin(), alphas.end());
+      const auto at = [&](double q) {
+        return alphas[std::min(alphas.size() - 1, std::size_t(q * double(alphas.size())))];
+      };
+      report["size_exponent_ci90"] = pair(at(0.05), at(0.95));
+      PlotSeries pts, fit;
+      for (std::size_t k = 0; k < law_d.size(); ++k) {
+        pts.points.x.push_back(law_d[k] * 1e3);
+        pts.points.y.push_back(law_sigma[k] * 1e-6);
+      }
+      pts.line = false;
+      pts.marker = 5;
+      pts.label = "sigma0 of each set";
+      const double lo = *std::min_element(law_d.begin(), law_d.end());
+      const double hi = *std::max_element(law_d.begin(), law_d.end());
+      for (int k = 0; k <= 50; ++k) {
+        const double d = lo + (hi - lo) * k / 50.0;
+        fit.points.x.push_back(d * 1e3);
+        fit.points.y.push_back(law.coefficient * std::pow(d, -law.exponent) * 1e-6);
+      }
+      fit.label = "sigma0 = k D^-alpha";
+      fit.rgb = {200, 60, 40};
+      write_plot((out / "size.png").string(), {pts, fit}, "D (mm)", "sigma0 (MPa)",
+                 "Characteristic strength against size");
+    } else {
+      report["size_exponent"] = nullptr;
+      report["size_coefficient"] = nullptr;
     }
-    std::sort(alphas.begin(), alphas.end());
-    const auto at = [&](double q) {
-      return alphas[std::min(alphas.size() - 1, std::size_t(q * double(alphas.size())))];
-    };
-    report["size_exponent_ci90"] = pair(at(0.05), at(0.95));
-    PlotSeries pts, fit;
-    for (std::size_t k = 0; k < law_d.size(); ++k) {
-      pts.points.x.push_back(law_d[k] * 1e3);
-      pts.points.y.push_back(law_sigma[k] * 1e-6);
-    }
-    pts.line = false;
-    pts.marker = 5;
-    pts.label = "sigma0 of each set";
-    const double lo = *std::min_element(law_d.begin(), law_d.end());
-    const double hi = *std::max_element(law_d.begin(), law_d.end());
-    for (int k = 0; k <= 50; ++k) {
-      const double d = lo + (hi - lo) * k / 50.0;
-      fit.points.x.push_back(d * 1e3);
-      fit.points.y.push_back(law.coefficient * std::pow(d, -law.exponent) * 1e-6);
-    }
-    fit.label = "sigma0 = k D^-alpha";
-    fit.rgb = {200, 60, 40};
-    write_plot((out / "size.png").string(), {pts, fit}, "D (mm)", "sigma0 (MPa)",
-               "Characteristic strength against size");
-  } else {
-    report["size_exponent"] = nullptr;
-    report["size_coefficient"] = nullptr;
   }
-  if (!weibull_plot.empty())
-    write_plot((out / "weibull.png").string(), weibull_plot, "ln sigma (sigma in MPa)",
-               "ln ln(1/Ps)", "Weibull plot");
+
+  const CrushRecipe& recipe;
+  const std::size_t total;
+  std::vector<std::vector<double>> strengths, survived;
+  std::vector<double> set_diameter, set_force;
+  std::vector<double> law_d, law_sigma;
+  std::vector<std::size_t> law_sets;
+  std::vector<PlotSeries> weibull_plot;
+};
+
+// The crushing curves of each set, one plot per set.
+void plot_crush_curves(const CrushRecipe& recipe, const std::vector<Job>& jobs,
+                       const std::vector<std::vector<dem::CrushSample>>& curve,
+                       const fs::path& out) {
+  const std::size_t total = jobs.size();
   for (std::size_t s = 0; s < recipe.sets.size(); ++s) {
     std::vector<PlotSeries> curves;
     for (std::size_t i = 0; i < total; ++i) {
@@ -396,12 +411,70 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
         c.points.x.push_back(x.travel * 1e3);
         c.points.y.push_back(x.force * 1e-3);
       }
-      c.rgb = colours[curves.size() % colours.size()];
+      c.rgb = kCrushColours[curves.size() % kCrushColours.size()];
       curves.push_back(c);
     }
     write_plot((out / ("curves_" + file_safe(recipe.sets[s].name) + ".png")).string(), curves,
                "platen travel (mm)", "force (kN)", "Crushing curves: " + recipe.sets[s].name);
   }
+}
+
+}  // namespace
+
+CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
+                         const Interrupter& interrupter) {
+  check_output_directory(out_dir);
+  std::vector<Job> jobs;
+  for (std::size_t s = 0; s < recipe.sets.size(); ++s)
+    for (int k = 0; k < recipe.sets[s].samples; ++k) jobs.push_back({s, std::size_t(k)});
+  const std::size_t total = jobs.size();
+
+  const fs::path out = out_dir + ".partial", parts = out / "particles";
+  prepare_crush_partial(recipe, out, parts);
+
+  CrushJobResult result;
+  result.particles = total;
+  std::vector<nlohmann::ordered_json> records(total);
+  const std::vector<std::size_t> todo = resume_crush_particles(parts, records, result);
+
+  if (crush_particles(recipe, jobs, todo, parts, records, result.resumed, interrupter))
+    throw Interrupted("crush interrupted; the finished particles are kept in " + out.string() +
+                      " for a rerun");
+
+  // Every curve, read once: the largest force of each (a survivor's strength lies above it over
+  // D²) and the plots of each set.
+  std::vector<std::vector<dem::CrushSample>> curve(total);
+  std::vector<double> max_force(total, 0.0);
+  for (std::size_t i = 0; i < total; ++i) {
+    curve[i] = read_curve(parts / (id_name(i) + ".csv"));
+    for (const dem::CrushSample& x : curve[i]) max_force[i] = std::max(max_force[i], x.force);
+  }
+
+  write_crush_results(out, records, max_force);
+
+  // Weibull statistics per set (Hu et al. 2023 eq. 12), bootstrap streams after the particles'.
+  // A particle that did not fail within the test (tipped over, or pressed flat without a load
+  // drop) enters as a right-censored sample at the largest stress it carried.
+  nlohmann::ordered_json report;
+  report["recipe"] = recipe.path;
+  report["particles"] = total;
+  report["units"] = "SI: m, N, Pa (the paper's mm and MPa: × 1e3 and × 1e-6)";
+  report["bond_scale"] = recipe.scale;
+  report["density_scaling"] = recipe.rig.density_scaling;
+  report["bed_depth"] = recipe.rig.bed_depth;
+  report["survivors"] =
+      "a particle without a failure by the end of its test enters its set's fits as a "
+      "right-censored sample at the largest stress it carried (least squares: Johnson's adjusted "
+      "ranks; maximum likelihood: its survival probability)";
+  CrushStatistics stats(recipe, total);
+  stats.tally(jobs, records, max_force);
+  auto& sets = report["sets"];
+  for (std::size_t s = 0; s < recipe.sets.size(); ++s) sets.push_back(stats.fit_set(s));
+  stats.fit_size_law(report, out);
+  if (!stats.weibull_plot.empty())
+    write_plot((out / "weibull.png").string(), stats.weibull_plot, "ln sigma (sigma in MPa)",
+               "ln ln(1/Ps)", "Weibull plot");
+  plot_crush_curves(recipe, jobs, curve, out);
   write_file_atomically((out / "report.json").string(),
                         [&](std::ostream& o) { o << report.dump(2) << "\n"; });
   nlohmann::ordered_json m = manifest_head("crush", recipe.path, recipe.text, recipe.seed);

@@ -1,5 +1,6 @@
-// The job of `clumpkit test isotropic|oedometer|triaxial`: a specimen directory tested in a
-// servo-controlled cell, written as curve.csv, curve.png, report.json and manifest.json.
+// The job of `clumpkit test` for the element tests (io/pipeline/test_kinds.h): a specimen
+// directory tested in a servo-controlled cell, written as curve.csv, curve.png, report.json and
+// manifest.json.
 #pragma once
 
 #include "dem/lab/element_loading.h"
@@ -13,13 +14,13 @@
 
 namespace clumpkit {
 
-/// "isotropic", "oedometer" or "triaxial"; throws InvalidInput naming the known kinds.
-dem::TestKind test_kind(const std::string& name);
+struct TestKind;
 
 /// Tests the specimen in `specimen_dir` (specimen.csv, report.json of `clumpkit specimen`) in
 /// its container as a frictionless cylinder cell (radius from report.json, platens at the
 /// specimen's bottom and top), gravity off, with the specimen's contact law unless the recipe
-/// overrides it; see dem::run_element_test. Writes into `out_dir` (DIR.partial renamed at the
+/// overrides it, along kind.path (see dem::run_element_test); report.json has the fields every
+/// test has and those of kind.report. Writes into `out_dir` (DIR.partial renamed at the
 /// end, job.h): curve.csv (step, axial_strain, volumetric_strain, axial_stress_pa,
 /// radial_stress_pa, p_pa, q_pa, porosity, coordination_number, unbalanced_force,
 /// interior_axial_strain), curve.png, report.json and manifest.json. The interrupter is told
@@ -29,7 +30,7 @@ dem::TestKind test_kind(const std::string& name);
 /// specimen and version; test.ckpt, the world with where the test is and its curve so far),
 /// saved every checkpoint_seconds and when the interrupter asks to stop (then Interrupted is
 /// thrown, saying to --resume). A resumed test ends with the same bytes as one never stopped.
-LabJobResult run_element_test_job(dem::TestKind kind, const std::string& specimen_dir,
+LabJobResult run_element_test_job(const TestKind& kind, const std::string& specimen_dir,
                                   const TestRecipe& recipe, const std::string& out_dir,
                                   const LabJobOptions& options = {},
                                   const Interrupter& interrupter = {});

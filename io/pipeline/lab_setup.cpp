@@ -1,7 +1,7 @@
 #include "io/pipeline/lab_setup.h"
 
+#include "dem/core/crushable.h"
 #include "dem/core/timestep.h"
-#include "dem/lab/crushable.h"
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "geom/hash.h"

@@ -6,8 +6,11 @@
 #include "io/recipes/section_table.h"
 #include "io/recipes/toml_fields.h"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <set>
+#include <utility>
 
 namespace clumpkit {
 
@@ -16,6 +19,22 @@ namespace {
 // A number in (0, 1): "must be in (0, 1), got VALUE" otherwise.
 void open_fraction(const TomlFields& f, const std::string& field, const toml::node& v, double x) {
   if (!(x > 0 && x < 1)) f.fail(field, "must be in (0, 1), got " + toml_show(v));
+}
+
+// An integer key in [lo, hi] (TomlFields::integer_in's message) landing in the int `at(spec)`,
+// its default read off the defaults as number_key does for a double.
+template <class Spec, class At>
+RecipeKey<Spec> integer_in_key(std::string name, std::string help, At at, long long lo,
+                               long long hi) {
+  RecipeKey<Spec> k{std::move(name), "", "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]",
+                    std::move(help), {}, {}};
+  k.read = [at, lo, hi](const TomlFields& f, const toml::node& v, const std::string& field,
+                        Spec& s) { at(s) = f.integer_in(v, field, lo, hi); };
+  k.shown = [at](const Spec& defaults) {
+    Spec copy = defaults;
+    return std::to_string(at(copy));
+  };
+  return k;
 }
 
 }  // namespace
@@ -102,28 +121,48 @@ void read_crush(const TomlFields& f, const toml::node& t, CrushRecipe& r) {
 
 }  // namespace
 
+const RecipeSection<CrushRecipe>& cells_section() {
+  using R = CrushRecipe;
+  static const RecipeSection<R> s{
+      "cells",
+      "The Voronoi cells a parent is cut into (as `clumpkit cells`) and the spread of their "
+      "bonds' strengths; a crushable specimen's recipe reads the same table.",
+      {number_key<R>(
+           "cell_size", "m", "> 0",
+           "a cell's volume-equivalent diameter ℓ: a parent of diameter D gets round((D/ℓ)³) "
+           "cells",
+           [](R& r) -> double& { return r.cells.cell_size; }, &TomlFields::positive),
+       integer_in_key<R>(
+           "lloyd",
+           "Lloyd steps moving each seed to its cell's centroid (0: raw Poisson–Voronoi cells)",
+           [](R& r) -> int& { return r.cells.lloyd; }, 0, 100),
+       integer_in_key<R>(
+           "face_subdivision",
+           "s: each fan triangle of a face splits into 4^s integration points (a numerical "
+           "control)",
+           [](R& r) -> int& { return r.face_subdivision; }, 0, 3),
+       [] {
+         auto k = custom_key<R>(
+             "strength_factor", "", "a number or distribution drawing factors > 0",
+             "factor on each bond's strengths, drawn per face", "",
+             [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
+               r.strength = f.distribution(v, field);
+               try {
+                 validate(r.strength, field);
+               } catch (const InvalidInput& e) {
+                 f.fail(field, e.what());
+               }
+               if (!(lower_bound(r.strength) > 0))
+                 f.fail(field, "must draw positive factors (set min > 0), got " + toml_show(v));
+             });
+         k.shown = [](const R& defaults) { return describe(defaults.strength); };
+         return k;
+       }()}};
+  return s;
+}
+
 void read_cells_table(const TomlFields& f, const toml::table& t, CrushRecipe& r) {
-  for (const auto& [key, v] : t) {
-    const std::string k(key.str()), field = "cells." + k;
-    if (k == "cell_size") {
-      r.cells.cell_size = f.positive(v, field);
-    } else if (k == "lloyd") {
-      r.cells.lloyd = f.integer_in(v, field, 0, 100);
-    } else if (k == "face_subdivision") {
-      r.face_subdivision = f.integer_in(v, field, 0, 3);
-    } else if (k == "strength_factor") {
-      r.strength = f.distribution(v, field);
-      try {
-        validate(r.strength, field);
-      } catch (const InvalidInput& e) {
-        f.fail(field, e.what());
-      }
-      if (!(lower_bound(r.strength) > 0))
-        f.fail(field, "must draw positive factors (set min > 0), got " + toml_show(v));
-    } else {
-      f.fail(field, "unknown key (known: cell_size, lloyd, face_subdivision, strength_factor)");
-    }
-  }
+  read_section(f, t, cells_section(), r);
 }
 
 const RecipeSection<CrushRecipe>& bond_section() {
@@ -179,86 +218,149 @@ void apply_bond_scale(const TomlFields& f, CrushRecipe& r) {
   }
 }
 
-namespace {}  // namespace
+const std::vector<RecipeKey<PolyhedronParams>>& polyhedron_keys() {
+  using P = PolyhedronParams;
+  // The reader takes any finite E, F and offsets: validate(PolyhedronParams) checks them
+  // together (offset_max against offset_min), naming the set or [rock].
+  static const std::vector<RecipeKey<P>> keys{
+      integer_in_key<P>(
+          "planes", "random planes cutting the sphere (Hu et al. 2023)",
+          [](P& p) -> int& { return p.planes; }, 4, 10000),
+      number_key<P>("E", "", "(0, 1]", "elongation I/L the parent is stretched to",
+                    [](P& p) -> double& { return p.E; }),
+      number_key<P>("F", "", "(0, 1]", "flatness S/I the parent is stretched to",
+                    [](P& p) -> double& { return p.F; }),
+      number_key<P>("offset_min", "", "(0, 1]",
+                    "nearest a plane passes to the centre, over the sphere's radius",
+                    [](P& p) -> double& { return p.offset_min; }),
+      number_key<P>("offset_max", "", "[offset_min, 1]",
+                    "farthest a plane passes from the centre, over the sphere's radius",
+                    [](P& p) -> double& { return p.offset_max; })};
+  return keys;
+}
 
 bool read_polyhedron_key(const TomlFields& f, const std::string& key, const toml::node& v,
                          const std::string& field, PolyhedronParams& p) {
-  if (key == "planes")
-    p.planes = f.integer_in(v, field, 4, 10000);
-  else if (key == "E")
-    p.E = f.number(v, field);
-  else if (key == "F")
-    p.F = f.number(v, field);
-  else if (key == "offset_min")
-    p.offset_min = f.number(v, field);
-  else if (key == "offset_max")
-    p.offset_max = f.number(v, field);
-  else
-    return false;
-  return true;
+  for (const auto& k : polyhedron_keys())
+    if (k.name == key) {
+      k.read(f, v, field, p);
+      return true;
+    }
+  return false;
 }
 
 namespace {
 
-CrushSet read_set(const TomlFields& f, const toml::table& t, const std::string& prefix) {
-  CrushSet s;
-  bool have_diameter = false;
-  for (const auto& [key, v] : t) {
-    const std::string k(key.str()), field = prefix + "." + k;
-    if (k == "name") {
-      s.name = f.string(v, field);
-      if (s.name.empty()) f.fail(field, "must not be empty");
-    } else if (k == "shape") {
-      s.shape = f.string(v, field);
-      if (s.shape != "polyhedron" && s.shape != "cylinder")
-        f.fail(field, "expected \"polyhedron\" or \"cylinder\", got " + toml_show(v));
-    } else if (k == "diameter") {
-      s.polyhedron.diameter = f.positive(v, field);
-      have_diameter = true;
-    } else if (k == "samples") {
-      s.samples = f.integer_in(v, field, 3, 100000);
-    } else if (k == "axis") {
-      const std::string a = f.string(v, field);
-      if (a == "long" || a == "x")
-        s.axis = 0;
-      else if (a == "intermediate" || a == "y")
-        s.axis = 1;
-      else if (a == "short" || a == "z")
-        s.axis = 2;
-      else
-        f.fail(field, "expected long, intermediate, short, x, y or z, got " + toml_show(v));
-    } else if (k == "rest") {
-      const std::string a = f.string(v, field);
-      if (a != "face" && a != "corner")
-        f.fail(field, "expected \"face\" or \"corner\", got " + toml_show(v));
-      s.rest_on_face = a == "face";
-    } else if (k == "size_law") {
-      const auto* b = v.as_boolean();
-      if (!b) f.fail(field, "expected true or false, got " + toml_show(v));
-      s.size_law = b->get();
-    } else if (read_polyhedron_key(f, k, v, field, s.polyhedron)) {
-    } else if (k == "height") {
-      s.height = f.positive(v, field);
-    } else if (k == "sides") {
-      s.sides = f.integer_in(v, field, 3, 4096);
-    } else {
-      f.fail(field,
-             "unknown key (known: name, shape, diameter, samples, axis, rest, size_law, planes, "
-             "E, F, offset_min, offset_max, height, sides)");
+// [[set]] shape: "polyhedron" or "cylinder".
+void read_shape(const TomlFields& f, const toml::node& v, const std::string& field, CrushSet& s) {
+  s.shape = f.string(v, field);
+  if (s.shape != "polyhedron" && s.shape != "cylinder")
+    f.fail(field, "expected \"polyhedron\" or \"cylinder\", got " + toml_show(v));
+}
+
+// [[set]] axis: by the parent's axes or by the frame's letters.
+void read_axis(const TomlFields& f, const toml::node& v, const std::string& field, CrushSet& s) {
+  static const std::pair<const char*, int> names[] = {
+      {"long", 0}, {"x", 0}, {"intermediate", 1}, {"y", 1}, {"short", 2}, {"z", 2}};
+  const std::string a = f.string(v, field);
+  for (const auto& [name, axis] : names)
+    if (a == name) {
+      s.axis = axis;
+      return;
     }
-  }
+  f.fail(field, "expected long, intermediate, short, x, y or z, got " + toml_show(v));
+}
+
+}  // namespace
+
+const RecipeSection<CrushSet>& set_section() {
+  using S = CrushSet;
+  static const RecipeSection<S> s = [] {
+    RecipeSection<S> t{
+        "set",
+        "One set of samples of `clumpkit crush`: a parent shape drawn per sample, loaded along "
+        "one axis (one [[set]] per size or shape).",
+        {custom_key<S>(
+             "name", "", "non-empty, unique", "the set's name in the report", "required",
+             [](const TomlFields& f, const toml::node& v, const std::string& field, S& s) {
+               s.name = f.string(v, field);
+               if (s.name.empty()) f.fail(field, "must not be empty");
+             }),
+         custom_key<S>("shape", "", "\"polyhedron\" or \"cylinder\"",
+                       "a sphere cut by random planes (Hu et al. 2023), or a cylinder (the "
+                       "Brazilian test)",
+                       "\"polyhedron\"", read_shape),
+         shown_as(number_key<S>(
+                      "diameter", "m", "> 0",
+                      "volume-equivalent diameter D of a polyhedron; a cylinder's diameter",
+                      [](S& s) -> double& { return s.polyhedron.diameter; }, &TomlFields::positive),
+                  "required"),
+         integer_in_key<S>(
+             "samples", "particles crushed", [](S& s) -> int& { return s.samples; }, 3, 100000),
+         custom_key<S>("axis", "", "\"long\", \"intermediate\", \"short\", \"x\", \"y\" or \"z\"",
+                       "loading axis of the parent's frame (long = x, intermediate = y, short = "
+                       "z; a cylinder's axis is z)",
+                       "\"short\"", read_axis),
+         custom_key<S>(
+             "rest", "", "\"face\" or \"corner\"",
+             "face: the parent turned so that its largest face within 30° of the lower "
+             "platen lies flat on it; corner: as drawn",
+             "\"face\"",
+             [](const TomlFields& f, const toml::node& v, const std::string& field, S& s) {
+               const std::string a = f.string(v, field);
+               if (a != "face" && a != "corner")
+                 f.fail(field, "expected \"face\" or \"corner\", got " + toml_show(v));
+               s.rest_on_face = a == "face";
+             }),
+         custom_key<S>(
+             "size_law", "", "true or false",
+             "part of the size law σ0 = k·D^−α fitted over the sets", "true",
+             [](const TomlFields& f, const toml::node& v, const std::string& field, S& s) {
+               const auto* b = v.as_boolean();
+               if (!b) f.fail(field, "expected true or false, got " + toml_show(v));
+               s.size_law = b->get();
+             })}};
+    for (const auto& k : polyhedron_keys())
+      t.keys.push_back(nested_key<S>(k, [](S& s) -> PolyhedronParams& { return s.polyhedron; }));
+    t.keys.push_back(shown_as(number_key<S>(
+                                  "height", "m", "> 0", "cylinder height",
+                                  [](S& s) -> double& { return s.height; }, &TomlFields::positive),
+                              "required for a cylinder"));
+    t.keys.push_back(integer_in_key<S>(
+        "sides", "facets of a cylinder", [](S& s) -> int& { return s.sides; }, 3, 4096));
+    return t;
+  }();
+  return s;
+}
+
+namespace {
+
+// One [[set]], its fields named "set[i].KEY": the table read under that name.
+CrushSet read_set(const TomlFields& f, const toml::node& t, const std::string& prefix) {
+  RecipeSection<CrushSet> named = set_section();
+  named.name = prefix;
+  CrushSet s;
+  const std::vector<std::string> given = read_section(f, t, named, s);
   if (s.name.empty()) f.fail(prefix + ".name", "is required");
-  if (!have_diameter) f.fail(prefix + ".diameter", "is required (m)");
+  if (std::find(given.begin(), given.end(), "diameter") == given.end())
+    f.fail(prefix + ".diameter", "is required (m)");
   if (s.shape == "polyhedron") {
     try {
       validate(s.polyhedron);
     } catch (const InvalidInput& e) {
       f.fail(prefix, e.what());
     }
-  } else if (!(s.height > 0)) {
-    f.fail(prefix + ".height", "is required for a cylinder (m)");
   }
+  if (s.shape == "cylinder" && !(s.height > 0))
+    f.fail(prefix + ".height", "is required for a cylinder (m)");
   return s;
+}
+
+void read_sets(const TomlFields& f, const toml::node& val, CrushRecipe& r) {
+  const auto* sets = val.as_array();
+  if (!sets) f.fail("set", "expected [[set]] tables, got " + toml_show(val));
+  for (std::size_t i = 0; i < sets->size(); ++i)
+    r.sets.push_back(read_set(f, (*sets)[i], "set[" + std::to_string(i) + "]"));
 }
 
 }  // namespace
@@ -269,30 +371,24 @@ CrushRecipe parse_crush_recipe(const std::string& text, const std::string& path)
   CrushRecipe r;
   r.path = path;
   r.text = text;
-  r.strength = default_strength_factor();
-  r.cells.cell_size = 0.0065;
+  // The top level: each key's reader, in the order the unknown-key message lists them.
+  const std::vector<std::pair<std::string, std::function<void(const toml::node&)>>> top{
+      {"name", [&](const toml::node& v) { r.name = f.string(v, "name"); }},
+      {"description", [&](const toml::node& v) { f.string(v, "description"); }},
+      {"crush", [&](const toml::node& v) { read_crush(f, f.table(v, "crush"), r); }},
+      {"cells", [&](const toml::node& v) { read_cells_table(f, f.table(v, "cells"), r); }},
+      {"bond", [&](const toml::node& v) { read_bond_table(f, f.table(v, "bond"), r); }},
+      {"set", [&](const toml::node& v) { read_sets(f, v, r); }}};
   for (const auto& [key, val] : root) {
     const std::string k(key.str());
-    if (k == "name") {
-      r.name = f.string(val, k);
-    } else if (k == "description") {
-      f.string(val, k);
-    } else if (k == "crush") {
-      read_crush(f, f.table(val, k), r);
-    } else if (k == "cells") {
-      read_cells_table(f, f.table(val, k), r);
-    } else if (k == "bond") {
-      read_bond_table(f, f.table(val, k), r);
-    } else if (k == "set") {
-      const auto* sets = val.as_array();
-      if (!sets) f.fail(k, "expected [[set]] tables, got " + toml_show(val));
-      for (std::size_t i = 0; i < sets->size(); ++i) {
-        const std::string prefix = "set[" + std::to_string(i) + "]";
-        r.sets.push_back(read_set(f, f.table((*sets)[i], prefix), prefix));
-      }
-    } else {
-      f.fail(k, "unknown key (known: name, description, crush, cells, bond, set)");
+    const auto it =
+        std::find_if(top.begin(), top.end(), [&](const auto& e) { return e.first == k; });
+    if (it == top.end()) {
+      std::string known;
+      for (const auto& e : top) known += (known.empty() ? "" : ", ") + e.first;
+      f.fail(k, "unknown key (known: " + known + ")");
     }
+    it->second(val);
   }
   if (r.sets.empty()) f.fail("set", "at least one [[set]] is required");
   std::set<std::string> names;

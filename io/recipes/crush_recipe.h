@@ -50,9 +50,15 @@ struct CrushRecipe {
   double density = 2650.0;
   dem::CrushOptions rig;
   int bootstrap = 1000;
-  CellOptions cells;
+  /// Hu et al. 2023's cell size, 6.5 mm (their 75 … 307 cells at 27.5 … 43.9 mm), held here so
+  /// that a default recipe shows the defaults the reader keeps (cells_section).
+  CellOptions cells = [] {
+    CellOptions c;
+    c.cell_size = 0.0065;
+    return c;
+  }();
   int face_subdivision = 0;  ///< integration points per fan triangle: 4^s (cell_bonds)
-  Distribution strength;
+  Distribution strength = default_strength_factor();
   dem::CohesiveParams law;  ///< with `scale` applied (σ × s, G × s²)
   double scale = 1.0;
   std::vector<CrushSet> sets;
@@ -79,5 +85,11 @@ void apply_bond_scale(const TomlFields& f, CrushRecipe& r);
 /// The tables of the [crush] and [bond] sections (io/recipes/section_table.h).
 const RecipeSection<CrushRecipe>& crush_section();
 const RecipeSection<CrushRecipe>& bond_section();
+/// The table of [cells]: the Voronoi cells of a parent and its bonds' strength factors.
+const RecipeSection<CrushRecipe>& cells_section();
+/// The table of one [[set]] (read under its own name, "set[i]"); defaults from CrushSet{}.
+const RecipeSection<CrushSet>& set_section();
+/// The keys of a parent polyhedron, shared by [[set]] and a crushable specimen's [rock].
+const std::vector<RecipeKey<PolyhedronParams>>& polyhedron_keys();
 
 }  // namespace clumpkit

@@ -7,11 +7,30 @@
 #include "io/recipes/toml_fields.h"
 
 #include <algorithm>
-
 #include <fstream>
+#include <functional>
 #include <sstream>
+#include <utility>
 
 namespace clumpkit {
+
+namespace {
+
+// A density scaling λ in [1, 1e6]: "must be in [1, 1e6], got VALUE" otherwise.
+void scaling_range(const TomlFields& f, const std::string& field, const toml::node& v, double x) {
+  if (!(x >= 1 && x <= 1e6)) f.fail(field, "must be in [1, 1e6], got " + toml_show(v));
+}
+
+// [test] modulus_range: a strain range [lo, hi] with 0 <= lo < hi.
+void read_modulus_range(const TomlFields& f, const toml::node& v, const std::string& field,
+                        TestRecipe& r) {
+  const auto range = f.pair(v, field);
+  if (!(range.first >= 0 && range.second > range.first))
+    f.fail(field, "must be [lo, hi] with 0 <= lo < hi, got " + toml_show(v));
+  r.modulus_range = range;
+}
+
+}  // namespace
 
 const RecipeSection<dem::ProbeSettings>& probe_section() {
   using P = dem::ProbeSettings;
@@ -68,10 +87,7 @@ const RecipeSection<TestRecipe>& test_section() {
        number_key<R>(
            "density_scaling", "", "[1, 1e6]",
            "every body's mass and moments × λ for the test (time step × √λ; reported)",
-           [](R& r) -> double& { return r.density_scaling; }, &TomlFields::number,
-           [](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
-             if (!(x >= 1 && x <= 1e6)) f.fail(field, "must be in [1, 1e6], got " + toml_show(v));
-           }),
+           [](R& r) -> double& { return r.density_scaling; }, &TomlFields::number, scaling_range),
        custom_key<R>("hold_stresses", "Pa", "ascending, in (confining, final_stress]",
                      "oedometer: stresses where the platen stops and its servo holds the stress "
                      "until equilibrium (consolidation_tolerance; unbalanced-force ratio 1e-3), "
@@ -124,13 +140,7 @@ const RecipeSection<TestRecipe>& test_section() {
            [](R& r) -> double& { return r.timestep_safety; }, &TomlFields::positive,
            at_most(0.5, "must be at most 0.5")),
        custom_key<R>("modulus_range", "", "[lo, hi], 0 <= lo < hi",
-                     "strain range of the tangent modulus", "the test's own",
-                     [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
-                       const auto range = f.pair(v, field);
-                       if (!(range.first >= 0 && range.second > range.first))
-                         f.fail(field, "must be [lo, hi] with 0 <= lo < hi, got " + toml_show(v));
-                       r.modulus_range = range;
-                     }),
+                     "strain range of the tangent modulus", "the test's own", read_modulus_range),
        number_key<R>(
            "consolidation_tolerance", "", "> 0",
            "relative stress error at the consolidation's equilibrium",
@@ -138,6 +148,70 @@ const RecipeSection<TestRecipe>& test_section() {
            &TomlFields::positive)}};
   return s;
 }
+
+const RecipeSection<TestRecipe>& contact_override_section() {
+  using R = TestRecipe;
+  static const RecipeSection<R> s{
+      "contact",
+      "Overrides of the specimen's contact law for the test (optional; a key not given keeps the "
+      "specimen's value).",
+      {custom_key<R>("stiffness_scaling", "", "\"none\" or \"linear\"",
+                     "linear: kn and ks scale with the bodies' diameters (CTGU 2017)",
+                     "the specimen's",
+                     [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
+                       const std::string rule = f.string(v, field);
+                       if (rule != "none" && rule != "linear")
+                         f.fail(field, "expected \"none\" or \"linear\", got " + toml_show(v));
+                       r.scaling = rule == "linear" ? dem::StiffnessScaling::linear
+                                                    : dem::StiffnessScaling::none;
+                     }),
+       // The overrides are optionals: a key given sets its value (emplace), one not given leaves
+       // it unset, and the defaults shown are the rules that then apply.
+       shown_as(number_key<R>(
+                    "kn_ref", "N/m", "> 0", "normal stiffness (at d_ref with linear scaling)",
+                    [](R& r) -> double& { return r.kn_ref.emplace(); }, &TomlFields::positive),
+                "the specimen's kn"),
+       shown_as(number_key<R>(
+                    "d_ref", "m", "> 0",
+                    "diameter at which kn holds (required with stiffness_scaling = \"linear\")",
+                    [](R& r) -> double& { return r.d_ref.emplace(); }, &TomlFields::positive),
+                "the specimen's"),
+       shown_as(
+           number_key<R>(
+               "ks_over_kn", "", ">= 0", "shear over normal stiffness",
+               [](R& r) -> double& { return r.ks_over_kn.emplace(); }, &TomlFields::non_negative),
+           "the specimen's ks/kn"),
+       shown_as(number_key<R>(
+                    "damping_ratio", "", "[0, 1)",
+                    "viscous normal damping ratio β (none needed in a quasi-static test)",
+                    [](R& r) -> double& { return r.damping_ratio.emplace(); },
+                    &TomlFields::non_negative, below(1.0, "must be below 1")),
+                "0"),
+       shown_as(number_key<R>(
+                    "local_damping", "", "[0, 1)", "PFC local damping α of the test",
+                    [](R& r) -> double& { return r.local_damping.emplace(); },
+                    &TomlFields::non_negative, below(1.0, "must be below 1")),
+                "the specimen's")}};
+  return s;
+}
+
+namespace {
+
+// [probe]: the table, then depth required and the cone checked whole.
+dem::ProbeSettings read_probe(const TomlFields& f, const toml::node& val) {
+  dem::ProbeSettings p;
+  const std::vector<std::string> given = read_section(f, val, probe_section(), p);
+  if (std::find(given.begin(), given.end(), "depth") == given.end())
+    f.fail("probe.depth", "is required (the push below the specimen's top, m)");
+  try {
+    dem::validate_probe(p);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(f.file + ": " + e.what());
+  }
+  return p;
+}
+
+}  // namespace
 
 TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
   const TomlFields f{path};
@@ -147,56 +221,27 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
   r.text = text;
   dem::ElementTestSettings& s = r.settings;
   bool have_final = false;
+  // The top level: each key's reader, in the order the unknown-key message lists them.
+  const std::vector<std::pair<std::string, std::function<void(const toml::node&)>>> top{
+      {"name", [&](const toml::node& v) { f.string(v, "name"); }},
+      {"description", [&](const toml::node& v) { f.string(v, "description"); }},
+      {"test",
+       [&](const toml::node& v) {
+         for (const std::string& given : read_section(f, v, test_section(), r))
+           if (given == "final_stress") have_final = true;
+       }},
+      {"contact", [&](const toml::node& v) { read_section(f, v, contact_override_section(), r); }},
+      {"probe", [&](const toml::node& v) { r.probe = read_probe(f, v); }}};
   for (const auto& [key, val] : root) {
     const std::string k(key.str());
-    if (k == "name" || k == "description") {
-      f.string(val, k);
-    } else if (k == "test") {
-      for (const std::string& given : read_section(f, val, test_section(), r))
-        if (given == "final_stress") have_final = true;
-    } else if (k == "contact") {
-      for (const auto& [ck, cv] : f.table(val, k)) {
-        const std::string c(ck.str()), field = "contact." + c;
-        if (c == "stiffness_scaling") {
-          const std::string v = f.string(cv, field);
-          if (v == "none")
-            r.scaling = dem::StiffnessScaling::none;
-          else if (v == "linear")
-            r.scaling = dem::StiffnessScaling::linear;
-          else
-            f.fail(field, "expected \"none\" or \"linear\", got " + toml_show(cv));
-        } else if (c == "kn_ref") {
-          r.kn_ref = f.positive(cv, field);
-        } else if (c == "d_ref") {
-          r.d_ref = f.positive(cv, field);
-        } else if (c == "ks_over_kn") {
-          r.ks_over_kn = f.non_negative(cv, field);
-        } else if (c == "damping_ratio") {
-          r.damping_ratio = f.non_negative(cv, field);
-          if (*r.damping_ratio >= 1) f.fail(field, "must be below 1, got " + toml_show(cv));
-        } else if (c == "local_damping") {
-          r.local_damping = f.non_negative(cv, field);
-          if (*r.local_damping >= 1) f.fail(field, "must be below 1, got " + toml_show(cv));
-        } else {
-          f.fail(field,
-                 "unknown key (known: stiffness_scaling, kn_ref, d_ref, ks_over_kn, "
-                 "damping_ratio, local_damping)");
-        }
-      }
-    } else if (k == "probe") {
-      dem::ProbeSettings p;
-      const std::vector<std::string> given = read_section(f, val, probe_section(), p);
-      if (std::find(given.begin(), given.end(), "depth") == given.end())
-        f.fail("probe.depth", "is required (the push below the specimen's top, m)");
-      try {
-        dem::validate_probe(p);
-      } catch (const InvalidInput& e) {
-        throw InvalidInput(f.file + ": " + e.what());
-      }
-      r.probe = p;
-    } else {
-      f.fail(k, "unknown key (known: name, description, test, contact, probe)");
+    const auto it =
+        std::find_if(top.begin(), top.end(), [&](const auto& e) { return e.first == k; });
+    if (it == top.end()) {
+      std::string known;
+      for (const auto& e : top) known += (known.empty() ? "" : ", ") + e.first;
+      f.fail(k, "unknown key (known: " + known + ")");
     }
+    it->second(val);
   }
   if (r.scaling == dem::StiffnessScaling::linear && !r.d_ref)
     f.fail("contact.d_ref", "is required with stiffness_scaling = \"linear\"");

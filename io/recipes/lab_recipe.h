@@ -49,5 +49,7 @@ TestRecipe read_test_recipe(const std::string& path);
 /// The tables of the [test] and [probe] sections (io/recipes/section_table.h).
 const RecipeSection<TestRecipe>& test_section();
 const RecipeSection<dem::ProbeSettings>& probe_section();
+/// The table of a test's [contact], overrides of the specimen's law; defaults from TestRecipe{}.
+const RecipeSection<TestRecipe>& contact_override_section();
 
 }  // namespace clumpkit

@@ -2,6 +2,7 @@
 
 #include "geom/errors.h"
 #include "io/base/text.h"
+#include "io/recipes/section_table.h"
 #include "io/recipes/toml_fields.h"
 
 #include <toml++/toml.h>
@@ -11,15 +12,132 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <limits>
 #include <sstream>
+#include <utility>
 
 namespace clumpkit {
 
 namespace {
 
-std::string show(const toml::node& n) {
-  return toml_show(n);
+// An integer in [lo, hi], refused as "expected WHAT, got VALUE" (the shape recipes' wording).
+long long integer_within(const TomlFields& f, const toml::node& v, const std::string& field,
+                         long long lo, long long hi, const std::string& what) {
+  const auto* i = v.as_integer();
+  if (!i || i->get() < lo || i->get() > hi)
+    f.fail(field, "expected " + what + ", got " + toml_show(v));
+  return i->get();
 }
+
+// An int key of [fill] in [lo, hi] (`range` as the message words it), read by integer_within,
+// its default read off FillOptions{}.
+template <class At>
+RecipeKey<FillOptions> fill_integer(std::string name, std::string range, std::string help, At at,
+                                    long long lo, long long hi) {
+  const std::string what = "an integer " + std::string(range[0] == '[' ? "in " : "") + range;
+  RecipeKey<FillOptions> k{std::move(name), "", std::move(range), std::move(help), {}, {}};
+  k.read = [at, lo, hi, what](const TomlFields& f, const toml::node& v, const std::string& field,
+                              FillOptions& o) {
+    at(o) = static_cast<int>(integer_within(f, v, field, lo, hi, what));
+  };
+  k.shown = [at](const FillOptions& defaults) {
+    FillOptions copy = defaults;
+    return std::to_string(at(copy));
+  };
+  return k;
+}
+
+}  // namespace
+
+const RecipeSection<FractionTable>& fraction_section() {
+  using T = FractionTable;
+  static const RecipeSection<T> s{
+      "fraction",
+      "One fraction of a shape library: its method and count; every other key is a parameter of "
+      "its method (`clumpkit shape METHOD --help`), a number or a distribution.",
+      {custom_key<T>("name", "", "text", "the fraction's name", "the method",
+                     [](const TomlFields& f, const toml::node& v, const std::string& field, T& t) {
+                       t.spec.name = f.string(v, field);
+                     }),
+       custom_key<T>("method", "", "block, hull, polyhedron, ellipsoid or mesh",
+                     "how its particles are made", "required",
+                     [](const TomlFields& f, const toml::node& v, const std::string& field, T& t) {
+                       t.spec.method = f.string(v, field);
+                     }),
+       custom_key<T>("count", "", "[0, 10000000]", "particles of the fraction",
+                     "required; mesh: the number of files",
+                     [](const TomlFields& f, const toml::node& v, const std::string& field, T& t) {
+                       t.spec.count = f.integer_in(v, field, 0, 10000000);
+                     }),
+       custom_key<T>("folder", "", "a folder, relative to the recipe's",
+                     "mesh: every .stl, .obj and .ply file in it is one particle, in the order of "
+                     "their names",
+                     "required for mesh",
+                     [](const TomlFields& f, const toml::node& v, const std::string& field, T& t) {
+                       t.folder = f.string(v, field);
+                     }),
+       number_key<T>(
+           "scale", "", "> 0",
+           "mesh: factor from the files' length unit to metres (0.001 for millimetres)",
+           [](T& t) -> double& { return t.spec.scale; }, &TomlFields::positive),
+       custom_key<T>("roundness", "", "[min, max], min <= max",
+                     "hull: the band of weighted roundness the hull is redrawn into", "[1, 10]",
+                     [](const TomlFields& f, const toml::node& v, const std::string& field, T& t) {
+                       const auto [lo, hi] = f.pair(v, field);
+                       t.spec.params["roundness_min"] = constant(lo);
+                       t.spec.params["roundness_max"] = constant(hi);
+                       if (lo > hi) f.fail(field, "low exceeds high, got " + toml_show(v));
+                     })}};
+  return s;
+}
+
+const RecipeSection<FillOptions>& fill_section() {
+  using O = FillOptions;
+  static const RecipeSection<O> s{
+      "fill",
+      "The clump of each particle for `clumpkit library` (as `clumpkit fill`): a sphere budget, "
+      "a coverage or a smallest radius; checked by validate(FillOptions).",
+      {shown_as(
+           fill_integer(
+               "spheres", ">= 1", "sphere budget of each clump",
+               [](O& o) -> int& { return o.spheres; }, 1, std::numeric_limits<long long>::max()),
+           "none"),
+       shown_as(number_key<O>("coverage", "", "(0, 1]",
+                              "stop once this fraction of the interior volume is covered",
+                              [](O& o) -> double& { return o.coverage; }),
+                "none"),
+       number_key<O>("min_radius", "m", ">= 0",
+                     "R_lim of Jin et al. 2017: smaller spheres are never placed",
+                     [](O& o) -> double& { return o.min_radius; }),
+       [] {
+         auto k = fill_integer(
+             "voxels", "[4, 2000]",
+             "voxels across the mesh's smallest principal extent (distance field and coverage "
+             "grid)",
+             [](O& o) -> int& { return o.field.voxels; }, 4, 2000);
+         // A resolution given holds, as fill --voxels: no refining from the sphere count.
+         k.read = [read = k.read](const TomlFields& f, const toml::node& v,
+                                  const std::string& field, O& o) {
+           read(f, v, field, o);
+           o.voxels_from_count = false;
+         };
+         k.shown = [](const O& d) {
+           return std::to_string(d.field.voxels) + ", finer from a sphere budget";
+         };
+         return k;
+       }(),
+       number_key<O>("max_overshoot", "", "[0, 1)",
+                     "the clump's volume outside the mesh, over the mesh's volume",
+                     [](O& o) -> double& { return o.max_overshoot; }),
+       fill_integer(
+           "refine_iterations", "[0, 1000]",
+           "sweeps of the refinement after the greedy pass (0: none)",
+           [](O& o) -> int& { return o.refine_iterations; }, 0, 1000)}};
+  return s;
+}
+
+namespace {
 
 struct Parser : TomlFields {
   // The .stl, .obj and .ply files of `folder` (relative to the recipe's folder), by name.
@@ -44,47 +162,28 @@ struct Parser : TomlFields {
   }
 
   FractionSpec fraction(const toml::table& t, const std::string& prefix) const {
-    FractionSpec f;
-    std::string folder;
-    bool scaled = false;
+    FractionTable table;
+    FractionSpec& f = table.spec;
+    const auto& keys = fraction_section().keys;
     for (const auto& [key, val] : t) {
-      const std::string k(key.str());
-      const std::string field = prefix + "." + k;
-      if (k == "name") {
-        if (!val.is_string()) fail(field, "expected a string, got " + show(val));
-        f.name = val.as_string()->get();
-      } else if (k == "method") {
-        if (!val.is_string()) fail(field, "expected a string, got " + show(val));
-        f.method = val.as_string()->get();
-      } else if (k == "count") {
-        const auto* i = val.as_integer();
-        if (!i) fail(field, "expected an integer, got " + show(val));
-        if (i->get() < 0 || i->get() > 10000000)
-          fail(field, "must be in [0, 10000000], got " + show(val));
-        f.count = static_cast<int>(i->get());
-      } else if (k == "folder") {
-        folder = string(val, field);
-      } else if (k == "scale") {
-        f.scale = positive(val, field);
-        scaled = true;
-      } else if (k == "roundness") {
-        const auto [lo, hi] = pair(val, field);
-        f.params["roundness_min"] = constant(lo);
-        f.params["roundness_max"] = constant(hi);
-        if (lo > hi) fail(field, "low exceeds high, got " + show(val));
-      } else {
+      const std::string k(key.str()), field = prefix + "." + k;
+      const auto it = std::find_if(keys.begin(), keys.end(),
+                                   [&](const RecipeKey<FractionTable>& e) { return e.name == k; });
+      // Any other key is a parameter of the method, checked against its table by validate().
+      if (it == keys.end())
         f.params[k] = distribution(val, field);
-      }
+      else
+        it->read(*this, val, field, table);
     }
     if (f.method.empty())
       fail(prefix + ".method", "missing (one of block, hull, polyhedron, ellipsoid, mesh)");
     if (f.method == kMeshMethod) {
-      if (folder.empty()) fail(prefix + ".folder", "missing (the folder of the mesh files)");
-      f.files = mesh_files(folder, prefix + ".folder");
+      if (table.folder.empty()) fail(prefix + ".folder", "missing (the folder of the mesh files)");
+      f.files = mesh_files(table.folder, prefix + ".folder");
       if (!t.contains("count")) f.count = static_cast<int>(f.files.size());
     } else {
-      if (!folder.empty()) fail(prefix + ".folder", "only for method mesh");
-      if (scaled) fail(prefix + ".scale", "only for method mesh");
+      if (!table.folder.empty()) fail(prefix + ".folder", "only for method mesh");
+      if (t.contains("scale")) fail(prefix + ".scale", "only for method mesh");
     }
     if (!t.contains("count") && f.method != kMeshMethod) fail(prefix + ".count", "missing");
     if (f.name.empty()) f.name = f.method;
@@ -105,73 +204,53 @@ ShapeRecipe parse_shape_recipe(const std::string& text, const std::string& path)
   ShapeRecipe r;
   r.path = path;
   r.text = text;
-  bool any = false;
+  const long long most = std::numeric_limits<long long>::max();
+  auto read_fractions = [&](const toml::node& v) {
+    const auto* arr = v.as_array();
+    if (!arr || !arr->is_array_of_tables()) p.fail("fraction", "expected [[fraction]] tables");
+    for (const auto& f : *arr) {
+      const std::string prefix = "fraction[" + std::to_string(r.fractions.size()) + "]";
+      r.fractions.push_back(p.fraction(*f.as_table(), prefix));
+    }
+  };
+  auto read_fill = [&](const toml::node& v) {
+    if (!v.is_table()) p.fail("fill", "expected a [fill] table");
+    r.has_fill = true;
+    read_section(p, v, fill_section(), r.fill);
+    try {
+      validate(r.fill);
+    } catch (const InvalidInput& e) {
+      p.fail("fill", e.what());
+    }
+  };
+  // The top level: each key's reader, in the order the unknown-key message lists them.
+  const std::vector<std::pair<std::string, std::function<void(const toml::node&)>>> top{
+      {"seed",
+       [&](const toml::node& v) {
+         r.seed = static_cast<std::uint64_t>(
+             integer_within(p, v, "seed", 0, most, "a non-negative integer"));
+       }},
+      {"name", [&](const toml::node& v) { r.name = p.string(v, "name"); }},
+      {"description", [&](const toml::node& v) { r.description = p.string(v, "description"); }},
+      {"refine_triangles",
+       [&](const toml::node& v) {
+         r.refine_triangles =
+             integer_within(p, v, "refine_triangles", 0, 50000000, "an integer in [0, 5e7]");
+       }},
+      {"fraction", read_fractions},
+      {"fill", read_fill}};
   for (const auto& [key, val] : root) {
     const std::string k(key.str());
-    if (k == "seed") {
-      const auto* i = val.as_integer();
-      if (!i || i->get() < 0) p.fail("seed", "expected a non-negative integer, got " + show(val));
-      r.seed = static_cast<std::uint64_t>(i->get());
-    } else if (k == "refine_triangles") {
-      const auto* i = val.as_integer();
-      if (!i || i->get() < 0 || i->get() > 50000000)
-        p.fail(k, "expected an integer in [0, 5e7], got " + show(val));
-      r.refine_triangles = i->get();
-    } else if (k == "name" || k == "description") {
-      if (!val.is_string()) p.fail(k, "expected a string, got " + show(val));
-      (k == "name" ? r.name : r.description) = val.as_string()->get();
-    } else if (k == "fraction") {
-      const auto* arr = val.as_array();
-      if (!arr || !arr->is_array_of_tables()) p.fail(k, "expected [[fraction]] tables");
-      int i = 0;
-      for (const auto& f : *arr) {
-        r.fractions.push_back(p.fraction(*f.as_table(), "fraction[" + std::to_string(i++) + "]"));
-        any = true;
-      }
-    } else if (k == "fill") {
-      const auto* t = val.as_table();
-      if (!t) p.fail(k, "expected a [fill] table");
-      r.has_fill = true;
-      for (const auto& [fk, fv] : *t) {
-        const std::string name(fk.str());
-        const std::string field = "fill." + name;
-        if (name == "spheres") {
-          const auto* i = fv.as_integer();
-          if (!i || i->get() < 1) p.fail(field, "expected an integer >= 1, got " + show(fv));
-          r.fill.spheres = static_cast<int>(i->get());
-        } else if (name == "voxels") {
-          const auto* i = fv.as_integer();
-          if (!i || i->get() < 4 || i->get() > 2000)
-            p.fail(field, "expected an integer in [4, 2000], got " + show(fv));
-          r.fill.field.voxels = static_cast<int>(i->get());
-          r.fill.voxels_from_count = false;  // a resolution given holds, as fill --voxels
-        } else if (name == "coverage") {
-          r.fill.coverage = p.number(fv, field);
-        } else if (name == "min_radius") {
-          r.fill.min_radius = p.number(fv, field);
-        } else if (name == "max_overshoot") {
-          r.fill.max_overshoot = p.number(fv, field);
-        } else if (name == "refine_iterations") {
-          const auto* i = fv.as_integer();
-          if (!i || i->get() < 0 || i->get() > 1000)
-            p.fail(field, "expected an integer in [0, 1000], got " + show(fv));
-          r.fill.refine_iterations = static_cast<int>(i->get());
-        } else {
-          p.fail(field,
-                 "unknown key (known: spheres, coverage, min_radius, voxels, max_overshoot, "
-                 "refine_iterations)");
-        }
-      }
-      try {
-        validate(r.fill);
-      } catch (const InvalidInput& e) {
-        p.fail("fill", e.what());
-      }
-    } else {
-      p.fail(k, "unknown key (known: seed, name, description, refine_triangles, fraction, fill)");
+    const auto it =
+        std::find_if(top.begin(), top.end(), [&](const auto& e) { return e.first == k; });
+    if (it == top.end()) {
+      std::string known;
+      for (const auto& e : top) known += (known.empty() ? "" : ", ") + e.first;
+      p.fail(k, "unknown key (known: " + known + ")");
     }
+    it->second(val);
   }
-  if (!any) p.fail("fraction", "the recipe lists no [[fraction]]");
+  if (r.fractions.empty()) p.fail("fraction", "the recipe lists no [[fraction]]");
   return r;
 }
 

@@ -50,4 +50,22 @@ ShapeRecipe parse_shape_recipe(const std::string& text, const std::string& path)
 /// Fraction index of every particle of the recipe, in id order.
 std::vector<int> particle_fractions(const ShapeRecipe& recipe);
 
+/// One [[fraction]] table as its keys are read: the fraction, and the folder of a mesh
+/// fraction's files, which are listed once the whole table (its method) is read.
+struct FractionTable {
+  FractionSpec spec;
+  std::string folder;
+};
+
+// Declared only: the many files that read shape recipes need not parse toml++ for these tables
+// (io/recipes/section_table.h defines it).
+template <class Spec>
+struct RecipeSection;
+
+/// The table of a [[fraction]]'s own keys (io/recipes/section_table.h); any other key of the
+/// table is a parameter of its method. Defaults from FractionTable{}.
+const RecipeSection<FractionTable>& fraction_section();
+/// The table of [fill], the clumps of `clumpkit library`; defaults from FillOptions{}.
+const RecipeSection<FillOptions>& fill_section();
+
 }  // namespace clumpkit

@@ -69,6 +69,20 @@ RecipeKey<Spec> shown_as(RecipeKey<Spec> k, std::string text) {
   return k;
 }
 
+/// The key `k` of an inner spec, read into and shown from `at(spec)` (a PolyhedronParams&
+/// within a set, say), so that one table of keys serves every section that holds the spec.
+template <class Spec, class Inner, class At>
+RecipeKey<Spec> nested_key(const RecipeKey<Inner>& k, At at) {
+  RecipeKey<Spec> out{k.name, k.unit, k.range, k.help, {}, {}};
+  out.read = [read = k.read, at](const TomlFields& f, const toml::node& v, const std::string& field,
+                                 Spec& s) { read(f, v, field, at(s)); };
+  out.shown = [shown = k.shown, at](const Spec& defaults) {
+    Spec copy = defaults;
+    return shown(at(copy));
+  };
+  return out;
+}
+
 /// A check that the number is at most `hi`: "FIELD: WHY, got VALUE" otherwise.
 inline NumberCheck at_most(double hi, std::string why) {
   return [hi, why](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
@@ -115,10 +129,13 @@ std::vector<std::string> read_section(const TomlFields& f, const toml::node& val
   return given;
 }
 
-/// The section as Markdown: a heading, its help, and a table of key, unit, range, default, help.
+/// The section as Markdown: a heading ("### [NAME]", or `heading` when given), its help, and a
+/// table of key, unit, range, default, help.
 template <class Spec>
-std::string section_reference(const RecipeSection<Spec>& s, const Spec& defaults) {
-  std::string md = "### [" + s.name + "]\n\n" + s.help + "\n\n";
+std::string section_reference(const RecipeSection<Spec>& s, const Spec& defaults,
+                              const std::string& heading = "") {
+  std::string md =
+      (heading.empty() ? "### [" + s.name + "]" : "### " + heading) + "\n\n" + s.help + "\n\n";
   md += "| key | unit | values | default | what |\n|---|---|---|---|---|\n";
   for (const auto& k : s.keys)
     md += "| `" + k.name + "` | " + k.unit + " | " + k.range + " | " + k.shown(defaults) + " | " +

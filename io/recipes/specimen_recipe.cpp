@@ -19,95 +19,6 @@ namespace clumpkit {
 
 namespace {
 
-// A container length: a number, checked by the specs' one rule (dem::check_container_length).
-double container_length(const TomlFields& f, const std::string& field, double v) {
-  try {
-    dem::check_container_length(v);
-  } catch (const InvalidInput& e) {
-    f.fail(field, e.what());
-  }
-  return v;
-}
-
-// One [[zones.region]] table.
-dem::ZoneRegion zone_region(const TomlFields& f, const toml::node& n, const std::string& at) {
-  dem::ZoneRegion z;
-  bool have_outer = false, have_scale = false, have_fraction = false;
-  for (const auto& [key, v] : f.table(n, at)) {
-    const std::string k(key.str()), field = at + "." + k;
-    if (k == "outer") {
-      z.outer = f.positive(v, field);
-      have_outer = true;
-    } else if (k == "scale") {
-      z.scale = f.positive(v, field);
-      have_scale = true;
-    } else if (k == "mixed") {
-      const auto* b = v.as_boolean();
-      if (!b) f.fail(field, "expected true or false, got " + toml_show(v));
-      z.mixed = b->get();
-    } else if (k == "small_volume_fraction") {
-      have_fraction = true;
-      if (v.is_array()) {
-        const std::vector<double> ends = f.numbers(v, field);
-        if (ends.size() != 2)
-          f.fail(field, "expected one number or [inner, outer], got " + toml_show(v));
-        z.small_fraction = ends[0], z.small_fraction_outer = ends[1];
-      } else {
-        z.small_fraction = z.small_fraction_outer = f.number(v, field);
-      }
-      for (const double x : {z.small_fraction, z.small_fraction_outer})
-        if (!(x >= 0 && x <= 1)) f.fail(field, "must be in [0, 1], got " + toml_show(v));
-    } else {
-      f.fail(field, "unknown key (known: outer, scale, mixed, small_volume_fraction)");
-    }
-  }
-  if (!have_outer) f.fail(at + ".outer", "missing (the region's outer bound, m)");
-  if (z.mixed && have_scale)
-    f.fail(at + ".scale", "a mixed layer takes its neighbours' sizes, not a scale");
-  if (z.mixed && !have_fraction)
-    f.fail(at + ".small_volume_fraction", "missing (the small particles' share of the layer)");
-  if (!z.mixed && have_fraction)
-    f.fail(at + ".small_volume_fraction", "is for mixed layers (mixed = true)");
-  return z;
-}
-
-// The [zones] section; `have_origin` tells whether the origin was given.
-void read_zones(const TomlFields& f, const toml::node& n, SpecimenRecipe& r, bool& have_origin) {
-  for (const auto& [key, v] : f.table(n, "zones")) {
-    const std::string k(key.str()), field = "zones." + k;
-    if (k == "coordinate") {
-      const std::string c = f.string(v, field);
-      if (c == "radial")
-        r.zones.coordinate = dem::ZoneCoordinate::radial;
-      else if (c == "depth")
-        r.zones.coordinate = dem::ZoneCoordinate::depth;
-      else if (c == "spherical")
-        r.zones.coordinate = dem::ZoneCoordinate::spherical;
-      else
-        f.fail(field, "expected \"radial\", \"depth\" or \"spherical\", got " + toml_show(v));
-    } else if (k == "origin") {
-      const std::vector<double> o = f.numbers(v, field);
-      if (o.size() != 3) f.fail(field, "expected [x, y, z] in m, got " + toml_show(v));
-      r.zones.origin = Vec3(o[0], o[1], o[2]);
-      have_origin = true;
-    } else if (k == "mixed_porosity") {
-      r.mixed_porosity = f.number(v, field);
-      if (!(r.mixed_porosity > 0.2 && r.mixed_porosity < 0.9))
-        f.fail(field, "must be in (0.2, 0.9), got " + toml_show(v));
-    } else if (k == "region") {
-      const auto* a = v.as_array();
-      if (!a || a->empty())
-        f.fail(field, "expected [[zones.region]] tables, innermost first, got " + toml_show(v));
-      for (std::size_t i = 0; i < a->size(); ++i)
-        r.zones.regions.push_back(
-            zone_region(f, *a->get(i), "zones.region[" + std::to_string(i + 1) + "]"));
-    } else {
-      f.fail(field, "unknown key (known: coordinate, origin, mixed_porosity, region)");
-    }
-  }
-  if (r.zones.regions.empty()) f.fail("zones.region", "missing (at least the core)");
-}
-
 // What the sections said that the checks across sections need.
 struct Seen {
   bool gradation = false, diameter = false, size = false, angle = false;
@@ -116,127 +27,119 @@ struct Seen {
   std::vector<std::string> deposition_keys;  // keys that only the deposition method uses
 };
 
-// [container]: shape, diameter, height, size, angle.
-void read_container(const TomlFields& f, const toml::node& val, SpecimenRecipe& r, Seen& seen) {
-  const std::string k = "container";
-  for (const auto& [ck, cv] : f.table(val, k)) {
-    const std::string c(ck.str()), field = "container." + c;
-    if (c == "diameter") {
-      r.container_diameter = container_length(f, field, f.number(cv, field));
-      seen.diameter = true;
-    } else if (c == "height") {
-      r.container_height = container_length(f, field, f.number(cv, field));
-      seen.diameter = true;
-    } else if (c == "shape") {
-      const std::string shape = f.string(cv, field);
-      if (shape != "cylinder" && shape != "cuboid" && shape != "segment")
-        f.fail(field, "expected \"cylinder\", \"cuboid\" or \"segment\", got " + toml_show(cv));
-      r.cuboid = shape == "cuboid";
-      r.segment = shape == "segment";
-    } else if (c == "angle") {
-      r.segment_angle_deg = f.number(cv, field);
-      if (!(r.segment_angle_deg > 0 && r.segment_angle_deg <= 180))
-        f.fail(field, "must be in (0, 180] degrees, got " + toml_show(cv));
-      seen.angle = true;
-    } else if (c == "size") {
-      const std::vector<double> v = f.numbers(cv, field);
-      if (v.size() != 3) f.fail(field, "expected [x, y, z] edges, got " + toml_show(cv));
-      for (int a = 0; a < 3; ++a)
-        r.container_size[a] = container_length(f, field + "[" + std::to_string(a) + "]", v[a]);
-      seen.size = true;
-    } else {
-      f.fail(field, "unknown key (known: shape, diameter, height, size, angle)");
-    }
-  }
+// What reading the recipe fills: the recipe, what its sections said, and the crushing tables.
+struct Reading {
+  SpecimenRecipe& r;
+  Seen& seen;
+  CrushRecipe& tables;
+};
+
+bool has(const std::vector<std::string>& given, const char* key) {
+  return std::find(given.begin(), given.end(), key) != given.end();
 }
 
-// [preparation]: method, porosity, friction.
-void read_preparation(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
-  const std::string k = "preparation";
-  for (const auto& [pk, pv] : f.table(val, k)) {
-    const std::string c(pk.str()), field = "preparation." + c;
-    if (c == "method") {
-      const std::string m = f.string(pv, field);
-      if (m != "deposition" && m != "compression")
-        f.fail(field, "expected \"deposition\" or \"compression\", got " + toml_show(pv));
-      r.compression = m == "compression";
-    } else if (c == "porosity") {
-      r.compression_porosity = f.number(pv, field);
-      try {
-        dem::check_target_porosity(r.compression_porosity);
-      } catch (const InvalidInput& e) {
-        f.fail(field, e.what());
-      }
-    } else if (c == "friction") {
-      r.compression_friction = f.number(pv, field);
-      if (!(r.compression_friction >= 0 && r.compression_friction <= 10))
-        f.fail(field, "must be in [0, 10], got " + toml_show(pv));
-    } else {
-      f.fail(field, "unknown key (known: method, porosity, friction)");
-    }
-  }
+void read_container(const TomlFields& f, const toml::node& v, Reading& in) {
+  const std::vector<std::string> given = read_section(f, v, container_section(), in.r);
+  if (has(given, "diameter") || has(given, "height")) in.seen.diameter = true;
+  if (has(given, "size")) in.seen.size = true;
+  if (has(given, "angle")) in.seen.angle = true;
 }
 
-// [gradation]: sieves and passing, checked with the rest (check_gradation).
-void read_gradation(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
-  const std::string k = "gradation";
-  for (const auto& [gk, gv] : f.table(val, k)) {
-    const std::string g(gk.str()), field = "gradation." + g;
-    if (g == "sieves")
-      r.sieves = f.numbers(gv, field);
-    else if (g == "passing")
-      r.passing = f.numbers(gv, field);
-    else
-      f.fail(field, "unknown key (known: sieves, passing)");
-  }
+void read_preparation(const TomlFields& f, const toml::node& v, Reading& in) {
+  read_section(f, v, preparation_section(), in.r);
 }
 
-// [fines]: below, replace_with.
-void read_fines(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
-  const std::string k = "fines";
-  for (const auto& [fk, fv] : f.table(val, k)) {
-    const std::string g(fk.str()), field = "fines." + g;
-    if (g == "below")
-      r.fines_below = f.positive(fv, field);
-    else if (g == "replace_with")
-      std::tie(r.fines_min, r.fines_max) = f.pair(fv, field);
-    else
-      f.fail(field, "unknown key (known: below, replace_with)");
-  }
+void read_zones(const TomlFields& f, const toml::node& v, Reading& in) {
+  in.seen.zones = true;
+  if (has(read_section(f, v, zones_section(), in.r), "origin")) in.seen.zone_origin = true;
+  if (in.r.zones.regions.empty()) f.fail("zones.region", "missing (at least the core)");
+}
+
+// Checked with the rest by check_gradation.
+void read_gradation(const TomlFields& f, const toml::node& v, Reading& in) {
+  in.seen.gradation = true;
+  read_section(f, v, gradation_section(), in.r);
+}
+
+void read_fines(const TomlFields& f, const toml::node& v, Reading& in) {
+  SpecimenRecipe& r = in.r;
+  read_section(f, v, fines_section(), r);
   if (!(r.fines_min > 0 && r.fines_min < r.fines_max))
     f.fail("fines.replace_with", "expected 0 < low < high, got [" + format_number(r.fines_min) +
                                      ", " + format_number(r.fines_max) + "]");
 }
 
-// [rock]: library or recipe, resolved by resolve_library.
-void read_rock(const TomlFields& f, const toml::node& val, SpecimenRecipe& r) {
-  const std::string k = "rock";
-  dem::CrushableMaterial& m = r.crushable_material;
-  for (const auto& [rk, rv] : f.table(val, k)) {
-    const std::string g(rk.str()), field = "rock." + g;
-    if (g == "library") {
-      r.library = f.string(rv, field);
-    } else if (g == "recipe") {
-      r.library_recipe = f.string(rv, field);
-    } else if (g == "crushable") {
-      const auto* b = rv.as_boolean();
-      if (!b) f.fail(field, "expected true or false, got " + toml_show(rv));
-      r.crushable = b->get();
-    } else if (g == "unbreakable") {
-      const auto* b = rv.as_boolean();
-      if (!b) f.fail(field, "expected true or false, got " + toml_show(rv));
-      r.unbreakable = b->get();
-    } else if (read_polyhedron_key(f, g, rv, field, m.shape)) {
-    } else if (g == "spheres_per_cell") {
-      m.fill.spheres = f.integer_in(rv, field, 1, 100);
-    } else if (g == "cell_voxels") {
-      m.fill.field.voxels = f.integer_in(rv, field, 8, 200);
-    } else {
-      f.fail(field,
-             "unknown key (known: library, recipe, crushable, unbreakable, planes, E, F, "
-             "offset_min, offset_max, spheres_per_cell, cell_voxels)");
-    }
+// Library or recipe resolved by resolve_library, a crushable material by check_crushable.
+void read_rock(const TomlFields& f, const toml::node& v, Reading& in) {
+  read_section(f, v, rock_section(), in.r);
+}
+
+// [cells] and [bond]: the crushing recipes' tables.
+void read_cells(const TomlFields& f, const toml::node& v, Reading& in) {
+  in.seen.cells = true;
+  read_cells_table(f, f.table(v, "cells"), in.tables);
+}
+
+void read_bond(const TomlFields& f, const toml::node& v, Reading& in) {
+  in.seen.bond = true;
+  read_bond_table(f, f.table(v, "bond"), in.tables);
+}
+
+void read_density(const TomlFields& f, const toml::node& v, Reading& in) {
+  read_section(f, v, density_section(), in.r);
+}
+
+void read_contact(const TomlFields& f, const toml::node& v, Reading& in) {
+  read_section(f, v, contact_section(), in.r);
+}
+
+// One entry at the top of the recipe: a section and its reader, or (no reader) a key of
+// specimen_top_section(); `deposition`: a key only the deposition method uses.
+struct TopLevel {
+  const char* name;
+  void (*read)(const TomlFields&, const toml::node&, Reading&);
+  bool deposition;
+};
+
+// In the order the "unknown key" message lists them.
+const std::vector<TopLevel>& top_level() {
+  static const std::vector<TopLevel> t{{"seed", nullptr, false},
+                                       {"name", nullptr, false},
+                                       {"description", nullptr, false},
+                                       {"container", read_container, false},
+                                       {"gradation", read_gradation, false},
+                                       {"soil_rock_threshold", nullptr, false},
+                                       {"rock_mass_fraction", nullptr, false},
+                                       {"fines", read_fines, false},
+                                       {"rock", read_rock, false},
+                                       {"cells", read_cells, false},
+                                       {"bond", read_bond, false},
+                                       {"density", read_density, false},
+                                       {"contact", read_contact, false},
+                                       {"preparation", read_preparation, false},
+                                       {"zones", read_zones, false},
+                                       {"target_relative_density", nullptr, true},
+                                       {"layers", nullptr, true},
+                                       {"calibration_frictions", nullptr, true}};
+  return t;
+}
+
+// The top-level entry `k`, or "k: unknown key (known: ...)".
+const TopLevel& top_entry(const TomlFields& f, const std::string& k) {
+  std::string known;
+  for (const TopLevel& e : top_level()) {
+    if (e.name == k) return e;
+    known += (known.empty() ? "" : ", ") + std::string(e.name);
   }
+  f.fail(k, "unknown key (known: " + known + ")");
+}
+
+// A top-level key (not a section), read by its entry in specimen_top_section().
+void read_top_key(const TomlFields& f, const toml::node& v, const std::string& k,
+                  SpecimenRecipe& r) {
+  for (const auto& key : specimen_top_section().keys)
+    if (key.name == k) return key.read(f, v, k, r);
+  f.fail(k, "has no entry in specimen_top_section()");  // a table out of step with top_level()
 }
 
 // A crushable specimen's material from [rock], [cells] and [bond]: compression only, every
@@ -280,69 +183,6 @@ void check_crushable(const TomlFields& f, SpecimenRecipe& r, const Seen& seen,
                                   " leaves the smallest particles (" + format_number(d) +
                                   " m) fewer than 2 cells");
 }
-
-// A number in [0, 1): "must be in [0, 1), got VALUE" otherwise.
-void unit_fraction(const TomlFields& f, const std::string& field, const toml::node& v, double x) {
-  if (!(x >= 0 && x < 1)) f.fail(field, "must be in [0, 1), got " + toml_show(v));
-}
-
-}  // namespace
-
-const RecipeSection<SpecimenRecipe>& density_section() {
-  using R = SpecimenRecipe;
-  static const RecipeSection<R> s{
-      "density",
-      "Particle densities of the specimen.",
-      {number_key<R>(
-           "soil", "kg/m³", "> 0", "density of the soil spheres",
-           [](R& r) -> double& { return r.soil_density; }, &TomlFields::positive),
-       number_key<R>(
-           "rock", "kg/m³", "> 0", "density of the rock clumps",
-           [](R& r) -> double& { return r.rock_density; }, &TomlFields::positive)}};
-  return s;
-}
-
-const RecipeSection<SpecimenRecipe>& contact_section() {
-  using R = SpecimenRecipe;
-  static const RecipeSection<R> s{
-      "contact",
-      "The contact law of the specimen (linear spring, dashpot and Coulomb friction; "
-      "dem/core/contact.h).",
-      {number_key<R>(
-           "kn", "N/m", "> 0", "normal stiffness (at d_ref with linear scaling)",
-           [](R& r) -> double& { return r.kn; }, &TomlFields::positive),
-       number_key<R>(
-           "ks", "N/m", "> 0", "shear stiffness (at d_ref with linear scaling)",
-           [](R& r) -> double& { return r.ks; }, &TomlFields::positive),
-       number_key<R>(
-           "friction", "", ">= 0", "interparticle μ", [](R& r) -> double& { return r.friction; },
-           &TomlFields::number,
-           [](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
-             if (x < 0) f.fail(field, "must not be negative, got " + toml_show(v));
-           }),
-       number_key<R>(
-           "damping_ratio", "", "[0, 1)", "viscous normal damping ratio β",
-           [](R& r) -> double& { return r.damping_ratio; }, &TomlFields::number, unit_fraction),
-       number_key<R>(
-           "local_damping", "", "[0, 1)", "PFC local damping α of the preparation",
-           [](R& r) -> double& { return r.local_damping; }, &TomlFields::number, unit_fraction),
-       custom_key<R>("stiffness_scaling", "", "\"none\" or \"linear\"",
-                     "linear: kn and ks scale with the bodies' diameters (CTGU 2017)", "\"none\"",
-                     [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
-                       const std::string m = f.string(v, field);
-                       if (m != "none" && m != "linear")
-                         f.fail(field, "expected \"none\" or \"linear\", got " + toml_show(v));
-                       r.linear_scaling = m == "linear";
-                     }),
-       shown_as(number_key<R>(
-                    "d_ref", "m", "> 0",
-                    "diameter at which kn and ks hold (stiffness_scaling = \"linear\")",
-                    [](R& r) -> double& { return r.d_ref; }, &TomlFields::positive),
-                "required with linear scaling")}};
-  return s;
-}
-
-namespace {
 
 // The preparation and its container.
 void check_preparation(const TomlFields& f, const SpecimenRecipe& r, const Seen& seen) {
@@ -497,65 +337,16 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
   CrushRecipe tables;  // [cells] and [bond] of crushable particles, with the crushing defaults
   tables.strength = default_strength_factor();
   tables.cells.cell_size = 0.0065;
-  r.crushable_material.fill.spheres = 6;
-  r.crushable_material.fill.field.voxels = 16;
+  set_crushable_fill_defaults(r);
+  Reading in{r, seen, tables};
   for (const auto& [key, val] : root) {
     const std::string k(key.str());
-    if (k == "target_relative_density" || k == "layers" || k == "calibration_frictions")
-      seen.deposition_keys.push_back(k);
-    if (k == "seed") {
-      const long long s = f.integer(val, k);
-      if (s < 0) f.fail(k, "must be non-negative, got " + toml_show(val));
-      r.seed = static_cast<std::uint64_t>(s);
-    } else if (k == "name" || k == "description") {
-      f.string(val, k);
-    } else if (k == "container") {
-      read_container(f, val, r, seen);
-    } else if (k == "preparation") {
-      read_preparation(f, val, r);
-    } else if (k == "zones") {
-      seen.zones = true;
-      read_zones(f, val, r, seen.zone_origin);
-    } else if (k == "gradation") {
-      seen.gradation = true;
-      read_gradation(f, val, r);
-    } else if (k == "soil_rock_threshold") {
-      r.soil_rock_threshold = f.positive(val, k);
-    } else if (k == "rock_mass_fraction") {
-      r.rock_mass_fraction = f.number(val, k);
-      if (r.rock_mass_fraction < 0 || r.rock_mass_fraction > 1)
-        f.fail(k, "must be in [0, 1], got " + toml_show(val));
-    } else if (k == "fines") {
-      read_fines(f, val, r);
-    } else if (k == "rock") {
-      read_rock(f, val, r);
-    } else if (k == "cells" || k == "bond") {
-      (k == "cells" ? seen.cells : seen.bond) = true;
-      if (k == "cells")  // the crushing recipes' tables
-        read_cells_table(f, f.table(val, k), tables);
-      else
-        read_bond_table(f, f.table(val, k), tables);
-    } else if (k == "density") {
-      read_section(f, val, density_section(), r);
-    } else if (k == "contact") {
-      read_section(f, val, contact_section(), r);
-    } else if (k == "target_relative_density") {
-      r.target_relative_density = f.number(val, k);
-      if (r.target_relative_density < 0 || r.target_relative_density > 1)
-        f.fail(k, "must be in [0, 1], got " + toml_show(val));
-    } else if (k == "layers") {
-      const long long n = f.integer(val, k);
-      if (n < 1 || n > 100) f.fail(k, "must be in [1, 100], got " + toml_show(val));
-      r.layers = static_cast<int>(n);
-    } else if (k == "calibration_frictions") {
-      r.calibration_frictions = f.numbers(val, k);
-    } else {
-      f.fail(
-          k,
-          "unknown key (known: seed, name, description, container, gradation, soil_rock_threshold, "
-          "rock_mass_fraction, fines, rock, cells, bond, density, contact, preparation, zones, "
-          "target_relative_density, layers, calibration_frictions)");
-    }
+    const TopLevel& e = top_entry(f, k);
+    if (e.deposition) seen.deposition_keys.push_back(k);
+    if (e.read)
+      e.read(f, val, in);
+    else
+      read_top_key(f, val, k, r);
   }
 
   check_preparation(f, r, seen);

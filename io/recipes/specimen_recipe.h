@@ -104,9 +104,31 @@ struct SpecimenRecipe {
 /// got VALUE" (IoError for an unreadable recipe).
 SpecimenRecipe read_specimen_recipe(const std::string& path);
 
-/// The tables of the [density] and [contact] sections (io/recipes/section_table.h).
+/// The section tables of a specimen recipe (io/recipes/section_table.h; defined in
+/// io/recipes/specimen_sections.cpp), each read into a SpecimenRecipe unless said otherwise.
+/// The keys at the top of the recipe, outside any section (name ""; fields are the bare keys).
+const RecipeSection<SpecimenRecipe>& specimen_top_section();
+/// [container]: shape, diameter, height, size, angle.
+const RecipeSection<SpecimenRecipe>& container_section();
+/// [preparation]: method, porosity, friction.
+const RecipeSection<SpecimenRecipe>& preparation_section();
+/// [zones]: coordinate, origin, mixed_porosity, region (each read by zone_region_section).
+const RecipeSection<SpecimenRecipe>& zones_section();
+/// One [[zones.region]] table, read into a dem::ZoneRegion (named "zones.region[i]" when read).
+const RecipeSection<dem::ZoneRegion>& zone_region_section();
+/// [gradation]: sieves, passing.
+const RecipeSection<SpecimenRecipe>& gradation_section();
+/// [fines]: below, replace_with.
+const RecipeSection<SpecimenRecipe>& fines_section();
+/// [rock]: library or recipe, or a crushable material's parent and fill.
+const RecipeSection<SpecimenRecipe>& rock_section();
+/// [density]: soil, rock.
 const RecipeSection<SpecimenRecipe>& density_section();
+/// [contact]: the contact law.
 const RecipeSection<SpecimenRecipe>& contact_section();
+/// Gives `r` the fill of a crushable cell that a recipe starts from (6 spheres on a grid of 16
+/// voxels across; a SpecimenRecipe{} holds the fill's own defaults), as rock_section shows it.
+void set_crushable_fill_defaults(SpecimenRecipe& r);
 SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string& path);
 
 }  // namespace clumpkit

@@ -12,13 +12,17 @@ std::string toml_show(const toml::node& n) {
   if (auto v = n.as_floating_point()) {
     s.precision(10);
     s << v->get();
-  } else if (n.is_table()) {
-    s << *n.as_table();
-  } else if (n.is_array()) {
-    s << *n.as_array();
-  } else {
-    n.visit([&](const auto& v) { s << v; });
+    return s.str();
   }
+  if (n.is_table()) {
+    s << *n.as_table();
+    return s.str();
+  }
+  if (n.is_array()) {
+    s << *n.as_array();
+    return s.str();
+  }
+  n.visit([&](const auto& v) { s << v; });
   return s.str();
 }
 
@@ -27,13 +31,10 @@ void TomlFields::fail(const std::string& field, const std::string& why) const {
 }
 
 double TomlFields::number(const toml::node& n, const std::string& field) const {
-  double x = 0.0;
-  if (auto i = n.as_integer())
-    x = static_cast<double>(i->get());
-  else if (auto f = n.as_floating_point())
-    x = f->get();
-  else
+  if (!n.is_integer() && !n.is_floating_point())
     fail(field, "expected a number, got " + toml_show(n));
+  const double x =
+      n.is_integer() ? static_cast<double>(n.as_integer()->get()) : n.as_floating_point()->get();
   if (!std::isfinite(x)) fail(field, "must be finite, got " + toml_show(n));
   return x;
 }
@@ -114,34 +115,38 @@ Distribution TomlFields::distribution(const toml::node& n, const std::string& fi
   if (k == "uniform" || k == "integers") {
     d.kind = k == "uniform" ? Distribution::Kind::Uniform : Distribution::Kind::Integers;
     std::tie(d.a, d.b) = pair(val, field + "." + k);
-  } else if (k == "normal" || k == "lognormal") {
+    return d;
+  }
+  if (k == "normal" || k == "lognormal") {
     d.kind = k == "normal" ? Distribution::Kind::Normal : Distribution::Kind::Lognormal;
     const auto* p = val.as_table();
     if (!p)
       fail(field + "." + k,
            "expected { mu = .., sigma = .., min = .., max = .. }, got " + toml_show(val));
-    bool mu = false, sigma = false;
+    // The parameters: mu and sigma (required) into a and b, the truncation into min and max.
+    struct Parameter {
+      const char* name;
+      double Distribution::*at;
+      bool given;
+    };
+    Parameter known[] = {{"mu", &Distribution::a, false},
+                         {"sigma", &Distribution::b, false},
+                         {"min", &Distribution::min, false},
+                         {"max", &Distribution::max, false}};
     for (const auto& [pk, pv] : *p) {
       const std::string name(pk.str());
       const std::string f = field + "." + k + "." + name;
-      if (name == "mu") {
-        d.a = number(pv, f);
-        mu = true;
-      } else if (name == "sigma") {
-        d.b = number(pv, f);
-        sigma = true;
-      } else if (name == "min") {
-        d.min = number(pv, f);
-      } else if (name == "max") {
-        d.max = number(pv, f);
-      } else {
-        fail(f, "unknown key (known: mu, sigma, min, max)");
-      }
+      Parameter* hit = nullptr;
+      for (Parameter& q : known)
+        if (name == q.name) hit = &q;
+      if (!hit) fail(f, "unknown key (known: mu, sigma, min, max)");
+      d.*(hit->at) = number(pv, f);
+      hit->given = true;
     }
-    if (!mu || !sigma) fail(field + "." + k, "needs both mu and sigma");
-  } else {
-    fail(field + "." + k, "unknown distribution (known: uniform, integers, normal, lognormal)");
+    if (!known[0].given || !known[1].given) fail(field + "." + k, "needs both mu and sigma");
+    return d;
   }
+  fail(field + "." + k, "unknown distribution (known: uniform, integers, normal, lognormal)");
   return d;
 }
 

@@ -2,9 +2,9 @@
 // shared by the bond tests of the World and of checkpoints.
 #pragma once
 
+#include "dem/core/crushable.h"
 #include "dem/core/timestep.h"
 #include "dem/core/world.h"
-#include "dem/lab/crushable.h"
 #include "geom/cells/cell_bonds.h"
 #include "geom/shapes/primitives.h"
 

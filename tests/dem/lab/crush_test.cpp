@@ -2,7 +2,7 @@
 // fails, with the platens in balance and the same bytes for any thread count.
 #include "dem/lab/crush.h"
 
-#include "dem/lab/crushable.h"
+#include "dem/core/crushable.h"
 #include "geom/errors.h"
 #include "geom/shapes/polyhedron.h"
 

@@ -1,7 +1,7 @@
 // An oedometer on a small crushable specimen (bonded cells from a crushable compression): the
 // breakage columns count what broke, the fragments keep the particles' volume, and the rows are
 // the same bytes for one and two threads. The short sibling of tests/cli/crushable_test.cpp.
-#include "dem/lab/crushable.h"
+#include "dem/core/crushable.h"
 #include "dem/lab/element_loading.h"
 
 #include "dem/core/timestep.h"
@@ -49,7 +49,7 @@ std::vector<CurveRow> crushable_oedometer(int threads, World* end = nullptr) {
   const TestCell cell = add_cylinder_test_cell(w, c.radius, 0.0, c.height);
   w.options().timestep = 0.2 * critical_timestep(w);
   ElementTestSettings s;
-  s.kind = TestKind::oedometer;
+  s.path = &kOedometerPath;
   s.confining = 50e3;
   s.final_stress = 1e6;
   s.strain_rate = 1;  // fast (a test of the bookkeeping, not of the physics)

@@ -184,7 +184,7 @@ TEST(StageFiles, ElementTestStoppedWhileConsolidatingAndWhileLoadingResumesToThe
     return s;
   };
   ElementTestSettings t;
-  t.kind = TestKind::triaxial;
+  t.path = &kTriaxialPath;
   t.confining = 2.0 * cube.mean_stress;
   t.strain_rate = 2.0;
   t.max_axial_strain = 0.003;

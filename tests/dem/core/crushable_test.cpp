@@ -1,6 +1,6 @@
 // A crushable particle in the World: its cells' bodies carry the parent's exact mass and place
 // their corners where the cells are; moved as one rigid piece it carries no bond force.
-#include "dem/lab/crushable.h"
+#include "dem/core/crushable.h"
 
 #include "dem/core/timestep.h"
 #include "geom/errors.h"

@@ -1,4 +1,4 @@
-#include "dem/lab/crushable.h"
+#include "dem/core/crushable.h"
 
 #include "geom/errors.h"
 #include "geom/fill/fill.h"

@@ -1,0 +1,118 @@
+// clumpkit page, shared by every kind: DOM helpers, the one palette, ramp and first-view mark.
+// A static, offline page: no build step, no network, no modules (file:// refuses them). The
+// scripts of page/ run in index.html's order, each in its own function, and share what they need
+// through window.clumpkitShared; the data come from page/data.js (window.CLUMPKIT_PAGE) and
+// per-item scripts (docs/pages.md). three.js (Debian's libjs-three, the global THREE) draws.
+'use strict';
+
+(function () {
+  // What tests/browser/page_check.py reads: ready (the page built), viewDrawn and firstViewMs (its
+  // first view drawn, and when), errors.
+  const state = { ready: false, firstViewMs: null, viewDrawn: false, errors: [] };
+  window.clumpkitPage = state;
+  window.addEventListener('error', (e) => state.errors.push(String(e.message)));
+
+  function el(tag, attrs, children) {
+    const e = document.createElement(tag);
+    for (const [k, v] of Object.entries(attrs || {})) {
+      if (k === 'text') e.textContent = v;
+      else if (k === 'class') e.className = v;
+      else e.setAttribute(k, v);
+    }
+    for (const c of children || []) e.appendChild(c);
+    return e;
+  }
+
+  // Numbers as a person reads them: integers whole, others to five digits, tiny or huge ones in
+  // exponent form.
+  function fmt(v) {
+    if (typeof v !== 'number') return String(v);
+    if (!isFinite(v)) return String(v);
+    if (Number.isInteger(v) && Math.abs(v) < 1e9) return String(v);
+    const a = Math.abs(v);
+    if (a !== 0 && (a < 1e-3 || a >= 1e6)) return v.toExponential(4).replace(/\.?0+e/, 'e');
+    return String(Number(v.toPrecision(5)));
+  }
+
+  function section(title) {
+    const s = el('section', {}, [el('h2', { text: title })]);
+    document.querySelector('main').appendChild(s);
+    return s;
+  }
+
+  // A section of two columns: the views on the left, the table on the right.
+  function twoColumns(title) {
+    const s = section(title);
+    const row = el('div', { class: 'row' });
+    s.appendChild(row);
+    const left = el('div'), right = el('div');
+    row.appendChild(left); row.appendChild(right);
+    return { left, right };
+  }
+
+  // Loads one item's data script (browsers refuse fetch() from file://): the script calls
+  // window[callback], which is set to `onData` first; the previous script of that id goes.
+  function loadPart(id, src, callback, onData) {
+    window[callback] = onData;
+    const old = document.getElementById(id);
+    if (old) old.remove();
+    document.body.appendChild(el('script', { id, src }));
+  }
+
+  // The one palette of categories (bodies, zones, fragments, curves); colours repeat beyond it.
+  const PALETTE = [0x1f77b4, 0xd62728, 0x2ca02c, 0xff7f0e, 0x9467bd, 0x8c564b, 0xe377c2, 0x17becf, 0xbcbd22, 0x7f7f7f, 0xaec7e8, 0xffbb78];
+  // Category k's colour as a number (three.js), any integer k (a zone may be -1).
+  function paletteColour(k) {
+    const n = PALETTE.length;
+    return PALETTE[((k % n) + n) % n];
+  }
+  // The same as CSS (canvas plots).
+  function paletteCss(k) {
+    return '#' + paletteColour(k).toString(16).padStart(6, '0');
+  }
+
+  // The one ramp of quantities (viridis, dark to light) in eight steps: t in [0, 1].
+  const RAMP = [0x440154, 0x46327e, 0x365c8d, 0x277f8e, 0x1fa187, 0x4ac16d, 0xa0da39, 0xfde725];
+  function rampColour(t) {
+    return RAMP[Math.min(RAMP.length - 1, Math.floor(t * RAMP.length))];
+  }
+
+  // The page's first view is drawn (a 3-D view rendered, or the plots placed): stamped once, the
+  // time the browser tests hold against --max-first-view.
+  function markFirstView() {
+    if (state.viewDrawn) return;
+    state.viewDrawn = true;
+    state.firstViewMs = performance.now();
+  }
+
+  // The reports as key-value rows, one column per folder.
+  function reportTable(folders) {
+    const keys = [];
+    for (const f of folders) for (const k of Object.keys(f.report)) if (!keys.includes(k)) keys.push(k);
+    const head = el('tr', {}, [el('th', { class: 'text', text: 'report' })]);
+    for (const f of folders) head.appendChild(el('th', { class: 'text', text: f.name }));
+    const body = el('tbody');
+    for (const k of keys) {
+      const tr = el('tr', { 'data-key': k }, [el('td', { class: 'text', text: k })]);
+      for (const f of folders) tr.appendChild(el('td', { text: k in f.report ? fmt(f.report[k]) : '' }));
+      body.appendChild(tr);
+    }
+    return el('table', { class: 'kv', id: 'report' }, [el('thead', {}, [head]), body]);
+  }
+
+  function gallery(images) {
+    const s = section('Images (' + images.length + ')');
+    const g = el('div', { class: 'gallery' });
+    for (const im of images) {
+      const img = el('img', { src: im.src, loading: 'lazy', alt: im.caption });
+      g.appendChild(el('figure', {}, [el('a', { href: im.src }, [img]), el('figcaption', { text: im.caption })]));
+    }
+    s.appendChild(g);
+  }
+
+  // kinds: each page kind's script adds kinds[D.kind] = function (D), which builds its sections.
+  window.clumpkitShared = {
+    state, el, fmt, section, twoColumns, loadPart, paletteColour, paletteCss, rampColour,
+    markFirstView, reportTable, gallery, kinds: {},
+  };
+})();
