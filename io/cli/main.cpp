@@ -1,6 +1,7 @@
 // clumpkit command line: parses arguments and maps errors to exit codes (2 bad input, 1 failure,
 // 130 stopped on request).
 #include "geom/errors.h"
+#include "geom/version.h"
 #include "io/cli/common.h"
 
 #include <CLI/CLI.hpp>
@@ -17,7 +18,10 @@ int main(int argc, char** argv) {
       "clumpkit " CLUMPKIT_VERSION
       " - irregular particles, sphere clumps and DEM specimens for geomaterials.\n"
       "Geometry commands keep the units of their input; recipes are in SI units (m, kg, s)."};
-  app.set_version_flag("--version", CLUMPKIT_VERSION);
+  // The version, the commit and the libraries compiled in: what a bug report needs.
+  std::string version = clumpkit::version_text();
+  version.pop_back();  // CLI11 ends the text with its own newline
+  app.set_version_flag("--version", version);
   app.require_subcommand(1);
   clumpkit::cli::register_shape(app);
   clumpkit::cli::register_shapes(app);

@@ -1,5 +1,7 @@
 #include "io/pipeline/manifest.h"
 
+#include "geom/version.h"
+
 namespace clumpkit {
 
 nlohmann::ordered_json manifest_head(const std::string& command, const std::string& recipe_path,
@@ -7,7 +9,8 @@ nlohmann::ordered_json manifest_head(const std::string& command, const std::stri
   nlohmann::ordered_json m;
   m["tool"] = "clumpkit";
   m["format_version"] = kManifestFormat;
-  m["version"] = CLUMPKIT_VERSION;
+  m["version"] = version();
+  m["commit"] = commit();
   m["command"] = command;
   m["recipe_path"] = recipe_path;
   m["recipe"] = recipe_text;

@@ -12,6 +12,8 @@ raises ValueError with the library's message, file trouble OSError; Ctrl-C stops
 """
 
 from ._core import (  # noqa: F401
+    __commit__,
+    __version__,
     Clump,
     Descriptors,
     Fidelity,
@@ -33,7 +35,6 @@ from ._core import (  # noqa: F401
     volume,
 )
 
-__version__ = "0.1.0"
 __all__ = [
     "Clump", "Descriptors", "Fidelity", "MassProperties", "Mesh", "block", "box", "cylinder",
     "describe", "ellipsoid", "fill", "hull", "library", "mass_properties", "polyhedron",

@@ -8,8 +8,9 @@ import json
 import os
 import sys
 
-# Keys whose values are wall-clock measurements or the machine's, not results.
-CLOCK_KEYS = {"seconds", "wall_seconds", "elapsed_seconds", "time_s", "threads", "started", "finished"}
+# Keys whose values are wall-clock measurements, the machine's or the build's (the commit), not
+# results.
+CLOCK_KEYS = {"commit", "seconds", "wall_seconds", "elapsed_seconds", "time_s", "threads", "started", "finished"}
 
 
 def strip(value):
