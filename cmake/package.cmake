@@ -10,10 +10,13 @@ set(CPACK_PACKAGE_VENDOR "clumpkit developers")
 set(CPACK_PACKAGE_CONTACT "clumpkit developers <clumpkit@users.noreply.github.com>")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
     "irregular particles, sphere clumps and DEM specimens for geomaterials")
-set(CPACK_PACKAGE_DESCRIPTION
-    "Rock blocks, convex hulls and cut polyhedra as meshes; maximal-inscribed-sphere fills with "
-    "exact union volumes and mass properties; dense DEM specimens; exports to LAMMPS, LIGGGHTS, "
-    "Yade, PFC and ParaView; element tests, the cone penetration test and particle crushing.")
+# One string (set() with several would join them with ';').
+string(CONCAT CPACK_PACKAGE_DESCRIPTION
+       "Rock blocks, convex hulls and cut polyhedra as meshes; maximal-inscribed-sphere fills with "
+       "exact union volumes and mass properties; dense DEM specimens; exports to LAMMPS, "
+       "LIGGGHTS, Yade, PFC and ParaView; element tests, the cone penetration test and particle "
+       "crushing. The package also holds the C++ libraries, headers and CMake package; building "
+       "against them needs the -dev packages of their dependencies (docs/install.md).")
 set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/COPYING)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)

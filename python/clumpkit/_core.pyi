@@ -9,6 +9,9 @@ ArrayI = npt.NDArray[np.int64]
 ArrayLike = npt.ArrayLike
 Progress = Optional[Callable[[str, float], Any]]
 
+__version__: str  # "MAJOR.MINOR.PATCH", as `clumpkit --version`
+__commit__: str  # the git commit built from ("-dirty" with local changes; "unknown" outside git)
+
 class Mesh:
     def __init__(self, vertices: ArrayLike, triangles: ArrayLike, check: bool = True) -> None: ...
     @property

@@ -96,3 +96,11 @@ def test_read_specimen_of_a_written_file(tmp_path):
     (tmp_path / "bad.csv").write_text((tmp_path / "specimen.csv").read_text().replace("2.5", "nan"))
     with pytest.raises(ValueError, match="bad.csv:4: field mass"):
         clumpkit.read_specimen(str(tmp_path / "bad.csv"))
+
+
+def test_version_and_commit_are_the_command_lines(cli):
+    # The module and the program are built from the same sources: `clumpkit --version` starts
+    # "clumpkit VERSION (commit COMMIT)".
+    first = cli("--version").splitlines()[0]
+    assert first == f"clumpkit {clumpkit.__version__} (commit {clumpkit.__commit__})"
+    assert clumpkit.__version__.count(".") == 2
