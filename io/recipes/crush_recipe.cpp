@@ -372,24 +372,14 @@ CrushRecipe parse_crush_recipe(const std::string& text, const std::string& path)
   r.path = path;
   r.text = text;
   // The top level: each key's reader, in the order the unknown-key message lists them.
-  const std::vector<std::pair<std::string, std::function<void(const toml::node&)>>> top{
+  const TopLevelReaders top{
       {"name", [&](const toml::node& v) { r.name = f.string(v, "name"); }},
       {"description", [&](const toml::node& v) { f.string(v, "description"); }},
       {"crush", [&](const toml::node& v) { read_crush(f, f.table(v, "crush"), r); }},
       {"cells", [&](const toml::node& v) { read_cells_table(f, f.table(v, "cells"), r); }},
       {"bond", [&](const toml::node& v) { read_bond_table(f, f.table(v, "bond"), r); }},
       {"set", [&](const toml::node& v) { read_sets(f, v, r); }}};
-  for (const auto& [key, val] : root) {
-    const std::string k(key.str());
-    const auto it =
-        std::find_if(top.begin(), top.end(), [&](const auto& e) { return e.first == k; });
-    if (it == top.end()) {
-      std::string known;
-      for (const auto& e : top) known += (known.empty() ? "" : ", ") + e.first;
-      f.fail(k, "unknown key (known: " + known + ")");
-    }
-    it->second(val);
-  }
+  read_top_level(f, root, top);
   if (r.sets.empty()) f.fail("set", "at least one [[set]] is required");
   std::set<std::string> names;
   for (std::size_t i = 0; i < r.sets.size(); ++i) {

@@ -222,7 +222,7 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
   dem::ElementTestSettings& s = r.settings;
   bool have_final = false;
   // The top level: each key's reader, in the order the unknown-key message lists them.
-  const std::vector<std::pair<std::string, std::function<void(const toml::node&)>>> top{
+  const TopLevelReaders top{
       {"name", [&](const toml::node& v) { f.string(v, "name"); }},
       {"description", [&](const toml::node& v) { f.string(v, "description"); }},
       {"test",
@@ -232,17 +232,7 @@ TestRecipe parse_test_recipe(const std::string& text, const std::string& path) {
        }},
       {"contact", [&](const toml::node& v) { read_section(f, v, contact_override_section(), r); }},
       {"probe", [&](const toml::node& v) { r.probe = read_probe(f, v); }}};
-  for (const auto& [key, val] : root) {
-    const std::string k(key.str());
-    const auto it =
-        std::find_if(top.begin(), top.end(), [&](const auto& e) { return e.first == k; });
-    if (it == top.end()) {
-      std::string known;
-      for (const auto& e : top) known += (known.empty() ? "" : ", ") + e.first;
-      f.fail(k, "unknown key (known: " + known + ")");
-    }
-    it->second(val);
-  }
+  read_top_level(f, root, top);
   if (r.scaling == dem::StiffnessScaling::linear && !r.d_ref)
     f.fail("contact.d_ref", "is required with stiffness_scaling = \"linear\"");
   if (have_final && !(s.final_stress > s.confining))

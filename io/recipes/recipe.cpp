@@ -224,7 +224,7 @@ ShapeRecipe parse_shape_recipe(const std::string& text, const std::string& path)
     }
   };
   // The top level: each key's reader, in the order the unknown-key message lists them.
-  const std::vector<std::pair<std::string, std::function<void(const toml::node&)>>> top{
+  const TopLevelReaders top{
       {"seed",
        [&](const toml::node& v) {
          r.seed = static_cast<std::uint64_t>(
@@ -239,17 +239,7 @@ ShapeRecipe parse_shape_recipe(const std::string& text, const std::string& path)
        }},
       {"fraction", read_fractions},
       {"fill", read_fill}};
-  for (const auto& [key, val] : root) {
-    const std::string k(key.str());
-    const auto it =
-        std::find_if(top.begin(), top.end(), [&](const auto& e) { return e.first == k; });
-    if (it == top.end()) {
-      std::string known;
-      for (const auto& e : top) known += (known.empty() ? "" : ", ") + e.first;
-      p.fail(k, "unknown key (known: " + known + ")");
-    }
-    it->second(val);
-  }
+  read_top_level(p, root, top);
   if (r.fractions.empty()) p.fail("fraction", "the recipe lists no [[fraction]]");
   return r;
 }

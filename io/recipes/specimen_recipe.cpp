@@ -335,8 +335,6 @@ SpecimenRecipe parse_specimen_recipe(const std::string& text, const std::string&
   r.text = text;
   Seen seen;
   CrushRecipe tables;  // [cells] and [bond] of crushable particles, with the crushing defaults
-  tables.strength = default_strength_factor();
-  tables.cells.cell_size = 0.0065;
   set_crushable_fill_defaults(r);
   Reading in{r, seen, tables};
   for (const auto& [key, val] : root) {

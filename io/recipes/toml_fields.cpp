@@ -2,6 +2,7 @@
 
 #include "geom/errors.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -24,6 +25,20 @@ std::string toml_show(const toml::node& n) {
   }
   n.visit([&](const auto& v) { s << v; });
   return s.str();
+}
+
+void read_top_level(const TomlFields& f, const toml::table& root, const TopLevelReaders& readers) {
+  for (const auto& [key, val] : root) {
+    const std::string k(key.str());
+    const auto it =
+        std::find_if(readers.begin(), readers.end(), [&](const auto& e) { return e.first == k; });
+    if (it == readers.end()) {
+      std::string known;
+      for (const auto& e : readers) known += (known.empty() ? "" : ", ") + e.first;
+      f.fail(k, "unknown key (known: " + known + ")");
+    }
+    it->second(val);
+  }
 }
 
 void TomlFields::fail(const std::string& field, const std::string& why) const {

@@ -5,6 +5,7 @@
 
 #include <toml++/toml.h>
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,6 +35,14 @@ struct TomlFields {
   /// min, max } }, { lognormal = { mu, sigma, min, max } } (geom/shapes/distribution.h).
   Distribution distribution(const toml::node& n, const std::string& field) const;
 };
+
+/// A recipe's top-level keys with their readers, in the order an unknown key's message lists
+/// them.
+using TopLevelReaders = std::vector<std::pair<std::string, std::function<void(const toml::node&)>>>;
+
+/// Reads every key of `root` by its entry in `readers`; an unknown key is refused as
+/// "FILE: KEY: unknown key (known: ...)".
+void read_top_level(const TomlFields& f, const toml::table& root, const TopLevelReaders& readers);
 
 /// Parses TOML text; a syntax error throws InvalidInput "FILE:LINE: TOML syntax error: ...".
 toml::table parse_toml(const std::string& text, const std::string& path);
