@@ -19,7 +19,7 @@ set(CLUMPKIT_HEADER_DIR ${CMAKE_INSTALL_INCLUDEDIR}/clumpkit)
 # header includes a private one, so the set stays closed.
 set(CLUMPKIT_PUBLIC_HEADERS
     geom/vec.h geom/mesh/mesh.h geom/sphere.h geom/errors.h geom/progress.h geom/format.h
-    geom/random.h geom/version.h
+    geom/random.h geom/range.h geom/version.h
     geom/mesh/mesh_index.h
     geom/fill/fill.h geom/fill/fill_options.h geom/fill/distance_field.h geom/fill/fidelity.h
     geom/volume/union_of_balls.h geom/volume/inclusion_exclusion.h geom/volume/slicing.h

@@ -1,5 +1,6 @@
 #include "dem/core/cohesive_law.h"
 
+#include "dem/core/contact.h"
 #include "geom/errors.h"
 #include "geom/format.h"
 
@@ -24,8 +25,8 @@ void validate_values(const CohesiveParams& p) {
     if (!(v > 0.0) || !std::isfinite(v))
       throw InvalidInput(std::string("cohesive law: ") + name +
                          " must be positive and finite, got " + format_number(v));
-  if (!(p.friction >= 0.0) || !std::isfinite(p.friction))
-    throw InvalidInput("cohesive law: friction must be non-negative and finite, got " +
+  if (!kFriction.contains(p.friction))
+    throw InvalidInput("cohesive law: friction " + outside(kFriction, p.friction) + ", got " +
                        format_number(p.friction));
 }
 

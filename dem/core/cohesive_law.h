@@ -26,7 +26,7 @@ struct CohesiveParams {
 CohesiveParams unbreakable(const CohesiveParams& p);
 
 /// Throws InvalidInput "cohesive law: FIELD must be positive and finite, got V" for a stiffness,
-/// strength or fracture energy that is not (friction: not negative and finite). The one check of
+/// strength or fracture energy that is not (friction: outside dem::kFriction). The one check of
 /// each value (recipes call it on their [bond] table as read, validate on the law as used).
 void validate_values(const CohesiveParams& p);
 

@@ -31,6 +31,7 @@ void validate(const ContactParams& p) {
   if (!(p.ks >= 0.0) || !std::isfinite(p.ks))
     throw InvalidInput("contact: ks must be finite and >= 0, got " + std::to_string(p.ks));
   if (p.scaling == StiffnessScaling::linear) positive(p.d_ref, "d_ref (linear stiffness scaling)");
+  require(kFriction, p.friction, "contact: friction");
 }
 
 void update_contact(ContactState& s, const Vec3& normal, double overlap, const Vec3& point,

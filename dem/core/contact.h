@@ -3,6 +3,7 @@
 #pragma once
 
 #include "geom/mesh/mesh.h"
+#include "geom/range.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,6 +32,9 @@ struct ContactParams {
   double local_damping = 0.0;
 };
 
+/// The Coulomb coefficients μ a contact law, a test or a recipe takes (finite: +∞ is no value).
+inline constexpr Range kFriction = at_least(0);
+
 /// Factor f on kn and ks for a contact of bodies of volume-equivalent diameters d_i and d_j
 /// (every sphere of a clump has its body's d): 1 without scaling; with linear scaling the two
 /// particle springs k_i = 2·kn_ref·d_i/d_ref in series, kn_ij = 2·(kn_ref/d_ref)·d_i·d_j /
@@ -56,7 +60,8 @@ inline ContactParams scaled_stiffness(ContactParams p, double factor) {
   return p;
 }
 
-/// Throws InvalidInput for stiffnesses or a scaling reference that are not positive and finite.
+/// Throws InvalidInput for stiffnesses or a scaling reference that are not positive and finite,
+/// or a friction outside kFriction.
 void validate(const ContactParams& p);
 
 /// Damping ratio giving restitution e in a head-on collision of the linear spring-dashpot:

@@ -518,8 +518,8 @@ void World::restore(ListState lists, std::vector<PairContact> contacts,
 
 void World::rescale_friction(double new_friction) {
   StepCache& sc = cache_.get();
-  if (!(new_friction >= 0.0) || !std::isfinite(new_friction))
-    throw InvalidInput("DEM world: friction must be non-negative, got " +
+  if (!kFriction.contains(new_friction))
+    throw InvalidInput("DEM world: friction " + outside(kFriction, new_friction) + ", got " +
                        std::to_string(new_friction));
   options_.contact.friction = new_friction;
   hold_contacts_in_lists();

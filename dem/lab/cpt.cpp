@@ -57,6 +57,12 @@ void validate_probe(const ProbeSettings& p) {
                        format_number(p.apex_deg));
 }
 
+void check_probe_width(const ProbeSettings& p, double width) {
+  if (!(p.diameter <= 0.5 * width))
+    throw InvalidInput("probe.diameter " + format_number(p.diameter) +
+                       " m is wider than half the cell (width " + format_number(width) + " m)");
+}
+
 void check_probe_core(const ProbeSettings& p, double core_radius) {
   if (core_radius > 0.0 && p.diameter > 2.0 * core_radius)
     throw InvalidInput("cpt: probe.diameter " + format_number(p.diameter) +
@@ -98,10 +104,11 @@ void validate_cpt(const World& world, const TestCell& cell, const CptSettings& s
   }
   check_probe_core(p, core_radius);
   const Vec3 l = cell_lengths(world, cell);
-  if (!(p.diameter <= 0.5 * std::min(l.x(), l.y())))
-    throw InvalidInput("cpt: probe diameter " + format_number(p.diameter) +
-                       " m exceeds half the cell's width " + format_number(std::min(l.x(), l.y())) +
-                       " m");
+  try {
+    check_probe_width(p, std::min(l.x(), l.y()));
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(std::string("cpt: ") + e.what());
+  }
   if (cell.shape == TestCell::Shape::segment)
     check_segment_reach(world.bodies(), cell_axis(world, cell), cell.angle, p);
   if (s.cell.record_every < 1) throw InvalidInput("cpt: record_every must be at least 1");

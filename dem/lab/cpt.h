@@ -71,6 +71,12 @@ struct CptResult {
 /// its settings).
 void validate_probe(const ProbeSettings& probe);
 
+/// Throws InvalidInput "probe.diameter D m is wider than half the cell (width W m)" unless
+/// the probe's diameter is at most half the `width` of its chamber (a cylinder's diameter, a
+/// cuboid's narrower side): the one rule of the probe's room, validate_cpt's and the LAMMPS
+/// export's.
+void check_probe_width(const ProbeSettings& probe, double width);
+
 /// Throws InvalidInput where the specimen is zoned radially with a core of small particles of
 /// radius `core_radius` (0: not zoned so) and the probe is wider than that core or the core is
 /// under 4 probe diameters (CTGU 2017 sizes the core at 4 probe diameters, 75 mm for 18 mm, so

@@ -118,13 +118,11 @@ void validate(const CompressionSpec& spec) {
   if (spec.shape == CompressionSpec::Shape::segment && !(spec.angle > 0.0 && spec.angle <= M_PI))
     throw InvalidInput("compression: a segment's angle must be in (0, 180] degrees, got " +
                        format_number(spec.angle * 180.0 / M_PI));
-  try {
-    check_target_porosity(spec.porosity);
-  } catch (const InvalidInput& e) {
-    throw InvalidInput(std::string("compression: porosity ") + e.what());
-  }
-  if (!(spec.friction >= 0.0) || !std::isfinite(spec.friction))
-    throw InvalidInput("compression: friction must be non-negative, got " +
+  if (!kTargetPorosity.contains(spec.porosity))
+    throw InvalidInput("compression: porosity " + outside(kTargetPorosity, spec.porosity) +
+                       ", got " + format_number(spec.porosity));
+  if (!kFriction.contains(spec.friction))
+    throw InvalidInput("compression: friction " + outside(kFriction, spec.friction) + ", got " +
                        format_number(spec.friction));
   if (!(spec.loose_factor > 1.0 && spec.loose_factor <= 10.0))
     throw InvalidInput("compression: loose_factor must be in (1, 10]");
@@ -142,9 +140,10 @@ void validate(const CompressionSpec& spec) {
   if (spec.crushable) validate(*spec.crushable);
   if (zoned(spec)) {
     validate_zones(spec.zones, largest_size(spec));
-    if (!(spec.mixed_porosity >= 0.0 && spec.mixed_porosity < 1.0))
-      throw InvalidInput("compression: mixed_porosity must be in [0, 1), got " +
-                         format_number(spec.mixed_porosity));
+    if (spec.mixed_porosity != 0.0 && !kTargetPorosity.contains(spec.mixed_porosity))
+      throw InvalidInput("compression: mixed_porosity " +
+                         outside(kTargetPorosity, spec.mixed_porosity) +
+                         " (or 0: the porosity), got " + format_number(spec.mixed_porosity));
   }
 }
 
@@ -388,10 +387,6 @@ void finish_specimen(const CompressionSpec& spec, const Vec3& size, double solid
 }
 
 }  // namespace
-
-void check_target_porosity(double n) {
-  if (!(n > 0.2 && n < 0.9)) throw InvalidInput("must be in (0.2, 0.9), got " + format_number(n));
-}
 
 CompressionResult compress_specimen(const CompressionSpec& spec, const StageControl& control) {
   validate(spec);

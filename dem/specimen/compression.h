@@ -8,6 +8,7 @@
 #include "dem/specimen/crushable_particles.h"
 #include "dem/specimen/specimen_particles.h"
 #include "dem/specimen/zones.h"
+#include "geom/range.h"
 
 #include <cstdint>
 #include <optional>
@@ -26,10 +27,10 @@ struct CompressionSpec {
   /// built container keeps these proportions and is scaled (by less than one particle's share)
   /// so that the particles drawn fill it at exactly the target porosity.
   Vec3 size = Vec3(0.1, 0.1, 0.1);
-  /// Target: 1 − (solid volume / container volume), in the range of check_target_porosity.
+  /// Target: 1 − (solid volume / container volume), in kTargetPorosity.
   double porosity = 0.37;
-  /// Interparticle friction during the compression (0: the densest packing the porosity allows);
-  /// the specimen keeps contact.friction.
+  /// Interparticle friction during the compression, in kFriction (0: the densest packing the
+  /// porosity allows); the specimen keeps contact.friction.
   double friction = 0.0;
   std::vector<ParticleClass> classes;
   std::vector<RockTemplate> templates;
@@ -50,10 +51,11 @@ struct CompressionSpec {
   long relax_max_steps = 50000;
   /// Variable particle-size zones (CTGU 2017; no regions: one uniform specimen). Each uniform
   /// zone holds `classes` scaled by its λ at `porosity` (similar packings have equal porosity),
-  /// a mixed layer both neighbours' particles at mixed_porosity (0: `porosity`); bodies are
-  /// placed loose in the pre-image of their zone under the compression's map, so each ends in
-  /// its zone up to the relaxation's moves, and carry Body::zone (re-tagged at the end by their
-  /// final centre). Bounds in metres of the requested container (`size`).
+  /// a mixed layer both neighbours' particles at mixed_porosity (0: `porosity`; else in
+  /// kTargetPorosity); bodies are placed loose in the pre-image of their zone under the
+  /// compression's map, so each ends in its zone up to the relaxation's moves, and carry
+  /// Body::zone (re-tagged at the end by their final centre). Bounds in metres of the requested
+  /// container (`size`).
   ZoneLayout zones;
   double mixed_porosity = 0.0;
   /// Zoned specimens' porosities hold away from walls: each zone's solid is drawn for its volume
@@ -94,10 +96,10 @@ struct ZoneResult {
   long mis_zoned = 0;
 };
 
-/// Throws InvalidInput "must be in (0.2, 0.9), got N" unless a compression can aim at porosity
-/// `n`: looser than 0.9 is no packing, denser than 0.2 beyond any packing of these particles. The
-/// one check of a target porosity (recipes call it on their key, validate on the spec).
-void check_target_porosity(double n);
+/// The porosities a compression can aim at (CompressionSpec::porosity, and mixed_porosity when
+/// not 0): looser than 0.9 is no packing, denser than 0.2 beyond any packing of these particles.
+/// The one range of a target porosity (recipes read their keys in it, validate the spec).
+inline constexpr Range kTargetPorosity = open(0.2, 0.9);
 
 /// The built specimen.
 struct CompressionResult {

@@ -39,6 +39,8 @@ void validate(const CrushableMaterial& m) {
   validate(m.cells);
   validate(m.strength, "crushable.strength_factor");
   validate(m.fill);
+  require(kCellSpheres, m.fill.spheres, "crushable particles: fill.spheres");
+  require(kCellVoxels, m.fill.field.voxels, "crushable particles: fill.field.voxels");
   if (!(m.density > 0 && std::isfinite(m.density)))
     throw InvalidInput("crushable particles: density must be positive, got " +
                        format_number(m.density));

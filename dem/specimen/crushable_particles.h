@@ -7,6 +7,7 @@
 #include "dem/specimen/specimen_particles.h"
 #include "geom/cells/voronoi_cells.h"
 #include "geom/fill/fill_options.h"
+#include "geom/range.h"
 #include "geom/shapes/distribution.h"
 #include "geom/shapes/polyhedron.h"
 
@@ -22,11 +23,21 @@ struct CrushableMaterial {
   CellOptions cells;  ///< the cells of each parent (cell_size in m, or a count)
   int face_subdivision = 0;
   Distribution strength = default_strength_factor();  ///< each face's strength factor
-  FillOptions fill;       ///< the spheres of each cell (cell_clump_body)
+  /// The spheres of each cell (cell_clump_body): fill.spheres in kCellSpheres,
+  /// fill.field.voxels in kCellVoxels.
+  FillOptions fill;
   double density = 2650;  ///< kg/m³
 };
 
-/// Throws InvalidInput naming the field for a material that cannot make particles.
+/// The spheres filling each cell (CrushableMaterial::fill.spheres; 0, the fill's "no budget",
+/// is none here: every cell gets a budget).
+inline constexpr Range kCellSpheres = integers(1, 100);
+/// Voxels across each cell's fill grid (CrushableMaterial::fill.field.voxels), a narrower range
+/// than the fill's own kFieldVoxels.
+inline constexpr Range kCellVoxels = integers(8, 200);
+
+/// Throws InvalidInput naming the field for a material that cannot make particles (the fill's
+/// sphere budget and voxels outside kCellSpheres and kCellVoxels among them).
 void validate(const CrushableMaterial& material);
 
 /// The crushable particles of `classes` (all of them rock: a class's sizes are the parents'

@@ -161,15 +161,18 @@ void check_spec(const SpecimenSpec& s) {
   } catch (const InvalidInput& e) {
     bad(std::string("container radius and height: ") + e.what());
   }
-  if (s.layers < 1) bad("layers must be at least 1");
+  require(kSpecimenLayers, s.layers, "specimen: layers");
   if (s.correction_rounds < 0 || !(s.relative_density_tolerance >= 0))
     bad("correction rounds and tolerance must be non-negative");
   if (s.classes.empty()) bad("the gradation has no classes");
   if (!(s.target_relative_density >= 0 && s.target_relative_density <= 1))
     bad("target relative density must lie in [0, 1]");
-  if (s.calibration_frictions.size() < 2) bad("need at least two calibration frictions");
+  if (s.calibration_frictions.size() < static_cast<std::size_t>(kMinCalibrationFrictions))
+    bad("need at least " + std::to_string(kMinCalibrationFrictions) +
+        " calibration frictions, got " + std::to_string(s.calibration_frictions.size()));
   for (double f : s.calibration_frictions)
-    if (!(f >= 0) || !std::isfinite(f)) bad("calibration frictions must be non-negative");
+    if (!kFriction.contains(f))
+      bad("calibration frictions " + outside(kFriction, f) + ", got " + format_number(f));
   if (!(s.porosity_guess > 0 && s.porosity_guess < 1)) bad("porosity guess must lie in (0, 1)");
   if (!(s.equilibrium_ratio > 0) || s.max_steps < 1) bad("settling limits must be positive");
   if (s.settle_window < 0 || !(s.height_tolerance >= 0))
@@ -506,7 +509,7 @@ void measure_specimen(const World& world, double radius, double margin, int laye
   if (!(margin >= 0) || !(radius > margin))
     throw InvalidInput("specimen: the measurement margin " + format_number(margin) +
                        " leaves no region in a container of radius " + format_number(radius));
-  if (layers < 1) throw InvalidInput("specimen: layers must be at least 1");
+  require(kSpecimenLayers, layers, "specimen: layers");
   result.layer_porosity.clear();
   result.band_porosity.clear();
   measure(world, radius, margin, result);

@@ -7,6 +7,7 @@
 #include "dem/run/stage_store.h"
 #include "dem/specimen/specimen_particles.h"
 #include "geom/progress.h"
+#include "geom/range.h"
 
 #include <cstdint>
 #include <functional>
@@ -15,10 +16,17 @@
 
 namespace clumpkit::dem {
 
+/// The layers a deposited specimen is stacked from (SpecimenSpec::layers; measure_specimen's).
+inline constexpr Range kSpecimenLayers = integers(1, 100);
+
+/// The fewest calibration frictions a deposition takes: the two ends of n(μ) (0 gives n_min, the
+/// largest n_max) and at least four between them to read the target from. Each is in kFriction.
+inline constexpr int kMinCalibrationFrictions = 6;
+
 /// What to build (SI units).
 struct SpecimenSpec {
   double radius = 0.15, height = 0.6;  ///< container cylinder (m)
-  int layers = 3;
+  int layers = 3;                      ///< in kSpecimenLayers
   std::vector<ParticleClass> classes;  ///< after fines replacement
   std::vector<RockTemplate> templates;
   double soil_density = 2700, rock_density = 2870;  ///< kg/m³
@@ -26,7 +34,8 @@ struct SpecimenSpec {
   /// deposition_contact() unless set otherwise.
   ContactParams contact;
   double target_relative_density = 0.5;
-  /// Frictions of the calibration (the largest gives n_max, 0 gives n_min).
+  /// Frictions of the calibration (the largest gives n_max, 0 gives n_min): at least
+  /// kMinCalibrationFrictions, each in kFriction.
   std::vector<double> calibration_frictions = {0.0, 0.05, 0.1, 0.2, 0.4, 0.8};
   std::uint64_t seed = 1;
   /// Porosity assumed when sizing the calibration sample (its solid volume fills one layer at
@@ -134,7 +143,8 @@ std::string spec_fingerprint(const SpecimenSpec& spec);
 /// (`margin` from the wall of a container of `radius`, the floor and the top), its porosity, the
 /// relative density from result.porosity_max and porosity_min (set them first), the per-layer
 /// and per-band porosities and the coordination number (from world.contacts(): step the world
-/// once first). Throws InvalidInput for a margin that leaves no region or layers < 1.
+/// once first). Throws InvalidInput for a margin that leaves no region or layers outside
+/// kSpecimenLayers.
 void measure_specimen(const World& world, double radius, double margin, int layers,
                       SpecimenResult& result);
 

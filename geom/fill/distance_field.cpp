@@ -102,8 +102,7 @@ double distance_voxel_size(const Mesh& mesh, const FieldOptions& o) {
       throw InvalidInput("voxel size must be finite, got " + std::to_string(o.voxel_size));
     return o.voxel_size;
   }
-  if (o.voxels < 4 || o.voxels > 2000)
-    throw InvalidInput("--voxels must be in [4, 2000], got " + std::to_string(o.voxels));
+  require(kFieldVoxels, o.voxels, "--voxels");
   if (o.vote_sign) {
     // A mesh with holes has no reliable volume, hence no inertia axes: use the box instead.
     const auto bb = bounding_box(mesh);

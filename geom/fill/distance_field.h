@@ -4,6 +4,7 @@
 
 #include "geom/mesh/mesh.h"
 #include "geom/mesh/mesh_index.h"
+#include "geom/range.h"
 
 #include <array>
 #include <cstdint>
@@ -19,10 +20,13 @@ inline constexpr double kDefaultMaxVoxels = 1e6;
 /// resolution asked (a fill's time grows with the voxels).
 inline constexpr double kCountVoxelGrowth = 3.0;
 
+/// FieldOptions::voxels: the resolutions a field is made at (ignored where voxel_size is given).
+inline constexpr Range kFieldVoxels = integers(4, 2000);
+
 /// Resolution of the voxel grid.
 struct FieldOptions {
   /// Voxels across the smallest principal extent S of the mesh (ignored if voxel_size > 0; the
-  /// smallest bounding-box extent when vote_sign is set).
+  /// smallest bounding-box extent when vote_sign is set), in kFieldVoxels.
   /// 40 resolves the corners of the Jin et al. 2017 blocks well enough for ~350-sphere clumps.
   int voxels = 40;
   double voxel_size = 0.0;  ///< explicit voxel edge length, units of the mesh

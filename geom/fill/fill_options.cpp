@@ -8,8 +8,8 @@
 namespace clumpkit {
 
 void validate(const FillOptions& o) {
-  if (o.spheres < 0)
-    throw InvalidInput("--spheres must be at least 1, got " + std::to_string(o.spheres));
+  if (o.spheres != 0) require(kSphereBudget, o.spheres, "--spheres");
+  if (!(o.field.voxel_size > 0.0)) require(kFieldVoxels, o.field.voxels, "--voxels");
   if (!(o.coverage >= 0.0 && o.coverage <= 1.0))
     throw InvalidInput("--coverage must be in (0, 1], got " + std::to_string(o.coverage));
   if (!(o.min_radius >= 0.0) || !std::isfinite(o.min_radius))

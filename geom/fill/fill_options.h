@@ -3,13 +3,17 @@
 
 #include "geom/fill/distance_field.h"
 #include "geom/mesh/mesh.h"
+#include "geom/range.h"
 
 namespace clumpkit {
+
+/// A sphere budget, when there is one (FillOptions::spheres; 0 there is none).
+inline constexpr Range kSphereBudget = integers_from(1);
 
 /// Stop rules and resolution. The fill stops at the first rule met; with neither `spheres` nor
 /// `coverage` given it stops at 50 spheres.
 struct FillOptions {
-  int spheres = 0;        ///< sphere budget (0 = none)
+  int spheres = 0;        ///< sphere budget, in kSphereBudget (0 = none)
   double coverage = 0.0;  ///< stop when this fraction of the interior volume is covered (0 = none)
   double min_radius = 0.0;  ///< R_lim of Jin et al. 2017: smaller spheres are never placed
   FieldOptions field;       ///< resolution of the distance field and coverage grid
@@ -70,7 +74,8 @@ inline constexpr double kVoxelsPerSmallestRadius = 5.5;
 /// when options.voxels_from_count holds (else unchanged).
 FieldOptions fill_field_options(const Mesh& mesh, const FillOptions& options);
 
-/// Throws InvalidInput for spheres < 0, coverage outside [0, 1], a negative or non-finite
+/// Throws InvalidInput for a sphere budget outside kSphereBudget (0: none), field.voxels outside
+/// kFieldVoxels where no voxel_size is given, coverage outside [0, 1], a negative or non-finite
 /// min_radius, or a mesh without interior voxels at this resolution.
 void validate(const FillOptions& options);
 

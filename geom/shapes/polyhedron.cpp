@@ -14,12 +14,6 @@ namespace clumpkit {
 
 namespace {
 
-void check(bool ok, const char* field, double value, const char* rule) {
-  if (!ok)
-    throw InvalidInput(std::string("polyhedron: ") + field + " " + rule + ", got " +
-                       std::to_string(value));
-}
-
 // Rotates into the principal frame: x = long, y = intermediate, z = short axis.
 void to_principal_frame(Mesh& m, PrincipalFrame& f) {
   f = principal_frame(m);
@@ -34,14 +28,12 @@ void to_principal_frame(Mesh& m, PrincipalFrame& f) {
 
 void validate(const PolyhedronParams& p) {
   check_size(p.diameter, "polyhedron: diameter");
-  check(p.planes >= 0 && p.planes <= 10000, "planes", p.planes, "must be in [0, 10000]");
-  check(p.E > 0.0 && p.E <= 1.0, "E", p.E, "must be in (0, 1]");
-  check(p.F > 0.0 && p.F <= 1.0, "F", p.F, "must be in (0, 1]");
-  check(p.offset_min > 0.0 && p.offset_min <= 1.0, "offset_min", p.offset_min, "must be in (0, 1]");
-  check(p.offset_max >= p.offset_min && p.offset_max <= 1.0, "offset_max", p.offset_max,
-        "must be in [offset_min, 1]");
-  check(p.sphere_level >= 1 && p.sphere_level <= 5, "sphere_level", p.sphere_level,
-        "must be in [1, 5]");
+  require(kPolyhedronPlanes, p.planes, "polyhedron: planes");
+  require(kAxisRatio, p.E, "polyhedron: E");
+  require(kAxisRatio, p.F, "polyhedron: F");
+  require(kPlaneOffset, p.offset_min, "polyhedron: offset_min");
+  require(closed(p.offset_min, 1), p.offset_max, "polyhedron: offset_max");
+  require(kSphereLevel, p.sphere_level, "polyhedron: sphere_level");
 }
 
 Mesh make_polyhedron(const PolyhedronParams& p, Rng& rng) {

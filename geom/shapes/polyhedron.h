@@ -4,6 +4,7 @@
 
 #include "geom/mesh/mesh.h"
 #include "geom/random.h"
+#include "geom/range.h"
 
 namespace clumpkit {
 
@@ -22,6 +23,12 @@ struct PolyhedronParams {
   double offset_min = 0.6, offset_max = 0.95;
   int sphere_level = 3;
 };
+
+/// The values validate() takes and the recipes quote (besides offset_max in [offset_min, 1]).
+inline constexpr Range kPolyhedronPlanes = integers(0, 10000);  ///< 0: the faceted sphere
+inline constexpr Range kAxisRatio = open_closed(0, 1);          ///< E and F
+inline constexpr Range kPlaneOffset = open_closed(0, 1);        ///< offsets, over the radius
+inline constexpr Range kSphereLevel = integers(1, 5);
 
 void validate(const PolyhedronParams& p);
 

@@ -31,8 +31,7 @@ Mesh make_box(const Vec3& size) {
 Mesh make_cylinder(double diameter, double height, int sides) {
   check_size(diameter, "cylinder diameter");
   check_size(height, "cylinder height");
-  if (sides < 3 || sides > 100000)
-    throw InvalidInput("cylinder sides: must be in [3, 100000], got " + std::to_string(sides));
+  require(kCylinderSides, sides, "cylinder sides");
   Mesh m;
   const double r = 0.5 * diameter, h = 0.5 * height;
   for (const double z : {-h, h})
@@ -124,8 +123,8 @@ Mesh make_torus(double ring, double tube, int ring_sides, int tube_sides) {
   if (!(tube < ring))
     throw InvalidInput("torus: the tube radius must be below the ring radius, got " +
                        std::to_string(tube) + " and " + std::to_string(ring));
-  if (ring_sides < 3 || tube_sides < 3 || ring_sides > 10000 || tube_sides > 10000)
-    throw InvalidInput("torus sides: must be in [3, 10000]");
+  require(kTorusSides, ring_sides, "torus ring_sides");
+  require(kTorusSides, tube_sides, "torus tube_sides");
   Mesh m;
   for (int i = 0; i < ring_sides; ++i) {
     const double u = 2.0 * M_PI * i / ring_sides;

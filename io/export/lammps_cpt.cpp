@@ -13,16 +13,13 @@ void check_lammps_cpt(const LammpsCpt& cpt, const EngineSettings& settings,
                       const std::string& where) {
   try {
     dem::validate_probe(cpt.probe);
+    dem::check_probe_width(cpt.probe, 2 * settings.container_radius);
   } catch (const InvalidInput& e) {
     throw InvalidInput(where + ": " + e.what());
   }
-  if (!(cpt.probe.friction >= 0 && std::isfinite(cpt.probe.friction)))
-    throw InvalidInput(where + ": probe.friction must be at least 0, got " +
-                       format_number(cpt.probe.friction));
-  if (!(cpt.probe.diameter < settings.container_radius))
-    throw InvalidInput(where + ": probe.diameter " + format_number(cpt.probe.diameter) +
-                       " m is wider than half the container (diameter " +
-                       format_number(2 * settings.container_radius) + " m)");
+  if (!dem::kFriction.contains(cpt.probe.friction))
+    throw InvalidInput(where + ": probe.friction " + outside(dem::kFriction, cpt.probe.friction) +
+                       ", got " + format_number(cpt.probe.friction));
 }
 
 namespace {

@@ -22,7 +22,8 @@ struct LammpsCpt {
 };
 
 /// Throws InvalidInput (naming `where`) for a probe the deck cannot push: validate_probe's
-/// cases, a negative friction, a probe wider than half the container.
+/// cases, a friction outside dem::kFriction, a probe wider than half the container
+/// (dem::check_probe_width).
 void check_lammps_cpt(const LammpsCpt& cpt, const EngineSettings& settings,
                       const std::string& where);
 

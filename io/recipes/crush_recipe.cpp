@@ -1,7 +1,9 @@
 #include "io/recipes/crush_recipe.h"
 
+#include "dem/core/contact.h"
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "geom/shapes/primitives.h"
 #include "io/base/text.h"
 #include "io/recipes/section_table.h"
 #include "io/recipes/toml_fields.h"
@@ -57,9 +59,8 @@ const RecipeSection<CrushRecipe>& crush_section() {
        number_key<R>(
            "strain_rate", "1/s", "> 0", "closing speed over the initial gap",
            [](R& r) -> double& { return r.rig.strain_rate; }, &TomlFields::positive),
-       number_key<R>(
-           "platen_friction", "", ">= 0", "μ of cell–platen contacts",
-           [](R& r) -> double& { return r.rig.platen_friction; }, &TomlFields::non_negative),
+       range_key<R>("platen_friction", "", dem::kFriction, "μ of cell–platen contacts",
+                    [](R& r) -> double& { return r.rig.platen_friction; }),
        number_key<R>(
            "platen_stiffness", "N/m", "> 0", "normal and shear stiffness of a corner on a platen",
            [](R& r) -> double& { return r.rig.platen_stiffness; }, &TomlFields::positive),
@@ -184,8 +185,9 @@ const RecipeSection<CrushRecipe>& bond_section() {
                      [](R& r) -> double& { return r.law.g_n; }),
        number_key<R>("g_t", "J/m²", "> σ_eII²/(2 K_II)", "G_II, mode II fracture energy (× scale²)",
                      [](R& r) -> double& { return r.law.g_t; }),
-       number_key<R>("friction", "", ">= 0", "Coulomb coefficient of a damaged face in compression",
-                     [](R& r) -> double& { return r.law.friction; }),
+       range_key<R>("friction", "", dem::kFriction,
+                    "Coulomb coefficient of a damaged face in compression",
+                    [](R& r) -> double& { return r.law.friction; }),
        number_key<R>(
            "scale", "", "> 0",
            "calibration factor s: strengths × s, energies × s² (the Brazilian "
@@ -220,22 +222,27 @@ void apply_bond_scale(const TomlFields& f, CrushRecipe& r) {
 
 const std::vector<RecipeKey<PolyhedronParams>>& polyhedron_keys() {
   using P = PolyhedronParams;
-  // The reader takes any finite E, F and offsets: validate(PolyhedronParams) checks them
-  // together (offset_max against offset_min), naming the set or [rock].
+  // Each key is read in its range of validate(PolyhedronParams) (geom/shapes/polyhedron.h);
+  // offset_max, read in kPlaneOffset, is checked against offset_min by validate, which the set
+  // and [rock] call on the values read, naming the set or [rock].
   static const std::vector<RecipeKey<P>> keys{
-      integer_in_key<P>(
-          "planes", "random planes cutting the sphere (Hu et al. 2023)",
-          [](P& p) -> int& { return p.planes; }, 4, 10000),
-      number_key<P>("E", "", "(0, 1]", "elongation I/L the parent is stretched to",
-                    [](P& p) -> double& { return p.E; }),
-      number_key<P>("F", "", "(0, 1]", "flatness S/I the parent is stretched to",
-                    [](P& p) -> double& { return p.F; }),
-      number_key<P>("offset_min", "", "(0, 1]",
-                    "nearest a plane passes to the centre, over the sphere's radius",
-                    [](P& p) -> double& { return p.offset_min; }),
-      number_key<P>("offset_max", "", "[offset_min, 1]",
-                    "farthest a plane passes from the centre, over the sphere's radius",
-                    [](P& p) -> double& { return p.offset_max; })};
+      range_key<P>("planes", "", kPolyhedronPlanes,
+                   "random planes cutting the sphere (Hu et al. 2023; 0: the faceted sphere)",
+                   [](P& p) -> int& { return p.planes; }),
+      range_key<P>("E", "", kAxisRatio, "elongation I/L the parent is stretched to",
+                   [](P& p) -> double& { return p.E; }),
+      range_key<P>("F", "", kAxisRatio, "flatness S/I the parent is stretched to",
+                   [](P& p) -> double& { return p.F; }),
+      range_key<P>("offset_min", "", kPlaneOffset,
+                   "nearest a plane passes to the centre, over the sphere's radius",
+                   [](P& p) -> double& { return p.offset_min; }),
+      [] {
+        auto k = range_key<P>("offset_max", "", kPlaneOffset,
+                              "farthest a plane passes from the centre, over the sphere's radius",
+                              [](P& p) -> double& { return p.offset_max; });
+        k.range = "[offset_min, 1]";
+        return k;
+      }()};
   return keys;
 }
 
@@ -326,8 +333,8 @@ const RecipeSection<CrushSet>& set_section() {
                                   "height", "m", "> 0", "cylinder height",
                                   [](S& s) -> double& { return s.height; }, &TomlFields::positive),
                               "required for a cylinder"));
-    t.keys.push_back(integer_in_key<S>(
-        "sides", "facets of a cylinder", [](S& s) -> int& { return s.sides; }, 3, 4096));
+    t.keys.push_back(range_key<S>("sides", "", kCylinderSides, "facets of a cylinder",
+                                  [](S& s) -> int& { return s.sides; }));
     return t;
   }();
   return s;

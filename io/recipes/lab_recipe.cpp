@@ -1,5 +1,6 @@
 #include "io/recipes/lab_recipe.h"
 
+#include "dem/core/contact.h"
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "io/base/text.h"
@@ -48,9 +49,8 @@ const RecipeSection<dem::ProbeSettings>& probe_section() {
        shown_as(number_key<P>("depth", "m", "> 0", "push distance below the specimen's top",
                               [](P& p) -> double& { return p.depth; }),
                 "required"),
-       shown_as(number_key<P>(
-                    "friction", "", ">= 0", "μ of probe–sphere contacts",
-                    [](P& p) -> double& { return p.friction; }, &TomlFields::non_negative),
+       shown_as(range_key<P>("friction", "", dem::kFriction, "μ of probe–sphere contacts",
+                             [](P& p) -> double& { return p.friction; }),
                 "the test's")}};
   return s;
 }
@@ -112,15 +112,12 @@ const RecipeSection<TestRecipe>& test_section() {
            "last fraction of a triaxial curve averaged for the critical state",
            [](R& r) -> double& { return r.critical_fraction; }, &TomlFields::positive,
            at_most(1.0, "must be in (0, 1]")),
-       shown_as(number_key<R>(
-                    "friction", "", ">= 0", "μ of the test",
-                    [](R& r) -> double& { return r.settings.friction; }, &TomlFields::non_negative),
+       shown_as(range_key<R>("friction", "", dem::kFriction, "μ of the test",
+                             [](R& r) -> double& { return r.settings.friction; }),
                 "the specimen's"),
-       shown_as(number_key<R>(
-                    "consolidation_friction", "", ">= 0",
-                    "μ during the consolidation (0: the densest packing at confining)",
-                    [](R& r) -> double& { return r.settings.consolidation_friction; },
-                    &TomlFields::non_negative),
+       shown_as(range_key<R>("consolidation_friction", "", dem::kFriction,
+                             "μ during the consolidation (0: the densest packing at confining)",
+                             [](R& r) -> double& { return r.settings.consolidation_friction; }),
                 "the test's"),
        shown_as(
            number_key<R>(

@@ -98,11 +98,9 @@ const RecipeSection<FillOptions>& fill_section() {
       "fill",
       "The clump of each particle for `clumpkit library` (as `clumpkit fill`): a sphere budget, "
       "a coverage or a smallest radius; checked by validate(FillOptions).",
-      {shown_as(
-           fill_integer(
-               "spheres", ">= 1", "sphere budget of each clump",
-               [](O& o) -> int& { return o.spheres; }, 1, std::numeric_limits<long long>::max()),
-           "none"),
+      {shown_as(range_key<O>("spheres", "", kSphereBudget, "sphere budget of each clump",
+                             [](O& o) -> int& { return o.spheres; }),
+                "none"),
        shown_as(number_key<O>("coverage", "", "(0, 1]",
                               "stop once this fraction of the interior volume is covered",
                               [](O& o) -> double& { return o.coverage; }),
@@ -111,11 +109,11 @@ const RecipeSection<FillOptions>& fill_section() {
                      "R_lim of Jin et al. 2017: smaller spheres are never placed",
                      [](O& o) -> double& { return o.min_radius; }),
        [] {
-         auto k = fill_integer(
-             "voxels", "[4, 2000]",
+         auto k = range_key<O>(
+             "voxels", "", kFieldVoxels,
              "voxels across the mesh's smallest principal extent (distance field and coverage "
              "grid)",
-             [](O& o) -> int& { return o.field.voxels; }, 4, 2000);
+             [](O& o) -> int& { return o.field.voxels; });
          // A resolution given holds, as fill --voxels: no refining from the sphere count.
          k.read = [read = k.read](const TomlFields& f, const toml::node& v,
                                   const std::string& field, O& o) {

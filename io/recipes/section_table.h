@@ -4,12 +4,15 @@
 #pragma once
 
 #include "geom/format.h"
+#include "geom/range.h"
 #include "io/recipes/toml_fields.h"
 
 #include <toml++/toml.h>
 
 #include <functional>
+#include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace clumpkit {
@@ -58,6 +61,37 @@ RecipeKey<Spec> number_key(std::string name, std::string unit, std::string range
   k.shown = [at](const Spec& defaults) {
     Spec copy = defaults;
     return format_number(at(copy));
+  };
+  return k;
+}
+
+/// A number key whose allowed values are the engine's `range` (geom/range.h): read (an integer
+/// when the range is of integers), refused outside it in the range's own words, "FIELD: must be
+/// in [a, b], got VALUE", and quoted by the reference from the same object. `at(spec)` is the
+/// double or int the value lands in; its default is shown as that number.
+template <class Spec, class At>
+RecipeKey<Spec> range_key(std::string name, std::string unit, const Range& range, std::string help,
+                          At at) {
+  RecipeKey<Spec> k{std::move(name), std::move(unit), range.text(), std::move(help), {}, {}};
+  k.read = [at, range](const TomlFields& f, const toml::node& v, const std::string& field,
+                       Spec& s) {
+    using T = std::remove_reference_t<decltype(at(s))>;
+    const double x = range.integer ? static_cast<double>(f.integer(v, field)) : f.number(v, field);
+    const std::string why = outside(range, x);
+    if (!why.empty()) f.fail(field, why + ", got " + toml_show(v));
+    if constexpr (std::is_integral_v<T>) {
+      if (x > static_cast<double>(std::numeric_limits<T>::max()) ||
+          x < static_cast<double>(std::numeric_limits<T>::lowest()))
+        f.fail(field, "is too large, got " + toml_show(v));
+    }
+    at(s) = static_cast<T>(x);
+  };
+  k.shown = [at](const Spec& defaults) {
+    Spec copy = defaults;
+    if constexpr (std::is_integral_v<std::remove_reference_t<decltype(at(copy))>>)
+      return std::to_string(at(copy));
+    else
+      return format_number(at(copy));
   };
   return k;
 }

@@ -23,6 +23,7 @@ namespace {
 struct Seen {
   bool gradation = false, diameter = false, size = false, angle = false;
   bool cells = false, bond = false;
+  bool rock_shape = false;  // [rock] gave a key of the parent's shape (polyhedron_keys)
   bool zones = false, zone_origin = false;
   std::vector<std::string> deposition_keys;  // keys that only the deposition method uses
 };
@@ -71,7 +72,9 @@ void read_fines(const TomlFields& f, const toml::node& v, Reading& in) {
 
 // Library or recipe resolved by resolve_library, a crushable material by check_crushable.
 void read_rock(const TomlFields& f, const toml::node& v, Reading& in) {
-  read_section(f, v, rock_section(), in.r);
+  for (const std::string& k : read_section(f, v, rock_section(), in.r))
+    for (const auto& shape_key : polyhedron_keys())
+      if (k == shape_key.name) in.seen.rock_shape = true;
 }
 
 // [cells] and [bond]: the crushing recipes' tables.
@@ -143,13 +146,21 @@ void read_top_key(const TomlFields& f, const toml::node& v, const std::string& k
 }
 
 // A crushable specimen's material from [rock], [cells] and [bond]: compression only, every
-// class rock, no zones, no library; the cells' and the fill's settings checked.
+// class rock, no zones, no library; the cells' and the fill's settings checked. The parent's
+// shape, where [rock] gives it, is checked as a whole (offset_max against offset_min) either way.
 void check_crushable(const TomlFields& f, SpecimenRecipe& r, const Seen& seen,
                      CrushRecipe& tables) {
   if (!r.crushable) {
     if (r.unbreakable) f.fail("rock.unbreakable", "is for crushable particles (crushable = true)");
     if (seen.cells || seen.bond)
       f.fail(seen.cells ? "cells" : "bond", "is for crushable particles ([rock] crushable = true)");
+    if (seen.rock_shape) {
+      try {
+        validate(r.crushable_material.shape);
+      } catch (const InvalidInput& e) {
+        f.fail("rock", e.what());
+      }
+    }
     return;
   }
   if (!r.compression) f.fail("rock.crushable", "needs preparation.method = \"compression\"");
@@ -274,12 +285,17 @@ double check_sizes(const TomlFields& f, const SpecimenRecipe& r) {
                                    " m) must be thicker than twice the largest particle (" +
                                    format_number(r.sieves.front()) + " m), got " +
                                    format_number(r.container_height));
-  if (r.calibration_frictions.size() < 6)
-    f.fail("calibration_frictions", "need the two end points and at least four in between, got " +
-                                        std::to_string(r.calibration_frictions.size()) + " values");
-  for (double mu : r.calibration_frictions)
-    if (mu < 0)
-      f.fail("calibration_frictions", "friction must not be negative, got " + format_number(mu));
+  // dem::check_spec's rules, refused here before anything is simulated.
+  const std::vector<double>& mu = r.calibration_frictions;
+  if (mu.size() < static_cast<std::size_t>(dem::kMinCalibrationFrictions))
+    f.fail("calibration_frictions",
+           "need at least " + std::to_string(dem::kMinCalibrationFrictions) +
+               " values (the two end points and the rest in between), got " +
+               std::to_string(mu.size()));
+  for (std::size_t i = 0; i < mu.size(); ++i)
+    if (!dem::kFriction.contains(mu[i]))
+      f.fail("calibration_frictions[" + std::to_string(i) + "]",
+             outside(dem::kFriction, mu[i]) + ", got " + format_number(mu[i]));
   return rock;
 }
 

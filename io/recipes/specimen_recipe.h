@@ -45,7 +45,7 @@ struct SpecimenRecipe {
   /// tests).
   bool compression = false;
   /// preparation.porosity and preparation.friction: the compression's (dem::CompressionSpec
-  /// holds their defaults, dem::check_target_porosity the porosity's range).
+  /// holds their defaults, dem::kTargetPorosity and dem::kFriction their ranges).
   double compression_porosity = dem::CompressionSpec{}.porosity;
   double compression_friction = dem::CompressionSpec{}.friction;
   /// [zones] (compression only): variable particle-size zones, innermost first (CTGU 2017) —
@@ -93,7 +93,7 @@ struct SpecimenRecipe {
   double target_relative_density = 0.5;
   int layers = 3;
   /// Friction values of the quasi-vibration calibration (deposition at the largest gives
-  /// n_max, compaction at 0 gives n_min; at least four in between).
+  /// n_max, compaction at 0 gives n_min; at least dem::kMinCalibrationFrictions in all).
   std::vector<double> calibration_frictions = {0.0, 0.05, 0.1, 0.2, 0.4, 0.8};
 };
 

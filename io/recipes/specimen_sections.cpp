@@ -20,7 +20,7 @@ using R = SpecimenRecipe;
 
 // What parse_specimen_recipe puts in each crushable cell: a SpecimenRecipe{} holds the fill's own
 // defaults, so the reference shows these instead.
-constexpr int kSpheresPerCell = 6, kCellVoxels = 16;
+constexpr int kDefaultCellSpheres = 6, kDefaultCellVoxels = 16;
 
 // The key `k` with its default read off the spec by `show` (a default that is not one double).
 template <class Spec, class Show>
@@ -105,12 +105,12 @@ const RecipeSection<SpecimenRecipe>& specimen_top_section() {
            "deposition: the relative density Dr the specimen is built to",
            [](R& r) -> double& { return r.target_relative_density; }, &TomlFields::number,
            closed_fraction),
-       shown_by(custom_key<R>("layers", "", "integer in [1, 100]",
-                              "deposition: layers the specimen is stacked from", "",
-                              [](const TomlFields& f, const toml::node& v, const std::string& field,
-                                 R& r) { r.layers = f.integer_in(v, field, 1, 100); }),
-                [](const R& d) { return std::to_string(d.layers); }),
-       shown_by(custom_key<R>("calibration_frictions", "", "at least 6 numbers, each >= 0",
+       range_key<R>("layers", "", dem::kSpecimenLayers,
+                    "deposition: layers the specimen is stacked from",
+                    [](R& r) -> int& { return r.layers; }),
+       shown_by(custom_key<R>("calibration_frictions", "",
+                              "at least " + std::to_string(dem::kMinCalibrationFrictions) +
+                                  " numbers, each " + dem::kFriction.text(),
                               "deposition: frictions of the quasi-vibration calibration (the "
                               "largest gives n_max, 0 gives n_min)",
                               "",
@@ -144,12 +144,8 @@ const RecipeSection<SpecimenRecipe>& contact_section() {
        number_key<R>(
            "ks", "N/m", "> 0", "shear stiffness (at d_ref with linear scaling)",
            [](R& r) -> double& { return r.ks; }, &TomlFields::positive),
-       number_key<R>(
-           "friction", "", ">= 0", "interparticle μ", [](R& r) -> double& { return r.friction; },
-           &TomlFields::number,
-           [](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
-             if (x < 0) f.fail(field, "must not be negative, got " + toml_show(v));
-           }),
+       range_key<R>("friction", "", dem::kFriction, "interparticle μ",
+                    [](R& r) -> double& { return r.friction; }),
        number_key<R>(
            "damping_ratio", "", "[0, 1)", "viscous normal damping ratio β",
            [](R& r) -> double& { return r.damping_ratio; }, &TomlFields::number, unit_fraction),
@@ -236,24 +232,12 @@ const RecipeSection<SpecimenRecipe>& preparation_section() {
                                 "expected \"deposition\" or \"compression\", got " + toml_show(v));
                        r.compression = m == "compression";
                      }),
-       number_key<R>(
-           "porosity", "", "(0.2, 0.9)", "compression: the target porosity",
-           [](R& r) -> double& { return r.compression_porosity; }, &TomlFields::number,
-           [](const TomlFields& f, const std::string& field, const toml::node&, double x) {
-             try {
-               dem::check_target_porosity(x);
-             } catch (const InvalidInput& e) {
-               f.fail(field, e.what());
-             }
-           }),
-       number_key<R>(
-           "friction", "", "[0, 10]",
-           "compression: interparticle μ while compressing (0: the densest packing the "
-           "porosity allows); the specimen keeps contact.friction",
-           [](R& r) -> double& { return r.compression_friction; }, &TomlFields::number,
-           [](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
-             if (!(x >= 0 && x <= 10)) f.fail(field, "must be in [0, 10], got " + toml_show(v));
-           })}};
+       range_key<R>("porosity", "", dem::kTargetPorosity, "compression: the target porosity",
+                    [](R& r) -> double& { return r.compression_porosity; }),
+       range_key<R>("friction", "", dem::kFriction,
+                    "compression: interparticle μ while compressing (0: the densest packing the "
+                    "porosity allows); the specimen keeps contact.friction",
+                    [](R& r) -> double& { return r.compression_friction; })}};
   return s;
 }
 
@@ -346,15 +330,10 @@ const RecipeSection<SpecimenRecipe>& zones_section() {
                          f.fail(field, "expected [x, y, z] in m, got " + toml_show(v));
                        r.zones.origin = Vec3(o[0], o[1], o[2]);
                      }),
-       shown_as(
-           number_key<R>(
-               "mixed_porosity", "", "(0.2, 0.9)", "target porosity of the mixed layers",
-               [](R& r) -> double& { return r.mixed_porosity; }, &TomlFields::number,
-               [](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
-                 if (!(x > 0.2 && x < 0.9))
-                   f.fail(field, "must be in (0.2, 0.9), got " + toml_show(v));
-               }),
-           "preparation.porosity"),
+       shown_as(range_key<R>("mixed_porosity", "", dem::kTargetPorosity,
+                             "target porosity of the mixed layers",
+                             [](R& r) -> double& { return r.mixed_porosity; }),
+                "preparation.porosity"),
        custom_key<R>("region", "", "[[zones.region]] tables, innermost first",
                      "the regions (see [zones.region])", "required (at least the core)",
                      [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
@@ -437,25 +416,23 @@ const RecipeSection<SpecimenRecipe>& rock_section() {
       t.keys.push_back(
           nested_key<R>(k, [](R& r) -> PolyhedronParams& { return r.crushable_material.shape; }));
     t.keys.push_back(
-        custom_key<R>("spheres_per_cell", "", "integer in [1, 100]",
-                      "crushable: spheres filling each cell", std::to_string(kSpheresPerCell),
-                      [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
-                        r.crushable_material.fill.spheres = f.integer_in(v, field, 1, 100);
-                      }));
-    t.keys.push_back(custom_key<R>(
-        "cell_voxels", "", "integer in [8, 200]",
-        "crushable: voxels across the grid each cell is filled on", std::to_string(kCellVoxels),
-        [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
-          r.crushable_material.fill.field.voxels = f.integer_in(v, field, 8, 200);
-        }));
+        shown_as(range_key<R>("spheres_per_cell", "", dem::kCellSpheres,
+                              "crushable: spheres filling each cell",
+                              [](R& r) -> int& { return r.crushable_material.fill.spheres; }),
+                 std::to_string(kDefaultCellSpheres)));
+    t.keys.push_back(
+        shown_as(range_key<R>("cell_voxels", "", dem::kCellVoxels,
+                              "crushable: voxels across the grid each cell is filled on",
+                              [](R& r) -> int& { return r.crushable_material.fill.field.voxels; }),
+                 std::to_string(kDefaultCellVoxels)));
     return t;
   }();
   return s;
 }
 
 void set_crushable_fill_defaults(SpecimenRecipe& r) {
-  r.crushable_material.fill.spheres = kSpheresPerCell;
-  r.crushable_material.fill.field.voxels = kCellVoxels;
+  r.crushable_material.fill.spheres = kDefaultCellSpheres;
+  r.crushable_material.fill.field.voxels = kDefaultCellVoxels;
 }
 
 }  // namespace clumpkit

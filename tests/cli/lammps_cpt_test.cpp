@@ -253,7 +253,7 @@ TEST(CliLammpsCpt, BadCptExportsAreRefusedWithOneLine) {
       {"export yade " + spec + " --test cpt" + recipe("cpt.toml") + " --out " + out,
        "only available for lammps"},
       {cpt(spec, "noprobe.toml"), "[probe]"},
-      {cpt(spec, "wide.toml"), "wider than half the container"},
+      {cpt(spec, "wide.toml"), "wider than half the cell"},
       {cpt(spec, "unknown.toml"), "probe.speed"},
       {cpt(spec, "missing.toml"), "missing.toml"},
       {cpt(spec, "cpt.toml") + " --tile 2x2", "--tile and --test cpt"},

@@ -85,7 +85,8 @@ TEST(CrushRecipe, BadValuesNameFileFieldAndValue) {
   EXPECT_NE(error_of("[bond]\nsigma_n = 0\n" + set)
                 .find("r.toml: bond: cohesive law: sigma_n must be positive and finite, got 0"),
             std::string::npos);
-  EXPECT_NE(error_of("[bond]\nfriction = -0.1\n" + set).find("friction must be non-negative"),
+  EXPECT_NE(error_of("[bond]\nfriction = -0.1\n" + set)
+                .find("r.toml: bond.friction: must be >= 0, got -0.1"),
             std::string::npos);
   EXPECT_NE(error_of("[crush]\nlocal_damping = 1.5\n" + set).find("1.5"), std::string::npos);
   EXPECT_NE(error_of("[cells]\ncell_size = 0.05\n" + set).find("fewer than 2 cells"),

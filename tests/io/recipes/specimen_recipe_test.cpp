@@ -173,7 +173,7 @@ TEST(SpecimenRecipe, SegmentContainerIsACompressedSectorOfItsCylinder) {
       << e;
   e = specimen_error_of(with("diameter = 0.3", "diameter = 0.3\nangle = 90") + prep);
   EXPECT_NE(e.find("container.angle: is for shape = \"segment\""), std::string::npos) << e;
-  // The target porosity's one range check (dem::check_target_porosity), named by its key.
+  // The target porosity's one range (dem::kTargetPorosity), named by its key.
   for (const char* n : {"0.95", "0.1"}) {
     std::string loose = prep;
     loose.replace(loose.find("0.4"), 3, n);
