@@ -34,18 +34,42 @@
     return String(Number(v.toPrecision(5)));
   }
 
+  // A table cell showing v as fmt does, its full value on hover (the title) where that differs.
+  function valueCell(v, cls) {
+    const td = el('td', { class: cls || '', text: fmt(v) });
+    if (String(v) !== td.textContent) td.title = String(v);
+    return td;
+  }
+
+  // A copy from `table` takes the selected cells' full values (titles), a row a line, cells
+  // tab-separated: a spreadsheet gets what the data hold, not the rounded text.
+  function copyFull(table) {
+    table.addEventListener('copy', (e) => {
+      const sel = document.getSelection(), lines = [];
+      for (const tr of table.rows) {
+        const cells = [...tr.cells].filter((td) => sel.containsNode(td, true));
+        if (cells.length) lines.push(cells.map((td) => td.title || td.textContent).join('\t'));
+      }
+      if (!lines.length) return;
+      e.clipboardData.setData('text/plain', lines.join('\n'));
+      e.preventDefault();
+    });
+    return table;
+  }
+
   function section(title) {
     const s = el('section', {}, [el('h2', { text: title })]);
     document.querySelector('main').appendChild(s);
     return s;
   }
 
-  // A section of two columns: the views on the left, the table on the right.
+  // A section of two columns: the views on the left (growing to the row's width when the table
+  // wraps below), the table on the right.
   function twoColumns(title) {
     const s = section(title);
     const row = el('div', { class: 'row' });
     s.appendChild(row);
-    const left = el('div'), right = el('div');
+    const left = el('div', { class: 'grow' }), right = el('div');
     row.appendChild(left); row.appendChild(right);
     return { left, right };
   }
@@ -94,10 +118,10 @@
     const body = el('tbody');
     for (const k of keys) {
       const tr = el('tr', { 'data-key': k }, [el('td', { class: 'text', text: k })]);
-      for (const f of folders) tr.appendChild(el('td', { text: k in f.report ? fmt(f.report[k]) : '' }));
+      for (const f of folders) tr.appendChild(valueCell(k in f.report ? f.report[k] : ''));
       body.appendChild(tr);
     }
-    return el('table', { class: 'kv', id: 'report' }, [el('thead', {}, [head]), body]);
+    return copyFull(el('table', { class: 'kv', id: 'report' }, [el('thead', {}, [head]), body]));
   }
 
   function gallery(images) {
@@ -112,7 +136,7 @@
 
   // kinds: each page kind's script adds kinds[D.kind] = function (D), which builds its sections.
   window.clumpkitShared = {
-    state, el, fmt, section, twoColumns, loadPart, paletteColour, paletteCss, rampColour,
-    markFirstView, reportTable, gallery, kinds: {},
+    state, el, fmt, valueCell, copyFull, section, twoColumns, loadPart, paletteColour, paletteCss,
+    rampColour, markFirstView, reportTable, gallery, kinds: {},
   };
 })();

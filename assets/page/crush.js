@@ -34,7 +34,9 @@
       const geo = new THREE.BufferGeometry();
       geo.setAttribute('position', new THREE.Float32BufferAttribute(list, 3));
       geo.computeVertexNormals();
-      viewer.add(new THREE.Mesh(geo, new THREE.MeshPhongMaterial({ color: colour, flatShading: true })));
+      // The faces pushed back a depth step (polygon offset), so their edges, which lie in them,
+      // draw whole instead of dashed where the depth buffer rounds the tie either way.
+      viewer.add(new THREE.Mesh(geo, new THREE.MeshPhongMaterial({ color: colour, flatShading: true, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 })));
       viewer.add(new THREE.LineSegments(new THREE.EdgesGeometry(geo, 20), new THREE.LineBasicMaterial({ color: 0x333333 })));
     }
     viewer.fit(lo, hi);
@@ -46,7 +48,9 @@
   K.kinds.crush = function (D) {
     const { left, right } = K.twoColumns('Particles crushed (' + D.table.rows.length + '): click one for its force against travel');
     const idCol = D.table.columns.indexOf('id');
-    const curveBox = el('div'), cellsBox = el('div');
+    // The curve and the cells side by side where the left column is wide enough.
+    const curveBox = el('div'), cellsBox = el('div', { class: 'grow' });
+    left.classList.add('row');
     left.appendChild(curveBox); left.appendChild(cellsBox);
     const viewer = D.cells_ids.length ? K.Viewer(cellsBox) : null;
     const when = el('select', { id: 'cells-when' });

@@ -12,7 +12,7 @@
     let order = spec.rows.map((_, i) => i);
     let sortCol = -1, sortDir = 1, filter = '';
     const thead = el('thead'), tbody = el('tbody');
-    const table = el('table', { id: 'table' }, [thead, tbody]);
+    const table = K.copyFull(el('table', { id: 'table' }, [thead, tbody]));
     const headRow = el('tr');
     cols.forEach((name, c) => {
       const th = el('th', { 'data-col': name, class: numeric[c] ? '' : 'text', text: name });
@@ -34,10 +34,11 @@
         const v = row[cols.indexOf(m[1])], x = Number(m[3]);
         if (m[2] === '<') return v < x;
         if (m[2] === '>') return v > x;
-        return String(v) === m[3] || v === x;
+        return String(v) === m[3] || fmt(v) === m[3] || v === x;
       }
+      // The full value or the shown one: a number is found by what the table shows of it.
       const f = filter.toLowerCase();
-      return row.some((v) => String(v).toLowerCase().includes(f));
+      return row.some((v) => String(v).toLowerCase().includes(f) || fmt(v).toLowerCase().includes(f));
     }
     function draw() {
       order = spec.rows.map((_, i) => i).filter((i) => keep(spec.rows[i]));
@@ -49,7 +50,7 @@
       tbody.textContent = '';
       for (const i of order) {
         const tr = el('tr', { 'data-row': i });
-        spec.rows[i].forEach((v, c) => tr.appendChild(el('td', { class: numeric[c] ? '' : 'text', text: fmt(v) })));
+        spec.rows[i].forEach((v, c) => tr.appendChild(K.valueCell(v, numeric[c] ? '' : 'text')));
         tr.addEventListener('click', () => {
           for (const t of tbody.querySelectorAll('tr.selected')) t.classList.remove('selected');
           tr.classList.add('selected');

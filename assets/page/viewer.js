@@ -23,7 +23,7 @@
     scene.add(camera);
     let group = new THREE.Group();
     scene.add(group);
-    const orbit = { theta: 0.8, phi: 1.1, dist: 1, target: new THREE.Vector3() };
+    const orbit = { theta: 0.8, phi: 1.1, dist: 1, r: 1, target: new THREE.Vector3() };
     function place() {
       const s = Math.sin(orbit.phi);
       camera.position.set(orbit.target.x + orbit.dist * s * Math.cos(orbit.theta),
@@ -31,14 +31,29 @@
       camera.up.set(0, 0, 1);
       camera.lookAt(orbit.target);
     }
-    function render() {
+    let drawn = false;
+    function draw() {
       const w = canvas.clientWidth, h = canvas.clientHeight;
+      if (!w || !h) return;  // not laid out (hidden): the next size redraws
       renderer.setSize(w, h, false);
+      // The near and far planes hug the object (its bounds lie within 1.5 r of the target), so the
+      // depth buffer's precision is spent on it at any zoom: with a near plane fixed at 1 % of r a
+      // mesh and the spheres touching it speckled (worse zoomed out, or with a 16-bit depth
+      // buffer), and zooming out past a fixed far plane emptied the view.
+      camera.near = Math.max(orbit.dist - 2 * orbit.r, orbit.dist * 0.01);
+      camera.far = orbit.dist + 2 * orbit.r;
       camera.aspect = w / h; camera.updateProjectionMatrix();
       place();
       renderer.render(scene, camera);
+    }
+    function render() {
+      draw();
+      drawn = true;
       K.markFirstView();
     }
+    // The view takes its column's width (page.css), so a resized window or a re-wrapped row
+    // redraws it at the new size; the canvas is laid out absolutely, so drawing never resizes it.
+    new ResizeObserver(() => { if (drawn) draw(); }).observe(box);
     let drag = null;
     canvas.addEventListener('mousedown', (e) => { drag = [e.clientX, e.clientY]; });
     window.addEventListener('mouseup', () => { drag = null; });
@@ -61,7 +76,7 @@
       // The largest extent, not the diagonal: a tall specimen fills the view.
       const r = 0.6 * Math.max(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) || 1;
       orbit.dist = 1.6 * r / Math.tan(camera.fov * Math.PI / 360);
-      camera.near = r * 0.01; camera.far = r * 100;
+      orbit.r = r;
     }
     // Spheres [x, y, z, r, ...] of one colour in one instanced mesh (three.js r111 has no
     // per-instance colour).
