@@ -47,7 +47,11 @@ a NaN or a value out of range, with one line naming the file, the field and the 
 This page is generated whole from the section tables (`io/recipes/section_table.h`: each key's
 unit, values, default and help beside the code that reads it) by `tests/layout/recipe_reference`;
 `Layout.CommandsPageMatchesHelp` fails when it differs (regenerate with
-`tests/layout/docs_check.py build/io/clumpkit . build/tests/recipe_reference --write`).
+`tests/layout/docs_check.py build/io/clumpkit . build/tests/recipe_reference --write`). A range
+the engine also enforces is the engine's own `Range` (`geom/range.h`: `kTargetPorosity`,
+`kFriction`, `kPolyhedronPlanes` …, declared beside the spec it limits), read through
+`range_key`: the recipe refuses a value in the engine's words and this page quotes the same
+object, so the three cannot disagree.
 
 ## Shape library recipes
 

@@ -7,6 +7,8 @@
 #include "geom/shapes/block.h"
 #include "geom/shapes/primitives.h"
 
+#include "../../sanitized.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -138,7 +140,11 @@ TEST(Fill, SeedZeroBlockCoverageAtEqualSphereCount) {
   const int counts[3] = {47, 93, 344};
   const double goals[3] = {0.86, 0.91, 0.965};
   double covered[3] = {0, 0, 0}, overshoot[3] = {0, 0, 0};
-  for (int seed = 1; seed <= 5; ++seed) {
+  // The sanitizer pass fills the block of seed 1 alone (a fifth of the fills, the same checks:
+  // every seed clears the goals on its own, seed 1 with about 0.905, 0.943 and 0.977); the
+  // Release pass takes the mean over the five.
+  const int seeds = kSanitized ? 1 : 5;
+  for (int seed = 1; seed <= seeds; ++seed) {
     Rng rng(seed);
     const Mesh b = make_block(BlockParams{75.1, 58.0, 49.8, 2, 0.8, 1.2}, rng);
     for (int q = 0; q < 3; ++q) {
@@ -147,8 +153,8 @@ TEST(Fill, SeedZeroBlockCoverageAtEqualSphereCount) {
       const FillResult r = fill(b, o);
       ASSERT_EQ(static_cast<int>(r.clump.spheres.size()), counts[q]);
       const Fidelity f = assess_fidelity(b, r.clump, r.voxel / 2);
-      covered[q] += f.covered_fraction / 5;
-      overshoot[q] += f.overshoot_fraction / 5;
+      covered[q] += f.covered_fraction / seeds;
+      overshoot[q] += f.overshoot_fraction / seeds;
     }
   }
   for (int q = 0; q < 3; ++q) {

@@ -10,6 +10,8 @@
 #include "geom/shapes/block.h"
 #include "geom/shapes/primitives.h"
 
+#include "../../sanitized.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -75,20 +77,6 @@ TEST(OvershootLedger, CapsOfOneAndTwoSpheresOnABoxFace) {
 // Sixteen fills up to 500 spheres: ~55 s in Release, 117 s under the sanitizers (the ellipsoid's
 // fills most of it), whose pass runs the block's 10- and 47-sphere fills (the same code; the
 // Release pass runs every count).
-// GCC defines __SANITIZE_ADDRESS__; clang (the sanitizer build's compiler) only answers
-// __has_feature(address_sanitizer).
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
-
 TEST(FillOvershoot, EveryFillMeetsItsBoundFromTenToFiveHundredSpheres) {
   Rng rng(1);
   const Mesh block = make_block(BlockParams{75.1, 58.0, 49.8, 2, 0.8, 1.2}, rng);
