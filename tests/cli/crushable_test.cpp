@@ -85,12 +85,9 @@ TEST(CliCrushable, OedometerBreaksTheCellsConservingVolumeSameBytesForAnyThreads
   const double whole =
       timed([&] { r = run_cli(base + " --threads 1 --out " + (d / "one").string(), d); });
   ASSERT_EQ(r.rc, 0) << r.err;
-  r = run_cli(base + " --threads 2 --out " + (d / "two").string(), d);
-  ASSERT_EQ(r.rc, 0) << r.err;
-  EXPECT_EQ(slurp(d / "one" / "curve.csv"), slurp(d / "two" / "curve.csv"));
-  EXPECT_EQ(slurp(d / "one" / "grading.csv"), slurp(d / "two" / "grading.csv"));
-  // Stopped by SIGTERM at a random time (its bonds' damage saved with the checkpoint) and
-  // resumed: the same bytes as the run never stopped.
+  // Run on two threads, stopped by SIGTERM at a random time (its bonds' damage saved with the
+  // checkpoint) and resumed: the same bytes as the one-thread run never stopped, which checks
+  // the thread count and the resume in one run (a separate two-thread run checked nothing more).
   const std::string stopped = base + " --threads 2 --out " + (d / "stopped").string();
   const double when = random_seconds(0.3 * whole, 0.8 * whole);
   const int rc = run_cli_stopped_after(stopped, d, when);
