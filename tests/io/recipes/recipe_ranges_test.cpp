@@ -11,6 +11,8 @@
 #include "io/recipes/recipe.h"
 #include "io/recipes/specimen_recipe.h"
 
+#include "good_specimen_recipe.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -24,18 +26,7 @@ const std::string kRangesDir = std::string(CLUMPKIT_SOURCE_DIR) + "/assets/recip
 // A deposited specimen of library clumps (relative paths resolve in assets/recipes): `top` holds
 // top-level keys, put before any table; `tables` follows [rock] (its keys, or tables of their own).
 std::string ranges_recipe(const std::string& top, const std::string& tables) {
-  return top + R"(
-rock_mass_fraction = 0.4
-soil_rock_threshold = 0.02
-[container]
-diameter = 0.3
-height = 0.6
-[gradation]
-sieves = [0.06, 0.04, 0.02, 0.01, 0.005]
-passing = [100, 80, 60, 40, 20]
-[rock]
-recipe = "srm-rock-blocks.toml"
-)" + tables;
+  return top + kGoodSpecimenRecipe + tables;
 }
 
 SpecimenRecipe ranges_parse(const std::string& text) {

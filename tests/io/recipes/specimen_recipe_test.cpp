@@ -5,6 +5,8 @@
 #include "geom/errors.h"
 #include "io/recipes/specimen_build.h"
 
+#include "good_specimen_recipe.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -19,18 +21,7 @@ std::string specimen_error_of(const std::string& text) {
   return invalid_input_message([&] { parse_specimen_recipe(text, kDir + "test.toml"); });
 }
 
-const std::string kGood = R"(
-rock_mass_fraction = 0.4
-soil_rock_threshold = 0.02
-[container]
-diameter = 0.3
-height = 0.6
-[gradation]
-sieves = [0.06, 0.04, 0.02, 0.01, 0.005]
-passing = [100, 80, 60, 40, 20]
-[rock]
-recipe = "srm-rock-blocks.toml"
-)";
+const std::string& kGood = kGoodSpecimenRecipe;
 
 std::string with(const std::string& from, const std::string& to) {
   std::string s = kGood;
