@@ -518,9 +518,7 @@ void World::restore(ListState lists, std::vector<PairContact> contacts,
 
 void World::rescale_friction(double new_friction) {
   StepCache& sc = cache_.get();
-  if (!kFriction.contains(new_friction))
-    throw InvalidInput("DEM world: friction " + outside(kFriction, new_friction) + ", got " +
-                       std::to_string(new_friction));
+  require(kFriction, new_friction, "DEM world: friction");
   options_.contact.friction = new_friction;
   hold_contacts_in_lists();
   for (PairContact& c : contacts_) dem::rescale_friction(c.state, new_friction);

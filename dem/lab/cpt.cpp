@@ -44,17 +44,15 @@ double fraction_done(const CptState& st, const CptSettings& s) {
 }  // namespace
 
 void validate_probe(const ProbeSettings& p) {
-  auto positive = [](double v, const char* what) {
-    if (!(v > 0.0) || !std::isfinite(v))
-      throw InvalidInput(std::string("probe.") + what + " must be positive, got " +
+  auto check = [](const Range& r, double v, const char* what, const char* unit) {
+    if (!r.contains(v))
+      throw InvalidInput(std::string("probe.") + what + " " + outside(r, v) + unit + ", got " +
                          format_number(v));
   };
-  positive(p.diameter, "diameter");
-  positive(p.velocity, "velocity");
-  positive(p.depth, "depth");
-  if (!(p.apex_deg > 0.0 && p.apex_deg < 180.0))
-    throw InvalidInput("probe.apex_deg must be in (0, 180) degrees, got " +
-                       format_number(p.apex_deg));
+  check(kProbeDiameter, p.diameter, "diameter", "");
+  check(kProbeVelocity, p.velocity, "velocity", "");
+  check(kProbeDepth, p.depth, "depth", "");
+  check(kProbeApex, p.apex_deg, "apex_deg", " degrees");
 }
 
 void check_probe_width(const ProbeSettings& p, double width) {

@@ -3,12 +3,20 @@
 #pragma once
 
 #include "dem/lab/element_loading.h"
+#include "geom/range.h"
 
 #include <functional>
 #include <string>
 #include <vector>
 
 namespace clumpkit::dem {
+
+/// The probe's shaft diameter (m), push speed (m/s) and push distance (m) a test takes.
+inline constexpr Range kProbeDiameter = above(0);
+inline constexpr Range kProbeVelocity = above(0);
+inline constexpr Range kProbeDepth = above(0);
+/// The cone's apex angle (degrees): 180 would be a flat end.
+inline constexpr Range kProbeApex = open(0, 180);
 
 /// The probe and its push (SI).
 struct ProbeSettings {

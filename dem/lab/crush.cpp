@@ -21,6 +21,11 @@ void require(bool ok, const char* field, double value, const char* range) {
                        format_number(value));
 }
 
+// The rig's ranges, in the words of geom's `require`, prefixed with the test.
+void require(const Range& r, const char* field, double value) {
+  clumpkit::require(r, value, std::string("crushing test: ") + field);
+}
+
 // The number of fragments and the largest one's mass fraction.
 struct FragmentCount {
   int all = 0;
@@ -49,24 +54,17 @@ FragmentCount count_fragments(const World& world) {
 
 void validate(const CrushOptions& o) {
   require(o.axis >= 0 && o.axis <= 2, "axis", o.axis, "0, 1 or 2");
-  require(o.strain_rate > 0 && std::isfinite(o.strain_rate), "strain_rate", o.strain_rate,
-          "positive");
-  require(o.platen_friction >= 0 && std::isfinite(o.platen_friction), "platen_friction",
-          o.platen_friction, "≥ 0");
-  require(o.platen_stiffness > 0 && std::isfinite(o.platen_stiffness), "platen_stiffness",
-          o.platen_stiffness, "positive");
-  require(o.local_damping >= 0 && o.local_damping < 1, "local_damping", o.local_damping,
-          "in [0, 1)");
-  require(o.timestep_safety > 0 && o.timestep_safety <= 1, "timestep_safety", o.timestep_safety,
-          "in (0, 1]");
-  require(o.density_scaling >= 1 && std::isfinite(o.density_scaling), "density_scaling",
-          o.density_scaling, "≥ 1");
-  require(o.max_strain > 0 && o.max_strain < 1, "max_strain", o.max_strain, "in (0, 1)");
+  require(kCrushStrainRate, "strain_rate", o.strain_rate);
+  require(kFriction, "platen_friction", o.platen_friction);
+  require(kPlatenStiffness, "platen_stiffness", o.platen_stiffness);
+  require(kCrushLocalDamping, "local_damping", o.local_damping);
+  require(kCrushTimestepSafety, "timestep_safety", o.timestep_safety);
+  require(kCrushDensityScaling, "density_scaling", o.density_scaling);
+  require(kCrushMaxStrain, "max_strain", o.max_strain);
   require(o.sample_strain > 0 && o.sample_strain < o.max_strain, "sample_strain", o.sample_strain,
           "positive and below max_strain");
-  require(o.bed_depth >= 0 && o.bed_depth < 0.5, "bed_depth", o.bed_depth, "in [0, 0.5)");
-  require(o.intact_fraction > 0.5 && o.intact_fraction < 1, "intact_fraction", o.intact_fraction,
-          "in (0.5, 1)");
+  require(kBedDepth, "bed_depth", o.bed_depth);
+  require(kIntactFraction, "intact_fraction", o.intact_fraction);
 }
 
 CrushResult crush_particle(World& world, double diameter, const CrushOptions& o,

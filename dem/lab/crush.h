@@ -5,6 +5,7 @@
 #include "dem/core/world.h"
 #include "dem/lab/crush_peak.h"
 #include "geom/progress.h"
+#include "geom/range.h"
 
 #include <vector>
 
@@ -38,6 +39,23 @@ struct CrushOptions {
   double bed_depth = 0.0;
   PeakRule rule;
 };
+
+/// The rig's closing strain rate (1/s) and platen stiffness (N/m) a test takes.
+inline constexpr Range kCrushStrainRate = above(0);
+inline constexpr Range kPlatenStiffness = above(0);
+/// PFC local damping α of the cells: 1 would remove every unbalanced force.
+inline constexpr Range kCrushLocalDamping = closed_open(0, 1);
+/// The time step over the critical one.
+inline constexpr Range kCrushTimestepSafety = open_closed(0, 1);
+/// Mass scaling λ (finite: 1 is none).
+inline constexpr Range kCrushDensityScaling = at_least(1);
+/// Platen travel over the gap at which a test stops without a failure.
+inline constexpr Range kCrushMaxStrain = open(0, 1);
+/// The mass fraction a fragment must hold for the particle to count as intact: above one half,
+/// so that at most one fragment can hold it.
+inline constexpr Range kIntactFraction = open(0.5, 1);
+/// The seat's depth over the gap: below one half, so that the bed holds the lower end only.
+inline constexpr Range kBedDepth = closed_open(0, 0.5);
 
 /// Throws InvalidInput naming the field for a value outside its range.
 void validate(const CrushOptions& options);

@@ -7,8 +7,7 @@ namespace clumpkit::dem {
 
 CrushPeak crushing_peak(const std::vector<CrushSample>& samples, double diameter,
                         const PeakRule& rule) {
-  if (!(rule.drop > 0.0 && rule.drop < 1.0))
-    throw InvalidInput("crushing peak: drop must be in (0, 1), got " + format_number(rule.drop));
+  require(kPeakDrop, rule.drop, "crushing peak: drop");
   if (!(rule.collapse_travel > 0.0 && rule.collapse_travel <= 1.0))
     throw InvalidInput("crushing peak: collapse travel must be in (0, 1], got " +
                        format_number(rule.collapse_travel));

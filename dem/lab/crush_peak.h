@@ -3,11 +3,16 @@
 // collapsed; strength σ = Fp/D² (eq. 13).
 #pragma once
 
+#include "geom/range.h"
+
 #include <cstddef>
 #include <string>
 #include <vector>
 
 namespace clumpkit::dem {
+
+/// The load drop, as a fraction of the running peak, that marks failure (PeakRule::drop).
+inline constexpr Range kPeakDrop = open(0, 1);
 
 /// The rule's numbers.
 struct PeakRule {

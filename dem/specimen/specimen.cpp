@@ -165,8 +165,9 @@ void check_spec(const SpecimenSpec& s) {
   if (s.correction_rounds < 0 || !(s.relative_density_tolerance >= 0))
     bad("correction rounds and tolerance must be non-negative");
   if (s.classes.empty()) bad("the gradation has no classes");
-  if (!(s.target_relative_density >= 0 && s.target_relative_density <= 1))
-    bad("target relative density must lie in [0, 1]");
+  if (!kTargetRelativeDensity.contains(s.target_relative_density))
+    bad("target relative density " + outside(kTargetRelativeDensity, s.target_relative_density) +
+        ", got " + format_number(s.target_relative_density));
   if (s.calibration_frictions.size() < static_cast<std::size_t>(kMinCalibrationFrictions))
     bad("need at least " + std::to_string(kMinCalibrationFrictions) +
         " calibration frictions, got " + std::to_string(s.calibration_frictions.size()));

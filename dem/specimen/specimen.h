@@ -18,6 +18,8 @@ namespace clumpkit::dem {
 
 /// The layers a deposited specimen is stacked from (SpecimenSpec::layers; measure_specimen's).
 inline constexpr Range kSpecimenLayers = integers(1, 100);
+/// The relative density Dr a deposited specimen is built to (SpecimenSpec).
+inline constexpr Range kTargetRelativeDensity = closed(0, 1);
 
 /// The fewest calibration frictions a deposition takes: the two ends of n(μ) (0 gives n_min, the
 /// largest n_max) and at least four between them to read the target from. Each is in kFriction.
@@ -33,7 +35,7 @@ struct SpecimenSpec {
   /// Contact law; `friction` is the material friction (deposition, final state). Damping as in
   /// deposition_contact() unless set otherwise.
   ContactParams contact;
-  double target_relative_density = 0.5;
+  double target_relative_density = 0.5;  ///< in kTargetRelativeDensity
   /// Frictions of the calibration (the largest gives n_max, 0 gives n_min): at least
   /// kMinCalibrationFrictions, each in kFriction.
   std::vector<double> calibration_frictions = {0.0, 0.05, 0.1, 0.2, 0.4, 0.8};

@@ -10,10 +10,8 @@ namespace clumpkit {
 void validate(const FillOptions& o) {
   if (o.spheres != 0) require(kSphereBudget, o.spheres, "--spheres");
   if (!(o.field.voxel_size > 0.0)) require(kFieldVoxels, o.field.voxels, "--voxels");
-  if (!(o.coverage >= 0.0 && o.coverage <= 1.0))
-    throw InvalidInput("--coverage must be in (0, 1], got " + std::to_string(o.coverage));
-  if (!(o.min_radius >= 0.0) || !std::isfinite(o.min_radius))
-    throw InvalidInput("--min-radius must be non-negative, got " + std::to_string(o.min_radius));
+  require(kCoverage, o.coverage, "--coverage");
+  require(kMinRadius, o.min_radius, "--min-radius");
   if (!std::isfinite(o.tolerance) || !(o.tolerance_voxels >= 0.0) ||
       !std::isfinite(o.tolerance_voxels))
     throw InvalidInput("--tolerance must be finite and non-negative, got " +
@@ -21,8 +19,7 @@ void validate(const FillOptions& o) {
   if (!(o.tolerance_relative >= 0.0 && o.tolerance_relative < 1.0))
     throw InvalidInput("--relative-tolerance must be in [0, 1), got " +
                        std::to_string(o.tolerance_relative));
-  if (!(o.max_overshoot >= 0.0 && o.max_overshoot < 1.0))
-    throw InvalidInput("--max-overshoot must be in [0, 1), got " + std::to_string(o.max_overshoot));
+  require(kMaxOvershoot, o.max_overshoot, "--max-overshoot");
   if (o.refine_iterations < 0 || o.refine_iterations > 1000)
     throw InvalidInput("--refine-iterations must be in [0, 1000], got " +
                        std::to_string(o.refine_iterations));

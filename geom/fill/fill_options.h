@@ -10,6 +10,14 @@ namespace clumpkit {
 /// A sphere budget, when there is one (FillOptions::spheres; 0 there is none).
 inline constexpr Range kSphereBudget = integers_from(1);
 
+/// The fraction of the interior volume whose covering stops a fill (FillOptions::coverage; 0
+/// there is none).
+inline constexpr Range kCoverage = closed(0, 1);
+/// R_lim of Jin et al. 2017 (FillOptions::min_radius; finite, 0 for none), in the mesh's units.
+inline constexpr Range kMinRadius = at_least(0);
+/// The clump's volume outside the mesh over the mesh's volume (FillOptions::max_overshoot).
+inline constexpr Range kMaxOvershoot = closed_open(0, 1);
+
 /// Stop rules and resolution. The fill stops at the first rule met; with neither `spheres` nor
 /// `coverage` given it stops at 50 spheres.
 struct FillOptions {
@@ -75,8 +83,9 @@ inline constexpr double kVoxelsPerSmallestRadius = 5.5;
 FieldOptions fill_field_options(const Mesh& mesh, const FillOptions& options);
 
 /// Throws InvalidInput for a sphere budget outside kSphereBudget (0: none), field.voxels outside
-/// kFieldVoxels where no voxel_size is given, coverage outside [0, 1], a negative or non-finite
-/// min_radius, or a mesh without interior voxels at this resolution.
+/// kFieldVoxels where no voxel_size is given, coverage outside kCoverage, min_radius outside
+/// kMinRadius, max_overshoot outside kMaxOvershoot, or a mesh without interior voxels at this
+/// resolution.
 void validate(const FillOptions& options);
 
 }  // namespace clumpkit

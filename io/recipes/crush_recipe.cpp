@@ -56,54 +56,39 @@ const RecipeSection<CrushRecipe>& crush_section() {
        number_key<R>(
            "density", "kg/m³", "> 0", "particle density", [](R& r) -> double& { return r.density; },
            &TomlFields::positive),
-       number_key<R>(
-           "strain_rate", "1/s", "> 0", "closing speed over the initial gap",
-           [](R& r) -> double& { return r.rig.strain_rate; }, &TomlFields::positive),
+       range_key<R>("strain_rate", "1/s", dem::kCrushStrainRate,
+                    "closing speed over the initial gap",
+                    [](R& r) -> double& { return r.rig.strain_rate; }),
        range_key<R>("platen_friction", "", dem::kFriction, "μ of cell–platen contacts",
                     [](R& r) -> double& { return r.rig.platen_friction; }),
-       number_key<R>(
-           "platen_stiffness", "N/m", "> 0", "normal and shear stiffness of a corner on a platen",
-           [](R& r) -> double& { return r.rig.platen_stiffness; }, &TomlFields::positive),
-       number_key<R>(
-           "local_damping", "", "[0, 1)", "PFC local damping α of every cell",
-           [](R& r) -> double& { return r.rig.local_damping; }, &TomlFields::non_negative,
-           below(1.0, "must be below 1")),
-       number_key<R>(
-           "timestep_safety", "", "(0, 0.5]", "time step over the critical one",
-           [](R& r) -> double& { return r.rig.timestep_safety; }, &TomlFields::positive,
-           at_most(0.5, "must be at most 0.5")),
-       number_key<R>(
-           "density_scaling", "", "[1, 1e6]",
-           "every cell's mass and moments × λ (time step × √λ; reported)",
-           [](R& r) -> double& { return r.rig.density_scaling; }, &TomlFields::number,
-           [](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
-             if (!(x >= 1 && x <= 1e6)) f.fail(field, "must be in [1, 1e6], got " + toml_show(v));
-           }),
-       number_key<R>(
-           "max_strain", "", "(0, 1)",
-           "platen travel over the gap at which a test stops without a failure",
-           [](R& r) -> double& { return r.rig.max_strain; }, &TomlFields::number, open_fraction),
+       range_key<R>("platen_stiffness", "N/m", dem::kPlatenStiffness,
+                    "normal and shear stiffness of a corner on a platen",
+                    [](R& r) -> double& { return r.rig.platen_stiffness; }),
+       range_key<R>("local_damping", "", dem::kCrushLocalDamping,
+                    "PFC local damping α of every cell",
+                    [](R& r) -> double& { return r.rig.local_damping; }),
+       range_key<R>("timestep_safety", "", dem::kCrushTimestepSafety,
+                    "time step over the critical one",
+                    [](R& r) -> double& { return r.rig.timestep_safety; }),
+       range_key<R>("density_scaling", "", dem::kCrushDensityScaling,
+                    "every cell's mass and moments × λ (time step × √λ; reported)",
+                    [](R& r) -> double& { return r.rig.density_scaling; }),
+       range_key<R>("max_strain", "", dem::kCrushMaxStrain,
+                    "platen travel over the gap at which a test stops without a failure",
+                    [](R& r) -> double& { return r.rig.max_strain; }),
        number_key<R>(
            "sample_strain", "", "(0, max_strain)", "travel between samples over the gap",
            [](R& r) -> double& { return r.rig.sample_strain; }, &TomlFields::number, open_fraction),
-       number_key<R>(
-           "drop", "", "(0, 1)",
-           "the load drop, as a fraction of the running peak, that marks failure",
-           [](R& r) -> double& { return r.rig.rule.drop; }, &TomlFields::number, open_fraction),
-       number_key<R>(
-           "intact_fraction", "", "(0.5, 1)",
-           "split once no fragment holds this fraction of the particle's mass",
-           [](R& r) -> double& { return r.rig.intact_fraction; }, &TomlFields::number,
-           [](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
-             open_fraction(f, field, v, x);
-             if (x <= 0.5) f.fail(field, "must be above 0.5, got " + toml_show(v));
-           }),
-       number_key<R>(
-           "bed_depth", "", "[0, 0.5)",
-           "the seat: cells within this fraction of the gap above the lower platen do not "
-           "rotate (a bedded end); 0 for none",
-           [](R& r) -> double& { return r.rig.bed_depth; }, &TomlFields::non_negative,
-           below(0.5, "must be below 0.5")),
+       range_key<R>("drop", "", dem::kPeakDrop,
+                    "the load drop, as a fraction of the running peak, that marks failure",
+                    [](R& r) -> double& { return r.rig.rule.drop; }),
+       range_key<R>("intact_fraction", "", dem::kIntactFraction,
+                    "split once no fragment holds this fraction of the particle's mass",
+                    [](R& r) -> double& { return r.rig.intact_fraction; }),
+       range_key<R>("bed_depth", "", dem::kBedDepth,
+                    "the seat: cells within this fraction of the gap above the lower platen do "
+                    "not rotate (a bedded end); 0 for none",
+                    [](R& r) -> double& { return r.rig.bed_depth; }),
        custom_key<R>("bootstrap", "", "[100, 100000]",
                      "bootstrap resamples of the Weibull fits' 90 % intervals", "1000",
                      [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {

@@ -40,15 +40,16 @@ const RecipeSection<dem::ProbeSettings>& probe_section() {
       "The cone of `clumpkit test cpt` and its push (required there; checked by "
       "dem::validate_probe, and against the cell and a zoned specimen's core once the specimen "
       "is read).",
-      {number_key<P>("diameter", "m", "> 0", "shaft diameter D_c",
-                     [](P& p) -> double& { return p.diameter; }),
-       number_key<P>("apex_deg", "degree", "(0, 180)", "apex angle of the cone",
-                     [](P& p) -> double& { return p.apex_deg; }),
-       number_key<P>("velocity", "m/s", "> 0", "push speed",
-                     [](P& p) -> double& { return p.velocity; }),
-       shown_as(number_key<P>("depth", "m", "> 0", "push distance below the specimen's top",
-                              [](P& p) -> double& { return p.depth; }),
-                "required"),
+      {range_key<P>("diameter", "m", dem::kProbeDiameter, "shaft diameter D_c",
+                    [](P& p) -> double& { return p.diameter; }),
+       range_key<P>("apex_deg", "degree", dem::kProbeApex, "apex angle of the cone",
+                    [](P& p) -> double& { return p.apex_deg; }),
+       range_key<P>("velocity", "m/s", dem::kProbeVelocity, "push speed",
+                    [](P& p) -> double& { return p.velocity; }),
+       shown_as(
+           range_key<P>("depth", "m", dem::kProbeDepth, "push distance below the specimen's top",
+                        [](P& p) -> double& { return p.depth; }),
+           "required"),
        shown_as(range_key<P>("friction", "", dem::kFriction, "μ of probe–sphere contacts",
                              [](P& p) -> double& { return p.friction; }),
                 "the test's")}};

@@ -101,13 +101,13 @@ const RecipeSection<FillOptions>& fill_section() {
       {shown_as(range_key<O>("spheres", "", kSphereBudget, "sphere budget of each clump",
                              [](O& o) -> int& { return o.spheres; }),
                 "none"),
-       shown_as(number_key<O>("coverage", "", "(0, 1]",
-                              "stop once this fraction of the interior volume is covered",
-                              [](O& o) -> double& { return o.coverage; }),
+       shown_as(range_key<O>("coverage", "", kCoverage,
+                             "stop once this fraction of the interior volume is covered",
+                             [](O& o) -> double& { return o.coverage; }),
                 "none"),
-       number_key<O>("min_radius", "m", ">= 0",
-                     "R_lim of Jin et al. 2017: smaller spheres are never placed",
-                     [](O& o) -> double& { return o.min_radius; }),
+       range_key<O>("min_radius", "m", kMinRadius,
+                    "R_lim of Jin et al. 2017: smaller spheres are never placed",
+                    [](O& o) -> double& { return o.min_radius; }),
        [] {
          auto k = range_key<O>(
              "voxels", "", kFieldVoxels,
@@ -125,9 +125,9 @@ const RecipeSection<FillOptions>& fill_section() {
          };
          return k;
        }(),
-       number_key<O>("max_overshoot", "", "[0, 1)",
-                     "the clump's volume outside the mesh, over the mesh's volume",
-                     [](O& o) -> double& { return o.max_overshoot; }),
+       range_key<O>("max_overshoot", "", kMaxOvershoot,
+                    "the clump's volume outside the mesh, over the mesh's volume",
+                    [](O& o) -> double& { return o.max_overshoot; }),
        fill_integer(
            "refine_iterations", "[0, 1000]",
            "sweeps of the refinement after the greedy pass (0: none)",
