@@ -1,11 +1,16 @@
 // Seeded, platform-independent random numbers: generator, distributions and per-item streams.
 #pragma once
 
+#include "geom/range.h"
 #include "geom/vec.h"
 
 #include <cstdint>
 
 namespace clumpkit {
+
+/// The seed of a run (Rng's, from a recipe: a TOML integer, so at most 2^63 − 1). Every value
+/// is a seed: the type holds the range, and Rng has nothing to check.
+inline constexpr Range kSeed = integers_from(0);
 
 /// xoshiro256** generator seeded through splitmix64. Our own distributions below give the same
 /// numbers on every standard library, which std:: distributions do not.

@@ -109,15 +109,32 @@
     state.firstViewMs = performance.now();
   }
 
-  // The reports as key-value rows, one column per folder.
+  // A column's or a report row's label with its unit as the files write it (docs/units.md):
+  // "volume [m3]", "porosity [1]" for a dimensionless number; the bare name without one (text,
+  // or a folder written before units).
+  function unitLabel(name, unit) {
+    return unit ? name + ' [' + unit + ']' : name;
+  }
+
+  // The note of a page whose folders were written before clumpkit recorded units, null otherwise.
+  function unitsNote(D) {
+    if (D.units_recorded !== false) return null;
+    return el('p', { class: 'note', id: 'units-note', text: 'units not recorded in this folder (written before clumpkit recorded units); recipes are SI' });
+  }
+
+  // The reports as key-value rows, one column per folder, each key with its unit (the first
+  // folder's that records one).
   function reportTable(folders) {
-    const keys = [];
-    for (const f of folders) for (const k of Object.keys(f.report)) if (!keys.includes(k)) keys.push(k);
+    const keys = [], units = {};
+    for (const f of folders) {
+      for (const k of Object.keys(f.report)) if (!keys.includes(k)) keys.push(k);
+      for (const [k, u] of Object.entries(f.units || {})) if (!(k in units)) units[k] = u;
+    }
     const head = el('tr', {}, [el('th', { class: 'text', text: 'report' })]);
     for (const f of folders) head.appendChild(el('th', { class: 'text', text: f.name }));
     const body = el('tbody');
     for (const k of keys) {
-      const tr = el('tr', { 'data-key': k }, [el('td', { class: 'text', text: k })]);
+      const tr = el('tr', { 'data-key': k }, [el('td', { class: 'text', text: unitLabel(k, units[k]) })]);
       for (const f of folders) tr.appendChild(valueCell(k in f.report ? f.report[k] : ''));
       body.appendChild(tr);
     }
@@ -137,6 +154,6 @@
   // kinds: each page kind's script adds kinds[D.kind] = function (D), which builds its sections.
   window.clumpkitShared = {
     state, el, fmt, valueCell, copyFull, section, twoColumns, loadPart, paletteColour, paletteCss,
-    rampColour, markFirstView, reportTable, gallery, kinds: {},
+    rampColour, markFirstView, unitLabel, unitsNote, reportTable, gallery, kinds: {},
   };
 })();

@@ -67,7 +67,7 @@
       if (!viewer || !D.cells_ids.includes(id)) return;
       K.loadPart('cells-script', D.cells + String(id).padStart(5, '0') + '.js', 'clumpkit_cells', (p) => { shown = p; redraw(); });
     }
-    right.appendChild(K.dataTable(D.table, show));
+    right.appendChild(K.dataTable(D.table, show, K.unitsNote(D)));
     show(D.table.rows[0]);
     K.markFirstView();
   };

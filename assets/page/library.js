@@ -27,7 +27,7 @@
       });
       info.textContent = 'drag to turn, wheel to zoom';
     }
-    right.appendChild(K.dataTable(D.table, show));
+    right.appendChild(K.dataTable(D.table, show, K.unitsNote(D)));
     show(D.table.rows[0]);
     right.querySelector('tbody tr').classList.add('selected');
   };

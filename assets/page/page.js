@@ -11,7 +11,12 @@
     document.querySelector('header p').textContent = D.subtitle;
     // library, specimen, crush; test (element tests and CPTs) the rest, as page.cpp's kinds.
     (K.kinds[D.kind] || K.kinds.test)(D);
-    K.section('Report').appendChild(K.reportTable(D.folders));
+    const report = K.section('Report');
+    // A folder written before units: the note above the particles' table where the page has one
+    // (library, crush), else above the report.
+    const note = document.getElementById('table') ? null : K.unitsNote(D);
+    if (note) report.appendChild(note);
+    report.appendChild(K.reportTable(D.folders));
     if (D.images && D.images.length) K.gallery(D.images);
     K.state.ready = true;
   }

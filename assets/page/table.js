@@ -5,9 +5,11 @@
   const K = window.clumpkitShared;
   const el = K.el, fmt = K.fmt;
 
-  // spec: {columns, rows} (docs/pages.md); onPick(row, index) on a click on a row.
-  function dataTable(spec, onPick) {
-    const cols = spec.columns;
+  // spec: {columns, units, rows} (docs/pages.md); onPick(row, index) on a click on a row; note an
+  // element shown above the table, or null. A header shows its column's unit; sorting, filtering
+  // ("volume > 1e-6") and copying go by the bare name and the values.
+  function dataTable(spec, onPick, note) {
+    const cols = spec.columns, units = spec.units || [];
     const numeric = cols.map((_, c) => spec.rows.every((r) => typeof r[c] === 'number'));
     let order = spec.rows.map((_, i) => i);
     let sortCol = -1, sortDir = 1, filter = '';
@@ -15,7 +17,7 @@
     const table = K.copyFull(el('table', { id: 'table' }, [thead, tbody]));
     const headRow = el('tr');
     cols.forEach((name, c) => {
-      const th = el('th', { 'data-col': name, class: numeric[c] ? '' : 'text', text: name });
+      const th = el('th', { 'data-col': name, 'data-unit': units[c] || '', class: numeric[c] ? '' : 'text', text: K.unitLabel(name, units[c]) });
       th.addEventListener('click', () => {
         sortDir = sortCol === c ? -sortDir : 1;
         sortCol = c;
@@ -63,7 +65,7 @@
     const input = el('input', { id: 'filter', size: '34', placeholder: 'filter: text, or column > value' });
     input.addEventListener('input', () => { filter = input.value; draw(); });
     const count = el('span', { class: 'note' });
-    const box = el('div', {}, [el('div', { class: 'controls' }, [input, count]), el('div', { class: 'scroll' }, [table])]);
+    const box = el('div', {}, (note ? [note] : []).concat([el('div', { class: 'controls' }, [input, count]), el('div', { class: 'scroll' }, [table])]));
     draw();
     return box;
   }

@@ -11,8 +11,7 @@ namespace clumpkit::dem {
 namespace {
 
 void check_density(double density) {
-  if (!(density > 0.0) || !std::isfinite(density))
-    throw InvalidInput("DEM body: density must be positive, got " + std::to_string(density));
+  require(kDensity, density, "DEM body: density");
 }
 
 }  // namespace

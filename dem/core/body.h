@@ -1,6 +1,7 @@
 // Rigid DEM bodies (a plain sphere or a clump of spheres in its principal frame) and their state.
 #pragma once
 
+#include "geom/range.h"
 #include "geom/sphere.h"
 #include "geom/template/clump_template.h"
 
@@ -18,6 +19,13 @@ enum class BodyKind : std::uint8_t { soil, rock };
 
 /// "soil" or "rock", as written in specimen files.
 std::string kind_name(BodyKind kind);
+
+/// The density of a body's material (kg/m³; finite) that make_sphere_body, make_clump_body and
+/// cell_body take.
+inline constexpr Range kDensity = above(0);
+/// Mass scaling λ of a run: its bodies' masses and moments × λ, so the time step grows by √λ
+/// (finite; 1 is none, below 1 would shrink the step).
+inline constexpr Range kDensityScaling = at_least(1);
 
 /// A rigid body: spheres fixed in the body frame (the principal frame: centroid at the origin,
 /// inertia axes along x, y, z), its mass and principal moments, and its state in the world.
@@ -80,14 +88,14 @@ Vec3 angular_velocity_for(const Vec3& moments, const Vec3& momentum, const Eigen
 
 /// A solid soil sphere of the given radius (m) and density (kg/m³) centred at `center`:
 /// V = 4/3·π·r³, m = ρ·V, I = 2/5·m·r² about every axis. Throws InvalidInput for a
-/// non-positive or non-finite radius or density.
+/// non-positive or non-finite radius, or a density outside kDensity.
 Body make_sphere_body(const Vec3& center, double radius, double density);
 
 /// A rigid rock clump from a clump template (spheres in the principal frame, exact unit-density
 /// mass properties) scaled by `scale`: spheres ×s, V = V_t·s³, mass = ρ·V, moments =
 /// ρ·I_t·s⁵ (inertia scales with mass × length²). Placed at `position` with `orientation`
-/// (body -> world); `template_id` is recorded on the body. Throws InvalidInput for a
-/// non-positive density or scale, or a template without spheres or positive moments.
+/// (body -> world); `template_id` is recorded on the body. Throws InvalidInput for a density
+/// outside kDensity, a non-positive scale, or a template without spheres or positive moments.
 Body make_clump_body(const ClumpTemplate& clump_template, double density, const Vec3& position,
                      const Eigen::Quaterniond& orientation, double scale = 1.0,
                      int template_id = -1);

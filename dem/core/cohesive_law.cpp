@@ -18,16 +18,13 @@ CohesiveParams unbreakable(const CohesiveParams& p) {
 }
 
 void validate_values(const CohesiveParams& p) {
-  const std::pair<const char*, double> fields[] = {{"kn", p.kn},           {"kt", p.kt},
-                                                   {"sigma_n", p.sigma_n}, {"sigma_t", p.sigma_t},
-                                                   {"g_n", p.g_n},         {"g_t", p.g_t}};
-  for (const auto& [name, v] : fields)
-    if (!(v > 0.0) || !std::isfinite(v))
-      throw InvalidInput(std::string("cohesive law: ") + name +
-                         " must be positive and finite, got " + format_number(v));
-  if (!kFriction.contains(p.friction))
-    throw InvalidInput("cohesive law: friction " + outside(kFriction, p.friction) + ", got " +
-                       format_number(p.friction));
+  require(kBondStiffness, p.kn, "cohesive law: kn");
+  require(kBondStiffness, p.kt, "cohesive law: kt");
+  require(kBondStrength, p.sigma_n, "cohesive law: sigma_n");
+  require(kBondStrength, p.sigma_t, "cohesive law: sigma_t");
+  require(kFractureEnergy, p.g_n, "cohesive law: g_n");
+  require(kFractureEnergy, p.g_t, "cohesive law: g_t");
+  require(kFriction, p.friction, "cohesive law: friction");
 }
 
 void validate(const CohesiveParams& p, double max_factor) {

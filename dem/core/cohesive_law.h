@@ -3,19 +3,31 @@
 #pragma once
 
 #include "geom/mesh/mesh.h"
+#include "geom/range.h"
 
 namespace clumpkit::dem {
+
+/// A bond's stiffnesses per unit area K_I and K_II (N/m³; finite).
+inline constexpr Range kBondStiffness = above(0);
+/// A bond's strengths σ_eI and σ_eII (Pa; finite).
+inline constexpr Range kBondStrength = above(0);
+/// A bond's fracture energies G_I and G_II (J/m²; finite); validate asks more of them: above the
+/// elastic energy at onset.
+inline constexpr Range kFractureEnergy = above(0);
+/// Hu et al. 2023's calibration factor s on a law: strengths × s, energies × s² (finite; the
+/// recipes apply it, and validate checks the law it gives).
+inline constexpr Range kBondScale = above(0);
 
 /// Per unit area (SI). Hu et al. 2023 calibrate granite at K_I = 8e10 N/m³, K_II = 1.2e11 N/m³,
 /// σ_eI = 9 MPa, σ_eII = 11.5 MPa, G_I = 900 J/m², G_II = 1125 J/m² (the paper prints "mJ/mm²";
 /// only J/m² gives a finite opening at failure: δ_uI = 2·G_I/σ_eI = 0.2 mm, not 0.2 m).
 struct CohesiveParams {
-  double kn = 8e10;         ///< K_I: normal stiffness per unit area (N/m³)
-  double kt = 1.2e11;       ///< K_II: shear stiffness per unit area (N/m³)
-  double sigma_n = 9e6;     ///< σ_eI: tensile strength (Pa)
-  double sigma_t = 11.5e6;  ///< σ_eII: shear strength (Pa)
-  double g_n = 900.0;       ///< G_I: mode I fracture energy (J/m²)
-  double g_t = 1125.0;      ///< G_II: mode II fracture energy (J/m²)
+  double kn = 8e10;         ///< K_I: normal stiffness per unit area (N/m³), in kBondStiffness
+  double kt = 1.2e11;       ///< K_II: shear stiffness per unit area (N/m³), in kBondStiffness
+  double sigma_n = 9e6;     ///< σ_eI: tensile strength (Pa), in kBondStrength
+  double sigma_t = 11.5e6;  ///< σ_eII: shear strength (Pa), in kBondStrength
+  double g_n = 900.0;       ///< G_I: mode I fracture energy (J/m²), in kFractureEnergy
+  double g_t = 1125.0;      ///< G_II: mode II fracture energy (J/m²), in kFractureEnergy
   /// Coulomb coefficient of the damaged part of a face in compression (the paper's "ν = 0.3",
   /// read as the friction between cells: a crack that closes slides with friction).
   double friction = 0.3;
@@ -25,9 +37,10 @@ struct CohesiveParams {
 /// (openings at onset and failure × 1e6, far beyond any contact's reach): elastic throughout.
 CohesiveParams unbreakable(const CohesiveParams& p);
 
-/// Throws InvalidInput "cohesive law: FIELD must be positive and finite, got V" for a stiffness,
-/// strength or fracture energy that is not (friction: outside dem::kFriction). The one check of
-/// each value (recipes call it on their [bond] table as read, validate on the law as used).
+/// Throws InvalidInput "cohesive law: FIELD: must be > 0, got V" for a stiffness outside
+/// kBondStiffness, a strength outside kBondStrength or a fracture energy outside kFractureEnergy
+/// (friction: outside dem::kFriction). The one check of each value (recipes call it on their
+/// [bond] table as read, validate on the law as used).
 void validate_values(const CohesiveParams& p);
 
 /// validate_values, and InvalidInput for a fracture energy below the elastic energy at onset

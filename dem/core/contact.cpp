@@ -16,22 +16,18 @@ double damping_ratio_from_restitution(double e) {
 }
 
 double restitution_from_damping_ratio(double beta) {
-  if (!(beta >= 0.0 && beta < 1.0))
-    throw InvalidInput("contact: damping ratio must be in [0, 1), got " + std::to_string(beta));
+  require(kDampingRatio, beta, "contact: damping ratio");
   return std::exp(-beta * kPi / std::sqrt(1.0 - beta * beta));
 }
 
 void validate(const ContactParams& p) {
-  auto positive = [](double v, const char* what) {
-    if (!(v > 0.0) || !std::isfinite(v))
-      throw InvalidInput(std::string("contact: ") + what + " must be positive and finite, got " +
-                         std::to_string(v));
-  };
-  positive(p.kn, "kn");
-  if (!(p.ks >= 0.0) || !std::isfinite(p.ks))
-    throw InvalidInput("contact: ks must be finite and >= 0, got " + std::to_string(p.ks));
-  if (p.scaling == StiffnessScaling::linear) positive(p.d_ref, "d_ref (linear stiffness scaling)");
+  require(kNormalStiffness, p.kn, "contact: kn");
+  require(kShearStiffness, p.ks, "contact: ks");
+  if (p.scaling == StiffnessScaling::linear)
+    require(kReferenceDiameter, p.d_ref, "contact: d_ref (linear stiffness scaling)");
   require(kFriction, p.friction, "contact: friction");
+  require(kDampingRatio, p.damping_ratio, "contact: damping ratio");
+  require(kLocalDamping, p.local_damping, "contact: local damping");
 }
 
 void update_contact(ContactState& s, const Vec3& normal, double overlap, const Vec3& point,

@@ -19,21 +19,37 @@ enum class StiffnessScaling {
 
 /// Contact parameters (SI). Defaults follow Jin et al. 2017 §4.1 (kn = ks = 1e6 N/m, μ = 0.8).
 struct ContactParams {
-  double kn = 1e6;  ///< normal stiffness (N/m); with linear scaling kn_ref, at d = d_ref
-  double ks = 1e6;  ///< shear stiffness (N/m); with linear scaling ks at d = d_ref
+  /// Normal stiffness (N/m), in kNormalStiffness; with linear scaling kn_ref, at d = d_ref.
+  double kn = 1e6;
+  /// Shear stiffness (N/m), in kShearStiffness; with linear scaling ks at d = d_ref.
+  double ks = 1e6;
   StiffnessScaling scaling = StiffnessScaling::none;
-  double d_ref = 0.0;     ///< reference diameter of linear scaling (m)
-  double friction = 0.8;  ///< Coulomb coefficient μ
-  /// Viscous normal damping ratio β (0 = none): dashpot c = 2·β·sqrt(m_eff·kn). Use
-  /// damping_ratio_from_restitution(e) to ask for a restitution coefficient instead.
+  double d_ref = 0.0;     ///< reference diameter of linear scaling (m), in kReferenceDiameter
+  double friction = 0.8;  ///< Coulomb coefficient μ, in kFriction
+  /// Viscous normal damping ratio β (0 = none), in kDampingRatio: dashpot c = 2·β·sqrt(m_eff·kn).
+  /// Use damping_ratio_from_restitution(e) to ask for a restitution coefficient instead.
   double damping_ratio = 0.0;
-  /// PFC local damping coefficient α (0 = none), applied per body by the world:
+  /// PFC local damping coefficient α (0 = none), in kLocalDamping, applied per body by the world:
   /// F_k -= α·|F_k|·sign(v_k) for each force and torque component (local_damping()).
   double local_damping = 0.0;
 };
 
 /// The Coulomb coefficients μ a contact law, a test or a recipe takes (finite: +∞ is no value).
 inline constexpr Range kFriction = at_least(0);
+/// The normal stiffness kn of a contact law (N/m; finite).
+inline constexpr Range kNormalStiffness = above(0);
+/// The shear stiffness ks of a contact law (N/m; finite): 0 is a law without a shear spring.
+inline constexpr Range kShearStiffness = at_least(0);
+/// ks/kn, as a test sets a specimen's shear stiffness from its normal one (finite): ks is then
+/// in kShearStiffness for any kn in kNormalStiffness.
+inline constexpr Range kStiffnessRatio = at_least(0);
+/// The diameter d_ref at which a linearly scaled law's kn and ks hold (m; finite).
+inline constexpr Range kReferenceDiameter = above(0);
+/// The viscous normal damping ratio β: 1 is the critically damped dashpot, beyond which
+/// restitution_from_damping_ratio has no value.
+inline constexpr Range kDampingRatio = closed_open(0, 1);
+/// PFC local damping α: 1 would remove every unbalanced force.
+inline constexpr Range kLocalDamping = closed_open(0, 1);
 
 /// Factor f on kn and ks for a contact of bodies of volume-equivalent diameters d_i and d_j
 /// (every sphere of a clump has its body's d): 1 without scaling; with linear scaling the two
@@ -60,8 +76,9 @@ inline ContactParams scaled_stiffness(ContactParams p, double factor) {
   return p;
 }
 
-/// Throws InvalidInput for stiffnesses or a scaling reference that are not positive and finite,
-/// or a friction outside kFriction.
+/// Throws InvalidInput for kn outside kNormalStiffness, ks outside kShearStiffness, d_ref outside
+/// kReferenceDiameter under linear scaling, friction outside kFriction, damping_ratio outside
+/// kDampingRatio or local_damping outside kLocalDamping.
 void validate(const ContactParams& p);
 
 /// Damping ratio giving restitution e in a head-on collision of the linear spring-dashpot:
@@ -69,7 +86,7 @@ void validate(const ContactParams& p);
 /// an unclamped dashpot, e.g. Tsuji et al. 1992). e in (0, 1]; throws InvalidInput otherwise.
 double damping_ratio_from_restitution(double restitution);
 
-/// Inverse of damping_ratio_from_restitution: e = exp(−β·π / sqrt(1 − β²)) for β in [0, 1).
+/// Inverse of damping_ratio_from_restitution: e = exp(−β·π / sqrt(1 − β²)) for β in kDampingRatio.
 double restitution_from_damping_ratio(double damping_ratio);
 
 /// State of one contact: the normal points towards the side that receives force

@@ -2,7 +2,6 @@
 
 #include "geom/errors.h"
 #include "geom/fill/fill.h"
-#include "geom/format.h"
 #include "geom/template/clump_template.h"
 
 #include <algorithm>
@@ -11,9 +10,7 @@
 namespace clumpkit::dem {
 
 Body cell_body(const Cell& cell, double density) {
-  if (!(density > 0.0) || !std::isfinite(density))
-    throw InvalidInput("crushable particle: density must be positive, got " +
-                       format_number(density));
+  require(kDensity, density, "crushable particle: density");
   if (!(cell.mass.volume > 0.0)) throw InvalidInput("crushable particle: a cell has no volume");
   Vec3 moments;
   const Mat3 axes = principal_axes(cell.mass.inertia, moments);

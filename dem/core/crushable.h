@@ -17,8 +17,8 @@ namespace clumpkit::dem {
 /// mass ρ·V, principal moments ρ·I, its corners (Body::vertices), and one sphere: the largest
 /// centred on the centroid inside the cell (radius the centroid's distance to the nearest face
 /// plane), so that two cells' spheres never overlap while the cells do not. Lengths in the
-/// cell's units (metres for the DEM). Throws InvalidInput for a density that is not positive, or
-/// a cell without volume.
+/// cell's units (metres for the DEM). Throws InvalidInput for a density outside kDensity, or a
+/// cell without volume.
 Body cell_body(const Cell& cell, double density);
 
 /// The body of one cell for a packing (a crushable particle among others): cell_body's mass

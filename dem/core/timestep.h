@@ -3,8 +3,14 @@
 
 #include "dem/core/body.h"
 #include "dem/core/world.h"
+#include "geom/range.h"
 
 namespace clumpkit::dem {
+
+/// The safety factor on critical_timestep a run's time step takes (a deposition, a compression,
+/// a crushing test, an element test): at 1 the step is sqrt(m/k), inside the explicit
+/// integration's limit √2·sqrt(m/k) of the stiffest equal pair (ω² = 2·k/m).
+inline constexpr Range kTimestepSafety = open_closed(0, 1);
 
 /// Critical time step of a mass-spring oscillator, dt = sqrt(m / k) (the PFC convention for the
 /// linear contact model; the undamped period is 2π·sqrt(m/k)). Mass in kg, stiffness in N/m.

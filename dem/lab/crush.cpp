@@ -57,9 +57,9 @@ void validate(const CrushOptions& o) {
   require(kCrushStrainRate, "strain_rate", o.strain_rate);
   require(kFriction, "platen_friction", o.platen_friction);
   require(kPlatenStiffness, "platen_stiffness", o.platen_stiffness);
-  require(kCrushLocalDamping, "local_damping", o.local_damping);
-  require(kCrushTimestepSafety, "timestep_safety", o.timestep_safety);
-  require(kCrushDensityScaling, "density_scaling", o.density_scaling);
+  require(kLocalDamping, "local_damping", o.local_damping);
+  require(kTimestepSafety, "timestep_safety", o.timestep_safety);
+  require(kDensityScaling, "density_scaling", o.density_scaling);
   require(kCrushMaxStrain, "max_strain", o.max_strain);
   require(o.sample_strain > 0 && o.sample_strain < o.max_strain, "sample_strain", o.sample_strain,
           "positive and below max_strain");

@@ -2,6 +2,7 @@
 // rate, the force–travel curve, the crushing peak and the fragments.
 #pragma once
 
+#include "dem/core/timestep.h"
 #include "dem/core/world.h"
 #include "dem/lab/crush_peak.h"
 #include "geom/progress.h"
@@ -19,11 +20,14 @@ struct CrushOptions {
   double platen_friction = 0.3;
   /// Normal and shear stiffness of a corner on a platen (N/m); WorldOptions::vertex_stiffness.
   double platen_stiffness = 1e7;
-  /// PFC local damping α of every cell (quasi-static loading of an explicit model).
+  /// PFC local damping α of every cell (quasi-static loading of an explicit model), in
+  /// kLocalDamping.
   double local_damping = 0.35;
-  double timestep_safety = 0.2;  ///< dt = safety × critical_timestep(world)
-  /// Mass scaling λ: every cell's mass and moments × λ (dt × √λ). Quasi-static while the
-  /// platen speed stays far below the particle's wave speed; reported with the results.
+  /// dt = safety × critical_timestep(world), in kTimestepSafety.
+  double timestep_safety = 0.2;
+  /// Mass scaling λ, in kDensityScaling: every cell's mass and moments × λ (dt × √λ).
+  /// Quasi-static while the platen speed stays far below the particle's wave speed; reported
+  /// with the results.
   double density_scaling = 1.0;
   double max_strain = 0.3;      ///< travel at which the test stops without a failure (× gap)
   double sample_strain = 2e-4;  ///< travel between samples (× gap)
@@ -43,12 +47,6 @@ struct CrushOptions {
 /// The rig's closing strain rate (1/s) and platen stiffness (N/m) a test takes.
 inline constexpr Range kCrushStrainRate = above(0);
 inline constexpr Range kPlatenStiffness = above(0);
-/// PFC local damping α of the cells: 1 would remove every unbalanced force.
-inline constexpr Range kCrushLocalDamping = closed_open(0, 1);
-/// The time step over the critical one.
-inline constexpr Range kCrushTimestepSafety = open_closed(0, 1);
-/// Mass scaling λ (finite: 1 is none).
-inline constexpr Range kCrushDensityScaling = at_least(1);
 /// Platen travel over the gap at which a test stops without a failure.
 inline constexpr Range kCrushMaxStrain = open(0, 1);
 /// The mass fraction a fragment must hold for the particle to count as intact: above one half,

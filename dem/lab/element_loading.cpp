@@ -47,9 +47,7 @@ void check_holds(const ElementTestSettings& s) {
     throw InvalidInput(std::string("element test: hold stresses are for the oedometer test only, "
                                    "not the ") +
                        s.path->name + " test");
-  if (s.max_hold_steps < 100)
-    throw InvalidInput("element test: max_hold_steps must be at least 100, got " +
-                       std::to_string(s.max_hold_steps));
+  require(kMaxHoldSteps, static_cast<double>(s.max_hold_steps), "element test: max_hold_steps");
   const int bad = first_hold_out_of_order(s.hold_stresses, s.confining, s.final_stress);
   if (bad >= 0)
     throw InvalidInput(
@@ -134,21 +132,19 @@ namespace {
 
 // Rejects settings and a resumed state the test cannot run with, before anything moves.
 void check_element_test(const ElementTestSettings& s, const ElementTestState& state) {
-  auto positive = [](double v, const char* what) {
-    if (!(v > 0.0) || !std::isfinite(v))
-      throw InvalidInput(std::string("element test: ") + what + " must be positive, got " +
-                         std::to_string(v));
-  };
   if (s.path == nullptr) throw InvalidInput("element test: no loading path");
-  positive(s.confining, "confining stress");
-  positive(s.strain_rate, "strain rate");
-  if (!(s.inertial_number >= 0.0) || !std::isfinite(s.inertial_number))
-    throw InvalidInput("element test: inertial number must be 0 or positive, got " +
-                       std::to_string(s.inertial_number));
+  require(kConfiningStress, s.confining, "element test: confining stress");
+  require(kTestStrainRate, s.strain_rate, "element test: strain rate");
+  require(kStressRate, s.stress_rate, "element test: stress rate");
+  require(kHeldInertialNumber, s.inertial_number, "element test: inertial number");
   if (s.path->ends_at_final_stress && !(s.final_stress > s.confining))
     throw InvalidInput("element test: final stress must exceed the confining stress");
-  if (!s.path->ends_at_final_stress) positive(s.max_axial_strain, "maximum axial strain");
-  if (s.record_every < 1) throw InvalidInput("element test: record_every must be at least 1");
+  if (!s.path->ends_at_final_stress)
+    require(kMaxAxialStrain, s.max_axial_strain, "element test: maximum axial strain");
+  require(kConsolidationTolerance, s.consolidation_tolerance,
+          "element test: consolidation tolerance");
+  require(kServoStrainRate, s.servo_strain_rate, "element test: servo strain rate");
+  require(kRecordEvery, s.record_every, "element test: record_every");
   check_holds(s);
   const int holds = static_cast<int>(s.hold_stresses.size());
   if (state.next_hold < 0 || state.next_hold > holds || (state.holding && state.next_hold == holds))

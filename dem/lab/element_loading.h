@@ -7,6 +7,7 @@
 #include "dem/lab/servo.h"
 #include "dem/measure/breakage.h"
 #include "dem/run/stage_store.h"
+#include "geom/range.h"
 
 #include <array>
 #include <functional>
@@ -49,20 +50,44 @@ double inertial_strain_rate(const GrainScale& grains, double inertial, double st
 struct LoadingPath;
 extern const LoadingPath kTriaxialPath;
 
+/// The ranges of ElementTestSettings that run_element_test checks: the confining stress (Pa),
+/// the strain rate (1/s) and the relative stress error of an equilibrium.
+inline constexpr Range kConfiningStress = above(0);
+inline constexpr Range kTestStrainRate = above(0);
+inline constexpr Range kConsolidationTolerance = above(0);
+/// The isotropic loading rate (Pa/s; 0: confining·strain_rate·20) and the servo walls' speed
+/// limit as a strain rate (1/s; 0: the gain's).
+inline constexpr Range kStressRate = at_least(0);
+inline constexpr Range kServoStrainRate = at_least(0);
+/// The inertial number an oedometer or triaxial holds (0: none, strain_rate throughout).
+inline constexpr Range kHeldInertialNumber = at_least(0);
+/// Where a triaxial ends (engineering axial strain): at 1 the platens would meet.
+inline constexpr Range kMaxAxialStrain = open(0, 1);
+/// The step limit of one oedometer hold (checked with hold stresses) and the steps between
+/// curve rows.
+inline constexpr Range kMaxHoldSteps = integers_from(100);
+inline constexpr Range kRecordEvery = integers_from(1);
+/// The last fraction of a triaxial curve averaged for the critical state (a test recipe's
+/// critical_fraction; the test job reads the curve's rows past it).
+inline constexpr Range kCriticalFraction = open_closed(0, 1);
+
 /// Parameters of run_element_test (SI).
 struct ElementTestSettings {
   /// Which test: how the walls are driven while loading and when it ends (LoadingPath below).
   const LoadingPath* path = &kTriaxialPath;
-  double confining = 100e3;  ///< consolidation stress, and the lateral stress of a triaxial
+  /// Consolidation stress, and the lateral stress of a triaxial (Pa), in kConfiningStress.
+  double confining = 100e3;
   /// isotropic: stress at the end of loading; oedometer: axial stress at the end (Pa).
   double final_stress = 400e3;
-  double strain_rate = 0.05;  ///< axial strain rate of oedometer and triaxial (1/s)
-  double stress_rate = 0.0;   ///< isotropic loading rate (Pa/s); 0: confining·strain_rate·20
+  /// Axial strain rate of oedometer and triaxial (1/s), in kTestStrainRate.
+  double strain_rate = 0.05;
+  /// Isotropic loading rate (Pa/s), in kStressRate; 0: confining·strain_rate·20.
+  double stress_rate = 0.0;
   /// Oedometer and triaxial, > 0: the platen speeds up with the stress so that the inertial
   /// number of the particles (grain_scale) at the last curve row's axial stress stays at this
   /// value, never slower than strain_rate. A test to stresses a decade and more above the
   /// confining one then spends its steps where the strain is, instead of loading at the rate the
-  /// lowest stress allows. 0: strain_rate throughout.
+  /// lowest stress allows. 0: strain_rate throughout. In kHeldInertialNumber.
   double inertial_number = 0.0;
   /// Oedometer: axial stresses (Pa, ascending, each above `confining` and at most
   /// `final_stress`) where the platen stops and its servo holds the stress (the bottom platen
@@ -71,24 +96,25 @@ struct ElementTestSettings {
   /// ratio at most consolidation_unbalanced, or max_hold_steps. The state at each hold's end
   /// carries no rate part of the stress (the platen is at rest). Empty: a continuous test.
   std::vector<double> hold_stresses;
-  long long max_hold_steps = 200'000;  ///< a hold's step limit
-  double max_axial_strain = 0.2;       ///< triaxial end
+  long long max_hold_steps = 200'000;  ///< a hold's step limit, in kMaxHoldSteps
+  double max_axial_strain = 0.2;       ///< triaxial end, in kMaxAxialStrain
   double friction = -1;                ///< μ of the test (negative: the world's)
   /// μ during the consolidation (negative: the test's). 0 consolidates a frictionless packing
   /// to its densest state at the confining stress, whatever its preparation (a protocol that
   /// makes specimens of different sizes and laws comparable); the test's μ applies from the
   /// start of loading.
   double consolidation_friction = -1;
-  double consolidation_tolerance = 0.005;  ///< relative stress error at equilibrium
+  /// Relative stress error at equilibrium, in kConsolidationTolerance.
+  double consolidation_tolerance = 0.005;
   double consolidation_unbalanced = 1e-3;  ///< unbalanced-force ratio at equilibrium
   long long max_consolidation_steps = 3'000'000;
   ServoGain gain;  ///< max_speed 0: 10 × the platen speed, or height/1000 per 1,000 steps
-  /// Speed limit of every servo-driven wall as a strain rate of the cell (1/s; 0: gain's). Set
-  /// ÷ λ for specimens λ times larger, it keeps the consolidation's inertial number the same
-  /// whatever the time step (the default limit is per step, and the step of a constant-kn
-  /// specimen grows as λ^1.5).
+  /// Speed limit of every servo-driven wall as a strain rate of the cell (1/s, in
+  /// kServoStrainRate; 0: gain's). Set ÷ λ for specimens λ times larger, it keeps the
+  /// consolidation's inertial number the same whatever the time step (the default limit is per
+  /// step, and the step of a constant-kn specimen grows as λ^1.5).
   double servo_strain_rate = 0.0;
-  int record_every = 200;  ///< steps between curve rows
+  int record_every = 200;  ///< steps between curve rows, in kRecordEvery
   /// A crushable specimen (bonded cells): its bodies as built (the reference poses: a fragment
   /// is sized from its cells there, so cells that only deform their bonds change no size), its
   /// grading then (fragment_pieces) and the sieves of Marsal's Bg. Empty: no breakage columns

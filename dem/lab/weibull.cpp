@@ -164,9 +164,7 @@ WeibullEstimate weibull_bootstrap(const std::vector<double>& failed,
     return method == WeibullMethod::least_squares ? weibull_least_squares(f, s)
                                                   : weibull_maximum_likelihood(f, s);
   };
-  if (resamples < 10)
-    throw InvalidInput("Weibull bootstrap: needs at least 10 resamples, got " +
-                       std::to_string(resamples));
+  require(kBootstrapResamples, resamples, "Weibull bootstrap: resamples");
   if (!(level > 0.0 && level < 1.0))
     throw InvalidInput("Weibull bootstrap: level must be in (0, 1), got " + format_number(level));
   WeibullEstimate e;

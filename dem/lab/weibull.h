@@ -3,6 +3,7 @@
 #pragma once
 
 #include "geom/random.h"
+#include "geom/range.h"
 
 #include <utility>
 #include <vector>
@@ -46,10 +47,15 @@ WeibullFit weibull_maximum_likelihood(const std::vector<double>& failed,
 
 enum class WeibullMethod { least_squares, maximum_likelihood };
 
+/// The number of bootstrap resamples weibull_bootstrap takes (the percentiles of its intervals
+/// are read off them).
+inline constexpr Range kBootstrapResamples = integers_from(10);
+
 /// A fit with percentile bootstrap intervals: `resamples` draws of N samples with replacement
 /// (from `rng`, in order, over the failures then the survivors), each fitted; the interval holds
 /// the central `level` of the fitted values (0.9: the 5th and 95th percentiles). Resamples with
-/// fewer than 3 failures or failures all equal are drawn again.
+/// fewer than 3 failures or failures all equal are drawn again. `resamples` in
+/// kBootstrapResamples.
 struct WeibullEstimate {
   WeibullFit fit;
   double sigma0_lo = 0.0, sigma0_hi = 0.0;

@@ -115,9 +115,11 @@ void validate(const CompressionSpec& spec) {
   }
   if (spec.shape != CompressionSpec::Shape::cuboid && spec.size.x() != spec.size.y())
     throw InvalidInput("compression: a cylinder's size is (diameter, diameter, height)");
-  if (spec.shape == CompressionSpec::Shape::segment && !(spec.angle > 0.0 && spec.angle <= M_PI))
-    throw InvalidInput("compression: a segment's angle must be in (0, 180] degrees, got " +
-                       format_number(spec.angle * 180.0 / M_PI));
+  if (spec.shape == CompressionSpec::Shape::segment)
+    require(kSegmentAngleDegrees, spec.angle * 180.0 / M_PI,
+            "compression: segment angle (degrees)");
+  require(kDensity, spec.soil_density, "compression: soil density");
+  require(kDensity, spec.rock_density, "compression: rock density");
   if (!kTargetPorosity.contains(spec.porosity))
     throw InvalidInput("compression: porosity " + outside(kTargetPorosity, spec.porosity) +
                        ", got " + format_number(spec.porosity));
@@ -128,8 +130,7 @@ void validate(const CompressionSpec& spec) {
     throw InvalidInput("compression: loose_factor must be in (1, 10]");
   if (!(spec.strain_per_step > 0.0 && spec.strain_per_step < 0.01))
     throw InvalidInput("compression: strain_per_step must be in (0, 0.01)");
-  if (!(spec.timestep_safety > 0.0 && spec.timestep_safety <= 1.0))
-    throw InvalidInput("compression: timestep_safety must be in (0, 1]");
+  require(kTimestepSafety, spec.timestep_safety, "compression: timestep_safety");
   if (spec.relax_max_steps < 0 || !(spec.relax_unbalanced >= 0))
     throw InvalidInput("compression: relaxation limits must not be negative");
   if (!(spec.wall_excess >= 0.0 && spec.wall_excess < 1.0))

@@ -17,11 +17,17 @@
 
 namespace clumpkit::dem {
 
+/// A segment's angle in degrees (CompressionSpec::angle, in radians): 180 is the half cylinder,
+/// the widest sector two planes through the axis cut.
+inline constexpr Range kSegmentAngleDegrees = open_closed(0, 180);
+
 /// What to build (SI units).
 struct CompressionSpec {
   enum class Shape { cuboid, cylinder, segment };
   Shape shape = Shape::cuboid;
-  double angle = 0.0;  ///< segment: the sector 0 ≤ φ ≤ angle of the cylinder (radians, (0, π])
+  /// Segment: the sector 0 ≤ φ ≤ angle of the cylinder (radians; in degrees, in
+  /// kSegmentAngleDegrees).
+  double angle = 0.0;
   /// Requested container: cuboid edges (x, y, z); cylinder and segment (diameter, diameter,
   /// height) of the whole cylinder. The
   /// built container keeps these proportions and is scaled (by less than one particle's share)
@@ -34,7 +40,7 @@ struct CompressionSpec {
   double friction = 0.0;
   std::vector<ParticleClass> classes;
   std::vector<RockTemplate> templates;
-  double soil_density = 2650, rock_density = 2650;  ///< kg/m³
+  double soil_density = 2650, rock_density = 2650;  ///< kg/m³, each in kDensity
   ContactParams contact;                            ///< the specimen's law (walls frictionless)
   std::uint64_t seed = 1;
   /// The loose packing starts in the container enlarged by this factor in every direction
@@ -44,7 +50,7 @@ struct CompressionSpec {
   /// with the walls, so the packing stays homogeneous): 1e-5 keeps the contact overlaps growing
   /// slower than they relax (about 30,000 steps from the loose state).
   double strain_per_step = 1e-5;
-  double timestep_safety = 0.2;  ///< time step = safety × critical_timestep
+  double timestep_safety = 0.2;  ///< time step = safety × critical_timestep, in kTimestepSafety
   /// Relaxation at the final size: until the mean unbalanced-force ratio is below this, or
   /// relax_max_steps.
   double relax_unbalanced = 1e-3;

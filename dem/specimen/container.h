@@ -2,9 +2,15 @@
 // dem/specimen and the recipes that fill them.
 #pragma once
 
+#include "geom/range.h"
+
 namespace clumpkit::dem {
 
-/// Throws InvalidInput "must be positive and finite, got V" for a container length that is not.
+/// A container's length: a diameter, a height or an edge (m; finite).
+inline constexpr Range kContainerLength = above(0);
+
+/// Throws InvalidInput "must be > 0, got V" (kContainerLength's words, for the caller to prefix
+/// with the field) for a container length outside kContainerLength.
 void check_container_length(double length);
 
 }  // namespace clumpkit::dem

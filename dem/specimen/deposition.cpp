@@ -16,8 +16,7 @@ World make_deposition_world(const std::vector<Body>& bodies,
                        std::to_string(placements.size()) + " placements");
   if (!(spec.radius > 0) || !std::isfinite(spec.radius))
     throw InvalidInput("make_deposition_world: radius must be positive and finite");
-  if (!(spec.timestep_safety > 0) || !std::isfinite(spec.timestep_safety))
-    throw InvalidInput("make_deposition_world: timestep_safety must be positive and finite");
+  require(kTimestepSafety, spec.timestep_safety, "make_deposition_world: timestep_safety");
   WorldOptions options;
   options.contact = spec.contact;
   options.sort_every = 1000;  // placement order is random: sort for locality (as LAMMPS)

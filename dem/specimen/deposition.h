@@ -26,7 +26,8 @@ inline ContactParams deposition_contact() {
 struct DepositionSpec {
   double radius = 0.0;  ///< cylinder radius (m), axis x = y = 0
   ContactParams contact = deposition_contact();
-  double timestep_safety = 0.2;  ///< time step = safety × critical_timestep(world)
+  /// Time step = safety × critical_timestep(world), in kTimestepSafety.
+  double timestep_safety = 0.2;
 };
 
 /// Builds a World from bodies (at the origin, unrotated, with their masses) moved to their
@@ -34,7 +35,8 @@ struct DepositionSpec {
 /// properties, kind and template identity. Walls: the floor plane z = 0 (normal +z) and the inside
 /// of the cylinder of spec.radius around the z-axis. Gravity −9.81 m/s² along z, contact =
 /// spec.contact, time step = spec.timestep_safety × critical_timestep(world). Throws InvalidInput
-/// for mismatched sizes, a body without spheres, a non-positive radius or safety factor.
+/// for mismatched sizes, a body without spheres, a non-positive radius or a safety factor outside
+/// kTimestepSafety.
 World make_deposition_world(const std::vector<Body>& bodies,
                             const std::vector<Placement>& placements, const DepositionSpec& spec);
 

@@ -162,6 +162,8 @@ void check_spec(const SpecimenSpec& s) {
     bad(std::string("container radius and height: ") + e.what());
   }
   require(kSpecimenLayers, s.layers, "specimen: layers");
+  require(kDensity, s.soil_density, "specimen: soil density");
+  require(kDensity, s.rock_density, "specimen: rock density");
   if (s.correction_rounds < 0 || !(s.relative_density_tolerance >= 0))
     bad("correction rounds and tolerance must be non-negative");
   if (s.classes.empty()) bad("the gradation has no classes");

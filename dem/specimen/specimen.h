@@ -31,7 +31,7 @@ struct SpecimenSpec {
   int layers = 3;                      ///< in kSpecimenLayers
   std::vector<ParticleClass> classes;  ///< after fines replacement
   std::vector<RockTemplate> templates;
-  double soil_density = 2700, rock_density = 2870;  ///< kg/m³
+  double soil_density = 2700, rock_density = 2870;  ///< kg/m³, each in kDensity
   /// Contact law; `friction` is the material friction (deposition, final state). Damping as in
   /// deposition_contact() unless set otherwise.
   ContactParams contact;
@@ -43,8 +43,9 @@ struct SpecimenSpec {
   /// Porosity assumed when sizing the calibration sample (its solid volume fills one layer at
   /// this porosity); the measured n(μ) does not depend on it much.
   double porosity_guess = 0.4;
-  /// Time step = safety × min body_critical_timestep. 0.35 measured stable on the srm40
-  /// calibration sample (μ = 0.8: porosity 0.4465 against 0.4456 at 0.2, in half the steps).
+  /// Time step = safety × min body_critical_timestep, in kTimestepSafety (the deposition checks
+  /// it). 0.35 measured stable on the srm40 calibration sample (μ = 0.8: porosity 0.4465 against
+  /// 0.4456 at 0.2, in half the steps).
   double timestep_safety = 0.35;
   /// Equilibrium: Σ|F_net| / Σ weight (unbalanced_to_weight_ratio) below this, or the settled
   /// height rule below.

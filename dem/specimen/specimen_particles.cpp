@@ -12,6 +12,8 @@ namespace clumpkit::dem {
 std::vector<ParticleClass> replace_fines(const std::vector<SieveClass>& gradation,
                                          double fines_below, double fines_min, double fines_max,
                                          double soil_rock_threshold) {
+  require(kFinesBelow, fines_below, "fines: below");
+  require(kSoilRockThreshold, soil_rock_threshold, "soil-rock threshold");
   std::vector<ParticleClass> classes;
   double fines = 0.0;
   for (const SieveClass& c : gradation) {

@@ -5,6 +5,7 @@
 #include "dem/core/body.h"
 #include "dem/specimen/placement.h"
 #include "geom/random.h"
+#include "geom/range.h"
 #include "geom/sphere.h"
 #include "geom/template/clump_template.h"
 
@@ -26,12 +27,22 @@ struct SieveClass {
   double mass_percent = 0.0;
 };
 
+/// The size below which soil counts as fines (replace_fines's fines_below, m; finite).
+inline constexpr Range kFinesBelow = above(0);
+/// The sieve size parting rock classes from soil (replace_fines's soil_rock_threshold, m;
+/// finite).
+inline constexpr Range kSoilRockThreshold = above(0);
+/// The rock's share of a gradation's mass, as a specimen recipe states it: a check of the
+/// classes replace_fines makes rock, not an input of the engine.
+inline constexpr Range kRockMassFraction = closed(0, 1);
+
 /// The particle classes of a gradation (Jin et al. 2017 §4.1): classes without mass are dropped;
 /// the fines (classes whose max size is at most fines_below) are removed and their mass is moved
 /// into the class [fines_min, fines_max] (added at the end when the gradation has no such
 /// class), so the model needs no particles finer than fines_min; classes whose min size is at
 /// least soil_rock_threshold are rock (clumps), the others soil (spheres). Sizes compare with a
-/// tolerance of 1e-12 m. Total mass percent is kept.
+/// tolerance of 1e-12 m. Total mass percent is kept. Throws InvalidInput for fines_below outside
+/// kFinesBelow or soil_rock_threshold outside kSoilRockThreshold.
 std::vector<ParticleClass> replace_fines(const std::vector<SieveClass>& gradation,
                                          double fines_below, double fines_min, double fines_max,
                                          double soil_rock_threshold);

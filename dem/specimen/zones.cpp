@@ -66,7 +66,8 @@ std::vector<std::string> validate_zones(const ZoneLayout& layout, double core_di
   double inner = 0.0;
   for (int k = 0; k < n; ++k) {
     const ZoneRegion& r = z[k];
-    if (!(r.outer > inner) || !std::isfinite(r.outer))
+    require(kZoneOuter, r.outer, name(k) + ": outer bound");
+    if (!(r.outer > inner))
       throw InvalidInput(name(k) + ": outer bound " + format_number(r.outer) +
                          " m must exceed the region before's (" + format_number(inner) +
                          " m): zones overlap");
@@ -83,8 +84,7 @@ std::vector<std::string> validate_zones(const ZoneLayout& layout, double core_di
                            " m wide is narrower than two of its large particles (" +
                            format_number(2.0 * large) + " m)");
     } else {
-      if (!(r.scale > 0.0) || !std::isfinite(r.scale))
-        throw InvalidInput(name(k) + ": scale must be positive, got " + format_number(r.scale));
+      require(kZoneScale, r.scale, name(k) + ": scale");
       // The previous uniform zone (across a mixed layer).
       const int before = k >= 2 && z[k - 1].mixed ? k - 2 : k - 1;
       if (before >= 0) {

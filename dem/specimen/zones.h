@@ -4,6 +4,7 @@
 #pragma once
 
 #include "geom/mesh/mesh.h"
+#include "geom/range.h"
 
 #include <string>
 #include <vector>
@@ -17,14 +18,19 @@ enum class ZoneCoordinate {
   spherical  ///< distance from `origin` (a cavity, a pile tip)
 };
 
+/// A region's outer bound (m; finite; above the previous region's too, as validate_zones checks)
+/// and a uniform zone's size factor λ (finite).
+inline constexpr Range kZoneOuter = above(0);
+inline constexpr Range kZoneScale = above(0);
+
 /// One region of the layout, from the previous region's outer bound (0 for the first) to
 /// `outer` (m). Uniform: the core gradation × `scale`. Mixed: the particles of both neighbouring
 /// zones, the smaller ones making `small_fraction` of the solid volume at the inner bound and
 /// `small_fraction_outer` at the outer one (linear between; equal for a constant fraction).
 struct ZoneRegion {
   bool mixed = false;
-  double outer = 0.0;
-  double scale = 1.0;                 ///< uniform only: λ
+  double outer = 0.0;                 ///< in kZoneOuter
+  double scale = 1.0;                 ///< uniform only: λ, in kZoneScale
   double small_fraction = 0.5;        ///< mixed only
   double small_fraction_outer = 0.5;  ///< mixed only
 };
@@ -65,11 +71,12 @@ double small_fraction_at(const ZoneLayout& layout, int mixed_region, double c);
 bool mis_zoned(double d, double beyond, double placed_largest, double lo, double hi);
 
 /// Throws InvalidInput, naming the region, for a layout CTGU 2017's method cannot build: no
-/// region, bounds not increasing from above 0, a first region that is not a uniform λ = 1 core,
-/// a mixed region first, last or next to another, a small fraction outside [0, 1], a
-/// non-positive λ, neighbouring λ in a ratio above 3 (small particles pass the throats of dense
-/// large ones), or a mixed layer narrower than two of its large particles (`core_diameter` ×
-/// the large λ: the largest core particle). Returns the warnings: λ ratios above 2.
+/// region, a bound outside kZoneOuter or not above the one before, a first region that is not a
+/// uniform λ = 1 core, a mixed region first, last or next to another, a small fraction outside
+/// [0, 1], a λ outside kZoneScale, neighbouring λ in a ratio above 3 (small particles pass the
+/// throats of dense large ones), or a mixed layer narrower than two of its large particles
+/// (`core_diameter` × the large λ: the largest core particle). Returns the warnings: λ ratios
+/// above 2.
 std::vector<std::string> validate_zones(const ZoneLayout& layout, double core_diameter);
 
 }  // namespace clumpkit::dem

@@ -41,9 +41,7 @@ void add_points(std::vector<FacePoint>& out, const Vec3& a, const Vec3& b, const
 std::vector<CellBond> cell_bonds(const Tessellation& t, const Distribution& strength, Rng& rng,
                                  int subdivisions) {
   validate(strength, "strength factor");
-  if (subdivisions < 0 || subdivisions > 3)
-    throw InvalidInput("cell bonds: subdivisions must be in [0, 3], got " +
-                       std::to_string(subdivisions));
+  require(kFaceSubdivisions, subdivisions, "cell bonds: subdivisions");
   std::vector<CellBond> bonds;
   for (std::size_t a = 0; a < t.cells.size(); ++a) {
     const Cell& cell = t.cells[a];

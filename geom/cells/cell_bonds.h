@@ -10,6 +10,10 @@
 
 namespace clumpkit {
 
+/// The subdivisions s of cell_bonds: each fan triangle of a face splits into 4^s integration
+/// points (a numerical control; 3 gives 64 per triangle).
+inline constexpr Range kFaceSubdivisions = integers(0, 3);
+
 /// An integration point of a bond: a position on the face and the face area it stands for.
 struct FacePoint {
   Vec3 position = Vec3::Zero();
@@ -39,7 +43,7 @@ Distribution default_strength_factor();
 /// Faces of zero area bound nothing and carry no bond. Strength factors are drawn from
 /// `strength` with `rng` in bond order. `subdivisions` s splits each fan triangle 4^s times at
 /// its edge midpoints (more points per face, the same area and centroid: a numerical control).
-/// Throws InvalidInput for s outside [0, 3].
+/// Throws InvalidInput for s outside kFaceSubdivisions.
 std::vector<CellBond> cell_bonds(const Tessellation& cells, const Distribution& strength, Rng& rng,
                                  int subdivisions = 0);
 

@@ -99,14 +99,13 @@ bool inside(const std::vector<Halfspace>& planes, const Vec3& p, double margin) 
 }  // namespace
 
 void validate(const CellOptions& o) {
-  if ((o.count > 0) == (o.cell_size > 0.0))
+  if ((o.count > 0) == kCellSize.contains(o.cell_size))
     throw InvalidInput("cells: give exactly one of a cell count and a cell size, got count " +
                        std::to_string(o.count) + " and cell size " + format_number(o.cell_size));
   if (o.count != 0 && (o.count < 2 || o.count > 100000))
     throw InvalidInput("cells: count must be in [2, 100000], got " + std::to_string(o.count));
   if (o.count == 0) check_size(o.cell_size, "cells: cell size");
-  if (o.lloyd < 0 || o.lloyd > 100)
-    throw InvalidInput("cells: lloyd steps must be in [0, 100], got " + std::to_string(o.lloyd));
+  require(kLloydSteps, o.lloyd, "cells: lloyd steps");
 }
 
 std::vector<Halfspace> convex_planes(const Mesh& mesh) {

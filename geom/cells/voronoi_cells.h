@@ -4,6 +4,7 @@
 
 #include "geom/mesh/mesh.h"
 #include "geom/random.h"
+#include "geom/range.h"
 #include "geom/shapes/halfspaces.h"
 #include "geom/sphere.h"
 
@@ -11,22 +12,28 @@
 
 namespace clumpkit {
 
+/// A cell size ℓ (CellOptions::cell_size; 0 there: a count instead), in the parent's units; as a
+/// length it is further held to geom/limits.h's sizes.
+inline constexpr Range kCellSize = above(0);
+/// The Lloyd steps after the seeds are drawn (CellOptions::lloyd; 0: raw Poisson–Voronoi cells).
+inline constexpr Range kLloydSteps = integers(0, 100);
+
 /// How a parent is cut. Exactly one of `count` and `cell_size` is set (> 0).
 struct CellOptions {
   /// Number of cells N.
   int count = 0;
   /// Cell size ℓ, a cell's volume-equivalent diameter: N = round((D/ℓ)³) with D the parent's
   /// volume-equivalent diameter (ℓ = 6.5 mm gives Hu et al. 2023's 75, 114, 165, 229 and 307
-  /// cells at 27.5 … 43.9 mm within one cell). Units of the parent.
+  /// cells at 27.5 … 43.9 mm within one cell). Units of the parent; in kCellSize when set.
   double cell_size = 0.0;
   /// Lloyd steps (each seed moved to its cell's centroid) after the uniform random seeds: the
   /// paper's cells are "sub-particles of similar size" (a regularised tessellation); 0 keeps the
-  /// raw Poisson–Voronoi cells.
+  /// raw Poisson–Voronoi cells. In kLloydSteps.
   int lloyd = 3;
 };
 
-/// Throws InvalidInput for a count and a size both set or neither, a count below 2 or above
-/// 100000, a size that is not a positive length, or lloyd outside [0, 100].
+/// Throws InvalidInput for a count and a size (in kCellSize) both set or neither, a count below
+/// 2 or above 100000, a size that is not a positive length, or lloyd outside kLloydSteps.
 void validate(const CellOptions& options);
 
 /// One face of a cell: its vertices in order, counter-clockwise seen from outside the cell, and

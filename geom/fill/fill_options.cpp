@@ -20,9 +20,7 @@ void validate(const FillOptions& o) {
     throw InvalidInput("--relative-tolerance must be in [0, 1), got " +
                        std::to_string(o.tolerance_relative));
   require(kMaxOvershoot, o.max_overshoot, "--max-overshoot");
-  if (o.refine_iterations < 0 || o.refine_iterations > 1000)
-    throw InvalidInput("--refine-iterations must be in [0, 1000], got " +
-                       std::to_string(o.refine_iterations));
+  require(kRefineIterations, o.refine_iterations, "--refine-iterations");
   if (!std::isfinite(o.refine_work))
     throw InvalidInput("refine_work must be finite, got " + std::to_string(o.refine_work));
   if (!(o.refine_min_gain >= 0.0) || !std::isfinite(o.refine_min_gain))

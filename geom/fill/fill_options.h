@@ -17,6 +17,8 @@ inline constexpr Range kCoverage = closed(0, 1);
 inline constexpr Range kMinRadius = at_least(0);
 /// The clump's volume outside the mesh over the mesh's volume (FillOptions::max_overshoot).
 inline constexpr Range kMaxOvershoot = closed_open(0, 1);
+/// Sweeps of the refinement after the greedy pass (FillOptions::refine_iterations; 0: none).
+inline constexpr Range kRefineIterations = integers(0, 1000);
 
 /// Stop rules and resolution. The fill stops at the first rule met; with neither `spheres` nor
 /// `coverage` given it stops at 50 spheres.
@@ -47,7 +49,8 @@ struct FillOptions {
   /// Sweeps of the refinement after the greedy pass (geom/fill/fill_refine.h: every sphere moved
   /// to cover more of what the others leave, within the contract); 0: none. Sweeps stop early
   /// once one gains less than refine_min_gain of the volume, so the default rarely runs them all.
-  /// The budget is in sweeps, not seconds, so the clump does not depend on the machine.
+  /// The budget is in sweeps, not seconds, so the clump does not depend on the machine. In
+  /// kRefineIterations.
   int refine_iterations = 8;
   double refine_min_gain = 2e-4;
   /// The refinement's time budget, as a multiple of the greedy pass's coverage counts
@@ -84,8 +87,8 @@ FieldOptions fill_field_options(const Mesh& mesh, const FillOptions& options);
 
 /// Throws InvalidInput for a sphere budget outside kSphereBudget (0: none), field.voxels outside
 /// kFieldVoxels where no voxel_size is given, coverage outside kCoverage, min_radius outside
-/// kMinRadius, max_overshoot outside kMaxOvershoot, or a mesh without interior voxels at this
-/// resolution.
+/// kMinRadius, max_overshoot outside kMaxOvershoot, refine_iterations outside kRefineIterations,
+/// or a mesh without interior voxels at this resolution.
 void validate(const FillOptions& options);
 
 }  // namespace clumpkit

@@ -74,9 +74,7 @@ void validate(const FractionSpec& spec, const std::string& prefix) {
     if (!spec.params.empty())
       throw InvalidInput(prefix + "." + spec.params.begin()->first +
                          ": unknown parameter for method mesh (known: folder, scale)");
-    if (!(std::isfinite(spec.scale) && spec.scale > 0))
-      throw InvalidInput(prefix + ".scale: must be a positive number, got " +
-                         format_number(spec.scale));
+    require(kMeshScale, spec.scale, prefix + ".scale");
     if (spec.count != static_cast<int>(spec.files.size()))
       throw InvalidInput(prefix + ".count: " + std::to_string(spec.count) + " particles but " +
                          std::to_string(spec.files.size()) + " mesh files");
@@ -88,9 +86,7 @@ void validate(const FractionSpec& spec, const std::string& prefix) {
   } catch (const InvalidInput& e) {
     throw InvalidInput(prefix + ".method: " + e.what());
   }
-  if (spec.count < 0 || spec.count > 10000000)
-    throw InvalidInput(prefix + ".count: must be in [0, 10000000], got " +
-                       std::to_string(spec.count));
+  require(kFractionCount, spec.count, prefix + ".count");
   for (const auto& [name, d] : spec.params) {
     bool known = false;
     for (const auto& p : *table) known |= p.name == name;

@@ -140,6 +140,12 @@ void add_weld_option(CLI::App* command, double& weld_tolerance) {
       ->capture_default_str();
 }
 
+CLI::Option* add_length_unit_option(CLI::App* command, std::string& symbol,
+                                    const std::string& help) {
+  if (symbol.empty()) symbol = "L";
+  return command->add_option("--length-unit", symbol, help);
+}
+
 void add_repair_options(CLI::App* command, RepairOptions& options, std::string& wrap) {
   command
       ->add_option("--min-component", options.min_component,

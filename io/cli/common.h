@@ -37,6 +37,14 @@ void register_repair(CLI::App& app);
 /// The --weld-tolerance option of the commands that read a mesh (MeshReadOptions).
 void add_weld_option(CLI::App* command, double& weld_tolerance);
 
+/// The --length-unit option of the geometry commands (docs/units.md), read into `symbol`
+/// (default "L", the input's own unit); length_unit (io/base/units.h) checks it. `help` replaces
+/// the text that speaks of a mesh. Returns the option (its count() says whether it was given).
+CLI::Option* add_length_unit_option(CLI::App* command, std::string& symbol,
+                                    const std::string& help =
+                                        "The input mesh's length unit, e.g. mm: only labels the "
+                                        "output (default L, the mesh's unit)");
+
 /// The options of the repair chain (geom/mesh/repair.h), for `repair` and `fill --repair`:
 /// --min-component, --wrap, --wrap-alpha, --wrap-offset. `wrap` receives the text of --wrap;
 /// repair_options_from turns it into the mode after parsing.

@@ -21,7 +21,10 @@ void register_compare_curves(CLI::App& app) {
       "x over the overlap of their x ranges, ends included, each curve linearly interpolated: "
       "residual_abs = mean (b - a)^2 and residual_rel = mean ((b - a)/a)^2 (over the points where "
       "a != 0). The paper's printed equation is garbled between the two, so both are given. "
-      "Columns are picked by their header names; x must increase strictly in each file. --from "
+      "Columns are picked by their header names, with or without their unit (depth or depth[m]; "
+      "the names of files written before units, depth_m or qc_pa, read as depth and qc); the "
+      "JSON's units give from and to in x's unit and residual_abs in y's squared. x must "
+      "increase strictly in each file. --from "
       "and --to narrow the range compared (e.g. --from 0.018 leaves out a push's first cone "
       "diameter, where qc near zero dominates residual_rel).");
   c->add_option("A", o->job.a, "Reference curve (CSV with a header line)")->required();

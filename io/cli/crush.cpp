@@ -1,6 +1,7 @@
 // `clumpkit crush --recipe R.toml --out DIR`: sets of crushable particles crushed between
 // platens, with Weibull strength statistics and the size law (Hu et al. 2023).
 #include "io/pipeline/crush.h"
+#include "io/base/units.h"
 #include "io/cli/common.h"
 
 #include <nlohmann/json.hpp>
@@ -46,6 +47,7 @@ void register_crush(CLI::App& app) {
       nlohmann::ordered_json j = r.report;
       j["resumed"] = r.resumed;
       j["seconds"] = seconds;
+      add_units(j, si_length());
       std::cout << j.dump(2) << "\n";
       finish_page(o->run);
       return;

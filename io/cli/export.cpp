@@ -1,6 +1,7 @@
 // `clumpkit export FORMAT SRC --out DIR`: a specimen, library or clump into a DEM engine.
 #include "io/pipeline/export.h"
 #include "geom/errors.h"
+#include "io/base/units.h"
 #include "io/cli/common.h"
 #include "io/export/formats.h"
 
@@ -82,13 +83,13 @@ void register_export(CLI::App& app) {
     }
     const ExportResult r = run_export(o->format, o->source, o->out, o->options);
     if (o->json) {
-      std::cout << nlohmann::ordered_json{{"format", r.format},
-                                          {"bodies", r.bodies},
-                                          {"spheres", r.spheres},
-                                          {"files", r.files},
-                                          {"run", r.run}}
-                       .dump(2)
-                << "\n";
+      nlohmann::ordered_json j{{"format", r.format},
+                               {"bodies", r.bodies},
+                               {"spheres", r.spheres},
+                               {"files", r.files},
+                               {"run", r.run}};
+      add_units(j, si_length());
+      std::cout << j.dump(2) << "\n";
     } else {
       std::printf("exported %zu bodies (%zu spheres) for %s to %s; run: cd %s && %s\n", r.bodies,
                   r.spheres, r.format.c_str(), o->out.c_str(), o->out.c_str(), r.run.c_str());

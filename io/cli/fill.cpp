@@ -3,6 +3,7 @@
 #include "io/pipeline/fill.h"
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "io/base/units.h"
 #include "io/cli/common.h"
 
 #include <nlohmann/json.hpp>
@@ -13,9 +14,41 @@
 
 namespace clumpkit::cli {
 
+namespace {
+
+// The printed report of `clumpkit fill` (without --json); lengths in `length`.
+void print_fill_report(const FillJobResult& r, const std::string& out, const LengthUnit& length) {
+  const nlohmann::ordered_json& j = r.report;
+  const Fidelity& f = r.fidelity;
+  const auto& phase = j["seconds_by_phase"];
+  std::printf(
+      "wrote %s: %d spheres (stopped by %s), covered %.4f, overshoot %.4f, surface gap "
+      "mean %s %s max %s %s, %.3f s (read %.3f, index %.3f, field %.3f, fill %.3f, fidelity "
+      "%.3f)\n",
+      out.c_str(), f.spheres, r.fill.stopped_by.c_str(), f.covered_fraction, f.overshoot_fraction,
+      format_number(f.surface_mean_distance).c_str(), length.symbol.c_str(),
+      format_number(f.surface_max_distance).c_str(), length.symbol.c_str(),
+      j["seconds"].get<double>(), phase["read"].get<double>(), phase["index"].get<double>(),
+      phase["field"].get<double>(), phase["fill"].get<double>(), phase["fidelity"].get<double>());
+  const auto& res = j["resolution"];
+  if (res.contains("covered_change"))
+    std::printf("at twice the voxels (voxel %s %s): covered %.4f, a change of %+.4f\n",
+                format_number(res["finer_voxel"].get<double>()).c_str(), length.symbol.c_str(),
+                res["covered_fraction_finer"].get<double>(), res["covered_change"].get<double>());
+  if (r.fill.refine_sweeps > 0 || r.fill.grow_steps > 0)
+    std::printf(
+        "refined in %d sweeps (%d moves), %d steps of growth within the overshoot budget: "
+        "covered %.4f -> %.4f, overshoot %.4f -> %.4f\n",
+        r.fill.refine_sweeps, r.fill.refine_moves, r.fill.grow_steps,
+        r.greedy_fidelity.covered_fraction, f.covered_fraction,
+        r.greedy_fidelity.overshoot_fraction, f.overshoot_fraction);
+}
+
+}  // namespace
+
 void register_fill(CLI::App& app) {
   struct Opts {
-    std::string mesh, out, png, vtp, wrap;
+    std::string mesh, out, png, vtp, wrap, length_unit = "L";
     FillOptions fill;
     RepairOptions repair;
     int spheres = -1;
@@ -79,7 +112,9 @@ void register_fill(CLI::App& app) {
                 "diameter, Scale Factor 1)");
   c->add_flag("--json", o->json, "Print the fidelity report as JSON on stdout");
   add_weld_option(c, o->read.weld_tolerance);
+  add_length_unit_option(c, o->length_unit);
   c->callback([o, voxels, voxel_size] {
+    const LengthUnit length = length_unit(o->length_unit);
     if (o->spheres == 0 || o->spheres < -1)
       throw InvalidInput("--spheres must be at least 1, got " + std::to_string(o->spheres));
     o->fill.spheres = std::max(0, o->spheres);
@@ -98,36 +133,12 @@ void register_fill(CLI::App& app) {
     job.read = o->read;
     job.repair = o->repair_first;
     job.repair_options = repair_options_from(o->repair, o->wrap);
+    job.length = length;
     const FillJobResult r = run_fill_job(job, note, warning);
-    const nlohmann::ordered_json& j = r.report;
-    const Fidelity& f = r.fidelity;
-    const auto& phase = j["seconds_by_phase"];
-    if (o->json) {
-      std::cout << j.dump(2) << "\n";
-    } else {
-      std::printf(
-          "wrote %s: %d spheres (stopped by %s), covered %.4f, overshoot %.4f, surface gap "
-          "mean %s max %s, %.3f s (read %.3f, index %.3f, field %.3f, fill %.3f, fidelity "
-          "%.3f)\n",
-          o->out.c_str(), f.spheres, r.fill.stopped_by.c_str(), f.covered_fraction,
-          f.overshoot_fraction, format_number(f.surface_mean_distance).c_str(),
-          format_number(f.surface_max_distance).c_str(), j["seconds"].get<double>(),
-          phase["read"].get<double>(), phase["index"].get<double>(), phase["field"].get<double>(),
-          phase["fill"].get<double>(), phase["fidelity"].get<double>());
-      const auto& res = j["resolution"];
-      if (res.contains("covered_change"))
-        std::printf("at twice the voxels (voxel %s): covered %.4f, a change of %+.4f\n",
-                    format_number(res["finer_voxel"].get<double>()).c_str(),
-                    res["covered_fraction_finer"].get<double>(),
-                    res["covered_change"].get<double>());
-      if (r.fill.refine_sweeps > 0 || r.fill.grow_steps > 0)
-        std::printf(
-            "refined in %d sweeps (%d moves), %d steps of growth within the overshoot budget: "
-            "covered %.4f -> %.4f, overshoot %.4f -> %.4f\n",
-            r.fill.refine_sweeps, r.fill.refine_moves, r.fill.grow_steps,
-            r.greedy_fidelity.covered_fraction, f.covered_fraction,
-            r.greedy_fidelity.overshoot_fraction, f.overshoot_fraction);
-    }
+    if (o->json)
+      std::cout << r.report.dump(2) << "\n";
+    else
+      print_fill_report(r, o->out, length);
   });
 }
 

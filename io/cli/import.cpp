@@ -1,6 +1,7 @@
 // `clumpkit import lammps RUN_DIR --specimen DIR --out DIR2`: an engine's run back into a
 // specimen directory, measured as clumpkit measures its own.
 #include "io/pipeline/import.h"
+#include "io/base/units.h"
 #include "io/cli/common.h"
 
 #include <nlohmann/json.hpp>
@@ -34,17 +35,17 @@ void register_import(CLI::App& app) {
   c->callback([o] {
     const ImportResult r = run_import(o->engine, o->run_dir, o->specimen, o->out);
     if (o->json) {
-      std::cout << nlohmann::ordered_json{{"engine", r.engine},
-                                          {"bodies", r.bodies},
-                                          {"lost_bodies", r.lost},
-                                          {"porosity", r.porosity},
-                                          {"relative_density", r.relative_density},
-                                          {"source_relative_density", r.source_relative_density},
-                                          {"height", r.height},
-                                          {"fit_residual", r.fit_residual},
-                                          {"files", r.files}}
-                       .dump(2)
-                << "\n";
+      nlohmann::ordered_json j{{"engine", r.engine},
+                               {"bodies", r.bodies},
+                               {"lost_bodies", r.lost},
+                               {"porosity", r.porosity},
+                               {"relative_density", r.relative_density},
+                               {"source_relative_density", r.source_relative_density},
+                               {"height", r.height},
+                               {"fit_residual", r.fit_residual},
+                               {"files", r.files}};
+      add_units(j, si_length());
+      std::cout << j.dump(2) << "\n";
     } else {
       std::printf(
           "imported %zu bodies (%zu lost) from %s: porosity %.4f, relative density %.3f "

@@ -1,5 +1,6 @@
 // `clumpkit library --recipe R.toml --out DIR`: shapes + sphere fill + fidelity per particle.
 #include "io/pipeline/library.h"
+#include "io/base/units.h"
 #include "io/cli/common.h"
 #include "io/recipes/recipe.h"
 
@@ -64,12 +65,12 @@ void register_library(CLI::App& app) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (o->run.job.json) {
-      std::cout << nlohmann::json{{"particles", r.particles},
+      nlohmann::ordered_json j = {{"particles", r.particles},
                                   {"resumed", r.resumed},
                                   {"out", r.out_dir},
-                                  {"seconds", seconds}}
-                       .dump(2)
-                << "\n";
+                                  {"seconds", seconds}};
+      add_units(j, si_length());
+      std::cout << j.dump(2) << "\n";
     } else {
       std::printf(
           "wrote %zu particles to %s (%zu kept from an earlier run) in %.1f s: particles/, "

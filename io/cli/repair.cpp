@@ -2,6 +2,7 @@
 // commands accept.
 #include "io/pipeline/repair.h"
 #include "geom/format.h"
+#include "io/base/units.h"
 #include "io/cli/common.h"
 
 #include <cstdio>
@@ -12,7 +13,7 @@ namespace clumpkit::cli {
 
 void register_repair(CLI::App& app) {
   struct Opts {
-    std::string mesh, out, wrap;
+    std::string mesh, out, wrap, length_unit = "L";
     bool json = false;
     MeshReadOptions read;
     RepairOptions repair;
@@ -39,21 +40,23 @@ void register_repair(CLI::App& app) {
   c->add_flag("--json", o->json, "Print the report as JSON on stdout");
   add_repair_options(c, o->repair, o->wrap);
   add_weld_option(c, o->read.weld_tolerance);
+  add_length_unit_option(c, o->length_unit);
   c->callback([o] {
+    const LengthUnit length = length_unit(o->length_unit);
     const RepairJobResult r =
-        run_repair_job(o->mesh, o->out, o->read, repair_options_from(o->repair, o->wrap));
+        run_repair_job(o->mesh, o->out, o->read, repair_options_from(o->repair, o->wrap), length);
     for (const std::string& w : r.repair.warnings) warning(o->out + ": " + w);
     if (o->json) {
       std::cout << r.report.dump(2) << "\n";
       return;
     }
-    for (const std::string& line : repair_lines(r.repair, r.read))
+    for (const std::string& line : repair_lines(r.repair, r.read, length))
       std::printf("%s\n", line.c_str());
     const RepairReport& p = r.repair;
-    std::printf("wrote %s: %zu triangles; boundary edges %d -> %d, volume %s -> %s; %.2f s\n",
+    std::printf("wrote %s: %zu triangles; boundary edges %d -> %d, volume %s -> %s %s; %.2f s\n",
                 o->out.c_str(), r.triangles, p.boundary_edges_before, p.boundary_edges_after,
                 format_number(p.volume_before, 6).c_str(), format_number(p.volume_after, 6).c_str(),
-                r.seconds);
+                length.pow(3).c_str(), r.seconds);
   });
 }
 

@@ -6,6 +6,7 @@
 #include "geom/shapes/hull.h"
 #include "geom/shapes/polyhedron.h"
 #include "geom/shapes/primitives.h"
+#include "io/base/units.h"
 #include "io/cli/common.h"
 #include "io/formats/descriptor_table.h"
 #include "io/formats/mesh_io.h"
@@ -19,7 +20,7 @@ namespace clumpkit::cli {
 namespace {
 
 struct Common {
-  std::string out;
+  std::string out, length_unit = "L";
   std::uint64_t seed = 1;
   bool json = false;
 };
@@ -28,9 +29,13 @@ void add_common(CLI::App* c, Common& o, bool seeded) {
   c->add_option("-o,--output", o.out, "Output mesh (.stl, .obj or .ply)")->required();
   if (seeded) c->add_option("--seed", o.seed, "Random seed")->capture_default_str();
   c->add_flag("--json", o.json, "Print the descriptors of the result as JSON on stdout");
+  add_length_unit_option(c, o.length_unit,
+                         "The length unit of the lengths given here, e.g. mm: only labels the "
+                         "output (default L, the unit they are in)");
 }
 
 void finish(const Mesh& mesh, const Common& o, nlohmann::json extra = {}) {
+  const LengthUnit length = length_unit(o.length_unit);
   const Descriptors d = describe(mesh);
   write_mesh(o.out, mesh);
   if (o.json) {
@@ -38,14 +43,16 @@ void finish(const Mesh& mesh, const Common& o, nlohmann::json extra = {}) {
     j["file"] = o.out;
     j["triangles"] = mesh.triangles.size();
     for (auto& [k, v] : extra.items()) j[k] = v;
-    std::cout << j.dump(2) << "\n";
+    nlohmann::ordered_json out = j;
+    add_units(out, length);
+    std::cout << out.dump(2) << "\n";
   } else {
     std::printf(
-        "wrote %s: %zu triangles, volume %s, L x W x H %s x %s x %s, sphericity %.4f, "
+        "wrote %s: %zu triangles, volume %s %s, L x W x H %s x %s x %s %s, sphericity %.4f, "
         "weighted roundness %.4f\n",
         o.out.c_str(), mesh.triangles.size(), format_number(d.volume).c_str(),
-        format_number(d.L).c_str(), format_number(d.W).c_str(), format_number(d.H).c_str(),
-        d.sphericity, d.roundness.weighted);
+        length.pow(3).c_str(), format_number(d.L).c_str(), format_number(d.W).c_str(),
+        format_number(d.H).c_str(), length.symbol.c_str(), d.sphericity, d.roundness.weighted);
     for (auto& [k, v] : extra.items()) std::printf("  %s: %s\n", k.c_str(), v.dump().c_str());
   }
 }

@@ -1,5 +1,6 @@
 // `clumpkit shapes --recipe R.toml --out DIR`: a shape library from a recipe.
 #include "io/pipeline/shapes.h"
+#include "io/base/units.h"
 #include "io/cli/common.h"
 #include "io/recipes/recipe.h"
 
@@ -30,7 +31,9 @@ void register_shapes(CLI::App& app) {
     const auto r = run_shape_batch(recipe, o->run.out, signal_interrupter(bar, "shapes"));
     bar.finish();
     if (o->run.job.json) {
-      std::cout << nlohmann::json{{"particles", r.particles}, {"out", r.out_dir}}.dump(2) << "\n";
+      nlohmann::ordered_json j = {{"particles", r.particles}, {"out", r.out_dir}};
+      add_units(j, si_length());
+      std::cout << j.dump(2) << "\n";
     } else {
       std::printf("wrote %zu particles to %s (meshes/, shapes.csv, manifest.json)\n", r.particles,
                   r.out_dir.c_str());

@@ -2,6 +2,7 @@
 // several methods (exact power diagram, inclusion–exclusion, analytic and pixel slicing, voxels).
 #include "io/pipeline/volume.h"
 #include "geom/format.h"
+#include "io/base/units.h"
 #include "io/cli/common.h"
 
 #include <nlohmann/json.hpp>
@@ -14,7 +15,7 @@ namespace clumpkit::cli {
 
 void register_volume(CLI::App& app) {
   struct Opts {
-    std::string clump, method = "exact", rule = "touch", png;
+    std::string clump, method = "exact", rule = "touch", png, length_unit;
     int slices = 100;
     double pixel = 0.0, voxel = 0.0;
     double max_memory_gib = 0;  // 0: half of this machine's memory
@@ -46,8 +47,13 @@ void register_volume(CLI::App& app) {
                         "a method estimated to need more than this many GiB, before computing "
                         "anything");
   c->add_flag("--json", o->json, "Print one JSON object keyed by method on stdout");
-  c->callback([o] {
+  auto* unit = add_length_unit_option(
+      c, o->length_unit,
+      "The clump file's length unit, e.g. mm: only labels the output (default: the unit its "
+      "header names, else L, the file's unit)");
+  c->callback([o, unit] {
     VolumeJobOptions job;
+    if (unit->count() > 0) job.length_unit = o->length_unit;
     job.clump = o->clump;
     job.method = o->method;
     job.slices = o->slices;
@@ -59,20 +65,23 @@ void register_volume(CLI::App& app) {
     const VolumeJobResult r = run_volume_job(job);
     const nlohmann::ordered_json& out = r.methods;
     if (o->json) {
-      std::cout << out.dump(2) << "\n";
+      nlohmann::ordered_json with_units = out;
+      add_units(with_units, r.length);
+      std::cout << with_units.dump(2) << "\n";
       return;
     }
     std::printf("%s: %zu spheres\n", o->clump.c_str(), r.spheres);
     for (const auto& [method, j] : out.items()) {
-      std::printf("  %-20s volume %s", method.c_str(),
-                  format_number(j["volume"].get<double>()).c_str());
+      std::printf("  %-20s volume %s %s", method.c_str(),
+                  format_number(j["volume"].get<double>()).c_str(), r.length.pow(3).c_str());
       if (j.contains("area"))
-        std::printf("  area %s", format_number(j["area"].get<double>()).c_str());
+        std::printf("  area %s %s", format_number(j["area"].get<double>()).c_str(),
+                    r.length.pow(2).c_str());
       if (j.contains("centroid"))
-        std::printf("  centroid (%s, %s, %s)",
+        std::printf("  centroid (%s, %s, %s) %s",
                     format_number(j["centroid"][0].get<double>()).c_str(),
                     format_number(j["centroid"][1].get<double>()).c_str(),
-                    format_number(j["centroid"][2].get<double>()).c_str());
+                    format_number(j["centroid"][2].get<double>()).c_str(), r.length.symbol.c_str());
       std::printf("  %.4f s\n", j["seconds"].get<double>());
     }
   });

@@ -2,6 +2,7 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "io/base/units.h"
 
 #include <algorithm>
 #include <cmath>
@@ -69,7 +70,8 @@ void write_lammps_infile(std::ostream& o, const std::vector<SpecimenBody>& bodie
 /// bodies_map.csv: which LAMMPS molecule or atom each specimen body became.
 void write_lammps_body_map(std::ostream& o, const std::vector<SpecimenBody>& bodies) {
   o << "# specimen.csv body id -> LAMMPS id: molecule id (rock, fix rigid/small) or atom id "
-       "(soil)\nbody,lammps_kind,lammps_id\n";
+       "(soil)\n"
+    << csv_header("bodies_map", "body,lammps_kind,lammps_id", si_length()) << "\n";
   std::size_t atom = 0;
   for (const SpecimenBody& b : bodies) {
     const bool rock = b.kind == dem::BodyKind::rock;
@@ -190,7 +192,9 @@ void write_lammps_oedometer(std::ostream& o, const EngineSettings& settings,
     << "variable    stress equal -c_pf/(PI*" << format_number(settings.container_radius) << "^2)\n"
     << "variable    nload equal ceil(${maxstrain}/(${rate}*dt))\n"
        "fix         curve all print 100 \"$(v_strain:%.17g),$(v_stress:%.17g)\" file "
-       "oedometer.csv screen no title \"strain,stress_pa\"\n"
+       "oedometer.csv screen no title \""
+    << csv_header("oedometer", "strain,stress", si_length())
+    << "\"\n"
        "thermo_style custom step v_strain v_stress cpu\n"
        "thermo_modify lost ignore norm no\n"
        "thermo      1000\n"

@@ -2,6 +2,7 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "io/formats/cpt_curve.h"
 
 #include <cmath>
 #include <functional>
@@ -186,7 +187,8 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
        "# penetration test of `clumpkit test cpt` on this specimen, in the probe's frame (the\n"
        "# probe is one static region; the chamber moves up at the push speed). Any number of\n"
        "# ranks:   lmp -in in.clumpkit     or     mpirun -np N lmp -in in.clumpkit\n"
-       "# cpt.csv: step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa every ${every} steps.\n"
+    << "# cpt.csv: " << cpt_curve_header()
+    << " every ${every} steps.\n"
        "# -var apex Z: the apex's start height (default: the highest sphere surface);\n"
        "# -var dt T: the time step (default: the test's of a consolidated state, else a tenth\n"
        "# of the lightest sphere's period); -var depth D: push to D (m) instead; -var every N:\n"
@@ -283,8 +285,9 @@ void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSe
        "# Whole rows, as clumpkit's push: the last at or just past the depth.\n"
        "variable    npush equal ${every}*ceil(${depth}/(${v}*dt*${every}))\n"
        "fix         curve all print ${every} \"$(step-v_s0),$(v_rise:%.17g),$(v_tip:%.17g),"
-       "$(v_sleeve:%.17g),$(v_qc:%.17g),$(v_fs:%.17g)\" file cpt.csv screen no title "
-       "\"step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa\"\n"
+       "$(v_sleeve:%.17g),$(v_qc:%.17g),$(v_fs:%.17g)\" file cpt.csv screen no title \""
+    << cpt_curve_header()
+    << "\"\n"
        "thermo_style custom step v_rise v_qc v_saxial v_slateral cpu\n"
        "thermo_modify lost ignore norm no\n"
        "thermo      1000\n"

@@ -42,11 +42,11 @@ void check_lammps_cpt(const LammpsCpt& cpt, const EngineSettings& settings,
 /// is the same), so this is the push in the laboratory's frame. A contact's point (column 7 of the
 /// probe fix's per-atom contacts) below the shoulder is the tip's, else the sleeve's: each contact
 /// on one part. Every `-var every N` steps (default the test's record_every) a row of cpt.csv:
-/// step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa as `clumpkit test cpt`'s curve.csv (forces
-/// on the probe, upwards positive; fs over the shaft below the lid); the push ends at the recipe's
-/// depth; atoms.final.txt (id mol x y z radius fx fy fz) at the end. With stiffness classes the
-/// pairs run pair_style granular (hooke, linear_history, mass_velocity damping: the same law) and
-/// every wall is one fix per class, their forces summed.
+/// step,depth[m],tip_force[N],sleeve_force[N],qc[Pa],fs[Pa] as `clumpkit test cpt`'s curve.csv
+/// (forces on the probe, upwards positive; fs over the shaft below the lid); the push ends at the
+/// recipe's depth; atoms.final.txt (id mol x y z radius fx fy fz) at the end. With stiffness
+/// classes the pairs run pair_style granular (hooke, linear_history, mass_velocity damping: the
+/// same law) and every wall is one fix per class, their forces summed.
 void write_lammps_cpt_deck(std::ostream& o, const LammpsCpt& cpt, const EngineSettings& settings,
                            const LammpsContact& contact, bool rocks, bool soils);
 

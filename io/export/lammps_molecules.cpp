@@ -2,6 +2,7 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "io/base/units.h"
 #include "io/export/lammps_deck.h"
 
 #include <algorithm>
@@ -53,7 +54,8 @@ std::vector<std::string> write_lammps_molecules(const std::vector<SpecimenBody>&
 
   files.push_back(write_export_file(dir, "molecules.csv", [&](std::ostream& o) {
     o << "# LAMMPS atom type -> clumpkit template: every atom of a body deposited from a molecule "
-         "file has its type\ntype,template,file,mass,I1,I2,I3,spheres\n";
+         "file has its type\n"
+      << csv_header("molecules", "type,template,file,mass,I1,I2,I3,spheres", si_length()) << "\n";
     for (std::size_t k = 0; k < bodies.size(); ++k) {
       const SpecimenBody& b = bodies[k];
       o << k + 1 << "," << b.template_id << "," << lammps_molecule_name(b.template_id) << ","

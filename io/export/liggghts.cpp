@@ -2,6 +2,7 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "io/base/units.h"
 
 #include <cmath>
 #include <functional>
@@ -103,7 +104,7 @@ void write_liggghts_body_map(std::ostream& o, const std::vector<SpecimenBody>& b
                              std::size_t soils) {
   o << "# specimen.csv body id -> LIGGGHTS ids: soil atom id, or rock multisphere body id and\n"
        "# its first atom id (atoms of a body are consecutive)\n"
-       "body,liggghts_kind,liggghts_id,first_atom\n";
+    << csv_header("bodies_map", "body,liggghts_kind,liggghts_id,first_atom", si_length()) << "\n";
   long atom = static_cast<long>(soils), body = 0, soil = 0;
   for (const SpecimenBody& b : bodies)
     if (b.kind == dem::BodyKind::soil) {

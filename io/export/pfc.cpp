@@ -2,6 +2,7 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "io/base/units.h"
 
 #include <cmath>
 #include <map>
@@ -101,7 +102,7 @@ std::vector<std::string> write_pfc_export(const std::vector<SpecimenBody>& bodie
   });
   const std::string map = write_export_file(dir, "bodies_map.csv", [&](std::ostream& o) {
     o << "# specimen.csv body id -> PFC id: clump id (rock) or ball id (soil), the same number\n"
-         "body,pfc_kind,pfc_id\n";
+      << csv_header("bodies_map", "body,pfc_kind,pfc_id", si_length()) << "\n";
     for (const SpecimenBody& b : bodies)
       o << b.id << "," << (b.kind == dem::BodyKind::rock ? "clump" : "ball") << "," << b.id << "\n";
   });

@@ -2,6 +2,7 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "io/base/units.h"
 
 #include <cmath>
 #include <functional>
@@ -27,7 +28,7 @@ void write_yade_body_map(std::ostream& o, const std::vector<SpecimenBody>& bodie
   // Yade numbers bodies as they are appended: each clump's members, then the clump; then the
   // soil spheres and walls. The script checks these ids as it builds.
   o << "# specimen.csv body id -> Yade body id (clump id for rock, sphere id for soil)\n"
-       "body,yade_kind,yade_id\n";
+    << csv_header("bodies_map", "body,yade_kind,yade_id", si_length()) << "\n";
   long next = 0;
   for (const SpecimenBody& b : bodies)
     if (b.kind == dem::BodyKind::rock) {

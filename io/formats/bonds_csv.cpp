@@ -4,6 +4,7 @@
 #include "geom/format.h"
 #include "io/base/atomic_file.h"
 #include "io/base/text.h"
+#include "io/base/units.h"
 
 #include <cmath>
 #include <fstream>
@@ -25,17 +26,20 @@ void write_bonds_csv(const std::string& path, const SpecimenBonds& s) {
     o << "# clumpkit bonds format " << kBondsCsvFormat
       << ", SI units. The cohesive law (Hu et al. 2023 eqs. 5-11), the bonds between bodies of "
          "specimen.csv (ids from 1; normal in a's body frame), their integration points (in a's "
-         "and in b's body frame)\n# law\nkn,kt,sigma_n,sigma_t,g_n,g_t,friction\n"
+         "and in b's body frame)\n# law\n"
+      << csv_header("bonds", "kn,kt,sigma_n,sigma_t,g_n,g_t,friction", si_length()) << "\n"
       << format_number(l.kn) << "," << format_number(l.kt) << "," << format_number(l.sigma_n) << ","
       << format_number(l.sigma_t) << "," << format_number(l.g_n) << "," << format_number(l.g_t)
       << "," << format_number(l.friction) << "\n# bonds\n"
-      << "bond,a,b,nx,ny,nz,factor\n";
+      << csv_header("bonds", "bond,a,b,nx,ny,nz,factor", si_length()) << "\n";
     for (std::size_t k = 0; k < s.bonds.size(); ++k) {
       const dem::Bond& b = s.bonds[k];
       o << k + 1 << "," << b.a + 1 << "," << b.b + 1 << "," << vec(b.normal_in_a) << ","
         << format_number(b.factor) << "\n";
     }
-    o << "# points\nbond,ax,ay,az,bx,by,bz,area,damage,sx,sy,sz,mix\n";
+    o << "# points\n"
+      << csv_header("bonds", "bond,ax,ay,az,bx,by,bz,area,damage,sx,sy,sz,mix", si_length())
+      << "\n";
     for (std::size_t k = 0; k < s.bonds.size(); ++k)
       for (const dem::BondPoint& p : s.bonds[k].points)
         o << k + 1 << "," << vec(p.in_a) << "," << vec(p.in_b) << "," << format_number(p.area)
@@ -78,8 +82,11 @@ SpecimenBonds read_bonds_csv(const std::string& path, std::size_t bodies) {
                                     : Section::points;
       continue;
     }
-    if (line[0] == '#' || line.rfind("kn,", 0) == 0 || line.rfind("bond,", 0) == 0) continue;
+    if (line[0] == '#') continue;
     const std::vector<std::string> c = split_csv(line);
+    // A section's header, with units ("kn[N/m3],...") or without (files written before units).
+    const std::string first = column_name(c.front());
+    if (first == "kn" || first == "bond") continue;
     if (section == Section::law) {
       if (c.size() != 7) bad("the law row has 7 fields, found " + std::to_string(c.size()));
       s.law = {number(c[0], "kn"),      number(c[1], "kt"),  number(c[2], "sigma_n"),

@@ -2,6 +2,7 @@
 
 #include "geom/format.h"
 #include "io/base/atomic_file.h"
+#include "io/base/units.h"
 
 #include <nlohmann/json.hpp>
 
@@ -74,7 +75,9 @@ void write_cells_csv(const std::string& path, const Tessellation& t,
   std::vector<int> bonded(t.cells.size(), 0);
   for (const CellBond& b : bonds) ++bonded[b.a], ++bonded[b.b];
   write_file_atomically(path, [&](std::ostream& o) {
-    o << "cell,volume,x,y,z,Ixx,Iyy,Izz,Ixy,Ixz,Iyz,faces,neighbours\n";
+    o << csv_header("cells", "cell,volume,x,y,z,Ixx,Iyy,Izz,Ixy,Ixz,Iyz,faces,neighbours",
+                    si_length())
+      << "\n";
     for (std::size_t i = 0; i < t.cells.size(); ++i) {
       const MassProperties& m = t.cells[i].mass;
       const Mat3& j = m.inertia;
@@ -89,7 +92,8 @@ void write_cells_csv(const std::string& path, const Tessellation& t,
 void write_bonds_csv(const std::string& bonds_path, const std::string& points_path,
                      const std::vector<CellBond>& bonds) {
   write_file_atomically(bonds_path, [&](std::ostream& o) {
-    o << "bond,a,b,area,x,y,z,nx,ny,nz,strength_factor,points\n";
+    o << csv_header("bonds", "bond,a,b,area,x,y,z,nx,ny,nz,strength_factor,points", si_length())
+      << "\n";
     for (std::size_t k = 0; k < bonds.size(); ++k) {
       const CellBond& b = bonds[k];
       o << k << "," << b.a << "," << b.b << "," << num(b.area) << "," << num(b.centroid.x()) << ","
@@ -99,7 +103,7 @@ void write_bonds_csv(const std::string& bonds_path, const std::string& points_pa
     }
   });
   write_file_atomically(points_path, [&](std::ostream& o) {
-    o << "bond,x,y,z,area\n";
+    o << csv_header("bond_points", "bond,x,y,z,area", si_length()) << "\n";
     for (std::size_t k = 0; k < bonds.size(); ++k)
       for (const FacePoint& p : bonds[k].points)
         o << k << "," << num(p.position.x()) << "," << num(p.position.y()) << ","
@@ -133,9 +137,9 @@ void write_cell_motion(const std::string& path, const Tessellation& t,
                      {"q", {q.w(), q.x(), q.y(), q.z()}},
                      {"fragment", fragment[k]}});
   }
-  write_file_atomically(path, [&](std::ostream& o) {
-    o << nlohmann::json{{"cells", cells}}.dump();
-  });
+  nlohmann::ordered_json doc = {{"cells", cells}};
+  add_units(doc, si_length());
+  write_file_atomically(path, [&](std::ostream& o) { o << doc.dump(); });
 }
 
 }  // namespace clumpkit

@@ -5,6 +5,7 @@
 #include "geom/limits.h"
 #include "io/base/atomic_file.h"
 #include "io/base/text.h"
+#include "io/base/units.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +13,7 @@
 #include <optional>
 #include <sstream>
 #include <string_view>
+#include <vector>
 
 namespace clumpkit {
 
@@ -21,6 +23,42 @@ std::string trim(const std::string& s) {
   if (a == std::string::npos) return "";
   const auto b = s.find_last_not_of(" \t\r");
   return s.substr(a, b - a + 1);
+}
+
+// The length unit of a clump header: the cells x,y,z,r, each with the same unit in brackets or
+// none ("" then); spaces ignored. Throws InvalidInput naming the file and line otherwise.
+std::string header_unit(const std::string& path, int lineno, const std::string& line) {
+  std::string h;
+  for (char ch : line)
+    if (ch != ' ') h += ch;
+  const std::vector<std::string> cells = split_csv(h);
+  const char* names[4] = {"x", "y", "z", "r"};
+  bool ok = cells.size() == 4 && !h.empty() && h.back() != ',';
+  for (std::size_t q = 0; ok && q < 4; ++q) ok = column_name(cells[q]) == names[q];
+  if (!ok)
+    throw InvalidInput(path + ": line " + std::to_string(lineno) +
+                       ": expected header 'x,y,z,r' (or with a length unit, x[m],y[m],z[m],r[m]), "
+                       "got '" +
+                       line.substr(0, 40) + "'");
+  const std::string unit = column_unit(cells[0]);
+  for (std::size_t q = 1; q < 4; ++q)
+    if (column_unit(cells[q]) != unit)
+      throw InvalidInput(path + ": line " + std::to_string(lineno) +
+                         ": the columns x,y,z,r must share one length unit, got '" +
+                         line.substr(0, 60) + "'");
+  return unit;
+}
+
+// The first line that is neither blank nor a '#' comment, trimmed; its number in `lineno`.
+bool first_content_line(std::istream& in, std::string& line, int& lineno) {
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (!line.empty() && (line.front() == ' ' || line.front() == '\t' || line.back() == ' ' ||
+                          line.back() == '\t' || line.back() == '\r'))
+      line = trim(line);
+    if (!line.empty() && line[0] != '#') return true;
+  }
+  return false;
 }
 }  // namespace
 
@@ -38,12 +76,7 @@ Clump read_clump(const std::string& path) {
       line = trim(line);
     if (line.empty() || line[0] == '#') continue;
     if (!header) {
-      std::string h;
-      for (char ch : line)
-        if (ch != ' ') h += ch;
-      if (h != "x,y,z,r")
-        throw InvalidInput(path + ": line " + std::to_string(lineno) +
-                           ": expected header 'x,y,z,r', got '" + line.substr(0, 40) + "'");
+      header_unit(path, lineno, line);
       header = true;
       continue;
     }
@@ -92,14 +125,25 @@ Clump read_clump(const std::string& path) {
   return c;
 }
 
-void write_clump(const std::string& path, const Clump& clump, const std::string& comment) {
+std::string read_clump_length_unit(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw IoError(path + ": cannot open clump file");
+  std::string line;
+  int lineno = 0;
+  if (!first_content_line(in, line, lineno))
+    throw InvalidInput(path + ": empty clump file (no 'x,y,z,r' header)");
+  return header_unit(path, lineno, line);
+}
+
+void write_clump(const std::string& path, const Clump& clump, const std::string& comment,
+                 const std::string& length_unit) {
   write_file_atomically(
       path,
       [&](std::ostream& o) {
         std::istringstream lines(comment);
         std::string l;
         while (std::getline(lines, l)) o << "# " << l << "\n";
-        o << "x,y,z,r\n";
+        o << csv_header("clump", "x,y,z,r", LengthUnit{length_unit}) << "\n";
         for (const auto& s : clump.spheres)
           o << format_number(s.center.x()) << "," << format_number(s.center.y()) << ","
             << format_number(s.center.z()) << "," << format_number(s.radius) << "\n";

@@ -4,6 +4,7 @@
 #include "geom/format.h"
 #include "io/base/atomic_file.h"
 #include "io/base/text.h"
+#include "io/base/units.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,9 +13,13 @@
 
 namespace clumpkit {
 
+std::string cpt_curve_header() {
+  return csv_header("cpt", kCptCurveColumns, si_length());
+}
+
 void write_cpt_curve(const std::string& path, const std::vector<dem::CptRow>& rows) {
   write_file_atomically(path, [&](std::ostream& f) {
-    f << kCptCurveHeader << "\n";
+    f << cpt_curve_header() << "\n";
     for (const dem::CptRow& c : rows)
       f << c.step << "," << format_number(c.depth) << "," << format_number(c.tip_force) << ","
         << format_number(c.sleeve_force) << "," << format_number(c.qc) << "," << format_number(c.fs)
@@ -26,9 +31,17 @@ std::vector<dem::CptRow> read_cpt_curve(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw IoError(path + ": cannot open the CPT curve");
   std::string line;
-  if (!std::getline(in, line) || line != kCptCurveHeader)
-    throw InvalidInput(path + ":1: not a CPT curve (its header must be '" +
-                       std::string(kCptCurveHeader) + "')");
+  bool header = static_cast<bool>(std::getline(in, line));
+  if (header) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::string names;
+    for (const std::string& n : column_names(split_csv(line)))
+      names += (names.empty() ? "" : ",") + n;
+    header = names == kCptCurveColumns;
+  }
+  if (!header)
+    throw InvalidInput(path + ":1: not a CPT curve (its header must be '" + cpt_curve_header() +
+                       "')");
   std::vector<dem::CptRow> rows;
   for (long line_no = 2; std::getline(in, line); ++line_no) {
     if (line.empty()) continue;

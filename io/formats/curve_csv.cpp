@@ -2,6 +2,7 @@
 
 #include "geom/errors.h"
 #include "io/base/text.h"
+#include "io/base/units.h"
 
 #include <cmath>
 #include <sstream>
@@ -16,14 +17,22 @@ std::string trimmed(const std::string& s) {
   return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
 }
 
+// A header cell's unit, else the vocabulary's for a curve column of its name (SI).
+std::string cell_unit(const std::string& cell) {
+  const std::string u = column_unit(cell);
+  return u.empty() ? unit_of({"curve", column_name(cell)}, si_length()) : u;
+}
+
 }  // namespace
 
-dem::Curve read_curve_columns(const std::string& path, const std::string& x, const std::string& y) {
+dem::Curve read_curve_columns(const std::string& path, const std::string& x, const std::string& y,
+                              CurveUnits* units) {
   std::istringstream in(read_file(path, "curve"));
   std::string line;
   int lineno = 0;
   std::vector<std::string> header;
   int ix = -1, iy = -1;
+  const std::string x_name = column_name(x), y_name = column_name(y);
   dem::Curve c;
   while (std::getline(in, line)) {
     ++lineno;
@@ -34,13 +43,14 @@ dem::Curve read_curve_columns(const std::string& path, const std::string& x, con
     if (header.empty()) {
       header = cells;
       for (int k = 0; k < static_cast<int>(header.size()); ++k) {
-        if (header[k] == x && ix < 0) ix = k;
-        if (header[k] == y && iy < 0) iy = k;
+        if (column_name(header[k]) == x_name && ix < 0) ix = k;
+        if (column_name(header[k]) == y_name && iy < 0) iy = k;
       }
       std::string names;
       for (const std::string& h : header) names += (names.empty() ? "" : ", ") + h;
       if (ix < 0) throw InvalidInput(path + ": no column '" + x + "' (columns: " + names + ")");
       if (iy < 0) throw InvalidInput(path + ": no column '" + y + "' (columns: " + names + ")");
+      if (units) *units = {cell_unit(header[ix]), cell_unit(header[iy])};
       continue;
     }
     const std::string at = path + ": line " + std::to_string(lineno) + ": column '";

@@ -4,6 +4,7 @@
 #include "geom/format.h"
 #include "io/base/atomic_file.h"
 #include "io/base/text.h"
+#include "io/base/units.h"
 #include "io/formats/clump_io.h"
 #include "io/formats/descriptor_table.h"
 
@@ -20,13 +21,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Opens a library.csv and returns its header cells; `in` is left at the first row.
+// Opens a library.csv and returns its column names (column_name: without units, so a table
+// written before units were reads the same); `in` is left at the first row.
 std::vector<std::string> open_library_csv(const fs::path& csv, std::ifstream& in) {
   in.open(csv);
   if (!in) throw IoError(csv.string() + ": cannot open clump library table");
   std::string line;
   std::getline(in, line);
-  return split_csv(line);
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  return column_names(split_csv(line));
 }
 
 }  // namespace
@@ -51,12 +54,13 @@ void write_library_table(const std::string& path,
   for (const auto& rec : records)
     for (const auto& [k, v] : rec["parameters"].items())
       if (std::find(params.begin(), params.end(), k) == params.end()) params.push_back(k);
+  std::string names = "id,fraction,method,mesh,clump,attempts";
+  for (const auto& p : params) names += ",p_" + p;
+  for (const auto& c : descriptor_csv_columns()) names += "," + c;
+  for (const auto& c : library_fidelity_columns()) names += "," + c;
+  names += ",density_factor,I1,I2,I3,qw,qx,qy,qz,cx,cy,cz";
   write_file_atomically(path, [&](std::ostream& o) {
-    o << "id,fraction,method,mesh,clump,attempts";
-    for (const auto& p : params) o << ",p_" << p;
-    for (const auto& c : descriptor_csv_columns()) o << "," << c;
-    for (const auto& c : library_fidelity_columns()) o << "," << c;
-    o << ",density_factor,I1,I2,I3,qw,qx,qy,qz,cx,cy,cz\n";
+    o << csv_header("library", names, si_length()) << "\n";
     for (std::size_t i = 0; i < records.size(); ++i) {
       const auto& rec = records[i];
       o << i << "," << csv_escape(rec["fraction"].get<std::string>()) << ","

@@ -17,7 +17,7 @@ const std::vector<std::string>& library_fidelity_columns();
 /// library.csv from the particle records of `clumpkit library` (id order): id, fraction, method,
 /// mesh and clump paths, attempts, the parameters (p_NAME, union over the particles in order of
 /// first appearance), the descriptors, the fidelity, then the template (density_factor, I1..I3,
-/// the pose qw..qz and cx..cz).
+/// the pose qw..qz and cx..cz); each numeric column's header cell with its SI unit ("W[m]").
 void write_library_table(const std::string& path,
                          const std::vector<nlohmann::ordered_json>& records);
 
@@ -28,9 +28,10 @@ void write_library_table(const std::string& path,
 /// the file for a missing or bad file.
 std::vector<dem::RockTemplate> read_rock_templates(const std::string& library_dir);
 
-/// One numeric column of a library's library.csv (e.g. "density_factor", V_mesh/V_clump), in
-/// row order, as read_rock_templates orders the templates. Throws InvalidInput naming the file,
-/// line and value for a missing column or a number that is not finite and positive.
+/// One numeric column of a library's library.csv (e.g. "density_factor", V_mesh/V_clump; header
+/// cells compared without their units, so tables written before units were read too), in row order,
+/// as read_rock_templates orders the templates. Throws InvalidInput naming the file, line and value
+/// for a missing column or a number that is not finite and positive.
 std::vector<double> read_library_column(const std::string& library_dir, const std::string& name);
 
 }  // namespace clumpkit

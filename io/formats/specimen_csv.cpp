@@ -4,6 +4,7 @@
 #include "geom/format.h"
 #include "io/base/atomic_file.h"
 #include "io/base/text.h"
+#include "io/base/units.h"
 
 #include <cmath>
 #include <fstream>
@@ -67,7 +68,10 @@ void write_specimen_csv(const std::string& path, const std::vector<SpecimenBody>
          "# I1,I2,I3: principal moments (kg m2) about the body frame axes (the template's "
          "principal frame); scale: template length scale (1 for soil); zone: region of a zoned "
          "specimen (0 without zones)\n# bodies\n";
-    o << "body,kind,template,x,y,z,qw,qx,qy,qz,mass,volume,scale,I1,I2,I3,zone\n";
+    o << csv_header("specimen",
+                    "body,kind,template,x,y,z,qw,qx,qy,qz,mass,volume,scale,I1,I2,I3,zone",
+                    si_length())
+      << "\n";
     for (const SpecimenBody& b : bodies) {
       o << b.id << "," << dem::kind_name(b.kind) << "," << b.template_id << ","
         << format_number(b.position.x()) << "," << format_number(b.position.y()) << ","
@@ -78,7 +82,7 @@ void write_specimen_csv(const std::string& path, const std::vector<SpecimenBody>
         << format_number(b.moments.x()) << "," << format_number(b.moments.y()) << ","
         << format_number(b.moments.z()) << "," << b.zone << "\n";
     }
-    o << "# spheres\nsphere,body,x,y,z,r\n";
+    o << "# spheres\n" << csv_header("specimen", "sphere,body,x,y,z,r", si_length()) << "\n";
     std::size_t n = 0;
     for (const SpecimenBody& b : bodies)
       for (const Sphere& s : b.spheres)
@@ -128,8 +132,11 @@ std::vector<SpecimenBody> read_specimen_csv(const std::string& path) {
       section = Section::spheres;
       continue;
     }
-    if (line[0] == '#' || line.rfind("body,", 0) == 0 || line.rfind("sphere,", 0) == 0) continue;
+    if (line[0] == '#') continue;
     const std::vector<std::string> c = split_csv(line);
+    // A section's header, with units ("body[1],...") or without (files written before units).
+    const std::string first = column_name(c.front());
+    if (first == "body" || first == "sphere") continue;
     if (section == Section::bodies) {
       if (c.size() != body_fields)
         bad("a body row has " + std::to_string(body_fields) + " fields, found " +

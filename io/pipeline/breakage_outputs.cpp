@@ -3,6 +3,7 @@
 #include "dem/measure/fragment_sizes.h"
 #include "geom/format.h"
 #include "io/base/atomic_file.h"
+#include "io/base/units.h"
 #include "io/formats/specimen_vtp.h"
 #include "io/reports/plot.h"
 
@@ -51,7 +52,7 @@ std::vector<double> input_work(const std::vector<dem::CurveRow>& curve) {
 std::string breakage_header() {
   std::string h =
       ",bonds_broken,bonds_mode_i,bonds_mode_ii,bonds_mixed,fragments,particles_broken,hardin_br,"
-      "einav_b,marsal_bg,work_pa";
+      "einav_b,marsal_bg,work";
   for (int c = 1; c <= dem::kBreakageClasses; ++c) h += ",broken_class_" + std::to_string(c);
   return h;
 }
@@ -84,7 +85,7 @@ void write_breakage_outputs(const std::filesystem::path& out, const dem::World& 
   const std::vector<double> before = dem::passing(s.initial_grading, s.sieves),
                             after = dem::passing(final_pieces, s.sieves);
   write_file_atomically((out / "grading.csv").string(), [&](std::ostream& f) {
-    f << "sieve_m,passing_initial,passing_final\n";
+    f << csv_header("grading", "sieve,passing_initial,passing_final", si_length()) << "\n";
     for (std::size_t k = 0; k < s.sieves.size(); ++k)
       f << format_number(s.sieves[k]) << "," << format_number(before[k]) << ","
         << format_number(after[k]) << "\n";
@@ -128,7 +129,7 @@ void write_breakage_outputs(const std::filesystem::path& out, const dem::World& 
       {"hardin_br", end.hardin_br},
       {"einav_b", end.einav_b},
       {"marsal_bg", end.marsal_bg},
-      {"work_pa", work.back()},
+      {"work", work.back()},
       {"class_bounds", s.class_bounds},
       {"broken_by_class", end.broken_by_class},
       {"solid_volume_initial", solid0},

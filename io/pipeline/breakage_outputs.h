@@ -21,15 +21,16 @@ void track_breakage(const dem::World& world, dem::ElementTestSettings& settings)
 /// consolidated state (trapezoids; εr = (εv − εa)/2).
 std::vector<double> input_work(const std::vector<dem::CurveRow>& curve);
 
-/// curve.csv's breakage columns (header with a leading comma, and one row's values).
+/// curve.csv's breakage columns (names without units, with a leading comma; and one row's
+/// values).
 std::string breakage_header();
 std::string breakage_values(const dem::CurveRow& row, double work);
 
-/// grading.csv (sieve_m, passing_initial, passing_final), grading.png (both curves against
-/// log10 of the sieve in mm), breakage.png and breakage_work.png (Br against the axial stress
-/// and against the work `work` of each row, input_work), fragments.vtp (the spheres at the end
-/// with point data particle and fragment, each numbered from 1, besides body) and the report's
-/// "breakage" entry; their names are added to `files`.
+/// grading.csv (sieve, passing_initial, passing_final; units in the header cells), grading.png
+/// (both curves against log10 of the sieve in mm), breakage.png and breakage_work.png (Br against
+/// the axial stress and against the work `work` of each row, input_work), fragments.vtp (the
+/// spheres at the end with point data particle and fragment, each numbered from 1, besides body)
+/// and the report's "breakage" entry; their names are added to `files`.
 void write_breakage_outputs(const std::filesystem::path& out, const dem::World& world,
                             const dem::ElementTestSettings& settings,
                             const std::vector<dem::CurveRow>& curve,

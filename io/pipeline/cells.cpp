@@ -3,6 +3,7 @@
 #include "geom/cells/cell_bonds.h"
 #include "geom/errors.h"
 #include "io/base/atomic_file.h"
+#include "io/base/units.h"
 #include "io/formats/cells_files.h"
 #include "io/pipeline/manifest.h"
 #include "io/pipeline/output_dir.h"
@@ -69,6 +70,7 @@ nlohmann::ordered_json run_cells_job(const CellsJobOptions& o,
     r["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nlohmann::ordered_json report = r;
     report.erase("seconds");  // report.json is the same bytes for the same command
+    add_units(report, si_length());
     write_file_atomically((dir / "report.json").string(),
                           [&](std::ostream& f) { f << report.dump(2) << "\n"; });
     nlohmann::ordered_json m = manifest_head("cells", "", "", o.seed);
@@ -80,9 +82,11 @@ nlohmann::ordered_json run_cells_job(const CellsJobOptions& o,
     m["lloyd"] = o.cells.lloyd;
     m["strength_factor"] = describe(o.strength);
     m["files"] = {"cells.vtp", "cells.csv", "bonds.csv", "bond_points.csv", "report.json"};
+    add_units(m, si_length());
     write_file_atomically((dir / "manifest.json").string(),
                           [&](std::ostream& f) { f << m.dump(2) << "\n"; });
   });
+  add_units(r, si_length());
   return r;
 }
 

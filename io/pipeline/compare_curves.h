@@ -9,10 +9,11 @@
 
 namespace clumpkit {
 
-/// What the job compares: curve b against the reference a, columns `x` and `y` of each CSV.
+/// What the job compares: curve b against the reference a, columns `x` and `y` of each CSV (by
+/// column_name: with or without a unit, or a name of a file written before units, "qc_pa").
 struct CompareCurvesOptions {
   std::string a, b;
-  std::string x = "depth_m", y = "qc_pa";
+  std::string x = "depth", y = "qc";
   int points = 200;
   /// Window on x: only the overlap within [from, to] is compared (unbounded by default).
   double from = -std::numeric_limits<double>::infinity();
@@ -22,8 +23,10 @@ struct CompareCurvesOptions {
 };
 
 /// Reads both curves and returns {a, b, x, y, from, to (the range compared), points,
-/// residual_abs, residual_rel, relative_points}, after writing `png` when asked. Throws IoError /
-/// InvalidInput naming the file for bad input.
+/// residual_abs, residual_rel, relative_points, units (from and to in x's unit, residual_abs in
+/// y's squared, where the files say them)}, after writing `png` when asked. Throws IoError /
+/// InvalidInput naming the file for bad input, and for columns whose units differ between the
+/// two files.
 nlohmann::ordered_json compare_curves(const CompareCurvesOptions& o);
 
 }  // namespace clumpkit

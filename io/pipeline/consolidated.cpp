@@ -3,6 +3,7 @@
 #include "dem/measure/stress.h"
 #include "geom/errors.h"
 #include "io/base/atomic_file.h"
+#include "io/base/units.h"
 #include "io/formats/specimen_csv.h"
 
 namespace clumpkit {
@@ -63,11 +64,13 @@ void write_consolidated(const fs::path& dir, const dem::World& world, const dem:
       {"local_damping", law.local_damping},
       {"stiffness_scaling", law.scaling == dem::StiffnessScaling::linear ? "linear" : "none"},
       {"d_ref", law.d_ref}};
+  add_units(rep, si_length());
   write_file_atomically((dir / "report.json").string(),
                         [&](std::ostream& f) { f << rep.dump(2) << "\n"; });
   nlohmann::ordered_json m;
   m["command"] = "test";
   m["files"] = {"specimen.csv", "report.json"};
+  add_units(m, si_length());
   write_file_atomically((dir / "manifest.json").string(),
                         [&](std::ostream& f) { f << m.dump(2) << "\n"; });
 }

@@ -14,8 +14,8 @@ namespace clumpkit {
 /// recipe's [probe] down the cell's axis from the top platen with the cell's stresses held (see
 /// dem::run_cpt). The probe's push rate v / D_c is the strain rate of the inertial-number check
 /// (refused above 1e-2 unless allow_dynamic). Writes into `out_dir` (DIR.partial renamed at the
-/// end): curve.csv (step, depth_m, tip_force_n, sleeve_force_n, qc_pa, fs_pa), curve.png (qc
-/// against depth), report.json and manifest.json; checkpoints and --resume as
+/// end): curve.csv (step, depth, tip_force, sleeve_force, qc, fs; SI units in the header),
+/// curve.png (qc against depth), report.json and manifest.json; checkpoints and --resume as
 /// run_element_test_job (the stage "cpt"). Throws InvalidInput before writing anything for a
 /// recipe without [probe] or a probe the cell cannot take.
 LabJobResult run_cpt_job(const std::string& specimen_dir, const TestRecipe& recipe,

@@ -9,6 +9,7 @@
 #include "io/base/atomic_file.h"
 #include "io/base/json_file.h"
 #include "io/base/text.h"
+#include "io/base/units.h"
 #include "io/formats/cells_files.h"
 #include "io/pipeline/manifest.h"
 #include "io/pipeline/output_dir.h"
@@ -101,7 +102,8 @@ nlohmann::ordered_json crush_one(const CrushRecipe& recipe, const Job& job, std:
 
   const std::string stem = id_name(id);
   write_file_atomically((parts / (stem + ".csv")).string(), [&](std::ostream& o) {
-    o << "travel_m,force_n,split\n" << std::setprecision(17);
+    o << csv_header("crush_curve", "travel,force,split", si_length()) << "\n"
+      << std::setprecision(17);
     for (const dem::CrushSample& x : r.samples)
       o << x.travel << "," << x.force << "," << (x.split ? 1 : 0) << "\n";
   });
@@ -132,6 +134,7 @@ nlohmann::ordered_json crush_one(const CrushRecipe& recipe, const Job& job, std:
   rec["largest_fragment"] = r.largest_fragment;
   rec["imbalance"] = r.imbalance;
   rec["curve_file"] = "particles/" + stem + ".csv";
+  add_units(rec, si_length());
   write_sealed_record((parts / (stem + ".json")).string(), rec);
   return rec;
 }
@@ -235,8 +238,11 @@ void write_crush_results(const fs::path& out, const std::vector<nlohmann::ordere
                          const std::vector<double>& max_force) {
   const std::size_t total = records.size();
   write_file_atomically((out / "results.csv").string(), [&](std::ostream& o) {
-    o << "id,set,sample,diameter_m,cells,bonds,failed,failure,peak_force_n,peak_travel_m,"
-         "strength_pa,fragments,largest_fragment,imbalance,steps,max_force_n\n"
+    o << csv_header("results",
+                    "id,set,sample,diameter,cells,bonds,failed,failure,peak_force,peak_travel,"
+                    "strength,fragments,largest_fragment,imbalance,steps,max_force",
+                    si_length())
+      << "\n"
       << std::setprecision(17);
     for (std::size_t i = 0; i < total; ++i) {
       const auto& r = records[i];
@@ -458,7 +464,7 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
   nlohmann::ordered_json report;
   report["recipe"] = recipe.path;
   report["particles"] = total;
-  report["units"] = "SI: m, N, Pa (the paper's mm and MPa: × 1e3 and × 1e-6)";
+  report["units_note"] = "SI (the paper's mm and MPa: × 1e3 and × 1e-6)";
   report["bond_scale"] = recipe.scale;
   report["density_scaling"] = recipe.rig.density_scaling;
   report["bed_depth"] = recipe.rig.bed_depth;
@@ -475,6 +481,7 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
     write_plot((out / "weibull.png").string(), stats.weibull_plot, "ln sigma (sigma in MPa)",
                "ln ln(1/Ps)", "Weibull plot");
   plot_crush_curves(recipe, jobs, curve, out);
+  add_units(report, si_length());
   write_file_atomically((out / "report.json").string(),
                         [&](std::ostream& o) { o << report.dump(2) << "\n"; });
   nlohmann::ordered_json m = manifest_head("crush", recipe.path, recipe.text, recipe.seed);
@@ -482,6 +489,7 @@ CrushJobResult run_crush(const CrushRecipe& recipe, const std::string& out_dir,
   m["sets"] = recipe.sets.size();
   m["files"] = {"particles/", "results.csv",    "report.json", "weibull.png",
                 "size.png",   "curves_SET.png", "recipe.toml"};
+  add_units(m, si_length());
   write_file_atomically((out / "manifest.json").string(),
                         [&](std::ostream& o) { o << m.dump(2) << "\n"; });
   publish_directory(out.string(), out_dir);

@@ -25,7 +25,7 @@ struct CrushJobResult {
 /// along z) turned to rest on a face when the set asks for it, cut into cells
 /// (voronoi_cells), bonded (cell_bonds), built in a world (crushable_particle, the recipe's bond
 /// law) and crushed (crush_particle along the set's axis). Writes DIR/particles/NNNNN.json (the
-/// record, with a checksum) and NNNNN.csv (travel_m, force_n, split), DIR/results.csv (one row per
+/// record, with a checksum) and NNNNN.csv (travel, force, split), DIR/results.csv (one row per
 /// particle), DIR/report.json (SI, snake_case: per set diameter, samples, failed, sigma0,
 /// sigma0_ci90, weibull_modulus, weibull_modulus_ci90 — least squares on ln ln(1/Ps), the
 /// paper's fit — and the maximum-likelihood pair with its intervals, mean strength and peak force;

@@ -7,6 +7,7 @@
 #include "geom/hash.h"
 #include "io/base/atomic_file.h"
 #include "io/base/text.h"
+#include "io/base/units.h"
 #include "io/formats/checkpoint.h"
 #include "io/formats/specimen_csv.h"
 #include "io/pipeline/breakage_outputs.h"
@@ -32,9 +33,12 @@ namespace {
 void write_curve_csv(const fs::path& path, const std::vector<dem::CurveRow>& curve,
                      const std::vector<double>& work, bool crushable, bool holds) {
   write_file_atomically(path.string(), [&](std::ostream& f) {
-    f << "step,axial_strain,volumetric_strain,axial_stress_pa,radial_stress_pa,p_pa,q_pa,"
-         "porosity,coordination_number,unbalanced_force,interior_axial_strain"
-      << (crushable ? breakage_header() : "") << (holds ? ",held" : "") << "\n";
+    std::string names =
+        "step,axial_strain,volumetric_strain,axial_stress,radial_stress,p,q,porosity,"
+        "coordination_number,unbalanced_force,interior_axial_strain";
+    if (crushable) names += breakage_header();
+    if (holds) names += ",held";
+    f << csv_header("curve", names, si_length()) << "\n";
     for (std::size_t k = 0; k < curve.size(); ++k) {
       const dem::CurveRow& c = curve[k];
       f << c.step << "," << format_number(c.axial_strain) << ","

@@ -21,9 +21,9 @@ struct TestKind;
 /// specimen's bottom and top), gravity off, with the specimen's contact law unless the recipe
 /// overrides it, along kind.path (see dem::run_element_test); report.json has the fields every
 /// test has and those of kind.report. Writes into `out_dir` (DIR.partial renamed at the
-/// end, job.h): curve.csv (step, axial_strain, volumetric_strain, axial_stress_pa,
-/// radial_stress_pa, p_pa, q_pa, porosity, coordination_number, unbalanced_force,
-/// interior_axial_strain), curve.png, report.json and manifest.json. The interrupter is told
+/// end, job.h): curve.csv (step, axial_strain, volumetric_strain, axial_stress, radial_stress,
+/// p, q, porosity, coordination_number, unbalanced_force, interior_axial_strain; units in the
+/// header cells), curve.png, report.json and manifest.json. The interrupter is told
 /// the stage ("test").
 /// Work goes to DIR.partial; the test runs as the stage "test" of a StageFiles store in
 /// DIR.partial/checkpoints (the protocol of specimen builds: spec.fingerprint of the test, recipe,

@@ -3,6 +3,7 @@
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "io/base/atomic_file.h"
+#include "io/base/units.h"
 #include "io/export/export_source.h"
 #include "io/export/formats.h"
 #include "io/pipeline/lab_setup.h"
@@ -170,6 +171,7 @@ ExportResult run_export(const std::string& format, const std::string& source,
       m["test"] = {{"kind", "oedometer"},
                    {"max_strain", options.lammps.max_strain},
                    {"strain_rate", options.lammps.strain_rate}};
+    add_units(m, si_length());
     write_file_atomically((staging / "manifest.json").string(),
                           [&](std::ostream& o) { o << m.dump(2) << "\n"; });
   });

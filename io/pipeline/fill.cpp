@@ -48,6 +48,24 @@ std::string inside_outside(const FillOptions& fo) {
                             : "ray parity along the grid rows (watertight mesh)";
 }
 
+// The clump CSV, and the ParaView file and picture when asked for.
+void write_fill_outputs(const FillJobOptions& options, const Mesh& mesh, const Clump& clump,
+                        const Fidelity& f) {
+  write_clump(options.out, clump,
+              "clumpkit fill " + options.mesh + "\nspheres " +
+                  std::to_string(clump.spheres.size()) + ", covered fraction " +
+                  format_number(f.covered_fraction),
+              options.length.symbol);
+  if (!options.vtp.empty()) write_clump_vtp(options.vtp, mesh, clump);
+  if (!options.png.empty())
+    write_particle_png(options.png, mesh, clump,
+                       std::filesystem::path(options.mesh).filename().string() + ": " +
+                           std::to_string(f.spheres) + " spheres, coverage " +
+                           format_fixed(f.covered_fraction, 3) + ", overshoot " +
+                           format_fixed(f.overshoot_fraction, 4) + " of the volume",
+                       450, false);
+}
+
 }  // namespace
 
 SolidFill fill_solid(const Mesh& mesh, FillOptions fo, const std::string& name,
@@ -159,7 +177,7 @@ FillJobResult run_fill_job(const FillJobOptions& options,
          " crossing pairs" +
          (m.repair.mended_by.empty() ? "" : ", mended by " + m.repair.mended_by) +
          (m.repair.wrapped ? ", wrapped" : "") + "); volume " +
-         format_number(m.repair.volume_after, 6));
+         format_number(m.repair.volume_after, 6) + " " + options.length.pow(3));
     validate_solid(mesh, options.mesh, &report);
   } else {
     try {
@@ -186,18 +204,7 @@ FillJobResult run_fill_job(const FillJobOptions& options,
     warn("the budget of " + std::to_string(fo.spheres) + " spheres was not reached: " +
          std::to_string(r.clump.spheres.size()) + " placed, stopped by " + r.stopped_by +
          (r.stopped_by == "candidates" ? " (no medial candidate left adds coverage)" : ""));
-  write_clump(options.out, r.clump,
-              "clumpkit fill " + options.mesh + "\nspheres " +
-                  std::to_string(r.clump.spheres.size()) + ", covered fraction " +
-                  format_number(f.covered_fraction));
-  if (!options.vtp.empty()) write_clump_vtp(options.vtp, mesh, r.clump);
-  if (!options.png.empty())
-    write_particle_png(options.png, mesh, r.clump,
-                       std::filesystem::path(options.mesh).filename().string() + ": " +
-                           std::to_string(f.spheres) + " spheres, coverage " +
-                           format_fixed(f.covered_fraction, 3) + ", overshoot " +
-                           format_fixed(f.overshoot_fraction, 4) + " of the volume",
-                       450, false);
+  write_fill_outputs(options, mesh, r.clump, f);
   nlohmann::ordered_json& j = out.report = fidelity_json(f);
   j["inside_outside"] = inside_outside(fo);
   j["voxel"] = r.voxel;
@@ -239,6 +246,7 @@ FillJobResult run_fill_job(const FillJobOptions& options,
   phases["fidelity"] = solid.seconds_fidelity;
   j["seconds_by_phase"] = phases;
   j["triangles"] = mesh.triangles.size();
+  add_units(j, options.length);
   return out;
 }
 

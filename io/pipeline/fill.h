@@ -5,6 +5,7 @@
 #include "geom/fill/fidelity.h"
 #include "geom/fill/fill.h"
 #include "geom/mesh/repair.h"
+#include "io/base/units.h"
 #include "io/formats/mesh_io.h"
 
 #include <nlohmann/json.hpp>
@@ -32,6 +33,9 @@ struct FillJobOptions {
   /// raw scan fills in one command; the report's `repair` says what it did.
   bool repair = false;
   RepairOptions repair_options;
+  /// The mesh's length unit, which labels the clump's header and the report's "units" ("L":
+  /// unnamed); the numbers are the same whatever it is.
+  LengthUnit length;
 };
 
 /// What the fill job did.
@@ -42,7 +46,8 @@ struct FillJobResult {
   /// max_overshoot, refine (sweeps, moves, covered_fraction and overshoot_fraction before and
   /// after), resolution (voxel, smallest_sphere_voxels; with check_resolution the finer voxel, its
   /// covered_fraction and the change), seconds, seconds_by_phase (read, index, field, fill,
-  /// fidelity), triangles; with FillJobOptions::repair also `repair` (repair_json).
+  /// fidelity), triangles; with FillJobOptions::repair also `repair` (repair_json); last the
+  /// "units" of every number (add_units, lengths in FillJobOptions::length).
   nlohmann::ordered_json report;
 };
 

@@ -4,6 +4,8 @@
 #include "geom/errors.h"
 #include "io/base/atomic_file.h"
 #include "io/base/json_file.h"
+#include "io/base/text.h"
+#include "io/base/units.h"
 #include "io/export/engine_settings.h"
 #include "io/export/lammps_import.h"
 #include "io/formats/cpt_curve.h"
@@ -38,7 +40,8 @@ double field(const nlohmann::json& j, const std::string& path, const char* a,
   return v->get<double>();
 }
 
-/// The deck's oedometer.csv (strain,stress_pa) as a curve; throws InvalidInput naming the line.
+/// The deck's oedometer.csv (strain,stress; stress_pa before units) as a curve; throws
+/// InvalidInput naming the line.
 PlotCurve read_oedometer(const fs::path& path) {
   std::ifstream in(path);
   std::string line;
@@ -52,11 +55,34 @@ PlotCurve read_oedometer(const fs::path& path) {
     double strain, stress;
     if (!(s >> strain >> stress))
       throw InvalidInput(path.string() + ":" + std::to_string(line_no) +
-                         ": not a 'strain,stress_pa' row");
+                         ": not a 'strain,stress' row");
     c.x.push_back(strain);
     c.y.push_back(stress / 1000);
   }
   return c;
+}
+
+// The deck's oedometer.csv copied with its header in today's form, "strain[1],stress[Pa]" (a deck
+// exported before units printed "strain,stress_pa").
+void copy_oedometer(const fs::path& from, const fs::path& to) {
+  const std::string text = read_file(from.string());
+  write_file_atomically(to.string(), [&](std::ostream& o) {
+    std::istringstream in(text);
+    std::string line;
+    bool header = true;
+    while (std::getline(in, line)) {
+      std::string bare = line;
+      if (!bare.empty() && bare.back() == '\r') bare.pop_back();
+      if (header && !bare.empty() && bare[0] != '#') {
+        header = false;
+        if (column_names(split_csv(bare)) == std::vector<std::string>{"strain", "stress"}) {
+          o << csv_header("oedometer", "strain,stress", si_length()) << "\n";
+          continue;
+        }
+      }
+      o << line << "\n";
+    }
+  });
 }
 
 // The run's bodies at its final dump, fitted to the source specimen's bodies.
@@ -87,7 +113,8 @@ std::vector<std::string> write_imported_bodies(const fs::path& staging, const Im
   write_specimen_csv((staging / "specimen.csv").string(), im.bodies);
   write_specimen_vtp((staging / "specimen.vtp").string(), im.bodies);
   write_file_atomically((staging / "bodies_map.csv").string(), [&](std::ostream& o) {
-    o << "# imported body id -> body id of the source specimen.csv\nbody,source_body\n";
+    o << "# imported body id -> body id of the source specimen.csv\n"
+      << csv_header("bodies_map", "body,source_body", si_length()) << "\n";
     for (std::size_t k = 0; k < im.bodies.size(); ++k) o << k + 1 << "," << im.source_id[k] << "\n";
   });
   return {"specimen.csv", "specimen.vtp", "bodies_map.csv"};
@@ -108,14 +135,16 @@ nlohmann::ordered_json import_head(const std::string& engine, const std::string&
 }
 
 // report.json and manifest.json into `staging`.
-void finish_import(const fs::path& staging, const std::string& engine,
-                   const nlohmann::ordered_json& r, std::vector<std::string>& names) {
+void finish_import(const fs::path& staging, const std::string& engine, nlohmann::ordered_json& r,
+                   std::vector<std::string>& names) {
+  add_units(r, si_length());
   write_file_atomically((staging / "report.json").string(),
                         [&](std::ostream& o) { o << r.dump(2) << "\n"; });
   nlohmann::ordered_json m = manifest_head("import", "", "", 0);
   m["engine"] = engine;
   m["run_dir"] = r["run_dir"];
   m["source"] = r["source"];
+  add_units(m, si_length());
   write_file_atomically((staging / "manifest.json").string(),
                         [&](std::ostream& o) { o << m.dump(2) << "\n"; });
   names.push_back("report.json");
@@ -214,7 +243,7 @@ ImportResult run_import(const std::string& engine, const std::string& run_dir,
          write_slices((staging / "slices").string(), measured, settings.container_radius, heights))
       names.push_back("slices/" + f);
     if (oedometer) {
-      fs::copy_file(fs::path(run_dir) / "oedometer.csv", staging / "oedometer.csv");
+      copy_oedometer(fs::path(run_dir) / "oedometer.csv", staging / "oedometer.csv");
       write_line_plot((staging / "oedometer.png").string(), curve, "vertical strain (-)",
                       "vertical stress (kPa)",
                       "oedometer test in " + engine + " (compression positive)");

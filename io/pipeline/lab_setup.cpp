@@ -8,6 +8,7 @@
 #include "io/base/atomic_file.h"
 #include "io/base/json_file.h"
 #include "io/base/text.h"
+#include "io/base/units.h"
 #include "io/formats/bonds_csv.h"
 #include "io/formats/specimen_csv.h"
 #include "io/pipeline/manifest.h"
@@ -145,6 +146,12 @@ TestSetup setup_test(const std::string& kind, const std::string& specimen_dir,
                        " gives an inertial number " + format_number(inertial, 3) +
                        " > 1e-2 on this specimen (a dynamic test, not quasi-static): lower it, or "
                        "pass --allow-dynamic");
+  // The inertial number the platen is held at as the stress rises: the same bound.
+  if (recipe.settings.inertial_number > 1e-2 && !allow_dynamic)
+    throw InvalidInput(recipe.path +
+                       ": test.inertial_number: " + format_number(recipe.settings.inertial_number) +
+                       " > 1e-2 is a dynamic test, not quasi-static: lower it, or pass "
+                       "--allow-dynamic");
 
   dem::CellSpecimen specimen{dem::World(o), {}};
   for (dem::Body& b : bodies) specimen.world.add_body(std::move(b));
@@ -186,12 +193,14 @@ LabJobResult finish_test_job(const TestSetup& setup, const std::string& out_dir,
   const fs::path& out = setup.out;
   nlohmann::ordered_json full = report;
   full["density_scaling"] = recipe.density_scaling;
+  add_units(full, si_length());
   write_file_atomically((out / "report.json").string(),
                         [&](std::ostream& f) { f << full.dump(2) << "\n"; });
   nlohmann::ordered_json m = manifest_head("test", recipe.path, recipe.text, 0);
   m["test"] = test;
   m["specimen"] = specimen_dir;
   m["files"] = files;
+  add_units(m, si_length());
   write_file_atomically((out / "manifest.json").string(),
                         [&](std::ostream& f) { f << m.dump(2) << "\n"; });
   publish_directory(out.string(), out_dir);

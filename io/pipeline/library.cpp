@@ -9,6 +9,7 @@
 #include "io/base/atomic_file.h"
 #include "io/base/json_file.h"
 #include "io/base/text.h"
+#include "io/base/units.h"
 #include "io/formats/clump_io.h"
 #include "io/formats/clump_vtp.h"
 #include "io/formats/descriptor_table.h"
@@ -132,22 +133,24 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
   const ClumpTemplate tpl = make_clump_template(filled.clump, desc.volume);
 
   const std::string stem = id_name(i);
+  const LengthUnit length = si_length();
   write_mesh((dir / (stem + ".stl")).string(), shape.mesh);
   write_clump((dir / (stem + ".csv")).string(), filled.clump,
-              "clumpkit library particle " + stem + " (" + spec.name + ")");
-  write_clump((dir / (stem + ".template.csv")).string(), Clump{tpl.spheres},
-              "clumpkit library particle " + stem +
-                  ": spheres in the principal frame (centroid at origin)\n"
-                  "pose to the mesh frame: x = q x' + p, q (w,x,y,z) = " +
-                  format_number(tpl.orientation.w()) + "," + format_number(tpl.orientation.x()) +
-                  "," + format_number(tpl.orientation.y()) + "," +
-                  format_number(tpl.orientation.z()) + ", p = " + format_number(tpl.position.x()) +
-                  "," + format_number(tpl.position.y()) + "," + format_number(tpl.position.z()) +
-                  "\nunit-density principal moments " + format_number(tpl.principal_moments[0]) +
-                  "," + format_number(tpl.principal_moments[1]) + "," +
-                  format_number(tpl.principal_moments[2]) + "; volume " +
-                  format_number(tpl.mass.volume) + "; density factor V_mesh/V_clump " +
-                  format_number(tpl.density_factor));
+              "clumpkit library particle " + stem + " (" + spec.name + ")", length.symbol);
+  write_clump(
+      (dir / (stem + ".template.csv")).string(), Clump{tpl.spheres},
+      "clumpkit library particle " + stem +
+          ": spheres in the principal frame (centroid at origin)\n"
+          "pose to the mesh frame: x = q x' + p, q (w,x,y,z) = " +
+          format_number(tpl.orientation.w()) + "," + format_number(tpl.orientation.x()) + "," +
+          format_number(tpl.orientation.y()) + "," + format_number(tpl.orientation.z()) +
+          ", p = " + format_number(tpl.position.x()) + "," + format_number(tpl.position.y()) + "," +
+          format_number(tpl.position.z()) + " " + length.pow(1) +
+          "\nunit-density principal moments " + format_number(tpl.principal_moments[0]) + "," +
+          format_number(tpl.principal_moments[1]) + "," + format_number(tpl.principal_moments[2]) +
+          " " + length.pow(5) + "; volume " + format_number(tpl.mass.volume) + " " + length.pow(3) +
+          "; density factor V_mesh/V_clump " + format_number(tpl.density_factor),
+      length.symbol);
 
   nlohmann::ordered_json rec;
   rec["id"] = i;
@@ -182,6 +185,7 @@ nlohmann::ordered_json make_particle(const ShapeRecipe& recipe, std::size_t i, i
                            tpl.orientation.z()};
   t["density_factor"] = tpl.density_factor;
   t["spheres_file"] = "particles/" + stem + ".template.csv";
+  add_units(rec, length);
   write_sealed_record((dir / (stem + ".json")).string(), rec);
   return rec;
 }
@@ -242,7 +246,7 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
   write_pictures(out, records, options);
 
   nlohmann::ordered_json m = manifest_head("library", recipe);
-  m["units"] = "recipe units (m); clumps are x,y,z,r in the mesh frame";
+  m["units_note"] = "clumps are x,y,z,r in the mesh frame";
   auto& fill = m["fill"];
   fill["spheres"] = recipe.fill.spheres;
   fill["coverage"] = recipe.fill.coverage;
@@ -266,6 +270,7 @@ LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
     fr.push_back({{"name", f.name}, {"method", f.method}, {"count", f.count}, {"first_id", first}});
     first += f.count;
   }
+  add_units(m, si_length());
   write_file_atomically((out / "manifest.json").string(),
                         [&](std::ostream& o) { o << m.dump(2) << "\n"; });
   publish_directory(out.string(), out_dir);

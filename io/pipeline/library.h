@@ -45,7 +45,8 @@ struct LibraryResult {
 /// count; a DIR.partial of another recipe is discarded. Each NNNNN.json carries a "checksum"
 /// (FNV-1a 64 of the record's compact JSON without it); a record that fails it is redone and
 /// named in `redone`. Fill settings come from the recipe's
-/// [fill] table (defaults otherwise).
+/// [fill] table (defaults otherwise). Every number says its SI unit (docs/units.md): the CSV
+/// header cells, and the "units" map of each record and of the manifest.
 LibraryResult run_library(const ShapeRecipe& recipe, const std::string& out_dir,
                           const LibraryOptions& options, const Interrupter& interrupter = {});
 

@@ -5,6 +5,7 @@
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "io/base/json_file.h"
+#include "io/base/units.h"
 #include "io/pipeline/page_data.h"
 #include "io/reports/page_files.h"
 
@@ -19,15 +20,22 @@ namespace clumpkit::page_data {
 namespace {
 
 // The report's numbers and words as one flat table (nested keys joined by dots; short arrays of
-// numbers written out, long ones counted).
-void flatten(const nlohmann::json& j, const std::string& prefix, ordered_json& out) {
+// numbers written out, long ones counted), and in `out_units` the unit of each row of numbers by
+// the file's "units" map (docs/units.md); the map itself is no row.
+void flatten(const nlohmann::json& j, std::vector<std::string>& path, const nlohmann::json& units,
+             ordered_json& out, ordered_json& out_units) {
   for (auto it = j.begin(); it != j.end(); ++it) {
-    const std::string key = prefix.empty() ? it.key() : prefix + "." + it.key();
+    if (path.empty() && it.key() == "units" && it.value().is_object()) continue;
+    path.push_back(it.key());
+    std::string key;
+    for (const std::string& p : path) key += (key.empty() ? "" : ".") + p;
     const nlohmann::json& v = it.value();
+    bool numbers = false;
     if (v.is_object()) {
-      flatten(v, key, out);
+      flatten(v, path, units, out, out_units);
     } else if (v.is_number()) {
       out[key] = sig(v.get<double>());
+      numbers = true;
     } else if (v.is_boolean()) {
       out[key] = v.get<bool>() ? "true" : "false";
     } else if (v.is_string()) {
@@ -38,10 +46,22 @@ void flatten(const nlohmann::json& j, const std::string& prefix, ordered_json& o
       std::string s;
       for (const auto& x : v) s += (s.empty() ? "" : ", ") + format_number(x.get<double>(), 6);
       out[key] = s;
+      numbers = true;
     } else if (v.is_array()) {
       out[key] = std::to_string(v.size()) + " entries";
     }
+    if (numbers) {
+      const std::string u = json_unit(units, path);
+      if (!u.empty()) out_units[key] = u;
+    }
+    path.pop_back();
   }
+}
+
+// The "units" map of a JSON file (null for a file written before units).
+const nlohmann::json& units_of(const nlohmann::json& j) {
+  static const nlohmann::json none;
+  return j.is_object() && j.contains("units") && j["units"].is_object() ? j["units"] : none;
 }
 
 Folder read_folder(const fs::path& dir) {
@@ -60,18 +80,20 @@ Folder read_folder(const fs::path& dir) {
   f.command = f.manifest["command"].get<std::string>();
   if (f.command == "test") f.test = f.manifest.value("test", std::string());
   if (fs::exists(dir / "report.json")) f.report = read_json_file((dir / "report.json").string());
+  f.units_recorded = !units_of(f.manifest).is_null() || !units_of(f.report).is_null();
   return f;
 }
 
 ordered_json folder_entry(const Folder& f) {
-  ordered_json report = ordered_json::object();
-  if (f.report.is_object()) flatten(f.report, "", report);
+  ordered_json report = ordered_json::object(), units = ordered_json::object();
+  std::vector<std::string> path;
+  if (f.report.is_object()) flatten(f.report, path, units_of(f.report), report, units);
   if (f.command == "library" || f.command == "shapes") {  // no report.json: the manifest's numbers
     nlohmann::json m = f.manifest;
     m.erase("recipe");
-    flatten(m, "", report);
+    flatten(m, path, units_of(f.manifest), report, units);
   }
-  return {{"name", display_name(f.dir)}, {"report", report}};
+  return {{"name", display_name(f.dir)}, {"report", report}, {"units", units}};
 }
 
 std::string kind_of(const Folder& f) {
@@ -124,6 +146,8 @@ PageResult write_page(const PageOptions& o) {
   ordered_json entries = ordered_json::array();
   for (const page_data::Folder& f : folders) entries.push_back(page_data::folder_entry(f));
   data["folders"] = entries;
+  data["units_recorded"] = std::all_of(folders.begin(), folders.end(),
+                                       [](const page_data::Folder& f) { return f.units_recorded; });
   std::string title = first.command + (first.test.empty() ? "" : " " + first.test);
   if (folders.size() > 1) title = std::to_string(folders.size()) + " " + first.test + " tests";
   data["title"] =

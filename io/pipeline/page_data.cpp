@@ -3,6 +3,7 @@
 
 #include "geom/errors.h"
 #include "io/base/text.h"
+#include "io/base/units.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +14,7 @@
 namespace clumpkit::page_data {
 
 int CsvTable::column(const std::string& name) const {
-  const auto it = std::find(columns.begin(), columns.end(), name);
+  const auto it = std::find(columns.begin(), columns.end(), column_name(name));
   return it == columns.end() ? -1 : static_cast<int>(it - columns.begin());
 }
 
@@ -34,7 +35,8 @@ CsvTable read_table(const fs::path& path) {
     if (line.empty() || line[0] == '#') continue;
     std::vector<std::string> cells = split_csv(line);
     if (t.columns.empty()) {
-      t.columns = std::move(cells);
+      for (const std::string& c : cells) t.units.push_back(column_unit(c));
+      t.columns = column_names(cells);
       continue;
     }
     if (cells.size() != t.columns.size())
@@ -58,18 +60,20 @@ CsvTable read_table(const fs::path& path) {
 
 ordered_json table_json(const CsvTable& t, const std::vector<std::string>& keep) {
   std::vector<int> cols;
-  ordered_json columns = ordered_json::array(), rows = ordered_json::array();
+  ordered_json columns = ordered_json::array(), units = ordered_json::array(),
+               rows = ordered_json::array();
   for (std::size_t c = 0; c < t.columns.size(); ++c)
     if (keep.empty() || std::find(keep.begin(), keep.end(), t.columns[c]) != keep.end()) {
       cols.push_back(static_cast<int>(c));
       columns.push_back(t.columns[c]);
+      units.push_back(c < t.units.size() ? t.units[c] : std::string());
     }
   for (const auto& r : t.rows) {
     ordered_json row = ordered_json::array();
     for (int c : cols) row.push_back(r[static_cast<std::size_t>(c)]);
     rows.push_back(std::move(row));
   }
-  return {{"columns", columns}, {"rows", rows}};
+  return {{"columns", columns}, {"units", units}, {"rows", rows}};
 }
 
 ordered_json series(const CsvTable& t, const std::string& label, const std::string& x, double fx,

@@ -27,9 +27,15 @@ inline double sig(double x) {
 /// A CSV file of an output folder: its header and its rows, a cell a number (six digits) where
 /// all of it is a finite number, else its text.
 struct CsvTable {
+  /// Each column's name without its unit (io/base/units.h's column_name: "volume", also for a
+  /// folder written before units, "strength_pa" read as "strength").
   std::vector<std::string> columns;
+  /// Each column's unit from its header cell ("m3", "1"); "" for a text column, or any column of
+  /// a folder written before units.
+  std::vector<std::string> units;
   std::vector<std::vector<ordered_json>> rows;
-  /// The column's index, −1 when the header lacks it.
+  /// The column's index, −1 when the header lacks it; `name` is read as column_name reads it
+  /// (a unit or an old name, "q_pa", finds "q").
   int column(const std::string& name) const;
   /// The cell as a number, NaN when it holds text.
   double number(std::size_t row, int col) const;
@@ -39,8 +45,8 @@ struct CsvTable {
 /// "PATH:LINE: ..." for a row of another width than the header, "PATH: empty table" for none.
 CsvTable read_table(const fs::path& path);
 
-/// {"columns": [...], "rows": [[...], ...]} of the columns named in `keep` that the table has, in
-/// the table's order; every column when `keep` is empty.
+/// {"columns": [...], "units": [...], "rows": [[...], ...]} of the columns named in `keep` (bare
+/// names) that the table has, in the table's order; every column when `keep` is empty.
 ordered_json table_json(const CsvTable& t, const std::vector<std::string>& keep);
 
 /// {"label", "x", "y"}: columns x and y times fx and fy (x as log10 when log_x), rows with a
@@ -73,6 +79,9 @@ struct Folder {
   std::string command;  ///< the manifest's command
   std::string test;     ///< the kind of test (command test)
   nlohmann::json manifest, report;
+  /// Its manifest.json or report.json has a "units" map: false for a folder written before
+  /// clumpkit recorded units (docs/units.md).
+  bool units_recorded = false;
 };
 
 // The data of each kind of page: each adds its keys to `data` (page/data.js) and its per-item

@@ -21,7 +21,7 @@ std::size_t crush_data(const Folder& f, const fs::path& out, ordered_json& data,
     if (!fs::exists(p)) continue;
     const CsvTable c = read_table(p);
     // A curve of at most about 400 points: the plot is small and there is one per particle.
-    ordered_json s = series(c, name, "travel_m", 1e3, "force_n", 1);
+    ordered_json s = series(c, name, "travel", 1e3, "force", 1);
     const std::size_t n = s["x"].size(), stride = std::max<std::size_t>(1, n / 400);
     ordered_json x = ordered_json::array(), y = ordered_json::array();
     for (std::size_t i = 0; i < n; i += stride) x.push_back(s["x"][i]), y.push_back(s["y"][i]);

@@ -4,6 +4,7 @@
 #include "geom/mesh/mesh_index.h"
 #include "geom/mesh/ray_inside.h"
 #include "geom/mesh/sphere_reach.h"
+#include "io/base/units.h"
 #include "io/formats/clump_io.h"
 #include "io/formats/mesh_io.h"
 #include "io/pipeline/page_data.h"
@@ -63,6 +64,7 @@ std::size_t library_data(const Folder& f, const fs::path& out, ordered_json& dat
   const int id = t.column("id"), mesh = t.column("mesh"), clump = t.column("clump");
   if (id < 0 || mesh < 0) throw InvalidInput(table.string() + ": columns id and mesh are required");
   t.columns.push_back("outside");
+  t.units.push_back(kDimensionless);  // a count of spheres
   Images images{out, &scripts};
   images.add(f.dir / "contact_sheet.png", "contact sheet");
   for (auto& row : t.rows) {

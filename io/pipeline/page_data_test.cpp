@@ -16,10 +16,10 @@ std::vector<PagePlot> test_plots(const std::string& test, bool breakage) {
   for (const TestKind& k : test_kinds())
     if (test == k.name) p = k.page_plots;
   if (breakage) {
-    p.push_back({"breakage against stress", "axial stress (MPa)", "Hardin's Br", "axial_stress_pa",
+    p.push_back({"breakage against stress", "axial stress (MPa)", "Hardin's Br", "axial_stress",
                  "hardin_br", 1e-6, 1});
-    p.push_back({"breakage against work", "input work (kJ/m3)", "Hardin's Br", "work_pa",
-                 "hardin_br", 1e-3, 1});
+    p.push_back({"breakage against work", "input work (kJ/m3)", "Hardin's Br", "work", "hardin_br",
+                 1e-3, 1});
   }
   return p;
 }

@@ -16,9 +16,9 @@ nlohmann::ordered_json point_json(const Vec3& p) {
   return {p.x(), p.y(), p.z()};
 }
 
-std::string point_text(const Vec3& p) {
+std::string point_text(const Vec3& p, const LengthUnit& length) {
   return "(" + format_number(p.x(), 6) + ", " + format_number(p.y(), 6) + ", " +
-         format_number(p.z(), 6) + ")";
+         format_number(p.z(), 6) + ") " + length.symbol;
 }
 
 }  // namespace
@@ -97,7 +97,9 @@ nlohmann::ordered_json repair_json(const RepairReport& p, const MeshReadReport& 
   return j;
 }
 
-std::vector<std::string> repair_lines(const RepairReport& p, const MeshReadReport& read) {
+std::vector<std::string> repair_lines(const RepairReport& p, const MeshReadReport& read,
+                                      const LengthUnit& length) {
+  const std::string l = length.symbol, l3 = length.pow(3);
   std::vector<std::string> out;
   char line[512];
   auto add = [&](const char* format, auto... values) {
@@ -116,8 +118,9 @@ std::vector<std::string> repair_lines(const RepairReport& p, const MeshReadRepor
       p.small_component_triangles);
   add("holes: %d closed", p.holes);
   for (const RepairHole& h : p.closed_holes)
-    add("  %d edges at %s: %s", h.edges, point_text(h.at).c_str(), h.method.c_str());
-  add("volume: the closed surface bounds %s", format_number(p.volume_capped, 6).c_str());
+    add("  %d edges at %s: %s", h.edges, point_text(h.at, length).c_str(), h.method.c_str());
+  add("volume: the closed surface bounds %s %s", format_number(p.volume_capped, 6).c_str(),
+      l3.c_str());
   add("self-intersections: %d pairs of faces cross within a shell, %d between shells",
       p.crossings_within, p.crossings_between);
   for (const CrossingRound& c : p.local_rounds)
@@ -125,25 +128,26 @@ std::vector<std::string> repair_lines(const RepairReport& p, const MeshReadRepor
   if (p.united_shells > 0) add("  union: %d shells joined into another", p.united_shells);
   if (p.slivers > 0) add("  slivers: %d triangles of (nearly) zero area collapsed", p.slivers);
   if (p.wrapped)
-    add("wrap: alpha %s, offset %s, %.2f s", format_number(p.wrap_alpha, 4).c_str(),
-        format_number(p.wrap_offset, 4).c_str(), p.wrap_seconds);
+    add("wrap: alpha %s %s, offset %s %s, %.2f s", format_number(p.wrap_alpha, 4).c_str(),
+        l.c_str(), format_number(p.wrap_offset, 4).c_str(), l.c_str(), p.wrap_seconds);
   else
     add("wrap: not needed");
   if (!p.mended_by.empty()) add("mended by: %s", p.mended_by.c_str());
   if (p.changed)
-    add("changed beyond welding and hole closing: volume %s -> %s (%+.3f %%), distance to the "
-        "closed input max %.3g %% (at %s), mean %.3g %% of the diagonal %s",
+    add("changed beyond welding and hole closing: volume %s -> %s %s (%+.3f %%), distance to "
+        "the closed input max %.3g %% (at %s), mean %.3g %% of the diagonal %s %s",
         format_number(std::abs(p.volume_capped), 6).c_str(),
-        format_number(p.volume_after, 6).c_str(),
+        format_number(p.volume_after, 6).c_str(), l3.c_str(),
         100.0 * (p.volume_after / std::abs(p.volume_capped) - 1.0), 100.0 * p.distance_max,
-        point_text(p.distance_max_at).c_str(), 100.0 * p.distance_mean,
-        format_number(p.diagonal, 6).c_str());
+        point_text(p.distance_max_at, length).c_str(), 100.0 * p.distance_mean,
+        format_number(p.diagonal, 6).c_str(), l.c_str());
   add("orientation: %s", p.reoriented ? "re-oriented" : "kept");
   return out;
 }
 
 RepairJobResult run_repair_job(const std::string& path, const std::string& out,
-                               const MeshReadOptions& options, const RepairOptions& repair) {
+                               const MeshReadOptions& options, const RepairOptions& repair,
+                               const LengthUnit& length) {
   const auto t0 = std::chrono::steady_clock::now();
   check_not_input(out, "--output", path);
   mesh_format_from_path(out);  // an unknown extension is refused before the work
@@ -160,6 +164,7 @@ RepairJobResult run_repair_job(const std::string& path, const std::string& out,
   j.update(repair_json(r.repair, r.read, repair));
   j["triangles"] = r.triangles;
   j["seconds"] = r.seconds;
+  add_units(j, length);
   return r;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "geom/mesh/repair.h"
+#include "io/base/units.h"
 #include "io/formats/mesh_io.h"
 
 #include <nlohmann/json.hpp>
@@ -37,8 +38,10 @@ nlohmann::ordered_json repair_json(const RepairReport& repair, const MeshReadRep
                                    const RepairOptions& options);
 
 /// One line per step of what the repair did (the text `clumpkit repair` prints, without the
-/// final "wrote" line); the local mend one line per round.
-std::vector<std::string> repair_lines(const RepairReport& repair, const MeshReadReport& read);
+/// final "wrote" line); the local mend one line per round. Lengths, areas and volumes carry the
+/// unit `length` ("L": the mesh's, unnamed).
+std::vector<std::string> repair_lines(const RepairReport& repair, const MeshReadReport& read,
+                                      const LengthUnit& length = {});
 
 /// What the repair job did: the repair, the read, and the report of `repair --json`.
 struct RepairJobResult {
@@ -52,9 +55,10 @@ struct RepairJobResult {
 /// Reads and repairs `mesh` (read_repaired_mesh) and writes the solid to `out` (.stl, .obj or
 /// .ply), which must not be the input. Throws InvalidInput naming the input for what cannot be
 /// repaired (nothing is written then), and what read_mesh_raw and write_mesh throw. The report:
-/// input, output, then repair_json's keys, then triangles and seconds.
+/// input, output, then repair_json's keys, then triangles and seconds, then the "units" of every
+/// number (add_units, lengths in `length`).
 RepairJobResult run_repair_job(const std::string& mesh, const std::string& out,
                                const MeshReadOptions& options = {},
-                               const RepairOptions& repair = {});
+                               const RepairOptions& repair = {}, const LengthUnit& length = {});
 
 }  // namespace clumpkit

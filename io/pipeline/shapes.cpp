@@ -5,6 +5,7 @@
 #include "geom/format.h"
 #include "io/base/atomic_file.h"
 #include "io/base/text.h"
+#include "io/base/units.h"
 #include "io/formats/descriptor_table.h"
 #include "io/formats/mesh_io.h"
 #include "io/pipeline/manifest.h"
@@ -70,11 +71,11 @@ ShapeBatchResult run_shape_batch(const ShapeRecipe& recipe, const std::string& o
       for (const auto& [name, v] : it.shape.sampled)
         if (seen.insert(name).second) params.push_back(name);
 
+    std::string names = "id,fraction,method,mesh,attempts";
+    for (const auto& p : params) names += ",p_" + p;
+    for (const auto& c : descriptor_csv_columns()) names += "," + c;
     write_file_atomically((fs::path(staging) / "shapes.csv").string(), [&](std::ostream& o) {
-      o << "id,fraction,method,mesh,attempts";
-      for (const auto& p : params) o << ",p_" << p;
-      for (const auto& c : descriptor_csv_columns()) o << "," << c;
-      o << "\n";
+      o << csv_header("shapes", names, si_length()) << "\n";
       for (std::size_t i = 0; i < total; ++i) {
         const auto& it = items[i];
         const auto& fr = recipe.fractions[it.fraction];
@@ -105,6 +106,7 @@ ShapeBatchResult run_shape_batch(const ShapeRecipe& recipe, const std::string& o
                     {"attempts", attempts}});
       first += f.count;
     }
+    add_units(m, si_length());
     write_file_atomically((fs::path(staging) / "manifest.json").string(),
                           [&](std::ostream& o) { o << m.dump(2) << "\n"; });
     publish_directory(staging, out_dir);

@@ -15,7 +15,8 @@ struct ShapeBatchResult {
 };
 
 /// Generates every particle of the recipe in parallel (TBB) and writes
-///   DIR/meshes/NNNNN.stl, DIR/shapes.csv, DIR/manifest.json.
+///   DIR/meshes/NNNNN.stl, DIR/shapes.csv, DIR/manifest.json
+/// (every number with its SI unit: shapes.csv's header cells, the manifest's "units").
 /// Particle i uses the random stream (recipe.seed, i), so outputs are byte-identical for any
 /// thread count. Everything is written into DIR.partial first and renamed at the end, so a failed
 /// run leaves no partial DIR (the rule of job.h: an existing DIR is replaced only if it is empty

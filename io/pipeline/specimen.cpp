@@ -4,6 +4,7 @@
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "io/base/atomic_file.h"
+#include "io/base/units.h"
 #include "io/formats/bonds_csv.h"
 #include "io/formats/library_table.h"
 #include "io/formats/specimen_csv.h"
@@ -39,10 +40,12 @@ void write_report_and_manifest(const fs::path& staging, const SpecimenRecipe& re
                                std::chrono::steady_clock::time_point started) {
   report["seconds"]["total"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  add_units(report, si_length());
   write_file_atomically((staging / "report.json").string(),
                         [&](std::ostream& s) { s << report.dump(2) << "\n"; });
   nlohmann::ordered_json manifest =
       manifest_head("specimen", recipe.path, recipe.text, recipe.seed);
+  add_units(manifest, si_length());
   write_file_atomically((staging / "manifest.json").string(),
                         [&](std::ostream& s) { s << manifest.dump(2) << "\n"; });
 }

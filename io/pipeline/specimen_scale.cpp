@@ -5,6 +5,7 @@
 #include "io/base/atomic_file.h"
 #include "io/base/json_file.h"
 #include "io/base/text.h"
+#include "io/base/units.h"
 #include "io/formats/specimen_csv.h"
 #include "io/formats/specimen_vtp.h"
 #include "io/pipeline/manifest.h"
@@ -75,6 +76,7 @@ nlohmann::ordered_json run_specimen_scale(const std::string& specimen_dir, doubl
   }
   rep["scaled_from"] = specimen_dir;
   rep["scale_factor"] = factor;
+  add_units(rep, si_length());  // the source's map, if any, replaced
 
   write_staged(out_dir, [&](const std::string& staging) {
     const fs::path out = staging;
@@ -87,6 +89,7 @@ nlohmann::ordered_json run_specimen_scale(const std::string& specimen_dir, doubl
     m["factor"] = factor;
     m["bodies"] = rows.size();
     m["files"] = {"specimen.csv", "specimen.vtp", "report.json"};
+    add_units(m, si_length());
     write_file_atomically((out / "manifest.json").string(),
                           [&](std::ostream& f) { f << m.dump(2) << "\n"; });
   });

@@ -31,7 +31,8 @@ struct CurvePicture {
   double (*y)(const dem::CurveRow&);
 };
 
-/// A plot of the page: curve.csv's columns x and y times fx and fy (x as log10 when log_x).
+/// A plot of the page: curve.csv's columns x and y (bare names, "axial_stress": matched through
+/// column_name) times fx and fy (x as log10 when log_x).
 struct PagePlot {
   std::string title, x_label, y_label, x, y;
   double fx = 1, fy = 1;

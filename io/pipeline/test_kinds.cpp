@@ -171,7 +171,7 @@ LabJobResult cpt_job(const TestKind&, const std::string& specimen_dir, const Tes
 }
 
 const PagePlot kDeviatorPlot{
-    "deviator stress", "axial strain", "q (kPa)", "axial_strain", "q_pa", 1, 1e-3};
+    "deviator stress", "axial strain", "q (kPa)", "axial_strain", "q", 1, 1e-3};
 const PagePlot kVolumePlot{"volumetric strain", "axial strain", "volumetric strain", "axial_strain",
                            "volumetric_strain"};
 const CurvePicture kDeviatorPicture{"axial strain (-)", "deviator stress q (kPa)", axial_strain,
@@ -188,7 +188,7 @@ const std::vector<TestKind>& test_kinds() {
        run_element_test_job,
        report_isotropic,
        {"volumetric strain (-)", "mean stress p (kPa)", vol_strain, mean_p_kpa},
-       {{"isotropic compression", "volumetric strain", "p (kPa)", "volumetric_strain", "p_pa", 1,
+       {{"isotropic compression", "volumetric strain", "p (kPa)", "volumetric_strain", "p", 1,
          1e-3}}},
       {"oedometer",
        "radial wall fixed, platen at strain_rate to final_stress, holding at hold_stresses "
@@ -199,10 +199,10 @@ const std::vector<TestKind>& test_kinds() {
        run_element_test_job,
        report_oedometer,
        {"axial strain (-)", "axial stress (kPa)", axial_strain, axial_kpa},
-       {{"vertical stress", "axial strain", "axial stress (MPa)", "axial_strain", "axial_stress_pa",
-         1, 1e-6},
-        {"compression", "log10 axial stress (MPa)", "porosity", "axial_stress_pa", "porosity", 1e-6,
-         1, true}}},
+       {{"vertical stress", "axial strain", "axial stress (MPa)", "axial_strain", "axial_stress", 1,
+         1e-6},
+        {"compression", "log10 axial stress (MPa)", "porosity", "axial_stress", "porosity", 1e-6, 1,
+         true}}},
       {"triaxial",
        "radial stress held, platen at strain_rate to max_axial_strain (report: young_modulus at "
        "1e-4, peak_friction_angle, critical_friction_angle)",
@@ -221,14 +221,13 @@ const std::vector<TestKind>& test_kinds() {
        {kDeviatorPlot, kVolumePlot}},
       {"cpt",
        "the [probe] cone pushed down the cell's axis from the top platen at its velocity to its "
-       "depth, the cell's stresses held: curve.csv step,depth_m,tip_force_n,sleeve_force_n,qc_pa,"
-       "fs_pa",
+       "depth, the cell's stresses held: curve.csv step,depth,tip_force,sleeve_force,qc,fs",
        nullptr,
        cpt_job,
        nullptr,
        {},
-       {{"cone resistance", "depth (m)", "qc (MPa)", "depth_m", "qc_pa", 1, 1e-6},
-        {"sleeve friction", "depth (m)", "fs (kPa)", "depth_m", "fs_pa", 1, 1e-3}}},
+       {{"cone resistance", "depth (m)", "qc (MPa)", "depth", "qc", 1, 1e-6},
+        {"sleeve friction", "depth (m)", "fs (kPa)", "depth", "fs", 1, 1e-3}}},
   };
   return kinds;
 }

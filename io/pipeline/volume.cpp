@@ -35,8 +35,18 @@ nlohmann::ordered_json mass_json(const MassProperties& m) {
 
 VolumeJobResult run_volume_job(const VolumeJobOptions& options) {
   check_volume_options(options);
-  const Clump clump = read_clump(options.clump);
   VolumeJobResult result;
+  const std::string file_unit = read_clump_length_unit(options.clump);
+  if (!options.length_unit.empty()) {
+    result.length = length_unit(options.length_unit);
+    // "L" is a file's own unit, unnamed: naming it is what --length-unit is for.
+    if (!file_unit.empty() && file_unit != "L" && file_unit != result.length.symbol)
+      throw InvalidInput("--length-unit " + options.length_unit + ": " + options.clump +
+                         " says its lengths are in " + file_unit);
+  } else if (!file_unit.empty()) {
+    result.length = LengthUnit{file_unit};
+  }
+  const Clump clump = read_clump(options.clump);
   result.spheres = clump.spheres.size();
   result.methods = measure_volume(clump, options, options.clump);
   return result;

@@ -4,6 +4,7 @@
 
 #include "geom/progress.h"
 #include "geom/sphere.h"
+#include "io/base/units.h"
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +25,8 @@ struct VolumeJobOptions {
   double voxel = 0.0;            ///< voxel: voxel size (0: smallest radius / 10)
   /// Refuse a method estimated to need more than this (bytes).
   double max_bytes = std::numeric_limits<double>::infinity();
+  /// The clump file's length unit as the user names it (--length-unit; "": not named).
+  std::string length_unit;
 };
 
 /// What the volume job measured.
@@ -33,10 +36,15 @@ struct VolumeJobResult {
   /// voxel, in that order: volume, and what the method gives besides (area, centroid, inertia,
   /// slices, voxel, ...), and seconds.
   nlohmann::ordered_json methods;
+  /// The unit of the lengths: the one named, else the one the clump file's header names, else L.
+  /// A header's L (unnamed) may be named.
+  LengthUnit length;
 };
 
 /// Checks the options and the memory estimate of every method asked for before the first runs
-/// (InvalidInput naming the option, method and estimate), then runs them.
+/// (InvalidInput naming the option, method and estimate), then runs them. A named length unit
+/// other than the one the clump file's header names (other than L) is refused (InvalidInput)
+/// before any work.
 VolumeJobResult run_volume_job(const VolumeJobOptions& options);
 /// Throws InvalidInput for an unknown method or pixel rule.
 void check_volume_options(const VolumeJobOptions& options);

@@ -1,8 +1,11 @@
 #include "io/recipes/crush_recipe.h"
 
+#include "dem/core/body.h"
 #include "dem/core/contact.h"
+#include "dem/lab/weibull.h"
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "geom/random.h"
 #include "geom/shapes/primitives.h"
 #include "io/base/text.h"
 #include "io/recipes/section_table.h"
@@ -47,15 +50,10 @@ const RecipeSection<CrushRecipe>& crush_section() {
       "crush",
       "The rig of `clumpkit crush`: rigid platens closing on one particle at a constant strain "
       "rate (Hu et al. 2023), the peak rule, and the statistics.",
-      {custom_key<R>("seed", "", ">= 0", "seed of every random draw of the run", "1",
-                     [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
-                       const long long n = f.integer(v, field);
-                       if (n < 0) f.fail(field, "must be non-negative, got " + toml_show(v));
-                       r.seed = static_cast<std::uint64_t>(n);
-                     }),
-       number_key<R>(
-           "density", "kg/m³", "> 0", "particle density", [](R& r) -> double& { return r.density; },
-           &TomlFields::positive),
+      {range_key<R>("seed", "", kSeed, "seed of every random draw of the run",
+                    [](R& r) -> std::uint64_t& { return r.seed; }),
+       range_key<R>("density", "kg/m³", dem::kDensity, "particle density",
+                    [](R& r) -> double& { return r.density; }),
        range_key<R>("strain_rate", "1/s", dem::kCrushStrainRate,
                     "closing speed over the initial gap",
                     [](R& r) -> double& { return r.rig.strain_rate; }),
@@ -64,13 +62,11 @@ const RecipeSection<CrushRecipe>& crush_section() {
        range_key<R>("platen_stiffness", "N/m", dem::kPlatenStiffness,
                     "normal and shear stiffness of a corner on a platen",
                     [](R& r) -> double& { return r.rig.platen_stiffness; }),
-       range_key<R>("local_damping", "", dem::kCrushLocalDamping,
-                    "PFC local damping α of every cell",
+       range_key<R>("local_damping", "", dem::kLocalDamping, "PFC local damping α of every cell",
                     [](R& r) -> double& { return r.rig.local_damping; }),
-       range_key<R>("timestep_safety", "", dem::kCrushTimestepSafety,
-                    "time step over the critical one",
+       range_key<R>("timestep_safety", "", dem::kTimestepSafety, "time step over the critical one",
                     [](R& r) -> double& { return r.rig.timestep_safety; }),
-       range_key<R>("density_scaling", "", dem::kCrushDensityScaling,
+       range_key<R>("density_scaling", "", dem::kDensityScaling,
                     "every cell's mass and moments × λ (time step × √λ; reported)",
                     [](R& r) -> double& { return r.rig.density_scaling; }),
        range_key<R>("max_strain", "", dem::kCrushMaxStrain,
@@ -89,11 +85,9 @@ const RecipeSection<CrushRecipe>& crush_section() {
                     "the seat: cells within this fraction of the gap above the lower platen do "
                     "not rotate (a bedded end); 0 for none",
                     [](R& r) -> double& { return r.rig.bed_depth; }),
-       custom_key<R>("bootstrap", "", "[100, 100000]",
-                     "bootstrap resamples of the Weibull fits' 90 % intervals", "1000",
-                     [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
-                       r.bootstrap = f.integer_in(v, field, 100, 100000);
-                     })}};
+       range_key<R>("bootstrap", "", dem::kBootstrapResamples,
+                    "bootstrap resamples of the Weibull fits' 90 % intervals",
+                    [](R& r) -> int& { return r.bootstrap; })}};
   return s;
 }
 
@@ -113,20 +107,18 @@ const RecipeSection<CrushRecipe>& cells_section() {
       "cells",
       "The Voronoi cells a parent is cut into (as `clumpkit cells`) and the spread of their "
       "bonds' strengths; a crushable specimen's recipe reads the same table.",
-      {number_key<R>(
-           "cell_size", "m", "> 0",
-           "a cell's volume-equivalent diameter ℓ: a parent of diameter D gets round((D/ℓ)³) "
-           "cells",
-           [](R& r) -> double& { return r.cells.cell_size; }, &TomlFields::positive),
-       integer_in_key<R>(
-           "lloyd",
+      {range_key<R>("cell_size", "m", kCellSize,
+                    "a cell's volume-equivalent diameter ℓ: a parent of diameter D gets "
+                    "round((D/ℓ)³) cells",
+                    [](R& r) -> double& { return r.cells.cell_size; }),
+       range_key<R>(
+           "lloyd", "", kLloydSteps,
            "Lloyd steps moving each seed to its cell's centroid (0: raw Poisson–Voronoi cells)",
-           [](R& r) -> int& { return r.cells.lloyd; }, 0, 100),
-       integer_in_key<R>(
-           "face_subdivision",
-           "s: each fan triangle of a face splits into 4^s integration points (a numerical "
-           "control)",
-           [](R& r) -> int& { return r.face_subdivision; }, 0, 3),
+           [](R& r) -> int& { return r.cells.lloyd; }),
+       range_key<R>("face_subdivision", "", kFaceSubdivisions,
+                    "s: each fan triangle of a face splits into 4^s integration points (a "
+                    "numerical control)",
+                    [](R& r) -> int& { return r.face_subdivision; }),
        [] {
          auto k = custom_key<R>(
              "strength_factor", "", "a number or distribution drawing factors > 0",
@@ -158,14 +150,14 @@ const RecipeSection<CrushRecipe>& bond_section() {
       "The cohesive law of the bonds between cells (Hu et al. 2023 eqs. 5–11; defaults: their "
       "granite), per unit area; checked by dem::validate_values as read and by dem::validate once "
       "`scale` is applied.",
-      {number_key<R>("kn", "N/m³", "> 0", "K_I, normal stiffness",
-                     [](R& r) -> double& { return r.law.kn; }),
-       number_key<R>("kt", "N/m³", "> 0", "K_II, shear stiffness",
-                     [](R& r) -> double& { return r.law.kt; }),
-       number_key<R>("sigma_n", "Pa", "> 0", "σ_eI, tensile strength (× scale)",
-                     [](R& r) -> double& { return r.law.sigma_n; }),
-       number_key<R>("sigma_t", "Pa", "> 0", "σ_eII, shear strength (× scale)",
-                     [](R& r) -> double& { return r.law.sigma_t; }),
+      {range_key<R>("kn", "N/m³", dem::kBondStiffness, "K_I, normal stiffness",
+                    [](R& r) -> double& { return r.law.kn; }),
+       range_key<R>("kt", "N/m³", dem::kBondStiffness, "K_II, shear stiffness",
+                    [](R& r) -> double& { return r.law.kt; }),
+       range_key<R>("sigma_n", "Pa", dem::kBondStrength, "σ_eI, tensile strength (× scale)",
+                    [](R& r) -> double& { return r.law.sigma_n; }),
+       range_key<R>("sigma_t", "Pa", dem::kBondStrength, "σ_eII, shear strength (× scale)",
+                    [](R& r) -> double& { return r.law.sigma_t; }),
        number_key<R>("g_n", "J/m²", "> σ_eI²/(2 K_I)", "G_I, mode I fracture energy (× scale²)",
                      [](R& r) -> double& { return r.law.g_n; }),
        number_key<R>("g_t", "J/m²", "> σ_eII²/(2 K_II)", "G_II, mode II fracture energy (× scale²)",
@@ -173,11 +165,10 @@ const RecipeSection<CrushRecipe>& bond_section() {
        range_key<R>("friction", "", dem::kFriction,
                     "Coulomb coefficient of a damaged face in compression",
                     [](R& r) -> double& { return r.law.friction; }),
-       number_key<R>(
-           "scale", "", "> 0",
-           "calibration factor s: strengths × s, energies × s² (the Brazilian "
-           "calibration of crush-brazilian.toml gives 1.85)",
-           [](R& r) -> double& { return r.scale; }, &TomlFields::positive)}};
+       range_key<R>("scale", "", dem::kBondScale,
+                    "calibration factor s: strengths × s, energies × s² (the Brazilian "
+                    "calibration of crush-brazilian.toml gives 1.85)",
+                    [](R& r) -> double& { return r.scale; })}};
   return s;
 }
 

@@ -1,6 +1,8 @@
 #include "io/recipes/lab_recipe.h"
 
+#include "dem/core/body.h"
 #include "dem/core/contact.h"
+#include "dem/core/timestep.h"
 #include "geom/errors.h"
 #include "geom/format.h"
 #include "io/base/text.h"
@@ -16,11 +18,6 @@
 namespace clumpkit {
 
 namespace {
-
-// A density scaling λ in [1, 1e6]: "must be in [1, 1e6], got VALUE" otherwise.
-void scaling_range(const TomlFields& f, const std::string& field, const toml::node& v, double x) {
-  if (!(x >= 1 && x <= 1e6)) f.fail(field, "must be in [1, 1e6], got " + toml_show(v));
-}
 
 // [test] modulus_range: a strain range [lo, hi] with 0 <= lo < hi.
 void read_modulus_range(const TomlFields& f, const toml::node& v, const std::string& field,
@@ -61,34 +58,30 @@ const RecipeSection<TestRecipe>& test_section() {
   static const RecipeSection<R> s{
       "test",
       "The loading of `clumpkit test` (consolidation to `confining`, then the test of its kind).",
-      {number_key<R>(
-           "confining", "Pa", "> 0",
-           "consolidation stress, and the lateral stress of a triaxial or CPT",
-           [](R& r) -> double& { return r.settings.confining; }, &TomlFields::positive),
+      {range_key<R>("confining", "Pa", dem::kConfiningStress,
+                    "consolidation stress, and the lateral stress of a triaxial or CPT",
+                    [](R& r) -> double& { return r.settings.confining; }),
        shown_as(number_key<R>(
                     "final_stress", "Pa", "> confining",
                     "isotropic: stress at the end; oedometer: axial stress at the end",
                     [](R& r) -> double& { return r.settings.final_stress; }, &TomlFields::positive),
                 "4 × confining"),
-       number_key<R>(
-           "strain_rate", "1/s", "> 0", "axial strain rate of oedometer and triaxial",
-           [](R& r) -> double& { return r.settings.strain_rate; }, &TomlFields::positive),
-       shown_as(number_key<R>(
-                    "inertial_number", "", "(0, 1e-2]",
-                    "oedometer and triaxial: the platen speeds up with the axial stress σa to "
-                    "hold the particles' inertial number I = ε̇·d·√(ρ/σa) here, never slower "
-                    "than strain_rate",
-                    [](R& r) -> double& { return r.settings.inertial_number; },
-                    &TomlFields::positive, at_most(1e-2, "must be at most 1e-2 (quasi-static)")),
+       range_key<R>("strain_rate", "1/s", dem::kTestStrainRate,
+                    "axial strain rate of oedometer and triaxial",
+                    [](R& r) -> double& { return r.settings.strain_rate; }),
+       shown_as(range_key<R>("inertial_number", "", dem::kHeldInertialNumber,
+                             "oedometer and triaxial: the platen speeds up with the axial stress "
+                             "σa to hold the particles' inertial number I = ε̇·d·√(ρ/σa) here, "
+                             "never slower than strain_rate (0: off)",
+                             [](R& r) -> double& { return r.settings.inertial_number; }),
                 "off: strain_rate throughout"),
-       shown_as(number_key<R>(
-                    "stress_rate", "Pa/s", "> 0", "isotropic loading rate",
-                    [](R& r) -> double& { return r.settings.stress_rate; }, &TomlFields::positive),
+       shown_as(range_key<R>("stress_rate", "Pa/s", dem::kStressRate,
+                             "isotropic loading rate (0: the default)",
+                             [](R& r) -> double& { return r.settings.stress_rate; }),
                 "confining × strain_rate × 20"),
-       number_key<R>(
-           "density_scaling", "", "[1, 1e6]",
-           "every body's mass and moments × λ for the test (time step × √λ; reported)",
-           [](R& r) -> double& { return r.density_scaling; }, &TomlFields::number, scaling_range),
+       range_key<R>("density_scaling", "", dem::kDensityScaling,
+                    "every body's mass and moments × λ for the test (time step × √λ; reported)",
+                    [](R& r) -> double& { return r.density_scaling; }),
        custom_key<R>("hold_stresses", "Pa", "ascending, in (confining, final_stress]",
                      "oedometer: stresses where the platen stops and its servo holds the stress "
                      "until equilibrium (consolidation_tolerance; unbalanced-force ratio 1e-3), "
@@ -97,22 +90,13 @@ const RecipeSection<TestRecipe>& test_section() {
                      [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
                        r.settings.hold_stresses = f.numbers(v, field);
                      }),
-       custom_key<R>("max_hold_steps", "steps", "[100, 1e9]", "step limit of one hold", "200000",
-                     [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
-                       const long long n = f.integer(v, field);
-                       if (n < 100 || n > 1000000000)
-                         f.fail(field, "must be in [100, 1e9], got " + toml_show(v));
-                       r.settings.max_hold_steps = n;
-                     }),
-       number_key<R>(
-           "max_axial_strain", "", "(0, 0.9)", "where a triaxial test ends",
-           [](R& r) -> double& { return r.settings.max_axial_strain; }, &TomlFields::positive,
-           below(0.9, "must be below 0.9")),
-       number_key<R>(
-           "critical_fraction", "", "(0, 1]",
-           "last fraction of a triaxial curve averaged for the critical state",
-           [](R& r) -> double& { return r.critical_fraction; }, &TomlFields::positive,
-           at_most(1.0, "must be in (0, 1]")),
+       range_key<R>("max_hold_steps", "steps", dem::kMaxHoldSteps, "step limit of one hold",
+                    [](R& r) -> long long& { return r.settings.max_hold_steps; }),
+       range_key<R>("max_axial_strain", "", dem::kMaxAxialStrain, "where a triaxial test ends",
+                    [](R& r) -> double& { return r.settings.max_axial_strain; }),
+       range_key<R>("critical_fraction", "", dem::kCriticalFraction,
+                    "last fraction of a triaxial curve averaged for the critical state",
+                    [](R& r) -> double& { return r.critical_fraction; }),
        shown_as(range_key<R>("friction", "", dem::kFriction, "μ of the test",
                              [](R& r) -> double& { return r.settings.friction; }),
                 "the specimen's"),
@@ -120,30 +104,20 @@ const RecipeSection<TestRecipe>& test_section() {
                              "μ during the consolidation (0: the densest packing at confining)",
                              [](R& r) -> double& { return r.settings.consolidation_friction; }),
                 "the test's"),
-       shown_as(
-           number_key<R>(
-               "servo_strain_rate", "1/s", "> 0",
-               "speed limit of the servo-driven walls as a strain rate",
-               [](R& r) -> double& { return r.settings.servo_strain_rate; }, &TomlFields::positive),
-           "10 × the platen speed"),
-       custom_key<R>("record_every", "steps", "[1, 1e6]", "steps between curve rows", "200",
-                     [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
-                       const long long n = f.integer(v, field);
-                       if (n < 1 || n > 1000000)
-                         f.fail(field, "must be in [1, 1e6], got " + toml_show(v));
-                       r.settings.record_every = static_cast<int>(n);
-                     }),
-       number_key<R>(
-           "timestep_safety", "", "(0, 0.5]", "time step over the critical one",
-           [](R& r) -> double& { return r.timestep_safety; }, &TomlFields::positive,
-           at_most(0.5, "must be at most 0.5")),
+       shown_as(range_key<R>("servo_strain_rate", "1/s", dem::kServoStrainRate,
+                             "speed limit of the servo-driven walls as a strain rate (0: the "
+                             "default)",
+                             [](R& r) -> double& { return r.settings.servo_strain_rate; }),
+                "10 × the platen speed"),
+       range_key<R>("record_every", "steps", dem::kRecordEvery, "steps between curve rows",
+                    [](R& r) -> int& { return r.settings.record_every; }),
+       range_key<R>("timestep_safety", "", dem::kTimestepSafety, "time step over the critical one",
+                    [](R& r) -> double& { return r.timestep_safety; }),
        custom_key<R>("modulus_range", "", "[lo, hi], 0 <= lo < hi",
                      "strain range of the tangent modulus", "the test's own", read_modulus_range),
-       number_key<R>(
-           "consolidation_tolerance", "", "> 0",
-           "relative stress error at the consolidation's equilibrium",
-           [](R& r) -> double& { return r.settings.consolidation_tolerance; },
-           &TomlFields::positive)}};
+       range_key<R>("consolidation_tolerance", "", dem::kConsolidationTolerance,
+                    "relative stress error at the consolidation's equilibrium",
+                    [](R& r) -> double& { return r.settings.consolidation_tolerance; })}};
   return s;
 }
 
@@ -165,31 +139,26 @@ const RecipeSection<TestRecipe>& contact_override_section() {
                      }),
        // The overrides are optionals: a key given sets its value (emplace), one not given leaves
        // it unset, and the defaults shown are the rules that then apply.
-       shown_as(number_key<R>(
-                    "kn_ref", "N/m", "> 0", "normal stiffness (at d_ref with linear scaling)",
-                    [](R& r) -> double& { return r.kn_ref.emplace(); }, &TomlFields::positive),
+       shown_as(range_key<R>("kn_ref", "N/m", dem::kNormalStiffness,
+                             "normal stiffness (at d_ref with linear scaling)",
+                             [](R& r) -> double& { return r.kn_ref.emplace(); }),
                 "the specimen's kn"),
-       shown_as(number_key<R>(
-                    "d_ref", "m", "> 0",
-                    "diameter at which kn holds (required with stiffness_scaling = \"linear\")",
-                    [](R& r) -> double& { return r.d_ref.emplace(); }, &TomlFields::positive),
+       shown_as(range_key<R>("d_ref", "m", dem::kReferenceDiameter,
+                             "diameter at which kn holds (required with stiffness_scaling = "
+                             "\"linear\")",
+                             [](R& r) -> double& { return r.d_ref.emplace(); }),
                 "the specimen's"),
-       shown_as(
-           number_key<R>(
-               "ks_over_kn", "", ">= 0", "shear over normal stiffness",
-               [](R& r) -> double& { return r.ks_over_kn.emplace(); }, &TomlFields::non_negative),
-           "the specimen's ks/kn"),
-       shown_as(number_key<R>(
-                    "damping_ratio", "", "[0, 1)",
-                    "viscous normal damping ratio β (none needed in a quasi-static test)",
-                    [](R& r) -> double& { return r.damping_ratio.emplace(); },
-                    &TomlFields::non_negative, below(1.0, "must be below 1")),
+       shown_as(range_key<R>("ks_over_kn", "", dem::kStiffnessRatio, "shear over normal stiffness",
+                             [](R& r) -> double& { return r.ks_over_kn.emplace(); }),
+                "the specimen's ks/kn"),
+       shown_as(range_key<R>("damping_ratio", "", dem::kDampingRatio,
+                             "viscous normal damping ratio β (none needed in a quasi-static test)",
+                             [](R& r) -> double& { return r.damping_ratio.emplace(); }),
                 "0"),
-       shown_as(number_key<R>(
-                    "local_damping", "", "[0, 1)", "PFC local damping α of the test",
-                    [](R& r) -> double& { return r.local_damping.emplace(); },
-                    &TomlFields::non_negative, below(1.0, "must be below 1")),
-                "the specimen's")}};
+       shown_as(
+           range_key<R>("local_damping", "", dem::kLocalDamping, "PFC local damping α of the test",
+                        [](R& r) -> double& { return r.local_damping.emplace(); }),
+           "the specimen's")}};
   return s;
 }
 

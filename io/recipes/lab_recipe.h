@@ -28,14 +28,16 @@ namespace clumpkit {
 struct TestRecipe {
   std::string path, text;
   dem::ElementTestSettings settings;
-  double critical_fraction = 0.1;
-  double timestep_safety = 0.2;
-  /// [test] density_scaling λ ≥ 1: every body's mass and moments × λ for the test, so the time
-  /// step grows by √λ (long CPT pushes); quasi-static results keep their stresses while the
-  /// inertial number, checked on the scaled masses, grows by √λ. Reported.
+  double critical_fraction = 0.1;  ///< in dem::kCriticalFraction
+  double timestep_safety = 0.2;    ///< in dem::kTimestepSafety
+  /// [test] density_scaling λ, in dem::kDensityScaling: every body's mass and moments × λ for
+  /// the test, so the time step grows by √λ (long CPT pushes); quasi-static results keep their
+  /// stresses while the inertial number, checked on the scaled masses, grows by √λ. Reported.
   double density_scaling = 1.0;
   std::optional<std::pair<double, double>> modulus_range;
-  // [contact] overrides: unset fields keep the specimen's values.
+  // [contact] overrides: unset fields keep the specimen's values. kn_ref in
+  // dem::kNormalStiffness, d_ref in dem::kReferenceDiameter, ks_over_kn in dem::kStiffnessRatio,
+  // damping_ratio in dem::kDampingRatio, local_damping in dem::kLocalDamping.
   std::optional<dem::StiffnessScaling> scaling;
   std::optional<double> kn_ref, d_ref, ks_over_kn, damping_ratio, local_damping;
   std::optional<dem::ProbeSettings> probe;  ///< [probe], when given

@@ -13,7 +13,6 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <limits>
 #include <sstream>
 #include <utility>
 
@@ -28,24 +27,6 @@ long long integer_within(const TomlFields& f, const toml::node& v, const std::st
   if (!i || i->get() < lo || i->get() > hi)
     f.fail(field, "expected " + what + ", got " + toml_show(v));
   return i->get();
-}
-
-// An int key of [fill] in [lo, hi] (`range` as the message words it), read by integer_within,
-// its default read off FillOptions{}.
-template <class At>
-RecipeKey<FillOptions> fill_integer(std::string name, std::string range, std::string help, At at,
-                                    long long lo, long long hi) {
-  const std::string what = "an integer " + std::string(range[0] == '[' ? "in " : "") + range;
-  RecipeKey<FillOptions> k{std::move(name), "", std::move(range), std::move(help), {}, {}};
-  k.read = [at, lo, hi, what](const TomlFields& f, const toml::node& v, const std::string& field,
-                              FillOptions& o) {
-    at(o) = static_cast<int>(integer_within(f, v, field, lo, hi, what));
-  };
-  k.shown = [at](const FillOptions& defaults) {
-    FillOptions copy = defaults;
-    return std::to_string(at(copy));
-  };
-  return k;
 }
 
 }  // namespace
@@ -65,11 +46,9 @@ const RecipeSection<FractionTable>& fraction_section() {
                      [](const TomlFields& f, const toml::node& v, const std::string& field, T& t) {
                        t.spec.method = f.string(v, field);
                      }),
-       custom_key<T>("count", "", "[0, 10000000]", "particles of the fraction",
-                     "required; mesh: the number of files",
-                     [](const TomlFields& f, const toml::node& v, const std::string& field, T& t) {
-                       t.spec.count = f.integer_in(v, field, 0, 10000000);
-                     }),
+       shown_as(range_key<T>("count", "", kFractionCount, "particles of the fraction",
+                             [](T& t) -> int& { return t.spec.count; }),
+                "required; mesh: the number of files"),
        custom_key<T>("folder", "", "a folder, relative to the recipe's",
                      "mesh: every .stl, .obj and .ply file in it is one particle, in the order of "
                      "their names",
@@ -77,10 +56,9 @@ const RecipeSection<FractionTable>& fraction_section() {
                      [](const TomlFields& f, const toml::node& v, const std::string& field, T& t) {
                        t.folder = f.string(v, field);
                      }),
-       number_key<T>(
-           "scale", "", "> 0",
-           "mesh: factor from the files' length unit to metres (0.001 for millimetres)",
-           [](T& t) -> double& { return t.spec.scale; }, &TomlFields::positive),
+       range_key<T>("scale", "", kMeshScale,
+                    "mesh: factor from the files' length unit to metres (0.001 for millimetres)",
+                    [](T& t) -> double& { return t.spec.scale; }),
        custom_key<T>("roundness", "", "[min, max], min <= max",
                      "hull: the band of weighted roundness the hull is redrawn into", "[1, 10]",
                      [](const TomlFields& f, const toml::node& v, const std::string& field, T& t) {
@@ -128,10 +106,9 @@ const RecipeSection<FillOptions>& fill_section() {
        range_key<O>("max_overshoot", "", kMaxOvershoot,
                     "the clump's volume outside the mesh, over the mesh's volume",
                     [](O& o) -> double& { return o.max_overshoot; }),
-       fill_integer(
-           "refine_iterations", "[0, 1000]",
-           "sweeps of the refinement after the greedy pass (0: none)",
-           [](O& o) -> int& { return o.refine_iterations; }, 0, 1000)}};
+       range_key<O>("refine_iterations", "", kRefineIterations,
+                    "sweeps of the refinement after the greedy pass (0: none)",
+                    [](O& o) -> int& { return o.refine_iterations; })}};
   return s;
 }
 
@@ -202,7 +179,6 @@ ShapeRecipe parse_shape_recipe(const std::string& text, const std::string& path)
   ShapeRecipe r;
   r.path = path;
   r.text = text;
-  const long long most = std::numeric_limits<long long>::max();
   auto read_fractions = [&](const toml::node& v) {
     const auto* arr = v.as_array();
     if (!arr || !arr->is_array_of_tables()) p.fail("fraction", "expected [[fraction]] tables");
@@ -225,8 +201,10 @@ ShapeRecipe parse_shape_recipe(const std::string& text, const std::string& path)
   const TopLevelReaders top{
       {"seed",
        [&](const toml::node& v) {
-         r.seed = static_cast<std::uint64_t>(
-             integer_within(p, v, "seed", 0, most, "a non-negative integer"));
+         const long long n = p.integer(v, "seed");
+         const std::string why = outside(kSeed, static_cast<double>(n));
+         if (!why.empty()) p.fail("seed", why + ", got " + toml_show(v));
+         r.seed = static_cast<std::uint64_t>(n);
        }},
       {"name", [&](const toml::node& v) { r.name = p.string(v, "name"); }},
       {"description", [&](const toml::node& v) { r.description = p.string(v, "description"); }},

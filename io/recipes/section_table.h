@@ -68,7 +68,8 @@ RecipeKey<Spec> number_key(std::string name, std::string unit, std::string range
 /// A number key whose allowed values are the engine's `range` (geom/range.h): read (an integer
 /// when the range is of integers), refused outside it in the range's own words, "FIELD: must be
 /// in [a, b], got VALUE", and quoted by the reference from the same object. `at(spec)` is the
-/// double or int the value lands in; its default is shown as that number.
+/// double or integer the value lands in (an integer range's value exactly, a seed above 2^53
+/// too); its default is shown as that number.
 template <class Spec, class At>
 RecipeKey<Spec> range_key(std::string name, std::string unit, const Range& range, std::string help,
                           At at) {
@@ -76,15 +77,18 @@ RecipeKey<Spec> range_key(std::string name, std::string unit, const Range& range
   k.read = [at, range](const TomlFields& f, const toml::node& v, const std::string& field,
                        Spec& s) {
     using T = std::remove_reference_t<decltype(at(s))>;
-    const double x = range.integer ? static_cast<double>(f.integer(v, field)) : f.number(v, field);
+    const long long n = range.integer ? f.integer(v, field) : 0;
+    const double x = range.integer ? static_cast<double>(n) : f.number(v, field);
     const std::string why = outside(range, x);
     if (!why.empty()) f.fail(field, why + ", got " + toml_show(v));
     if constexpr (std::is_integral_v<T>) {
       if (x > static_cast<double>(std::numeric_limits<T>::max()) ||
           x < static_cast<double>(std::numeric_limits<T>::lowest()))
         f.fail(field, "is too large, got " + toml_show(v));
+      at(s) = range.integer ? static_cast<T>(n) : static_cast<T>(x);
+    } else {
+      at(s) = static_cast<T>(x);
     }
-    at(s) = static_cast<T>(x);
   };
   k.shown = [at](const Spec& defaults) {
     Spec copy = defaults;
@@ -115,20 +119,6 @@ RecipeKey<Spec> nested_key(const RecipeKey<Inner>& k, At at) {
     return shown(at(copy));
   };
   return out;
-}
-
-/// A check that the number is at most `hi`: "FIELD: WHY, got VALUE" otherwise.
-inline NumberCheck at_most(double hi, std::string why) {
-  return [hi, why](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
-    if (!(x <= hi)) f.fail(field, why + ", got " + toml_show(v));
-  };
-}
-
-/// A check that the number is below `hi`: "FIELD: WHY, got VALUE" otherwise.
-inline NumberCheck below(double hi, std::string why) {
-  return [hi, why](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
-    if (!(x < hi)) f.fail(field, why + ", got " + toml_show(v));
-  };
 }
 
 /// A key read by its own code (`read`), its default shown as `shown`.

@@ -1,6 +1,9 @@
 // The section tables of specimen recipes: each key's reader, unit, range, default and help.
+#include "dem/core/body.h"
+#include "dem/specimen/specimen_particles.h"
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "geom/random.h"
 #include "io/recipes/crush_recipe.h"
 #include "io/recipes/section_table.h"
 #include "io/recipes/specimen_recipe.h"
@@ -43,23 +46,14 @@ bool boolean(const TomlFields& f, const toml::node& v, const std::string& field)
   return b->get();
 }
 
-// A container length: a number, checked by the specs' one rule (dem::check_container_length).
+// A container length (an edge of a cuboid): a number, checked by the specs' one rule
+// (dem::check_container_length, in dem::kContainerLength's words).
 void container_length(const TomlFields& f, const std::string& field, double x) {
   try {
     dem::check_container_length(x);
   } catch (const InvalidInput& e) {
     f.fail(field, e.what());
   }
-}
-
-void container_length_check(const TomlFields& f, const std::string& field, const toml::node&,
-                            double x) {
-  container_length(f, field, x);
-}
-
-// A number in [0, 1): "must be in [0, 1), got VALUE" otherwise.
-void unit_fraction(const TomlFields& f, const std::string& field, const toml::node& v, double x) {
-  if (!(x >= 0 && x < 1)) f.fail(field, "must be in [0, 1), got " + toml_show(v));
 }
 
 // A number in [0, 1]: "must be in [0, 1], got VALUE" otherwise.
@@ -73,14 +67,8 @@ const RecipeSection<SpecimenRecipe>& specimen_top_section() {
   static const RecipeSection<R> s{
       "",
       "Keys at the top of a specimen recipe, outside any section.",
-      {shown_by(custom_key<R>(
-                    "seed", "", "integer >= 0", "seed of every random draw", "",
-                    [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
-                      const long long n = f.integer(v, field);
-                      if (n < 0) f.fail(field, "must be non-negative, got " + toml_show(v));
-                      r.seed = static_cast<std::uint64_t>(n);
-                    }),
-                [](const R& d) { return std::to_string(d.seed); }),
+      {range_key<R>("seed", "", kSeed, "seed of every random draw",
+                    [](R& r) -> std::uint64_t& { return r.seed; }),
        custom_key<R>("name", "", "text", "the recipe's name (for the reader only)", "none",
                      [](const TomlFields& f, const toml::node& v, const std::string& field, R&) {
                        f.string(v, field);
@@ -90,16 +78,13 @@ const RecipeSection<SpecimenRecipe>& specimen_top_section() {
                      [](const TomlFields& f, const toml::node& v, const std::string& field, R&) {
                        f.string(v, field);
                      }),
-       number_key<R>(
-           "soil_rock_threshold", "m", "> 0",
-           "sieve size parting rock clumps (classes above) from soil spheres (below)",
-           [](R& r) -> double& { return r.soil_rock_threshold; }, &TomlFields::positive),
-       number_key<R>(
-           "rock_mass_fraction", "", "[0, 1]",
-           "rock mass over the total: must match the gradation above soil_rock_threshold "
-           "(1 for a crushable specimen)",
-           [](R& r) -> double& { return r.rock_mass_fraction; }, &TomlFields::number,
-           closed_fraction),
+       range_key<R>("soil_rock_threshold", "m", dem::kSoilRockThreshold,
+                    "sieve size parting rock clumps (classes above) from soil spheres (below)",
+                    [](R& r) -> double& { return r.soil_rock_threshold; }),
+       range_key<R>("rock_mass_fraction", "", dem::kRockMassFraction,
+                    "rock mass over the total: must match the gradation above "
+                    "soil_rock_threshold (1 for a crushable specimen)",
+                    [](R& r) -> double& { return r.rock_mass_fraction; }),
        range_key<R>("target_relative_density", "", dem::kTargetRelativeDensity,
                     "deposition: the relative density Dr the specimen is built to",
                     [](R& r) -> double& { return r.target_relative_density; }),
@@ -122,12 +107,10 @@ const RecipeSection<SpecimenRecipe>& density_section() {
   static const RecipeSection<R> s{
       "density",
       "Particle densities of the specimen.",
-      {number_key<R>(
-           "soil", "kg/m³", "> 0", "density of the soil spheres",
-           [](R& r) -> double& { return r.soil_density; }, &TomlFields::positive),
-       number_key<R>(
-           "rock", "kg/m³", "> 0", "density of the rock clumps",
-           [](R& r) -> double& { return r.rock_density; }, &TomlFields::positive)}};
+      {range_key<R>("soil", "kg/m³", dem::kDensity, "density of the soil spheres",
+                    [](R& r) -> double& { return r.soil_density; }),
+       range_key<R>("rock", "kg/m³", dem::kDensity, "density of the rock clumps",
+                    [](R& r) -> double& { return r.rock_density; })}};
   return s;
 }
 
@@ -136,20 +119,19 @@ const RecipeSection<SpecimenRecipe>& contact_section() {
       "contact",
       "The contact law of the specimen (linear spring, dashpot and Coulomb friction; "
       "dem/core/contact.h).",
-      {number_key<R>(
-           "kn", "N/m", "> 0", "normal stiffness (at d_ref with linear scaling)",
-           [](R& r) -> double& { return r.kn; }, &TomlFields::positive),
-       number_key<R>(
-           "ks", "N/m", "> 0", "shear stiffness (at d_ref with linear scaling)",
-           [](R& r) -> double& { return r.ks; }, &TomlFields::positive),
+      {range_key<R>("kn", "N/m", dem::kNormalStiffness,
+                    "normal stiffness (at d_ref with linear scaling)",
+                    [](R& r) -> double& { return r.kn; }),
+       range_key<R>("ks", "N/m", dem::kShearStiffness,
+                    "shear stiffness (at d_ref with linear scaling)",
+                    [](R& r) -> double& { return r.ks; }),
        range_key<R>("friction", "", dem::kFriction, "interparticle μ",
                     [](R& r) -> double& { return r.friction; }),
-       number_key<R>(
-           "damping_ratio", "", "[0, 1)", "viscous normal damping ratio β",
-           [](R& r) -> double& { return r.damping_ratio; }, &TomlFields::number, unit_fraction),
-       number_key<R>(
-           "local_damping", "", "[0, 1)", "PFC local damping α of the preparation",
-           [](R& r) -> double& { return r.local_damping; }, &TomlFields::number, unit_fraction),
+       range_key<R>("damping_ratio", "", dem::kDampingRatio, "viscous normal damping ratio β",
+                    [](R& r) -> double& { return r.damping_ratio; }),
+       range_key<R>("local_damping", "", dem::kLocalDamping,
+                    "PFC local damping α of the preparation",
+                    [](R& r) -> double& { return r.local_damping; }),
        custom_key<R>("stiffness_scaling", "", "\"none\" or \"linear\"",
                      "linear: kn and ks scale with the bodies' diameters (CTGU 2017)", "\"none\"",
                      [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
@@ -158,10 +140,9 @@ const RecipeSection<SpecimenRecipe>& contact_section() {
                          f.fail(field, "expected \"none\" or \"linear\", got " + toml_show(v));
                        r.linear_scaling = m == "linear";
                      }),
-       shown_as(number_key<R>(
-                    "d_ref", "m", "> 0",
-                    "diameter at which kn and ks hold (stiffness_scaling = \"linear\")",
-                    [](R& r) -> double& { return r.d_ref; }, &TomlFields::positive),
+       shown_as(range_key<R>("d_ref", "m", dem::kReferenceDiameter,
+                             "diameter at which kn and ks hold (stiffness_scaling = \"linear\")",
+                             [](R& r) -> double& { return r.d_ref; }),
                 "required with linear scaling")}};
   return s;
 }
@@ -183,14 +164,10 @@ const RecipeSection<SpecimenRecipe>& container_section() {
                        r.cuboid = shape == "cuboid";
                        r.segment = shape == "segment";
                      }),
-       number_key<R>(
-           "diameter", "m", "> 0", "diameter of a cylinder or segment",
-           [](R& r) -> double& { return r.container_diameter; }, &TomlFields::number,
-           container_length_check),
-       number_key<R>(
-           "height", "m", "> 0", "height of a cylinder or segment",
-           [](R& r) -> double& { return r.container_height; }, &TomlFields::number,
-           container_length_check),
+       range_key<R>("diameter", "m", dem::kContainerLength, "diameter of a cylinder or segment",
+                    [](R& r) -> double& { return r.container_diameter; }),
+       range_key<R>("height", "m", dem::kContainerLength, "height of a cylinder or segment",
+                    [](R& r) -> double& { return r.container_height; }),
        shown_by(custom_key<R>(
                     "size", "m", "[x, y, z], each > 0", "edges of a cuboid", "",
                     [](const TomlFields& f, const toml::node& v, const std::string& field, R& r) {
@@ -203,13 +180,8 @@ const RecipeSection<SpecimenRecipe>& container_section() {
                       }
                     }),
                 [](const R& d) { return show_numbers(d.container_size); }),
-       number_key<R>(
-           "angle", "degree", "(0, 180]", "a segment's angle",
-           [](R& r) -> double& { return r.segment_angle_deg; }, &TomlFields::number,
-           [](const TomlFields& f, const std::string& field, const toml::node& v, double x) {
-             if (!(x > 0 && x <= 180))
-               f.fail(field, "must be in (0, 180] degrees, got " + toml_show(v));
-           })}};
+       range_key<R>("angle", "degree", dem::kSegmentAngleDegrees, "a segment's angle",
+                    [](R& r) -> double& { return r.segment_angle_deg; })}};
   return s;
 }
 
@@ -245,13 +217,12 @@ const RecipeSection<dem::ZoneRegion>& zone_region_section() {
       "zones.region",
       "One [[zones.region]] table, innermost first: a uniform zone (the core gradation × scale) "
       "or a mixed layer holding both neighbours' particles.",
-      {shown_as(number_key<Z>(
-                    "outer", "m", "> 0", "the region's outer bound",
-                    [](Z& z) -> double& { return z.outer; }, &TomlFields::positive),
+      {shown_as(range_key<Z>("outer", "m", dem::kZoneOuter, "the region's outer bound",
+                             [](Z& z) -> double& { return z.outer; }),
                 "required"),
-       number_key<Z>(
-           "scale", "", "> 0", "uniform zone: size factor λ of the gradation (the core's is 1)",
-           [](Z& z) -> double& { return z.scale; }, &TomlFields::positive),
+       range_key<Z>("scale", "", dem::kZoneScale,
+                    "uniform zone: size factor λ of the gradation (the core's is 1)",
+                    [](Z& z) -> double& { return z.scale; }),
        custom_key<Z>("mixed", "", "true or false",
                      "a mixed layer: its neighbours' particles, no scale", "false",
                      [](const TomlFields& f, const toml::node& v, const std::string& field, Z& z) {
@@ -367,9 +338,8 @@ const RecipeSection<SpecimenRecipe>& fines_section() {
   static const RecipeSection<R> s{
       "fines",
       "Soil finer than `below` is replaced by the same mass of spheres in `replace_with`.",
-      {number_key<R>(
-           "below", "m", "> 0", "size below which soil counts as fines",
-           [](R& r) -> double& { return r.fines_below; }, &TomlFields::positive),
+      {range_key<R>("below", "m", dem::kFinesBelow, "size below which soil counts as fines",
+                    [](R& r) -> double& { return r.fines_below; }),
        shown_by(custom_key<R>("replace_with", "m", "[low, high], 0 < low < high",
                               "size range of the spheres that replace the fines", "",
                               [](const TomlFields& f, const toml::node& v, const std::string& field,

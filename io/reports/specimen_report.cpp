@@ -2,6 +2,7 @@
 
 #include "geom/format.h"
 #include "io/base/atomic_file.h"
+#include "io/base/units.h"
 #include "io/formats/png.h"
 #include "io/reports/plot.h"
 
@@ -18,7 +19,9 @@ namespace fs = std::filesystem;
 
 void write_calibration_csv(const std::string& path, const dem::SpecimenResult& result) {
   write_file_atomically(path, [&](std::ostream& o) {
-    o << "friction,porosity,void_ratio,relative_density,steps,stopped_by\n";
+    o << csv_header("calibration", "friction,porosity,void_ratio,relative_density,steps,stopped_by",
+                    si_length())
+      << "\n";
     for (const dem::CalibrationPoint& p : result.calibration)
       o << format_number(p.friction) << "," << format_number(p.porosity) << ","
         << format_number(p.void_ratio) << ","

@@ -43,6 +43,7 @@ def test_equals_the_command_line_to_the_last_bit(cli, tmp_path):
     write_csv(tmp_path / "c.csv", c, r)
     want = cli("volume", tmp_path / "c.csv", "--method", "all", "--slices", 20, "--json",
                as_json=True)
+    assert want.pop("units")["exact.volume"] == "L3"  # the file's own unit, unnamed
     p = clumpkit.mass_properties(c, r)
     assert p.volume == want["exact"]["volume"] and p.area == want["exact"]["area"]
     assert list(p.centroid) == want["exact"]["centroid"]

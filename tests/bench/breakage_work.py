@@ -7,20 +7,19 @@ log-spaced search for a, b then refined), and per test its own hyperbola, so tha
 curve holds for all paths can be read from the residuals.
     tests/bench/breakage_work.py OUT.png TEST_DIR [TEST_DIR ...]
 Each TEST_DIR is a `clumpkit test` folder of a crushable specimen (curve.csv with hardin_br and
-work_pa). Prints a, b and the RMS residual of the joint fit and of each test's own.
+work). Prints a, b and the RMS residual of the joint fit and of each test's own.
 """
-import csv
+import clumpkit_csv
 import math
 import os
 import sys
 
 
 def rows(folder):
-    with open(os.path.join(folder, "curve.csv")) as f:
-        r = list(csv.DictReader(f))
+    r = clumpkit_csv.rows(os.path.join(folder, "curve.csv"))
     if not r or "hardin_br" not in r[0]:
         sys.exit(f"{folder}/curve.csv: no breakage columns (not a crushable specimen)")
-    return [(float(x["work_pa"]), float(x["hardin_br"])) for x in r]
+    return [(float(x["work"]), float(x["hardin_br"])) for x in r]
 
 
 def rms(points, a, b):

@@ -12,6 +12,7 @@
 # for clumpkit's push on 2 threads and 25–45 min per LAMMPS push.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
+here=$root/tests/bench  # clumpkit_csv.py: CSV columns by bare name
 bin=${CLUMPKIT:-$root/build/io/clumpkit}
 out=${1:-/tmp/clumpkit-cpt-engines}
 group=${GROUP:-A}
@@ -51,12 +52,12 @@ for n in $ranks; do
   [ "$n" != "$first" ] &&
     "$bin" compare-curves "lmp$first/cpt.csv" "lmp$n/cpt.csv" --json > "residual-np$first-np$n.json"
 done
-python3 - "$ranks" <<'PY'
-import csv, json, re, sys
+PYTHONPATH="$here" python3 - "$ranks" <<'PY'
+import clumpkit_csv, json, re, sys
 ranks = sys.argv[1].split()
 def mean_qc(path, lo=5 * 0.018, hi=8 * 0.018):
-    rows = [r for r in csv.DictReader(open(path)) if lo <= float(r["depth_m"]) <= hi]
-    return sum(float(r["qc_pa"]) for r in rows) / len(rows) if rows else float("nan")
+    rows = [r for r in clumpkit_csv.rows(path) if lo <= float(r["depth"]) <= hi]
+    return sum(float(r["qc"]) for r in rows) / len(rows) if rows else float("nan")
 rep = json.load(open("ck/report.json"))
 ck_steps = rep["consolidation_steps"] + rep["steps"]
 ck_seconds = float(open("ck/seconds").read())

@@ -11,6 +11,7 @@
 # depth, default the recipe's 0.144 m), THREADS (default 2). Hours on 2 cores at λ = 1.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
+here=$root/tests/bench  # clumpkit_csv.py: CSV columns by bare name
 bin=${CLUMPKIT:-$root/build/io/clumpkit}
 out=${1:-/tmp/clumpkit-cpt-groups}
 seeds=${SEEDS:-1 2 3}
@@ -43,16 +44,16 @@ for s in $seeds; do
   run A $((s + 100)) "Aprime$s"
 done
 
-python3 - "$bin" "$seeds" "$groups" <<'PY'
-import json, subprocess, sys, csv
+PYTHONPATH="$here" python3 - "$bin" "$seeds" "$groups" <<'PY'
+import json, subprocess, sys, clumpkit_csv
 bin, seeds, groups = sys.argv[1], sys.argv[2].split(), sys.argv[3].split()
 def residual(a, b):
     r = subprocess.run([bin, "compare-curves", a, b, "--x", "depth_m", "--y", "qc_pa",
                         "--points", "200", "--json"], capture_output=True, text=True, check=True)
     return json.loads(r.stdout)["residual_rel"]
 def mean_qc(path, lo=5 * 0.018, hi=8 * 0.018):
-    rows = [r for r in csv.DictReader(open(path)) if lo <= float(r["depth_m"]) <= hi]
-    return sum(float(r["qc_pa"]) for r in rows) / len(rows) if rows else float("nan")
+    rows = [r for r in clumpkit_csv.rows(path) if lo <= float(r["depth"]) <= hi]
+    return sum(float(r["qc"]) for r in rows) / len(rows) if rows else float("nan")
 print("| seed | group | e(X, A) rel | mean qc 5–8 D_c [MPa] | seconds |")
 print("|---|---|---|---|---|")
 for s in seeds:

@@ -8,7 +8,7 @@ counted as a failure at its largest stress, a strength it is known to exceed: a 
 SET_B's σ0, for a claim that SET_A is weaker which does not lean on the censored fit of SET_B.
     tests/bench/crush_compare.py DIR SET_A SET_B [RESAMPLES]
 """
-import csv
+import clumpkit_csv
 import math
 import random
 import sys
@@ -57,13 +57,13 @@ def main():
     out, a, b = sys.argv[1], sys.argv[2], sys.argv[3]
     resamples = int(sys.argv[4]) if len(sys.argv) > 4 else 2000
     sets = {}
-    with open(f"{out}/results.csv") as f:
-        for row in csv.DictReader(f):
-            d = float(row["diameter_m"])
+    if True:
+        for row in clumpkit_csv.rows(f"{out}/results.csv"):
+            d = float(row["diameter"])
             if row["failed"] == "1":
-                sets.setdefault(row["set"], []).append((float(row["strength_pa"]), True))
-            elif float(row["max_force_n"]) > 0:
-                sets.setdefault(row["set"], []).append((float(row["max_force_n"]) / d / d, False))
+                sets.setdefault(row["set"], []).append((float(row["strength"]), True))
+            elif float(row["max_force"]) > 0:
+                sets.setdefault(row["set"], []).append((float(row["max_force"]) / d / d, False))
     sa, sb = sets[a], sets[b]
     compare(a, b, sa, sb, resamples, "")
     if not all(f for _, f in sb):

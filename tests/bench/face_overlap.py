@@ -21,7 +21,7 @@ e_u against log10(sigma_v) between consecutive ones (folders of one specimen, in
 SPECIMEN_DIR holds the specimen.csv and bonds.csv the tests started from. Needs python3-numpy.
 """
 import argparse
-import csv
+import clumpkit_csv
 import math
 import os
 import sys
@@ -111,9 +111,8 @@ def main():
         slide = np.linalg.norm(gap - opening[:, None] * nrm, axis=1)
         kept = slide < a.slide
         fraction = float((area * np.maximum(0.0, -opening))[kept].sum() / vol.sum())
-        with open(os.path.join(folder, "curve.csv")) as f:
-            last = list(csv.DictReader(f))[-1]
-        sv, n = float(last["axial_stress_pa"]), float(last["porosity"])
+        last = clumpkit_csv.rows(os.path.join(folder, "curve.csv"))[-1]
+        sv, n = float(last["axial_stress"]), float(last["porosity"])
         e = n / (1 - n)
         eu = (1 + e) / (1 - fraction) - 1
         rows.append((sv, e, eu))

@@ -11,6 +11,7 @@
 # Needs build/io/clumpkit (scripts/build) and lmp (Debian package lammps).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
+here=$root/tests/bench  # clumpkit_csv.py: CSV columns by bare name
 bin=${CLUMPKIT:-$root/build/io/clumpkit}
 out=${1:-/tmp/clumpkit-lammps-oedometer}
 ranks=${RANKS:-1}
@@ -40,17 +41,17 @@ EOF
  else
    lmp -in in.clumpkit > log.txt
  fi)
-python3 - oed/curve.csv lmp/oedometer.csv <<'PY'
-import csv, sys
+PYTHONPATH="$here" python3 - oed/curve.csv lmp/oedometer.csv <<'PY'
+import clumpkit_csv, sys
 def slope(path, xs, ys, lo=100e3, hi=400e3):
     n = sx = sy = sxx = sxy = 0.0
-    for row in csv.DictReader(open(path)):
+    for row in clumpkit_csv.rows(path):
         x, y = float(row[xs]), float(row[ys])
         if lo <= y <= hi:
             n += 1; sx += x; sy += y; sxx += x * x; sxy += x * y
     return (n * sxy - sx * sy) / (n * sxx - sx * sx), int(n)
-m1, n1 = slope(sys.argv[1], "axial_strain", "axial_stress_pa")
-m2, n2 = slope(sys.argv[2], "strain", "stress_pa")
+m1, n1 = slope(sys.argv[1], "axial_strain", "axial_stress")
+m2, n2 = slope(sys.argv[2], "strain", "stress")
 print(f"constrained modulus 100-400 kPa: clumpkit {m1 / 1e6:.2f} MPa ({n1} rows), "
       f"LAMMPS {m2 / 1e6:.2f} MPa ({n2} rows), LAMMPS/clumpkit {m2 / m1:.3f}")
 PY

@@ -8,28 +8,27 @@ their ratios.
 STRESSES_MPA is a comma-separated list (e.g. 1.6,3.2,6.4,16); each TEST_DIR a `clumpkit test
 oedometer` folder of a crushable specimen (or of its unbreakable control).
 """
-import csv
+import clumpkit_csv
 import json
 import os
 import sys
 
 
 def table(folder, stresses):
-    with open(os.path.join(folder, "curve.csv")) as f:
-        rows = list(csv.DictReader(f))
+    rows = clumpkit_csv.rows(os.path.join(folder, "curve.csv"))
     print(f"{folder}:")
     print("  sv_MPa  e       bonds  particles  Br        B         Bg        W_kJ/m3  by class")
     for s in stresses:
-        row = next((r for r in rows if float(r["axial_stress_pa"]) >= s * 1e6), None)
+        row = next((r for r in rows if float(r["axial_stress"]) >= s * 1e6), None)
         if row is None:
-            print(f"  {s:6.3g}  (not reached: top {max(float(r['axial_stress_pa']) for r in rows) / 1e6:.4g} MPa)")
+            print(f"  {s:6.3g}  (not reached: top {max(float(r['axial_stress']) for r in rows) / 1e6:.4g} MPa)")
             continue
         n = float(row["porosity"])
         classes = " ".join(f"{float(row[f'broken_class_{c}']):.3f}" for c in range(1, 5))
-        print(f"  {float(row['axial_stress_pa']) / 1e6:6.3f}  {n / (1 - n):.4f}  "
+        print(f"  {float(row['axial_stress']) / 1e6:6.3f}  {n / (1 - n):.4f}  "
               f"{int(float(row['bonds_broken'])):5d}  {int(float(row['particles_broken'])):9d}  "
               f"{float(row['hardin_br']):.3e} {float(row['einav_b']):.3e} "
-              f"{float(row['marsal_bg']):.3e} {float(row['work_pa']) / 1e3:8.2f}  {classes}")
+              f"{float(row['marsal_bg']):.3e} {float(row['work']) / 1e3:8.2f}  {classes}")
     with open(os.path.join(folder, "report.json")) as f:
         rep = json.load(f)
     return rep.get("compression_index"), rep.get("yield_stress")

@@ -19,7 +19,7 @@ curve.csv (broken_class_*), report.json (breakage.class_bounds) and fragments.vt
 particle). Needs python3-numpy (face_overlap.py's readers).
 """
 import argparse
-import csv
+import clumpkit_csv
 import json
 import math
 import os
@@ -79,17 +79,16 @@ def main():
     ap.add_argument("stresses")
     a = ap.parse_args()
     n, t = class_sizes(a.specimen, a.test)
-    with open(os.path.join(a.test, "curve.csv")) as f:
-        rows = list(csv.DictReader(f))
+    rows = clumpkit_csv.rows(os.path.join(a.test, "curve.csv"))
     print("particles by class (mid diameter mm): %s" % ", ".join("%d (%.1f)" % (ni, ti * 1e3) for ni, ti in zip(n, t)))
     rng = random.Random(1)
     for s in a.stresses.split(","):
-        row = rows[-1] if s == "end" else next((r for r in rows if float(r["axial_stress_pa"]) >= float(s)), rows[-1])
+        row = rows[-1] if s == "end" else next((r for r in rows if float(r["axial_stress"]) >= float(s)), rows[-1])
         k = [round(float(row["broken_class_%d" % (i + 1)]) * ni) for i, ni in enumerate(n)]
         z, p = trend(k, n, t)
         overall = sum(k) / sum(n)
         line = "sigma_v %.3g MPa: broken %s, trend z %.2f (one-sided p %.3f)" % (
-            float(row["axial_stress_pa"]) / 1e6, "/".join(map(str, k)), z, p)
+            float(row["axial_stress"]) / 1e6, "/".join(map(str, k)), z, p)
         if 0 < overall < 1:
             w = weibull_fractions(overall, n, t, a.alpha_m)
             line += "; Weibull (alpha m %.2f): %s" % (a.alpha_m, ", ".join("%.2f" % v for v in w))

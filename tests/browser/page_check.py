@@ -2,12 +2,15 @@
 """Opens a clumpkit page in headless Chromium (Chrome DevTools protocol over a websocket) and
 checks it as a person would see it: it loads from file:// with no console error, requests nothing
 outside its folder, draws its first view, sorts its table by a column, draws the particle in its
-3-D view, shows a report value. Exit 0 when every asked check holds, 1 otherwise, 77 (skipped)
-without chromium or python3-websocket.
+3-D view, shows a report value, shows the unit of every column of numbers and every report row of
+numbers (or, with --before-units, the note of a folder written before units). Exit 0 when every
+asked check holds, 1 otherwise, 77 (skipped) without chromium or python3-websocket. With
+CLUMPKIT_PAGE_FIGURES set to a folder, a screenshot of the page goes there as KIND.png
+(KIND-compare.png for several folders).
 
   page_check.py INDEX.html [--sort COL --csv FILE] [--rows N] [--view] [--spheres SPECIMEN.csv]
                 [--report KEY=VALUE|KEY=from:REPORT.json] [--max-first-view S] [--screenshot OUT.png]
-                [--expect-outside-request]
+                [--expect-outside-request] [--before-units]
 """
 import argparse
 import base64
@@ -24,6 +27,52 @@ import urllib.request
 import zlib
 
 SKIP = 77
+
+# Columns of folders written before units, whose names carried an SI unit (io/base/units.cpp).
+OLD_NAMES = {
+    "axial_stress_pa": "axial_stress", "radial_stress_pa": "radial_stress", "p_pa": "p",
+    "q_pa": "q", "work_pa": "work", "depth_m": "depth", "tip_force_n": "tip_force",
+    "sleeve_force_n": "sleeve_force", "qc_pa": "qc", "fs_pa": "fs", "sieve_m": "sieve",
+    "diameter_m": "diameter", "peak_force_n": "peak_force", "peak_travel_m": "peak_travel",
+    "strength_pa": "strength", "max_force_n": "max_force", "travel_m": "travel", "force_n": "force",
+    "stress_pa": "stress",
+}
+
+
+def column_name(cell):
+    """A CSV header cell's column as the page names it: "strength[Pa]" and "strength_pa" are
+    "strength" (io/base/units.h's column_name)."""
+    if "[" in cell and cell.endswith("]"):
+        return cell[:cell.index("[")]
+    return OLD_NAMES.get(cell, cell)
+
+
+# What the page shows of units: each column of the table holding a number, and each report row of
+# a number, must end in its unit ("volume [m3]", "porosity [1]"; base.js's unitLabel).
+UNITS_JS = r"""(() => {
+  const D = window.CLUMPKIT_PAGE, unit = / \[[^\]]+\]$/, bad = [];
+  let shown = 0;
+  const th = [...document.querySelectorAll('#table thead th')];
+  if (D.table) D.table.columns.forEach((name, c) => {
+    if (!D.table.rows.some((r) => typeof r[c] === 'number')) return;
+    const t = th[c] ? th[c].textContent : '(no header)';
+    if (unit.test(t)) ++shown; else bad.push('table column ' + name + ' shows ' + JSON.stringify(t));
+  });
+  const keys = new Set();
+  for (const f of D.folders) for (const [k, v] of Object.entries(f.report)) if (typeof v === 'number') keys.add(k);
+  for (const k of keys) {
+    const tr = [...document.querySelectorAll('#report tbody tr')].find((r) => r.dataset.key === k);
+    const t = tr ? tr.children[0].textContent : '(no row)';
+    if (unit.test(t)) ++shown; else bad.push('report row ' + k + ' shows ' + JSON.stringify(t));
+  }
+  return { recorded: D.units_recorded, note: !!document.getElementById('units-note'), shown, bad };
+})()"""
+
+
+def screenshot(b, path):
+    shot = b.call("Page.captureScreenshot", format="png", captureBeyondViewport=False)
+    with open(path, "wb") as f:
+        f.write(base64.b64decode(shot["data"]))
 
 
 def find_browser():
@@ -135,6 +184,9 @@ def main():
     ap.add_argument("--screenshot", help="write a screenshot of the page here")
     ap.add_argument("--rows", type=int, help="the table shows this many rows (every particle)")
     ap.add_argument("--spheres", help="the 3-D view draws every sphere of this specimen.csv")
+    ap.add_argument("--before-units", action="store_true",
+                    help="the folder was written before units: the page says so instead of "
+                         "showing units")
     ap.add_argument("--expect-outside-request", action="store_true",
                     help="pass only if the page requests something outside its folder (the "
                          "check's own test)")
@@ -175,6 +227,7 @@ def main():
         b.evaluate("1")  # collect the events so far
 
         if args.sort:
+            args.sort = column_name(args.sort)  # the page's columns are bare names
             b.evaluate("document.querySelector('th[data-col=\"%s\"]').click()" % args.sort)
             shown = b.evaluate(
                 "(() => { const th = [...document.querySelectorAll('#table th')];"
@@ -183,7 +236,7 @@ def main():
                 % args.sort)
             if args.csv:
                 rows = [l.rstrip("\r\n").split(",") for l in open(args.csv) if not l.startswith("#")]
-                col = rows[0].index(args.sort)
+                col = [column_name(c) for c in rows[0]].index(args.sort)
                 lowest = min(float(r[col]) for r in rows[1:] if r[col])
                 if abs(float(shown) - lowest) > 1e-4 * max(abs(lowest), 1e-300):
                     failures.append("sorted by %s, first row shows %s, the CSV's least is %r"
@@ -239,10 +292,30 @@ def main():
             else:
                 print("page_check: report %s = %s" % (key, shown))
 
+        units = b.evaluate(UNITS_JS)
+        if args.before_units:
+            if units["recorded"] is not False or not units["note"]:
+                failures.append("a folder written before units: the page does not say its units "
+                                "are not recorded")
+            else:
+                print("page_check: the page says its units are not recorded")
+        else:
+            if units["recorded"] is False or units["note"]:
+                failures.append("the page says its folder records no units")
+            failures += ["no unit: %s" % x for x in units["bad"]]
+            if not units["bad"]:
+                print("page_check: %d table columns and report rows show their unit"
+                      % units["shown"])
+
         if args.screenshot:
-            shot = b.call("Page.captureScreenshot", format="png", captureBeyondViewport=False)
-            with open(args.screenshot, "wb") as f:
-                f.write(base64.b64decode(shot["data"]))
+            screenshot(b, args.screenshot)
+        figures = os.environ.get("CLUMPKIT_PAGE_FIGURES")
+        if figures and not args.expect_outside_request:  # a leaky copy is no figure
+            name = b.evaluate("window.CLUMPKIT_PAGE.kind + "
+                              "(window.CLUMPKIT_PAGE.folders.length > 1 ? '-compare' : '')")
+            os.makedirs(figures, exist_ok=True)
+            screenshot(b, os.path.join(figures, name + ".png"))
+            print("page_check: figure %s" % os.path.join(figures, name + ".png"))
 
         b.evaluate("1")
         errors, requests = [], []

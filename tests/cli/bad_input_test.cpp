@@ -270,19 +270,21 @@ TEST(CliBadInput, EveryCommandRefusesEveryKindOfBadInputCleanly) {
   cases.push_back({"cells " + box + " --count 8 --out " + box, "box.stl", ""});
 
   // compare-curves A B: missing or unreadable files, a missing column, a cell that is not a
-  // number, x that goes back, one row, ranges that do not overlap, too few points, a window
-  // that leaves nothing or is not a number
+  // number, x that goes back, one row, ranges that do not overlap, columns in other units, too
+  // few points, a window that leaves nothing or is not a number
   write(d / "qc_a.csv", "step,depth_m,qc_pa\n1,0,0\n2,0.1,1e6\n3,0.2,2e6\n");
   write(d / "qc_nan.csv", "step,depth_m,qc_pa\n1,0,0\n2,0.1,nan\n");
   write(d / "qc_back.csv", "step,depth_m,qc_pa\n1,0,0\n2,0.1,1\n3,0.05,2\n");
   write(d / "qc_one.csv", "step,depth_m,qc_pa\n1,0,0\n");
   write(d / "qc_far.csv", "step,depth_m,qc_pa\n1,1,0\n2,2,1\n");
+  write(d / "qc_mm.csv", "step[1],depth[mm],qc[Pa]\n1,0,0\n2,100,1e6\n3,200,2e6\n");
   const std::string qa = in("qc_a.csv");
   for (const char* f : {"missing.csv", "a_dir", "empty.csv", "garbage.csv", "qc_nan.csv",
                         "qc_back.csv", "qc_one.csv", "good.csv"})
     cases.push_back({"compare-curves " + qa + " " + in(f), f, ""});
-  cases.push_back({"compare-curves " + qa + " " + qa + " --y qc", "'qc'", ""});
+  cases.push_back({"compare-curves " + qa + " " + qa + " --y fs", "'fs'", ""});
   cases.push_back({"compare-curves " + qa + " " + in("qc_far.csv"), "do not overlap", ""});
+  cases.push_back({"compare-curves " + qa + " " + in("qc_mm.csv"), "same units", ""});
   cases.push_back({"compare-curves " + qa + " " + qa + " --points 1", "points", ""});
   cases.push_back({"compare-curves " + qa + " " + qa + " --from 0.15 --to 0.1", "0.15", ""});
   cases.push_back({"compare-curves " + qa + " " + qa + " --from 0.3", "leaves nothing", ""});

@@ -25,6 +25,8 @@ TEST(CliCells, CutsAParticleIntoBondedCellsReproducibly) {
   ASSERT_EQ(r.rc, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["cells"], 76);  // round((27.5 / 6.5)³) = round(75.7)
+  EXPECT_EQ(json_numbers_without_unit(j), std::vector<std::string>{});
+  EXPECT_GE(expect_units_everywhere(d / "a"), 5);  // cells, bonds, bond points, report, manifest
   EXPECT_LT(std::abs(j["volume_error"].get<double>()), 1e-12);
   EXPECT_NEAR(j["cells_volume"].get<double>() / j["parent_volume"].get<double>(), 1.0, 1e-12);
   // The parent's volume is describe's.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "geom/hash.h"
+#include "units_check.h"
 
 #include <gtest/gtest.h>
 

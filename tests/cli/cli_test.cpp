@@ -78,6 +78,16 @@ TEST(Cli, ShapeBlockThenDescribe) {
     EXPECT_TRUE(j.contains(k)) << k;
   EXPECT_EQ(j["axes"].size(), 3u);
   EXPECT_EQ(j["view_roundness"].size(), 3u);
+  // Every number says its unit: the mesh's, L, unless named; naming it changes no number.
+  EXPECT_EQ(json_numbers_without_unit(j), std::vector<std::string>{});
+  EXPECT_EQ(j["units"]["volume"], "L3");
+  EXPECT_EQ(j["units"]["sphericity"], "1");
+  r = run_cli("describe --json --length-unit mm " + (d / "block.stl").string(), d);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto mm = nlohmann::json::parse(r.out);
+  EXPECT_EQ(mm["units"]["volume"], "mm3");
+  EXPECT_EQ(mm["units"]["L"], "mm");
+  EXPECT_EQ(mm["volume"], j["volume"]);
   // Radial factors in [0.8, 1.2] keep the volume within [0.8³, 1.2³] of the cuboid's.
   const double v0 = 75.1 * 58.0 * 49.8;
   EXPECT_GT(j["volume"].get<double>(), 0.512 * v0);
@@ -135,6 +145,7 @@ TEST(Cli, ShapesIsByteIdenticalForAnyThreadCount) {
     ++files;
   }
   EXPECT_EQ(files, 21 + 2);
+  EXPECT_EQ(expect_units_everywhere(d / "t1"), 2);  // shapes.csv, manifest.json
   // The table has one row per particle plus the header, and the manifest the counts.
   const std::string csv = slurp(d / "t1" / "shapes.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 22);
@@ -291,8 +302,10 @@ TEST(Cli, FillWritesClumpAndReport) {
   EXPECT_GT(j["covered_fraction"].get<double>(), 0.85);
   EXPECT_LT(j["overshoot_fraction"].get<double>(), 0.01);
   const std::string csv = slurp(d / "c.csv");
-  EXPECT_NE(csv.find("x,y,z,r\n"), std::string::npos);
+  EXPECT_NE(csv.find("x[L],y[L],z[L],r[L]\n"), std::string::npos);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 47 + 1 + 2);  // header, 2 comment lines
+  EXPECT_EQ(expect_units_everywhere(d), 1);                         // the clump
+  EXPECT_EQ(json_numbers_without_unit(j), std::vector<std::string>{});
 }
 
 TEST(Cli, FillBadInput) {
@@ -505,6 +518,9 @@ TEST(Cli, SpecimenSameForAnyThreadCountAndAfterAKill) {
   r = run_cli(base + (d / "t2").string() + " --threads 2 --json", d);
   ASSERT_EQ(r.rc, 0) << r.err;
   const auto report = nlohmann::json::parse(r.out);
+  EXPECT_EQ(json_numbers_without_unit(report), std::vector<std::string>{});
+  // specimen.csv, calibration.csv, report.json, manifest.json, and the library's files.
+  EXPECT_GE(expect_units_everywhere(d / "t1"), 4);
   for (const char* f : {"specimen.csv", "calibration.csv", "specimen.vtp"})
     EXPECT_EQ(slurp(d / "t1" / f), slurp(d / "t2" / f)) << f;
   EXPECT_FALSE(fs::exists(d / "t2" / "checkpoints"));
@@ -541,7 +557,7 @@ TEST(Cli, SpecimenSameForAnyThreadCountAndAfterAKill) {
 
   // The report: bodies and spheres match specimen.csv, porosities in range, Dr consistent.
   const std::string csv = slurp(d / "t2" / "specimen.csv");
-  const auto bodies_at = csv.find("body,kind"), spheres_at = csv.find("# spheres");
+  const auto bodies_at = csv.find("body[1],kind,"), spheres_at = csv.find("# spheres");
   ASSERT_NE(spheres_at, std::string::npos);
   const long body_lines = std::count(csv.begin() + bodies_at, csv.begin() + spheres_at, '\n') - 1;
   const long sphere_lines = std::count(csv.begin() + spheres_at, csv.end(), '\n') - 2;

@@ -28,7 +28,7 @@ depth = 0.009
 std::vector<std::vector<double>> cpt_rows(const fs::path& path) {
   std::string header;
   auto rows = csv_rows(path, 6, &header);
-  EXPECT_EQ(header, "step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa");
+  EXPECT_EQ(header, "step[1],depth[m],tip_force[N],sleeve_force[N],qc[Pa],fs[Pa]");
   return rows;
 }
 
@@ -53,6 +53,7 @@ TEST(CliCpt, PushIntoTheTinySpecimenSameBytesForOneAndTwoThreads) {
   EXPECT_FALSE(rep["reached_bottom"].get<bool>());
   EXPECT_LT(rep["inertial_number"].get<double>(), 1e-2);
   EXPECT_EQ(rep["probe"]["apex_deg"], 60.0);
+  EXPECT_GE(expect_units_everywhere(d / "c1"), 3);  // curve.csv, report.json, manifest.json
   // Columns: step, depth, tip force, sleeve force, qc, fs.
   const auto rows = cpt_rows(d / "c1" / "curve.csv");
   ASSERT_GT(rows.size(), 10u);

@@ -98,6 +98,10 @@ TEST(CliCrushable, OedometerBreaksTheCellsConservingVolumeSameBytesForAnyThreads
   EXPECT_EQ(slurp(d / "one" / "curve.csv"), slurp(d / "stopped" / "curve.csv"));
   EXPECT_EQ(slurp(d / "one" / "grading.csv"), slurp(d / "stopped" / "grading.csv"));
   const auto rep = nlohmann::json::parse(slurp(d / "one" / "report.json"));
+  // The specimen's bodies and bonds, report and manifest; the test's curve (with breakage),
+  // grading, report and manifest.
+  EXPECT_EQ(expect_units_everywhere(d / "spec"), 4);
+  EXPECT_GE(expect_units_everywhere(d / "one"), 4);
   const auto& b = rep["breakage"];
   // Broken: bonds failed, particles split into more fragments, the grading moved finer.
   EXPECT_GT(b["bonds_broken"].get<double>(), 0);
@@ -107,7 +111,7 @@ TEST(CliCrushable, OedometerBreaksTheCellsConservingVolumeSameBytesForAnyThreads
   EXPECT_LT(b["hardin_br"].get<double>(), 1);
   EXPECT_GT(b["einav_b"].get<double>(), 0);
   EXPECT_GT(b["marsal_bg"].get<double>(), 0);
-  EXPECT_GT(b["work_pa"].get<double>(), 0);
+  EXPECT_GT(b["work"].get<double>(), 0);
   // Conservation: the fragments hold the particles' solid volume.
   EXPECT_NEAR(b["solid_volume_final"].get<double>() / b["solid_volume_initial"].get<double>(), 1,
               1e-12);
@@ -118,10 +122,11 @@ TEST(CliCrushable, OedometerBreaksTheCellsConservingVolumeSameBytesForAnyThreads
   std::string header;
   const std::vector<std::vector<double>> rows = csv_rows(d / "one" / "curve.csv", 25, &header);
   ASSERT_GT(rows.size(), 3u);
-  EXPECT_NE(header.find(",bonds_broken,bonds_mode_i,bonds_mode_ii,bonds_mixed,fragments,"),
+  EXPECT_NE(header.find(",bonds_broken[1],bonds_mode_i[1],bonds_mode_ii[1],bonds_mixed[1],"
+                        "fragments[1],"),
             std::string::npos)
       << header;
-  EXPECT_NE(header.find(",work_pa,broken_class_1,"), std::string::npos) << header;
+  EXPECT_NE(header.find(",work[J/m3],broken_class_1[1],"), std::string::npos) << header;
   EXPECT_EQ(rows[0][16], 0);  // no particle broken at the consolidated state
   EXPECT_EQ(rows[0][20], 0);  // nor any work done
   for (const auto& row : rows) {

@@ -55,6 +55,8 @@ TEST(CliElementTest, TriaxialHasAPeakAndTheSameBytesForOneAndTwoThreads) {
   EXPECT_EQ(rep, nlohmann::json::parse(slurp(d / "t1" / "report.json")));
   EXPECT_TRUE(rep["consolidated"].get<bool>());
   EXPECT_LT(rep["inertial_number"].get<double>(), 1e-3);
+  EXPECT_GE(expect_units_everywhere(d / "t1"), 3);  // curve.csv, report.json, manifest.json
+  EXPECT_EQ(rep["units"]["peak_friction_angle"], "degree");
   // Columns: step, ε_a, ε_v, σ_a, σ_r, p, q, n, Z, unbalanced.
   const auto rows = curve_rows(d / "t1" / "curve.csv");
   ASSERT_GT(rows.size(), 20u);

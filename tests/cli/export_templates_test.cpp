@@ -23,7 +23,7 @@ void build_tiny_library(const fs::path& d) {
   ASSERT_EQ(r.rc, 0) << r.err;
 }
 
-// library.csv as rows of named cells.
+// library.csv as rows of cells named by column (units dropped: "volume[m3]" is "volume").
 std::vector<std::map<std::string, std::string>> csv_records(const fs::path& path) {
   std::istringstream in(slurp(path));
   std::string line;
@@ -44,7 +44,8 @@ std::vector<std::map<std::string, std::string>> csv_records(const fs::path& path
     }
     const std::vector<std::string> c = cells(line);
     std::map<std::string, std::string> row;
-    for (std::size_t k = 0; k < head.size() && k < c.size(); ++k) row[head[k]] = c[k];
+    for (std::size_t k = 0; k < head.size() && k < c.size(); ++k)
+      row[clumpkit::column_name(head[k])] = c[k];
     rows.push_back(row);
   }
   return rows;

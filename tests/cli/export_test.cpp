@@ -61,6 +61,7 @@ TEST(CliExport, LammpsTakesOurExactMassPropertiesOnAnyRankCount) {
   EXPECT_EQ(j["format"], "lammps");
   EXPECT_EQ(j["bodies"].get<std::size_t>(), bodies.size());
   EXPECT_EQ(j["run"], "lmp -in in.clumpkit");
+  EXPECT_GE(expect_units_everywhere(d / "lmp"), 2);  // bodies_map.csv, manifest.json
   for (const auto& f : j["files"]) EXPECT_TRUE(fs::exists(f.get<std::string>())) << f;
   std::size_t rocks = 0, spheres = 0;
   double r_min = INFINITY;

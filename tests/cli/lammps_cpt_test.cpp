@@ -118,7 +118,7 @@ TEST(CliLammpsCpt, OneSphereOnTheConeAndOneOnTheShaftGiveTheClosedForms) {
   ASSERT_EQ(error, "");
   std::string header;
   const auto curve = csv_rows(d / "lmp" / "cpt.csv", 6, &header);
-  EXPECT_EQ(header, "step,depth_m,tip_force_n,sleeve_force_n,qc_pa,fs_pa");
+  EXPECT_EQ(header, "step[1],depth[m],tip_force[N],sleeve_force[N],qc[Pa],fs[Pa]");
   ASSERT_EQ(curve.size(), 6u);
   const auto a = final_atoms(d / "lmp", 2);
   ASSERT_EQ(a.size(), 2u) << "atoms.final.txt";

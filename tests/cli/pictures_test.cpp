@@ -39,6 +39,8 @@ TEST(Cli, LibraryPicturesAndParaViewFiles) {
   r = run_cli(base + (d / "t2").string() + " --threads 2", d);
   ASSERT_EQ(r.rc, 0) << r.err;
   expect_same_tree(d / "t1", d / "t2");
+  // library.csv, manifest.json and each particle's record, clump and template.
+  EXPECT_EQ(expect_units_everywhere(d / "t1"), 2 + 3 * 4);
   for (int i = 0; i < 4; ++i) {
     char stem[16];
     std::snprintf(stem, sizeof stem, "%05d", i);

@@ -33,6 +33,8 @@ TEST(CliQuickCrush, SameBytesForAnyThreadCountAndAfterAResume) {
   for (const char* f : {"results.csv", "report.json", "particles/00000.csv", "particles/00005.json",
                         "particles/00003.cells.json"})
     EXPECT_EQ(slurp(one / f), slurp(two / f)) << f;
+  // results.csv, report.json, manifest.json and each particle's curve, record and cells.
+  EXPECT_GE(expect_units_everywhere(one), 3 + 3 * 6);
 
   // A run killed after four particles: its DIR.partial holds their records and no report. The
   // rerun keeps them, redoes a damaged one and ends with the same bytes.
@@ -83,7 +85,7 @@ TEST(CliQuickCrush, ReportHoldsEachSetsWeibullFitAndTheSizeLaw) {
   std::istringstream csv(slurp(out / "results.csv"));
   std::string line;
   std::getline(csv, line);
-  EXPECT_EQ(line.rfind("id,set,sample,diameter_m,", 0), 0u);
+  EXPECT_EQ(line.rfind("id[1],set,sample[1],diameter[m],", 0), 0u);
   double sum = 0;
   int rows = 0;
   while (std::getline(csv, line)) {
@@ -93,7 +95,7 @@ TEST(CliQuickCrush, ReportHoldsEachSetsWeibullFitAndTheSizeLaw) {
     ASSERT_EQ(c.size(), 16u);
     const double dm = std::stod(c[3]), fp = std::stod(c[8]), st = std::stod(c[10]);
     EXPECT_NEAR(st, fp / (dm * dm), 1e-9 * st);
-    // max_force_n: the largest force of the particle's curve (a survivor's censoring stress × D²).
+    // max_force: the largest force of the particle's curve (a survivor's censoring stress × D²).
     std::istringstream curve(
         slurp(out / "particles" / (std::string(5 - c[0].size(), '0') + c[0] + ".csv")));
     double largest = 0;

@@ -78,13 +78,14 @@ TEST(CrushRecipe, BadValuesNameFileFieldAndValue) {
   const std::string set = "[[set]]\nname = \"a\"\ndiameter = 0.02\n";
   EXPECT_NE(error_of("[crush]\nbogus = 1\n" + set).find("r.toml: crush.bogus: unknown key"),
             std::string::npos);
-  // The law's values are checked where the law is (dem::validate_values), named in the message.
+  // The law's values are checked where the law is (dem::validate_values), named in the message;
+  // a value with a range of its own (dem::kBondStrength) as it is read.
   EXPECT_NE(error_of("[bond]\ng_t = -3\n" + set)
-                .find("r.toml: bond: cohesive law: g_t must be positive and finite, got -3"),
+                .find("r.toml: bond: cohesive law: g_t: must be > 0, got -3"),
             std::string::npos);
-  EXPECT_NE(error_of("[bond]\nsigma_n = 0\n" + set)
-                .find("r.toml: bond: cohesive law: sigma_n must be positive and finite, got 0"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of("[bond]\nsigma_n = 0\n" + set).find("r.toml: bond.sigma_n: must be > 0, got 0"),
+      std::string::npos);
   EXPECT_NE(error_of("[bond]\nfriction = -0.1\n" + set)
                 .find("r.toml: bond.friction: must be >= 0, got -0.1"),
             std::string::npos);

@@ -3,11 +3,14 @@
 // the reference).
 #include "../../invalid_input_message.h"
 #include "dem/core/contact.h"
+#include "dem/core/timestep.h"
+#include "dem/lab/weibull.h"
 #include "dem/specimen/compression.h"
 #include "dem/specimen/specimen.h"
 #include "geom/shapes/polyhedron.h"
 #include "geom/shapes/primitives.h"
 #include "io/recipes/crush_recipe.h"
+#include "io/recipes/lab_recipe.h"
 #include "io/recipes/recipe.h"
 #include "io/recipes/specimen_recipe.h"
 
@@ -129,4 +132,15 @@ TEST(RecipeRanges, TheReferenceQuotesTheEnginesRange) {
   EXPECT_EQ(ranges_quoted(bond_section().keys, "friction"), dem::kFriction.text());
   EXPECT_EQ(ranges_quoted(fill_section().keys, "spheres"), kSphereBudget.text());
   EXPECT_EQ(ranges_quoted(fill_section().keys, "voxels"), kFieldVoxels.text());
+  EXPECT_EQ(ranges_quoted(fill_section().keys, "refine_iterations"), kRefineIterations.text());
+  EXPECT_EQ(ranges_quoted(fraction_section().keys, "count"), kFractionCount.text());
+  EXPECT_EQ(ranges_quoted(contact_section().keys, "ks"), dem::kShearStiffness.text());
+  EXPECT_EQ(ranges_quoted(container_section().keys, "angle"), dem::kSegmentAngleDegrees.text());
+  EXPECT_EQ(ranges_quoted(test_section().keys, "inertial_number"), dem::kHeldInertialNumber.text());
+  EXPECT_EQ(ranges_quoted(test_section().keys, "max_axial_strain"), dem::kMaxAxialStrain.text());
+  EXPECT_EQ(ranges_quoted(test_section().keys, "timestep_safety"), dem::kTimestepSafety.text());
+  EXPECT_EQ(ranges_quoted(test_section().keys, "density_scaling"), dem::kDensityScaling.text());
+  EXPECT_EQ(ranges_quoted(crush_section().keys, "timestep_safety"), dem::kTimestepSafety.text());
+  EXPECT_EQ(ranges_quoted(crush_section().keys, "bootstrap"), dem::kBootstrapResamples.text());
+  EXPECT_EQ(ranges_quoted(bond_section().keys, "sigma_n"), dem::kBondStrength.text());
 }
