@@ -78,13 +78,22 @@ def test_specimen_and_read_specimen(cli, recipes_dir, tmp_path):
         assert np.array_equal(s["sphere_centres"][first[b]], s["position"][b - 1])
 
 
-def test_read_specimen_of_a_written_file(tmp_path):
+# The headers of today's specimen.csv (units in brackets, docs/units.md) and of a folder
+# written before units: both read the same.
+BODIES_WITH_UNITS = ("body[1],kind,template[1],x[m],y[m],z[m],qw[1],qx[1],qy[1],qz[1],mass[kg],"
+                     "volume[m3],scale[1],I1[kg.m2],I2[kg.m2],I3[kg.m2],zone[1]")
+BODIES_BEFORE_UNITS = "body,kind,template,x,y,z,qw,qx,qy,qz,mass,volume,scale,I1,I2,I3,zone"
+
+
+@pytest.mark.parametrize("bodies,spheres", [
+    (BODIES_BEFORE_UNITS, "sphere,body,x,y,z,r"),
+    (BODIES_WITH_UNITS, "sphere[1],body[1],x[m],y[m],z[m],r[m]")])
+def test_read_specimen_of_a_written_file(tmp_path, bodies, spheres):
     (tmp_path / "specimen.csv").write_text(
-        "# clumpkit specimen format 4, SI units\n# bodies\n"
-        "body,kind,template,x,y,z,qw,qx,qy,qz,mass,volume,scale,I1,I2,I3,zone\n"
+        "# clumpkit specimen format 4, SI units\n# bodies\n" + bodies + "\n"
         "1,rock,3,0.1,0.2,0.3,0.5,0.5,0.5,0.5,2.5,0.001,1.5,1e-4,2e-4,3e-4,2\n"
         "2,soil,-1,1,1,1,1,0,0,0,0.1,4e-5,1,1e-6,1e-6,1e-6,0\n"
-        "# spheres\nsphere,body,x,y,z,r\n"
+        "# spheres\n" + spheres + "\n"
         "1,1,0.1,0.2,0.3,0.05\n2,1,0.12,0.2,0.3,0.04\n3,2,1,1,1,0.02\n")
     s = clumpkit.read_specimen(str(tmp_path))
     assert s["rock"].tolist() == [True, False] and s["template"].tolist() == [3, -1]

@@ -6,7 +6,7 @@ outside its folder, draws its first view, sorts its table by a column, draws the
 numbers (or, with --before-units, the note of a folder written before units). Exit 0 when every
 asked check holds, 1 otherwise, 77 (skipped) without chromium or python3-websocket. With
 CLUMPKIT_PAGE_FIGURES set to a folder, a screenshot of the page goes there as KIND.png
-(KIND-compare.png for several folders).
+(KIND-compare.png for several folders, KIND-before-units.png with --before-units).
 
   page_check.py INDEX.html [--sort COL --csv FILE] [--rows N] [--view] [--spheres SPECIMEN.csv]
                 [--report KEY=VALUE|KEY=from:REPORT.json] [--max-first-view S] [--screenshot OUT.png]
@@ -313,6 +313,8 @@ def main():
         if figures and not args.expect_outside_request:  # a leaky copy is no figure
             name = b.evaluate("window.CLUMPKIT_PAGE.kind + "
                               "(window.CLUMPKIT_PAGE.folders.length > 1 ? '-compare' : '')")
+            if args.before_units:
+                name += "-before-units"
             os.makedirs(figures, exist_ok=True)
             screenshot(b, os.path.join(figures, name + ".png"))
             print("page_check: figure %s" % os.path.join(figures, name + ".png"))

@@ -107,3 +107,80 @@ TEST(CliPage, UnknownFoldersDamagedFilesAndMixedComparisonsAreRefusedNothingWrit
   expect_one_line_error(r, "a page of several folders compares tests of one kind");
   EXPECT_FALSE(fs::exists(d / "both"));
 }
+
+namespace {
+
+// `dir` as clumpkit wrote it before units were recorded: CSV headers without units (and the
+// names that carried an SI unit, axial_stress_pa, qc_pa, ...), manifests and reports without
+// "units".
+void as_written_before_units(const fs::path& dir) {
+  const std::vector<std::pair<std::string, std::string>> old_names = {
+      {"axial_stress", "axial_stress_pa"},
+      {"radial_stress", "radial_stress_pa"},
+      {"p", "p_pa"},
+      {"q", "q_pa"},
+      {"work", "work_pa"},
+      {"depth", "depth_m"},
+      {"qc", "qc_pa"},
+      {"fs", "fs_pa"},
+      {"sieve", "sieve_m"}};
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    if (!e.is_regular_file()) continue;
+    const std::string name = e.path().filename().string();
+    if (name == "manifest.json" || name == "report.json") {  // records keep theirs: checksummed
+      nlohmann::ordered_json j = nlohmann::ordered_json::parse(slurp(e.path()));
+      j.erase("units");
+      write(e.path(), j.dump(1));
+    } else if (e.path().extension() == ".csv") {
+      std::istringstream in(slurp(e.path()));
+      std::string out;
+      for (std::string line; std::getline(in, line);) {
+        if (line.find('[') != std::string::npos && line[0] != '#') {
+          std::string bare;
+          for (const std::string& cell : clumpkit::split_csv(line)) {
+            std::string name = clumpkit::column_name(cell);
+            for (const auto& [now, then] : old_names)
+              if (name == now) name = then;
+            bare += (bare.empty() ? "" : ",") + name;
+          }
+          line = bare;
+        }
+        out += line + "\n";
+      }
+      write(e.path(), out);
+    }
+  }
+}
+
+}  // namespace
+
+// Folders written before units still open: the page (with a note that their units are not
+// recorded) and compare-curves (by today's column names or the old ones).
+TEST(CliPage, FoldersWrittenBeforeUnitsStillOpenWithANote) {
+  const fs::path d = scratch();
+  build_tiny_specimen(d);
+  fs::copy(d / "spec", d / "old", fs::copy_options::recursive);
+  as_written_before_units(d / "old");
+  ASSERT_EQ(slurp(d / "old" / "specimen.csv").find('['), std::string::npos);
+  for (const char* dir : {"spec", "old"}) {
+    const Result r = run_cli("page " + (d / dir).string(), d);
+    ASSERT_EQ(r.rc, 0) << dir << ": " << r.err;
+  }
+  const nlohmann::json now = script_json(d / "spec" / "page" / "data.js", '=', ';');
+  const nlohmann::json then = script_json(d / "old" / "page" / "data.js", '=', ';');
+  EXPECT_TRUE(now["units_recorded"].get<bool>());
+  EXPECT_FALSE(then["units_recorded"].get<bool>());
+  // The same specimen either way: the page's own data differs only in what says units.
+  EXPECT_EQ(now["folders"].size(), then["folders"].size());
+
+  // Curves: today's header and the old one give the same curve under either name.
+  write(d / "now.csv", "step[1],depth[m],qc[Pa]\n0,0,1e5\n1,0.01,2e5\n2,0.02,4e5\n");
+  write(d / "then.csv", "step,depth_m,qc_pa\n0,0,1e5\n1,0.01,2e5\n2,0.02,4e5\n");
+  for (const char* columns : {"--x depth --y qc", "--x depth_m --y qc_pa"}) {
+    const Result r = run_cli("compare-curves " + (d / "now.csv").string() + " " +
+                                 (d / "then.csv").string() + " " + columns + " --json",
+                             d);
+    ASSERT_EQ(r.rc, 0) << columns << ": " << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["residual_abs"].get<double>(), 0.0) << columns;
+  }
+}
