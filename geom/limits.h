@@ -4,6 +4,7 @@
 
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "geom/range.h"
 
 #include <cmath>
 #include <string>
@@ -17,10 +18,13 @@ inline constexpr double kMaxLength = 1e30;
 /// Smallest size or radius: (1e-30)⁵ = 1e-150 stays a normal double.
 inline constexpr double kMinLength = 1e-30;
 
+/// A size or radius, in any unit: [kMinLength, kMaxLength].
+inline constexpr Range kSize = closed(kMinLength, kMaxLength);
+
 /// Throws InvalidInput "`what`: must be between 1e-30 and 1e30, got V" unless `v` is a positive
-/// size within [kMinLength, kMaxLength] (NaN and infinities included).
+/// size within kSize (NaN and infinities included).
 inline void check_size(double v, const std::string& what) {
-  if (!(v >= kMinLength && v <= kMaxLength))
+  if (!kSize.contains(v))
     throw InvalidInput(what + ": must be a size between 1e-30 and 1e30, got " + format_number(v));
 }
 

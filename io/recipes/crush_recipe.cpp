@@ -5,6 +5,7 @@
 #include "dem/lab/weibull.h"
 #include "geom/errors.h"
 #include "geom/format.h"
+#include "geom/limits.h"
 #include "geom/random.h"
 #include "geom/shapes/primitives.h"
 #include "io/base/text.h"
@@ -273,10 +274,10 @@ const RecipeSection<CrushSet>& set_section() {
                        "a sphere cut by random planes (Hu et al. 2023), or a cylinder (the "
                        "Brazilian test)",
                        "\"polyhedron\"", read_shape),
-         shown_as(number_key<S>(
-                      "diameter", "m", "> 0",
-                      "volume-equivalent diameter D of a polyhedron; a cylinder's diameter",
-                      [](S& s) -> double& { return s.polyhedron.diameter; }, &TomlFields::positive),
+         shown_as(range_key<S>("diameter", "m", kSize,
+                               "volume-equivalent diameter D of a polyhedron; a cylinder's "
+                               "diameter",
+                               [](S& s) -> double& { return s.polyhedron.diameter; }),
                   "required"),
          integer_in_key<S>(
              "samples", "particles crushed", [](S& s) -> int& { return s.samples; }, 3, 100000),
@@ -305,9 +306,8 @@ const RecipeSection<CrushSet>& set_section() {
              })}};
     for (const auto& k : polyhedron_keys())
       t.keys.push_back(nested_key<S>(k, [](S& s) -> PolyhedronParams& { return s.polyhedron; }));
-    t.keys.push_back(shown_as(number_key<S>(
-                                  "height", "m", "> 0", "cylinder height",
-                                  [](S& s) -> double& { return s.height; }, &TomlFields::positive),
+    t.keys.push_back(shown_as(range_key<S>("height", "m", kSize, "cylinder height",
+                                           [](S& s) -> double& { return s.height; }),
                               "required for a cylinder"));
     t.keys.push_back(range_key<S>("sides", "", kCylinderSides, "facets of a cylinder",
                                   [](S& s) -> int& { return s.sides; }));
