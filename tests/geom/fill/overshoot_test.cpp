@@ -90,6 +90,9 @@ TEST(FillOvershoot, EveryFillMeetsItsBoundFromTenToFiveHundredSpheres) {
       if (kSanitized && bound == 0.002) continue;
       for (int n : {10, 47, 200, 500}) {  // 500: the ellipsoid's candidates run out first
         if (kSanitized && (n == 200 || n == 500)) continue;
+        // The ellipsoid's 200, and its 500 under the tight bound, repeat what the block's fills
+        // check (10 s of the test's 48); its 500 under 0.01, where candidates run out, stays.
+        if (m == &ellipsoid && (n == 200 || (n == 500 && bound == 0.002))) continue;
         FillOptions o;
         o.spheres = n;
         o.max_overshoot = bound;
