@@ -63,26 +63,6 @@ std::string numbered_family(const std::string& name) {
   return name.substr(0, end) + "*";
 }
 
-void collect_units(const nlohmann::ordered_json& j, std::vector<std::string>& path,
-                   const LengthUnit& length, nlohmann::ordered_json& units) {
-  if (j.is_object()) {
-    for (auto it = j.begin(); it != j.end(); ++it) {
-      if (path.empty() && it.key() == "units") continue;
-      path.push_back(it.key());
-      collect_units(it.value(), path, length, units);
-      path.pop_back();
-    }
-  } else if (j.is_array()) {
-    for (const auto& e : j) collect_units(e, path, length, units);
-  } else if (j.is_number() && !path.empty()) {
-    std::string key;
-    for (const std::string& p : path) key += (key.empty() ? "" : ".") + p;
-    if (units.contains(key)) return;
-    const std::string u = unit_of(path, length);
-    if (!u.empty()) units[key] = u;
-  }
-}
-
 }  // namespace
 
 std::string unit_of(const std::vector<std::string>& path, const LengthUnit& length) {
@@ -118,10 +98,20 @@ std::string csv_header(std::string_view file, std::string_view names, const Leng
   return out;
 }
 
+std::string dotted(const std::vector<std::string>& path) {
+  std::string key;
+  for (const std::string& p : path) key += (key.empty() ? "" : ".") + p;
+  return key;
+}
+
 void add_units(nlohmann::ordered_json& doc, const LengthUnit& length) {
   nlohmann::ordered_json units = nlohmann::ordered_json::object();
-  std::vector<std::string> path;
-  collect_units(doc, path, length, units);
+  for_each_number(doc, [&](const std::vector<std::string>& path) {
+    const std::string key = dotted(path);
+    if (units.contains(key)) return;
+    const std::string u = unit_of(path, length);
+    if (!u.empty()) units[key] = u;
+  });
   doc["units"] = std::move(units);
 }
 

@@ -65,6 +65,34 @@ std::string csv_header(std::string_view file, std::string_view names, const Leng
 /// left out: "descriptors.volume"), by the vocabulary; a number it has no entry for is left out.
 void add_units(nlohmann::ordered_json& doc, const LengthUnit& length);
 
+/// Calls `f(path)` for every number in the JSON document `doc` (nlohmann::json or ordered_json),
+/// `path` its object keys from the root with array levels left out; the top-level "units" map is
+/// not visited. add_units and the tests that check a file's units walk documents with it.
+template <class Json, class F>
+void for_each_number(const Json& doc, F&& f, std::vector<std::string>& path) {
+  if (doc.is_object()) {
+    for (auto it = doc.begin(); it != doc.end(); ++it) {
+      if (path.empty() && it.key() == "units") continue;
+      path.push_back(it.key());
+      for_each_number(it.value(), f, path);
+      path.pop_back();
+    }
+  } else if (doc.is_array()) {
+    for (const auto& e : doc) for_each_number(e, f, path);
+  } else if (doc.is_number() && !path.empty()) {
+    f(static_cast<const std::vector<std::string>&>(path));
+  }
+}
+
+template <class Json, class F>
+void for_each_number(const Json& doc, F&& f) {
+  std::vector<std::string> path;
+  for_each_number(doc, f, path);
+}
+
+/// The dotted key of a path ("descriptors.volume").
+std::string dotted(const std::vector<std::string>& path);
+
 /// The unit of the number at `path` (object keys from the root, array levels left out) in a
 /// JSON file whose "units" map is `units`: the entry for the longest tail of the path
 /// ("descriptors.volume", else "volume"); empty when none matches.

@@ -17,35 +17,16 @@
 
 namespace cli_test {
 
-namespace units_detail {
-
-inline void json_numbers_without_unit(const nlohmann::json& j, const nlohmann::json& units,
-                                      std::vector<std::string>& path,
-                                      std::vector<std::string>& missing) {
-  if (j.is_object()) {
-    for (auto it = j.begin(); it != j.end(); ++it) {
-      if (path.empty() && it.key() == "units") continue;
-      path.push_back(it.key());
-      json_numbers_without_unit(it.value(), units, path, missing);
-      path.pop_back();
-    }
-  } else if (j.is_array()) {
-    for (const auto& e : j) json_numbers_without_unit(e, units, path, missing);
-  } else if (j.is_number() && clumpkit::json_unit(units, path).empty()) {
-    std::string key;
-    for (const std::string& p : path) key += (key.empty() ? "" : ".") + p;
-    if (missing.empty() || missing.back() != key) missing.push_back(key);
-  }
-}
-
-}  // namespace units_detail
-
 /// The numbers of one JSON document without a unit in its "units" map: their key paths.
 inline std::vector<std::string> json_numbers_without_unit(const nlohmann::json& doc) {
-  std::vector<std::string> path, missing;
+  std::vector<std::string> missing;
   const nlohmann::json units =
       doc.is_object() && doc.contains("units") ? doc["units"] : nlohmann::json();
-  units_detail::json_numbers_without_unit(doc, units, path, missing);
+  clumpkit::for_each_number(doc, [&](const std::vector<std::string>& path) {
+    if (!clumpkit::json_unit(units, path).empty()) return;
+    const std::string key = clumpkit::dotted(path);
+    if (missing.empty() || missing.back() != key) missing.push_back(key);
+  });
   return missing;
 }
 
